@@ -1,0 +1,41 @@
+// Image types: linear float RGB for rendering, 8-bit for files. Rows are stored top row first.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "rays/math/vec3.h"
+
+namespace rays {
+
+/// Float RGB image; pixel (x, y) with y = 0 the TOP row.
+struct ImageF {
+    int width = 0, height = 0;
+    std::vector<Vec3> pixels;
+
+    ImageF() = default;
+    ImageF(int w, int h) : width(w), height(h), pixels(size_t(w) * size_t(h)) {}
+    Vec3& at(int x, int y) { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
+    const Vec3& at(int x, int y) const { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
+};
+
+/// 8-bit image with 1..4 interleaved channels, top row first.
+struct Image8 {
+    int width = 0, height = 0, channels = 3;
+    std::vector<uint8_t> pixels;
+
+    Image8() = default;
+    Image8(int w, int h, int c) : width(w), height(h), channels(c), pixels(size_t(w) * size_t(h) * size_t(c)) {}
+    uint8_t* row(int y) { return pixels.data() + size_t(y) * size_t(width) * size_t(channels); }
+    const uint8_t* row(int y) const { return pixels.data() + size_t(y) * size_t(width) * size_t(channels); }
+};
+
+/// Course colour quantisation: round(c·255) clamped to [0, 255].
+inline uint8_t toByte(double c) {
+    const double v = c * 255.0 + 0.5;
+    return v <= 0.0 ? 0 : (v >= 255.0 ? 255 : uint8_t(v));
+}
+
+/// Quantises a float image to 8-bit RGB with toByte.
+Image8 toImage8(const ImageF& img);
+
+}  // namespace rays
