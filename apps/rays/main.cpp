@@ -1,2 +1,235 @@
-// Temporary entry point; replaced by the real CLI.
-int main() { return 0; }
+// rays: command-line entry point. Three forms:
+//   rays render|raycast|sceneinfo|pixelray|firsthit|pixelcolor|printrays SCENE ... (course form,
+//        plus modern options on render),
+//   rays WIDTH HEIGHT INPUT.pov OUTPUT.png SHADING RAYS_PER_PIXEL DEPTH [MODEL.obj] (positional form).
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "rays/accel/bvh.h"
+#include "rays/error.h"
+#include "rays/render/course_commands.h"
+#include "render_command.h"
+
+using namespace rays;
+
+namespace {
+
+// The course writes flags with one dash (-altbrdf, -ss=4); CLI11 wants two for long names.
+std::vector<std::string> normaliseCourseFlags(int argc, char** argv) {
+    static const char* kCourse[] = {"-altbrdf", "-fresnel", "-beers", "-sds", "-gi", "-ss=", "-gi_samples=", "-gi_bounces="};
+    std::vector<std::string> out;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        for (const char* f : kCourse) {
+            const std::string flag = f;
+            const bool prefix = flag.back() == '=';
+            if ((prefix && a.rfind(flag, 0) == 0) || (!prefix && a == flag)) {
+                a = "-" + a;
+                break;
+            }
+        }
+        out.push_back(a);
+    }
+    return out;
+}
+
+bool isInteger(const std::string& s) {
+    if (s.empty()) return false;
+    for (char c : s)
+        if (c < '0' || c > '9') return false;
+    return true;
+}
+
+int toInt(const std::string& s, const char* what) {
+    if (!isInteger(s) || s.size() > 9) throw Error(std::string("rays: error: ") + what + " must be a non-negative integer, got '" + s + "'");
+    return std::stoi(s);
+}
+
+// Positional form of the original C++ system.
+int runPositional(const std::vector<std::string>& a) {
+    if (a.size() < 7 || a.size() > 8)
+        throw Error("rays: error: positional form is: rays WIDTH HEIGHT INPUT.pov OUTPUT.png SHADING_MODEL RAYS_PER_PIXEL RECURSION_DEPTH [MODEL.obj]");
+    cli::RenderJob job;
+    job.settings.width = toInt(a[0], "WIDTH");
+    job.settings.height = toInt(a[1], "HEIGHT");
+    job.scenePath = a[2];
+    job.outputPath = a[3];
+    const int model = toInt(a[4], "SHADING_MODEL");
+    switch (model) {
+        case 0: job.settings.shading = ShadingModel::BlinnPhong; break;
+        case 1: job.settings.shading = ShadingModel::CookTorrance; break;
+        case 4: job.settings.shading = ShadingModel::Flat; break;
+        case 5: job.settings.shading = ShadingModel::Normals; break;
+        default:
+            throw Error("rays: error: SHADING_MODEL must be 0 (Blinn-Phong), 1 (Cook-Torrance), 4 (flat) or 5 (normals); got " + a[4]);
+    }
+    job.settings.spp = toInt(a[5], "RAYS_PER_PIXEL");
+    if (job.settings.spp < 1) throw Error("rays: error: RAYS_PER_PIXEL must be at least 1");
+    job.settings.maxDepth = toInt(a[6], "RECURSION_DEPTH");
+    if (a.size() == 8) job.objPath = a[7];
+    return cli::runRender(job);
+}
+
+struct CourseFlags {
+    bool altbrdf = false, fresnel = false, beers = false, sds = false, gi = false;
+    int ss = 1;
+    std::string giSamples, giBounces;
+};
+
+void addCourseFlags(CLI::App* cmd, CourseFlags& f) {
+    cmd->add_flag("--altbrdf", f.altbrdf, "Cook-Torrance shading (course: -altbrdf)");
+    cmd->add_flag("--fresnel", f.fresnel, "Schlick Fresnel on reflection/refraction (course: -fresnel)");
+    cmd->add_flag("--beers", f.beers, "Beer's law attenuation inside refractive objects (course: -beers)");
+    cmd->add_flag("--sds", f.sds, "accepted for the course; Rays always uses its BVH (course: -sds)");
+    cmd->add_option("--ss", f.ss, "N×N regular supersampling grid per pixel (course: -ss=N)")->check(CLI::Range(1, 64));
+    cmd->add_flag("--gi", f.gi, "global illumination (course part 6; not implemented yet: ignored with a warning)");
+    cmd->add_option("--gi_samples", f.giSamples, "global illumination samples (ignored)");
+    cmd->add_option("--gi_bounces", f.giBounces, "global illumination bounces (ignored)");
+}
+
+void applyCourseFlags(const CourseFlags& f, RenderSettings& s) {
+    if (f.altbrdf) s.shading = ShadingModel::CookTorrance;
+    s.fresnel = f.fresnel;
+    s.beers = f.beers;
+    s.gridSamples = f.ss;
+    if (f.gi || !f.giSamples.empty() || !f.giBounces.empty())
+        std::cerr << "rays: warning: global illumination (-gi) is not implemented yet; rendering without it\n";
+}
+
+ShadingModel parseShading(const std::string& name) {
+    if (name == "blinn-phong") return ShadingModel::BlinnPhong;
+    if (name == "cook-torrance") return ShadingModel::CookTorrance;
+    if (name == "flat") return ShadingModel::Flat;
+    if (name == "normals") return ShadingModel::Normals;
+    throw Error("rays: error: unknown shading model '" + name + "' (use blinn-phong, cook-torrance, flat or normals)");
+}
+
+int run(int argc, char** argv) {
+    std::vector<std::string> args = normaliseCourseFlags(argc, argv);
+    if (!args.empty() && isInteger(args[0])) return runPositional(args);
+
+    CLI::App app{"Rays: a fast ray tracer for POV-Ray-style scenes with feature lines", "rays"};
+    app.set_version_flag("--version", std::string("rays ") + RAYS_VERSION);
+    app.require_subcommand(1);
+    app.footer("Positional form: rays WIDTH HEIGHT INPUT.pov OUTPUT.png SHADING_MODEL RAYS_PER_PIXEL RECURSION_DEPTH [MODEL.obj]\n"
+               "Course flags may be written with one dash: -altbrdf -fresnel -beers -ss=N -sds.");
+
+    std::string scene;
+    int width = 0, height = 0, px = 0, py = 0;
+    CourseFlags flags;
+    cli::RenderJob job;
+    std::string shading, obj;
+    bool povrayRotate = false;
+
+    // render
+    CLI::App* render = app.add_subcommand("render", "render a scene to an image (default output.png)");
+    render->add_option("scene", scene, "scene file (.pov)")->required();
+    render->add_option("width", width, "image width in pixels (or -W)");
+    render->add_option("height", height, "image height in pixels (or -H)");
+    addCourseFlags(render, flags);
+    render->add_option("-o,--output", job.outputPath, "output image: .png .jpg .ppm .tga .bmp (default output.png)");
+    render->add_option("-W,--width", width, "image width in pixels");
+    render->add_option("-H,--height", height, "image height in pixels");
+    render->add_option("--shading", shading, "blinn-phong | cook-torrance | flat | normals");
+    render->add_option("--spp", job.settings.spp, "jittered samples per pixel (stratified when a square)")->check(CLI::Range(1, 65536));
+    render->add_option("--depth", job.settings.maxDepth, "recursion depth for reflection and refraction (default 6)")->check(CLI::Range(0, 1000));
+    render->add_option("--threads", job.settings.threads, "worker threads (default: all cores)")->check(CLI::Range(0, 1024));
+    render->add_option("--seed", job.settings.seed, "random seed for jittered sampling");
+    render->add_option("--camera", job.settings.cameraIndex, "index of the camera in the scene (default 0)")->check(CLI::NonNegativeNumber);
+    render->add_option("--obj", obj, "add an OBJ mesh to the scene with a default material");
+    render->add_option("--jpeg-quality", job.jpegQuality, "JPEG quality 1-100 (default 90)")->check(CLI::Range(1, 100));
+    render->add_flag("--povray-rotate", povrayRotate, "apply rotate x, then y, then z as POV-Ray does (course: z first)");
+    render->add_flag("-q,--quiet", job.quiet, "no progress bar or summary on stderr");
+    render->add_flag("--stats", job.stats, "print counters (rays by kind, BVH size) on stderr");
+
+    // raycast
+    CLI::App* raycast = app.add_subcommand("raycast", "render flat object colours (course part 1) to output.png");
+    raycast->add_option("scene", scene, "scene file")->required();
+    raycast->add_option("width", width, "image width")->required();
+    raycast->add_option("height", height, "image height")->required();
+    raycast->add_option("-o,--output", job.outputPath, "output image (default output.png)");
+    raycast->add_flag("-q,--quiet", job.quiet, "no progress or summary");
+
+    // sceneinfo
+    CLI::App* sceneinfo = app.add_subcommand("sceneinfo", "print the camera, lights and objects of a scene");
+    sceneinfo->add_option("scene", scene, "scene file")->required();
+
+    // pixel commands
+    auto pixelCommand = [&](const char* name, const char* help, bool withFlags) {
+        CLI::App* c = app.add_subcommand(name, help);
+        c->add_option("scene", scene, "scene file")->required();
+        c->add_option("width", width, "image width")->required();
+        c->add_option("height", height, "image height")->required();
+        c->add_option("x", px, "pixel column (0 = left)")->required();
+        c->add_option("y", py, "pixel row (0 = bottom)")->required();
+        if (withFlags) addCourseFlags(c, flags);
+        return c;
+    };
+    CLI::App* pixelray = pixelCommand("pixelray", "print the primary ray of a pixel", false);
+    CLI::App* firsthit = pixelCommand("firsthit", "print the first hit of a pixel's ray", false);
+    CLI::App* pixelcolor = pixelCommand("pixelcolor", "print the shaded colour of a pixel", true);
+    CLI::App* printrays = pixelCommand("printrays", "print the whole ray tree of a pixel", true);
+
+    try {
+        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them reversed
+        app.parse(reversed);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    }
+
+    job.scenePath = scene;
+    RenderSettings& s = job.settings;
+    applyCourseFlags(flags, s);
+    if (!shading.empty()) s.shading = parseShading(shading);
+    job.rotation = povrayRotate ? RotationOrder::Povray : RotationOrder::Course;
+    job.objPath = obj;
+
+    if (render->parsed() || raycast->parsed()) {
+        s.width = width > 0 ? width : 640;
+        s.height = height > 0 ? height : 480;
+        if (width < 0 || height < 0 || (render->parsed() && (render->count("width") + render->count("-W")) && width == 0))
+            cli::checkImageSize(width, height);
+        if (raycast->parsed()) s.shading = ShadingModel::Flat;
+        return cli::runRender(job);
+    }
+
+    const Scene sc = cli::loadSceneWithObj(scene, "", job.rotation);
+    if (sceneinfo->parsed()) {
+        printSceneInfo(std::cout, sc);
+        return 0;
+    }
+    cli::checkImageSize(width, height);
+    if (px < 0 || px >= width || py < 0 || py >= height)
+        throw Error("rays: error: pixel [" + std::to_string(px) + ", " + std::to_string(py) + "] is outside the " +
+                    std::to_string(width) + "x" + std::to_string(height) + " image");
+    s.width = width;
+    s.height = height;
+    if (pixelray->parsed()) {
+        printPixelRay(std::cout, sc, s, px, py);
+        return 0;
+    }
+    const Bvh bvh(sc.objects);
+    if (firsthit->parsed()) printFirstHit(std::cout, sc, bvh, s, px, py);
+    else if (pixelcolor->parsed()) printPixelColor(std::cout, sc, bvh, s, px, py);
+    else if (printrays->parsed()) printRays(std::cout, sc, bvh, s, px, py);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const Error& e) {
+        std::cerr << e.what() << '\n';
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "rays: internal error: " << e.what() << '\n';
+        return 1;
+    }
+}

@@ -1,0 +1,155 @@
+#include "render_command.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "rays/accel/bvh.h"
+#include "rays/error.h"
+#include "rays/image/image.h"
+#include "rays/io/image_io.h"
+#include "rays/io/obj_loader.h"
+#include "rays/render/renderer.h"
+
+namespace rays::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Default look of an OBJ mesh given on the positional command line.
+Material objMaterial(const ObjMesh& mesh, int faceMaterial) {
+    Material m;
+    m.color = {0.8, 0.8, 0.8};
+    if (faceMaterial >= 0 && size_t(faceMaterial) < mesh.materials.size())
+        m.color = mesh.materials[size_t(faceMaterial)].diffuse;
+    m.ambient = 0.2;
+    m.diffuse = 0.7;
+    m.specular = 0.2;
+    m.roughness = 0.3;
+    return m;
+}
+
+void appendObj(Scene& scene, const std::string& path) {
+    const ObjMesh mesh = loadObj(path);
+    scene.objects.reserve(scene.objects.size() + mesh.faces.size());
+    for (size_t f = 0; f < mesh.faces.size(); ++f) {
+        const ObjMesh::Face& face = mesh.faces[f];
+        Object o;
+        o.type = ShapeType::Triangle;
+        o.p0 = mesh.positions[size_t(face.v[0])];
+        o.p1 = mesh.positions[size_t(face.v[1])];
+        o.p2 = mesh.positions[size_t(face.v[2])];
+        if (length(cross(o.p1 - o.p0, o.p2 - o.p0)) == 0) continue;  // degenerate: never hit
+        if (face.n[0] >= 0 && face.n[1] >= 0 && face.n[2] >= 0) {
+            o.smooth = true;
+            o.n0 = normalize(mesh.normals[size_t(face.n[0])]);
+            o.n1 = normalize(mesh.normals[size_t(face.n[1])]);
+            o.n2 = normalize(mesh.normals[size_t(face.n[2])]);
+        }
+        o.material = objMaterial(mesh, f < mesh.faceMaterial.size() ? mesh.faceMaterial[f] : -1);
+        scene.objects.push_back(o);
+    }
+}
+
+// Refuses to overwrite an input file with the image.
+void checkOutputIsNotInput(const std::string& output, const std::string& input) {
+    std::error_code ec;
+    if (!input.empty() && std::filesystem::exists(output, ec) && std::filesystem::equivalent(output, input, ec))
+        failFile(output, "output would overwrite the input file '" + input + "'");
+}
+
+class ProgressBar {
+public:
+    explicit ProgressBar(bool enabled) : enabled_(enabled), start_(Clock::now()) {}
+    void operator()(double fraction) {
+        if (!enabled_) return;
+        const int width = 30;
+        const int filled = int(fraction * width + 0.5);
+        const double elapsed = msSince(start_) / 1000.0;
+        char eta[32] = "";
+        if (fraction > 0.02 && fraction < 1.0)
+            std::snprintf(eta, sizeof eta, " ETA %.1f s", elapsed * (1.0 - fraction) / fraction);
+        std::fprintf(stderr, "\rrendering [%-*s] %3d%%%s   ", width, std::string(size_t(filled), '#').c_str(),
+                     int(fraction * 100 + 0.5), eta);
+        if (fraction >= 1.0) std::fprintf(stderr, "\r%*s\r", width + 40, "");
+        std::fflush(stderr);
+    }
+
+private:
+    bool enabled_;
+    Clock::time_point start_;
+};
+
+}  // namespace
+
+void checkImageSize(int width, int height) {
+    constexpr int kMaxSide = 65536;
+    if (width <= 0 || height <= 0)
+        throw Error("rays: error: image size must be positive, got " + std::to_string(width) + "x" +
+                    std::to_string(height));
+    if (width > kMaxSide || height > kMaxSide || double(width) * height > 268435456.0)
+        throw Error("rays: error: image size " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is too large (at most 65536 per side and 268435456 pixels)");
+}
+
+Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation) {
+    ParseOptions opt;
+    opt.rotation = rotation;
+    Scene scene = loadScene(scenePath, opt);
+    if (!objPath.empty()) appendObj(scene, objPath);
+    return scene;
+}
+
+int runRender(const RenderJob& job) {
+    const RenderSettings& s = job.settings;
+    checkImageSize(s.width, s.height);
+    if (!isSupportedImageExtension(job.outputPath))
+        failFile(job.outputPath, "unsupported output image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
+    checkOutputIsNotInput(job.outputPath, job.scenePath);
+    checkOutputIsNotInput(job.outputPath, job.objPath);
+
+    auto t0 = Clock::now();
+    const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation);
+    if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
+        failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
+                                    std::to_string(scene.cameras.size()) + ")");
+    const double parseMs = msSince(t0);
+
+    t0 = Clock::now();
+    const Bvh bvh(scene.objects);
+    const double buildMs = msSince(t0);
+
+    t0 = Clock::now();
+    TraceStats stats;
+    ProgressBar bar(!job.quiet && isatty(STDERR_FILENO));
+    const ImageF img = render(scene, bvh, s, stats, [&](double f) { bar(f); });
+    const double renderMs = msSince(t0);
+
+    t0 = Clock::now();
+    writeImage(job.outputPath, toImage8(img), job.jpegQuality);
+    const double writeMs = msSince(t0);
+
+    if (!job.quiet) {
+        const double mrays = renderMs > 0 ? stats.total() / (renderMs * 1000.0) : 0.0;
+        std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, write %.1f ms; %.2f Mrays/s\n",
+                     job.outputPath.c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
+    }
+    if (job.stats) {
+        std::fprintf(stderr, "stats: objects %zu, lights %zu, BVH nodes %zu (depth %d), threads %d\n",
+                     scene.objects.size(), scene.lights.size(), bvh.nodeCount(), bvh.depth(),
+                     resolveThreads(s.threads));
+        std::fprintf(stderr, "stats: rays %llu (primary %llu, secondary %llu, shadow %llu)\n",
+                     (unsigned long long)stats.total(), (unsigned long long)stats.primaryRays,
+                     (unsigned long long)stats.secondaryRays, (unsigned long long)stats.shadowRays);
+    }
+    return 0;
+}
+
+}  // namespace rays::cli

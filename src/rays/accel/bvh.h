@@ -1,0 +1,52 @@
+// Bounding volume hierarchy over the bounded objects of a scene; unbounded objects (planes) are
+// tested separately. Build: binned SAH (Wald 2007); traversal: ordered, with an any-hit variant.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "rays/geometry/ray.h"
+#include "rays/scene/object.h"
+
+namespace rays {
+
+/// Closest-hit result: object index (−1 when nothing was hit), t and outward world normal.
+struct Hit {
+    int object = -1;
+    double t = kInfinity;
+    Vec3 normal;      ///< shading normal (outward)
+    Vec3 geomNormal;  ///< geometric normal (outward; decides entering versus leaving)
+    bool valid() const { return object >= 0; }
+};
+
+struct BvhNode {
+    Bounds bounds;
+    uint32_t first = 0;  ///< leaf: first index into the primitive list; inner: index of the left child
+    uint32_t count = 0;  ///< leaf: number of primitives; inner: 0 (right child = left + 1)
+};
+
+class Bvh {
+public:
+    Bvh() = default;
+    /// Builds over objects; planes and other unbounded objects go to a separate list.
+    explicit Bvh(const std::vector<Object>& objects);
+
+    /// Nearest hit with t in (tMin, tMax) over all objects.
+    Hit closest(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
+    /// True when any object is hit with t in (tMin, tMax); stops at the first blocker.
+    bool any(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
+
+    size_t nodeCount() const { return nodes_.size(); }
+    int depth() const;
+
+private:
+    void build(std::vector<Bounds>& primBounds, std::vector<Vec3>& centroids, uint32_t begin,
+               uint32_t end);
+    void medianPartition(std::vector<Bounds>& primBounds, std::vector<Vec3>& centroids, uint32_t begin,
+                         uint32_t mid, uint32_t end, int axis);
+
+    std::vector<BvhNode> nodes_;
+    std::vector<uint32_t> prims_;      ///< object indices, leaves reference ranges of this
+    std::vector<uint32_t> unbounded_;  ///< planes: always tested
+};
+
+}  // namespace rays

@@ -1,0 +1,685 @@
+#include "rays/io/scene_parser.h"
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <unordered_set>
+
+#include "rays/io/lexer.h"
+
+namespace rays {
+namespace {
+
+// POV-Ray 3.7 keywords Rays reads but does not implement yet: they are skipped with a warning.
+const std::unordered_set<std::string_view>& povrayKeywords() {
+    static const std::unordered_set<std::string_view> k = {
+        "adaptive", "agate", "all", "alpha", "angle", "aperture", "area_light", "background",
+        "bicubic_patch", "blob", "blur_samples", "boxed", "brick", "brilliance", "bump_map",
+        "bump_size", "bumps", "checker", "circular", "confidence", "conserve_energy", "crand",
+        "cubic", "cylinder", "cylindrical", "dents", "difference", "direction", "disc",
+        "double_illuminate", "emission", "fade_color", "fade_distance", "fade_power", "falloff",
+        "focal_point", "fog", "gradient", "granite", "height_field", "hexagon", "hollow",
+        "image_map", "interpolate", "intersection", "inverse", "irid", "isosurface", "jitter",
+        "julia_fractal", "lathe", "leopard", "light_group", "looks_like", "map_type", "marble",
+        "media", "merge", "mesh", "mesh2", "no_image", "no_reflection", "no_shadow", "normal",
+        "normal_map", "object", "open", "orient", "orthographic", "parallel", "parametric",
+        "perspective", "phong", "phong_size", "photons", "point_at", "poly", "polygon", "prism",
+        "quadric", "radial", "radiosity", "radius", "ripples", "sky", "sky_sphere", "smooth_triangle",
+        "sor", "spherical", "spotlight", "sphere_sweep", "superellipsoid", "text", "tightness",
+        "torus", "transmit", "turbulence", "union", "uv_mapping", "warp", "waves", "wood",
+        "wrinkles", "global_settings", "max_trace_level", "assumed_gamma", "ambient_light",
+        "shadowless", "media_interaction", "media_attenuation", "subsurface", "specular_map",
+        "texture_map", "pigment_map", "normal_map", "color_map", "colour_map", "finish_map",
+        "material", "clipped_by", "bounded_by", "sturm", "caustics", "dispersion", "metallic_map",
+    };
+    return k;
+}
+
+// A parsed expression value: a scalar (n == 1) or a vector of n components (2..5).
+struct Value {
+    int n = 1;
+    std::array<double, 5> c{};
+    bool isScalar() const { return n == 1; }
+};
+
+class Parser {
+public:
+    Parser(const std::string& text, const std::string& file, const ParseOptions& opt)
+        : lex_(text, file), opt_(opt) {
+        scene_.fileName = file;
+        advance();
+    }
+
+    Scene run() {
+        while (tok_.kind != TokenKind::End) topLevel();
+        flushWarnings();
+        if (scene_.cameras.empty()) fail(SourceLoc{lex_.fileName(), 0, 0}, "scene has no camera");
+        return std::move(scene_);
+    }
+
+private:
+    // ---- token helpers -------------------------------------------------------------------
+    void advance() { tok_ = lex_.next(); }
+    SourceLoc loc(const Token& t) const { return lex_.locOf(t); }
+    SourceLoc loc() const { return loc(tok_); }
+    bool isSymbol(char c) const { return tok_.kind == TokenKind::Symbol && tok_.text[0] == c; }
+    bool isIdent(std::string_view s) const { return tok_.kind == TokenKind::Identifier && tok_.text == s; }
+    [[noreturn]] void error(const std::string& msg) const { fail(loc(), msg); }
+    void expectSymbol(char c, std::string_view context) {
+        if (!isSymbol(c))
+            error("expected '" + std::string(1, c) + "' " + std::string(context) + ", found " + describe(tok_));
+        advance();
+    }
+    void skipCommas() {
+        while (isSymbol(',')) advance();
+    }
+
+    // ---- warnings --------------------------------------------------------------------------
+    void warn(const SourceLoc& at, const std::string& msg) {
+        const std::string line = formatError(at, msg);
+        // formatError says "error:"; warnings say "warning:".
+        const std::string text = line.substr(0, line.find(": error: ")) + ": warning: " + msg;
+        if (opt_.warn) opt_.warn(text);
+        else std::cerr << text << '\n';
+    }
+    void warnUnsupported(const Token& t) {
+        const std::string name(t.text);
+        if (warnedCount_[name]++ == 0)
+            warn(loc(t), "'" + name + "' is valid POV-Ray but not supported by Rays yet; ignored");
+    }
+    void flushWarnings() {
+        for (const auto& [name, count] : warnedCount_)
+            if (count > 1)
+                warn(SourceLoc{lex_.fileName(), 0, 0},
+                     "'" + name + "' ignored " + std::to_string(count - 1) + " more time(s)");
+    }
+
+    // Skips what follows an unsupported keyword: a balanced { } block, or scalar/vector
+    // arguments (numbers, strings, <...>, commas and arithmetic).
+    void skipUnsupported() {
+        const Token kw = tok_;
+        warnUnsupported(kw);
+        advance();
+        if (isSymbol('{')) {
+            skipBlock();
+            return;
+        }
+        for (;;) {
+            if (tok_.kind == TokenKind::Number || tok_.kind == TokenKind::String) {
+                advance();
+            } else if (tok_.kind == TokenKind::Symbol && std::string_view("<>,-+*/()").find(tok_.text[0]) != std::string_view::npos) {
+                advance();
+            } else if (tok_.kind == TokenKind::Identifier &&
+                       (tok_.text == "x" || tok_.text == "y" || tok_.text == "z" || tok_.text == "pi" ||
+                        tok_.text == "rgb" || tok_.text == "rgbf" || tok_.text == "rgbt" ||
+                        tok_.text == "rgbft" || tok_.text == "color" || tok_.text == "colour" ||
+                        tok_.text == "png" || tok_.text == "jpeg" || tok_.text == "tga" || tok_.text == "gif")) {
+                advance();
+            } else {
+                return;
+            }
+        }
+    }
+    void skipBlock() {
+        const Token open = tok_;
+        expectSymbol('{', "");
+        int depth = 1;
+        while (depth > 0) {
+            if (tok_.kind == TokenKind::End) fail(loc(open), "'{' is never closed (end of file reached)");
+            if (isSymbol('{')) ++depth;
+            if (isSymbol('}')) --depth;
+            advance();
+        }
+    }
+
+    // ---- expressions -------------------------------------------------------------------------
+    Value expr() {
+        Value v = term();
+        while (isSymbol('+') || isSymbol('-')) {
+            const bool minus = isSymbol('-');
+            advance();
+            Value r = term();
+            v = combine(v, r, minus ? '-' : '+');
+        }
+        return v;
+    }
+    Value term() {
+        Value v = factor();
+        while (isSymbol('*') || isSymbol('/')) {
+            const char op = tok_.text[0];
+            const Token at = tok_;
+            advance();
+            Value r = factor();
+            if (op == '/') {
+                for (int i = 0; i < r.n; ++i)
+                    if (r.c[i] == 0) fail(loc(at), "division by zero");
+            }
+            v = combine(v, r, op);
+        }
+        return v;
+    }
+    Value combine(const Value& a, const Value& b, char op) {
+        if (!a.isScalar() && !b.isScalar() && a.n != b.n)
+            error("vector sizes differ (" + std::to_string(a.n) + " and " + std::to_string(b.n) + ")");
+        Value r;
+        r.n = std::max(a.n, b.n);
+        for (int i = 0; i < r.n; ++i) {
+            const double x = a.c[a.isScalar() ? 0 : i], y = b.c[b.isScalar() ? 0 : i];
+            switch (op) {
+                case '+': r.c[i] = x + y; break;
+                case '-': r.c[i] = x - y; break;
+                case '*': r.c[i] = x * y; break;
+                default: r.c[i] = x / y; break;
+            }
+        }
+        return r;
+    }
+    Value factor() {
+        Value v;
+        if (tok_.kind == TokenKind::Number) {
+            v.c[0] = tok_.number;
+            advance();
+            return v;
+        }
+        if (isSymbol('-') || isSymbol('+')) {
+            const bool neg = isSymbol('-');
+            advance();
+            v = factor();
+            if (neg)
+                for (int i = 0; i < v.n; ++i) v.c[i] = -v.c[i];
+            return v;
+        }
+        if (isSymbol('(')) {
+            advance();
+            v = expr();
+            expectSymbol(')', "to close '('");
+            return v;
+        }
+        if (isSymbol('<')) {
+            const Token open = tok_;
+            advance();
+            v.n = 0;
+            for (;;) {
+                const Token at = tok_;
+                Value comp = expr();
+                if (!comp.isScalar()) fail(loc(at), "vector component must be a number");
+                if (v.n == 5) fail(loc(at), "vector has more than 5 components");
+                v.c[v.n++] = comp.c[0];
+                if (isSymbol(',')) {
+                    advance();
+                    continue;
+                }
+                if (isSymbol('>')) break;
+                error("expected ',' or '>' in vector, found " + describe(tok_));
+            }
+            advance();
+            if (v.n < 2) fail(loc(open), "vector needs at least 2 components");
+            return v;
+        }
+        if (tok_.kind == TokenKind::Identifier) {
+            if (tok_.text == "x" || tok_.text == "y" || tok_.text == "z") {
+                v.n = 3;
+                v.c[tok_.text[0] - 'x'] = 1;
+                advance();
+                return v;
+            }
+            if (tok_.text == "pi") {
+                v.c[0] = std::numbers::pi;
+                advance();
+                return v;
+            }
+        }
+        if (tok_.kind == TokenKind::End) error("expected a number or vector, found end of file");
+        error("expected a number or vector, found " + describe(tok_));
+    }
+
+    double number(std::string_view what) {
+        const Token at = tok_;
+        const Value v = expr();
+        if (!v.isScalar()) fail(loc(at), "expected a number for " + std::string(what) + ", found a vector");
+        if (!std::isfinite(v.c[0])) fail(loc(at), std::string(what) + " is not a finite number");
+        return v.c[0];
+    }
+    Vec3 vector3(std::string_view what, bool allowScalar = false) {
+        const Token at = tok_;
+        const Value v = expr();
+        if (v.isScalar() && allowScalar) return Vec3(v.c[0]);
+        if (v.n != 3)
+            fail(loc(at), "expected a 3-component vector for " + std::string(what) + ", found " +
+                              (v.isScalar() ? std::string("a number") : std::to_string(v.n) + " components"));
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(v.c[i])) fail(loc(at), std::string(what) + " has a non-finite component");
+        return {v.c[0], v.c[1], v.c[2]};
+    }
+
+    // ---- colours -------------------------------------------------------------------------------
+    // `color` / `colour` is optional; then rgb / rgbf / rgbt / rgbft and a vector (or a bare vector).
+    void colorSpec(Material& m) {
+        if (isIdent("color") || isIdent("colour")) advance();
+        int want = 3;
+        bool hasFilter = false, hasTransmit = false;
+        const Token kw = tok_;
+        if (isIdent("rgb")) {
+            advance();
+        } else if (isIdent("rgbf")) {
+            want = 4;
+            hasFilter = true;
+            advance();
+        } else if (isIdent("rgbt")) {
+            want = 4;
+            hasTransmit = true;
+            advance();
+        } else if (isIdent("rgbft")) {
+            want = 5;
+            hasFilter = hasTransmit = true;
+            advance();
+        } else if (!isSymbol('<')) {
+            error("expected a colour (rgb, rgbf, rgbt, rgbft or <r, g, b>), found " + describe(tok_));
+        }
+        const Token at = tok_;
+        const Value v = expr();
+        Vec3 rgb;
+        double f = 0;
+        if (v.isScalar()) {
+            if (want != 3) fail(loc(at), "expected a " + std::to_string(want) + "-component colour");
+            rgb = Vec3(v.c[0]);
+        } else if (want == 3 && v.n == 4) {
+            rgb = {v.c[0], v.c[1], v.c[2]};  // 4-component rgb means rgbf (seen in course scenes)
+            f = v.c[3];
+        } else if (v.n != want) {
+            fail(loc(at), "expected a " + std::to_string(want) + "-component colour, found " +
+                              std::to_string(v.n) + " components");
+        } else {
+            rgb = {v.c[0], v.c[1], v.c[2]};
+            if (hasFilter) f = v.c[3];
+            if (hasTransmit) {
+                warn(loc(kw), "transmit is treated as filter by Rays");
+                f += v.c[want - 1];
+            }
+        }
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(rgb[i])) fail(loc(at), "colour has a non-finite component");
+        if (!std::isfinite(f) || f < 0 || f > 1) fail(loc(at), "filter must be between 0 and 1");
+        m.color = rgb;
+        m.filter = f;
+    }
+    Vec3 lightColor() {
+        Material m;
+        colorSpec(m);
+        return m.color;
+    }
+
+    // ---- blocks -----------------------------------------------------------------------------------
+    // Calls item() for each entry of a { } block until the closing brace.
+    template <class F>
+    void block(const Token& owner, F&& item) {
+        const Token open = tok_;
+        expectSymbol('{', "after '" + std::string(owner.text) + "'");
+        for (;;) {
+            if (isSymbol('}')) {
+                advance();
+                return;
+            }
+            if (tok_.kind == TokenKind::End)
+                fail(loc(open), "'{' of '" + std::string(owner.text) + "' is never closed (end of file reached)");
+            item();
+        }
+    }
+    [[noreturn]] void unknown(std::string_view where) {
+        if (tok_.kind == TokenKind::Identifier)
+            error("unknown keyword " + describe(tok_) + " in " + std::string(where));
+        error("unexpected " + describe(tok_) + " in " + std::string(where));
+    }
+    bool unsupportedHere() {
+        if (tok_.kind == TokenKind::Identifier && povrayKeywords().count(tok_.text)) {
+            skipUnsupported();
+            return true;
+        }
+        return false;
+    }
+
+    void topLevel() {
+        const Token t = tok_;
+        if (t.kind == TokenKind::Identifier) {
+            if (t.text == "camera") return camera();
+            if (t.text == "light_source") return light();
+            if (t.text == "sphere" || t.text == "plane" || t.text == "triangle" || t.text == "box" ||
+                t.text == "cone")
+                return object();
+            if (unsupportedHere()) return;
+            error("unknown keyword " + describe(t));
+        }
+        if (isSymbol('#')) return directive();
+        if (isSymbol('}')) error("unbalanced '}': no block is open");
+        error("unexpected " + describe(t));
+    }
+
+    void directive() {
+        const Token hash = tok_;
+        advance();
+        if (tok_.kind != TokenKind::Identifier) error("expected a directive name after '#'");
+        const Token name = tok_;
+        if (name.text == "include") {
+            advance();
+            if (tok_.kind != TokenKind::String) error("expected a file name string after #include");
+            warn(loc(hash), "#include is not supported by Rays yet; \"" + std::string(tok_.text) + "\" ignored");
+            advance();
+            return;
+        }
+        if (name.text == "version" || name.text == "declare" || name.text == "local" || name.text == "default") {
+            warnUnsupported(name);
+            advance();
+            // Skip to the terminating ';' (or past a braced object declaration).
+            int depth = 0;
+            for (;;) {
+                if (tok_.kind == TokenKind::End) {
+                    if (depth > 0) fail(loc(hash), "'#" + std::string(name.text) + "' is never closed");
+                    return;
+                }
+                if (isSymbol('{')) ++depth;
+                if (isSymbol('}')) {
+                    if (--depth == 0) {
+                        advance();
+                        if (isSymbol(';')) advance();
+                        return;
+                    }
+                }
+                if (depth == 0 && isSymbol(';')) {
+                    advance();
+                    return;
+                }
+                advance();
+            }
+        }
+        fail(loc(hash), "unsupported directive '#" + std::string(name.text) + "'");
+    }
+
+    void camera() {
+        const Token kw = tok_;
+        advance();
+        Camera c;
+        block(kw, [&] {
+            if (isIdent("location")) { advance(); c.location = vector3("location"); }
+            else if (isIdent("up")) { advance(); c.up = vector3("up"); }
+            else if (isIdent("right")) { advance(); c.right = vector3("right"); }
+            else if (isIdent("look_at")) { advance(); c.lookAt = vector3("look_at"); }
+            else if (!unsupportedHere()) unknown("camera");
+        });
+        const SourceLoc at = loc(kw);
+        if (length(c.up) == 0) fail(at, "camera 'up' vector is zero");
+        if (length(c.right) == 0) fail(at, "camera 'right' vector is zero");
+        if (length(c.lookAt - c.location) == 0) fail(at, "camera 'look_at' equals its 'location'");
+        const Vec3 l = c.forward();
+        if (length(cross(normalize(c.up), l)) < 1e-9) fail(at, "camera 'up' is parallel to the view direction");
+        if (length(cross(normalize(c.right), l)) < 1e-9)
+            fail(at, "camera 'right' is parallel to the view direction");
+        scene_.cameras.push_back(c);
+    }
+
+    void light() {
+        const Token kw = tok_;
+        advance();
+        PointLight L;
+        bool first = true;
+        block(kw, [&] {
+            if (first) {
+                first = false;
+                L.position = vector3("light position");
+                skipCommas();
+                return;
+            }
+            if (isIdent("color") || isIdent("colour") || isIdent("rgb") || isIdent("rgbf") ||
+                isIdent("rgbt") || isIdent("rgbft")) {
+                L.color = lightColor();
+            } else if (isSymbol(',')) {
+                advance();
+            } else if (!unsupportedHere()) {
+                unknown("light_source");
+            }
+        });
+        scene_.lights.push_back(L);
+    }
+
+    void pigment(Material& m) {
+        const Token kw = tok_;
+        advance();
+        block(kw, [&] {
+            if (isIdent("color") || isIdent("colour") || isIdent("rgb") || isIdent("rgbf") ||
+                isIdent("rgbt") || isIdent("rgbft") || isSymbol('<'))
+                colorSpec(m);
+            else if (!unsupportedHere()) unknown("pigment");
+        });
+    }
+
+    void finish(Material& m) {
+        const Token kw = tok_;
+        advance();
+        block(kw, [&] {
+            if (isSymbol(',')) { advance(); return; }
+            const Token item = tok_;
+            auto value = [&](double& dst, bool& seen, double lo, double hi, const char* rule) {
+                advance();
+                if (isIdent("rgb") || isIdent("color") || isIdent("colour")) {
+                    Material tmp;
+                    colorSpec(tmp);
+                    dst = tmp.color.x;
+                    warn(loc(item), "a colour for '" + std::string(item.text) + "' uses its red component");
+                } else {
+                    const Token at = tok_;
+                    const Value v = expr();
+                    dst = v.c[0];
+                    if (!std::isfinite(dst)) fail(loc(at), std::string(item.text) + " is not a finite number");
+                    if (!(dst >= lo && dst <= hi)) fail(loc(at), std::string(item.text) + " " + rule);
+                }
+                seen = true;
+            };
+            bool dummy = false;
+            if (isIdent("ambient")) value(m.ambient, dummy, -1e30, 1e30, "");
+            else if (isIdent("diffuse")) value(m.diffuse, dummy, -1e30, 1e30, "");
+            else if (isIdent("specular")) value(m.specular, m.hasSpecular, -1e30, 1e30, "");
+            else if (isIdent("roughness")) {
+                value(m.roughness, m.hasRoughness, -1e30, 1e30, "");
+                if (m.roughness <= 0) fail(loc(item), "roughness must be greater than 0");
+            } else if (isIdent("reflection")) value(m.reflection, m.hasReflection, 0, 1, "must be between 0 and 1");
+            else if (isIdent("refraction")) value(m.refraction, m.hasRefraction, -1e30, 1e30, "");
+            else if (isIdent("ior")) {
+                value(m.ior, m.hasIor, -1e30, 1e30, "");
+                if (m.ior <= 0) fail(loc(item), "ior must be greater than 0");
+            } else if (isIdent("metallic")) {
+                // POV-Ray allows a bare `metallic` meaning 1.
+                if (startsExpression(1)) value(m.metallic, m.hasMetallic, 0, 1, "must be between 0 and 1");
+                else { advance(); m.metallic = 1; m.hasMetallic = true; }
+            } else if (!unsupportedHere()) unknown("finish");
+        });
+    }
+    // True when the token after the current one (offset 1) starts a number expression.
+    bool startsExpression(int) {
+        // Look ahead by copying the lexer state.
+        Lexer copy = lex_;
+        const Token n = copy.next();
+        return n.kind == TokenKind::Number || (n.kind == TokenKind::Symbol && (n.text == "-" || n.text == "+" || n.text == "(" || n.text == "<"));
+    }
+
+    void interior(Material& m) {
+        const Token kw = tok_;
+        advance();
+        block(kw, [&] {
+            if (isIdent("ior")) {
+                const Token item = tok_;
+                advance();
+                m.ior = number("ior");
+                m.hasIor = true;
+                if (m.ior <= 0) fail(loc(item), "ior must be greater than 0");
+            } else if (!unsupportedHere()) unknown("interior");
+        });
+    }
+
+    void texture(Material& m) {
+        const Token kw = tok_;
+        advance();
+        block(kw, [&] {
+            if (isIdent("pigment")) pigment(m);
+            else if (isIdent("finish")) finish(m);
+            else if (!unsupportedHere()) unknown("texture");
+        });
+    }
+
+    Transform rotation(Vec3 deg) const {
+        return opt_.rotation == RotationOrder::Course ? Transform::rotateCourse(deg) : Transform::rotatePovray(deg);
+    }
+
+    // Object modifiers; returns false when the current token is not one.
+    bool modifier(Object& o, Transform& m) {
+        const Token t = tok_;
+        if (isIdent("pigment")) { pigment(o.material); return true; }
+        if (isIdent("finish")) { finish(o.material); return true; }
+        if (isIdent("interior")) { interior(o.material); return true; }
+        if (isIdent("texture")) { texture(o.material); return true; }
+        if (isIdent("scale")) {
+            advance();
+            const Vec3 s = vector3("scale", true);
+            if (s.x == 0 || s.y == 0 || s.z == 0) fail(loc(t), "scale has a zero component");
+            m = Transform::scale(s) * m;
+            return true;
+        }
+        if (isIdent("rotate")) {
+            advance();
+            m = rotation(vector3("rotate")) * m;
+            return true;
+        }
+        if (isIdent("translate")) {
+            advance();
+            m = Transform::translate(vector3("translate", true)) * m;
+            return true;
+        }
+        if (isIdent("matrix")) {
+            advance();
+            const Token at = tok_;
+            const Value v = matrixValue();
+            Transform x;
+            for (int col = 0; col < 4; ++col)
+                for (int row = 0; row < 3; ++row) x.m[row][col] = v12_[col * 3 + row];
+            if (std::fabs(x.determinant()) < 1e-300) fail(loc(at), "matrix is singular");
+            (void)v;
+            m = x * m;
+            return true;
+        }
+        return false;
+    }
+    // matrix <12 numbers>: read into v12_ (POV-Ray's row layout: 4 rows of 3).
+    Value matrixValue() {
+        const Token open = tok_;
+        expectSymbol('<', "to start the 12 matrix values");
+        for (int i = 0; i < 12; ++i) {
+            v12_[i] = number("matrix value");
+            if (i < 11) expectSymbol(',', "between matrix values");
+        }
+        if (!isSymbol('>')) fail(loc(open), "matrix needs exactly 12 values");
+        advance();
+        return Value{};
+    }
+
+    void object() {
+        const Token kw = tok_;
+        advance();
+        Object o;
+        o.line = kw.line;
+        o.col = kw.col;
+        Transform m;
+        const std::string name(kw.text);
+        const Token open = tok_;
+        expectSymbol('{', "after '" + name + "'");
+        auto arg = [&] { skipCommas(); };
+        Token at = tok_;
+        if (name == "sphere") {
+            o.type = ShapeType::Sphere;
+            o.p0 = vector3("sphere centre");
+            arg();
+            at = tok_;
+            o.r0 = number("sphere radius");
+            if (o.r0 <= 0) fail(loc(at), "sphere radius must be greater than 0");
+        } else if (name == "plane") {
+            o.type = ShapeType::Plane;
+            const Vec3 n = vector3("plane normal");
+            if (length(n) == 0) fail(loc(at), "plane normal has zero length");
+            o.p0 = normalize(n);
+            arg();
+            o.r0 = number("plane distance");
+        } else if (name == "triangle") {
+            o.type = ShapeType::Triangle;
+            o.p0 = vector3("triangle vertex");
+            arg();
+            o.p1 = vector3("triangle vertex");
+            arg();
+            o.p2 = vector3("triangle vertex");
+            if (length(cross(o.p1 - o.p0, o.p2 - o.p0)) == 0)
+                warn(loc(kw), "degenerate triangle (zero area) can never be hit");
+        } else if (name == "box") {
+            o.type = ShapeType::Box;
+            const Vec3 a = vector3("box corner");
+            arg();
+            const Vec3 b = vector3("box corner");
+            o.p0 = vmin(a, b);
+            o.p1 = vmax(a, b);
+        } else {
+            o.type = ShapeType::Cone;
+            o.p0 = vector3("cone base");
+            arg();
+            at = tok_;
+            o.r0 = number("cone base radius");
+            if (o.r0 < 0) fail(loc(at), "cone base radius must not be negative");
+            arg();
+            o.p1 = vector3("cone cap");
+            arg();
+            at = tok_;
+            o.r1 = number("cone cap radius");
+            if (o.r1 < 0) fail(loc(at), "cone cap radius must not be negative");
+            if (o.r0 == 0 && o.r1 == 0) fail(loc(at), "cone radii are both zero");
+            if (length(o.p1 - o.p0) == 0) fail(loc(kw), "cone base and cap are the same point");
+        }
+        for (;;) {
+            skipCommas();
+            if (isSymbol('}')) {
+                advance();
+                break;
+            }
+            if (tok_.kind == TokenKind::End) fail(loc(open), "'{' of '" + name + "' is never closed (end of file reached)");
+            if (!modifier(o, m) && !unsupportedHere()) unknown(name);
+        }
+        if (!m.isIdentity()) {
+            o.transformed = true;
+            o.toWorld = m;
+            o.toObject = m.inverse();
+        }
+        prepareObject(o);
+        scene_.objects.push_back(std::move(o));
+    }
+
+    Lexer lex_;
+    const ParseOptions& opt_;
+    Token tok_;
+    Scene scene_;
+    std::map<std::string, int> warnedCount_;
+    double v12_[12] = {};
+};
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& fileName, const ParseOptions& options) {
+    return Parser(text, fileName, options).run();
+}
+
+Scene loadScene(const std::string& path, const ParseOptions& options) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) failFile(path, "cannot open scene file");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) failFile(path, "cannot read scene file");
+    return parseScene(ss.str(), path, options);
+}
+
+}  // namespace rays

@@ -1,0 +1,27 @@
+// The course's debugging commands (sceneinfo, pixelray, firsthit, pixelcolor, printrays), printing
+// exactly the course reference's text: numbers fixed with 4 decimals, colours as round(c·255).
+#pragma once
+#include <ostream>
+
+#include "rays/accel/bvh.h"
+#include "rays/render/settings.h"
+#include "rays/scene/scene.h"
+
+namespace rays {
+
+/// Camera, lights and objects with their materials.
+void printSceneInfo(std::ostream& out, const Scene& scene);
+
+/// "Pixel: [x, y] Ray: {origin} -> {direction}" for pixel (x, y), y counted up from the bottom.
+void printPixelRay(std::ostream& out, const Scene& scene, const RenderSettings& s, int x, int y);
+
+/// The pixel ray plus t, object type and pigment colour of the first hit (or "No Hit").
+void printFirstHit(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y);
+
+/// The first hit plus the shading model and the shaded colour.
+void printPixelColor(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y);
+
+/// The whole ray tree of the pixel's centre ray with per-term contributions.
+void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y);
+
+}  // namespace rays

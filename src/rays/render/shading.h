@@ -1,0 +1,28 @@
+// Local reflection models evaluated for one light: the course's Blinn-Phong and Cook-Torrance.
+#pragma once
+#include "rays/math/vec3.h"
+#include "rays/scene/material.h"
+
+namespace rays {
+
+/// Diffuse and specular radiance from one unoccluded light.
+struct LightTerms {
+    Vec3 diffuse;
+    Vec3 specular;
+};
+
+/// Course Blinn-Phong: diffuse = Lc·kd·C·max(0, N·L); specular = Lc·ks·C·(N·H)^(2/roughness² − 2).
+/// N faces the viewer; L and V are unit vectors from the surface to the light and viewer.
+/// Diffuse is zero when N·L ≤ 0; the specular lobe is not gated by N·L (the course reference
+/// renderer's behaviour, visible on its pbr_grid image).
+LightTerms blinnPhong(const Material& m, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor);
+
+/// Course Cook-Torrance: Lambert diffuse plus ks·C·Lc·D·G·F / (4·max(1/16, |N·V|)) with GGX D
+/// (α = roughness²), Smith-GGX G and Schlick F on V·H from the finish ior (blended toward 1 by
+/// metallic, which also removes the diffuse term). Zero when N·L ≤ 0.
+LightTerms cookTorrance(const Material& m, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor);
+
+/// Schlick's approximation with F0 = ((ior − 1)/(ior + 1))², cosTheta = |N·V|.
+double schlickFresnel(double ior, double cosTheta);
+
+}  // namespace rays

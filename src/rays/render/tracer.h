@@ -1,0 +1,67 @@
+// Whitted-style recursive ray tracer following the course conventions: local shading with hard
+// shadows, mirror reflection, refraction with optional Schlick Fresnel and Beer's law.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "rays/accel/bvh.h"
+#include "rays/render/settings.h"
+#include "rays/scene/scene.h"
+
+namespace rays {
+
+/// One node of the ray tree, as printed by `printrays`.
+struct TraceRecord {
+    enum class Kind { Primary, Reflection, Refraction };
+    Kind kind = Kind::Primary;
+    Ray ray;
+    bool hit = false;
+    int object = -1;            ///< index into scene.objects
+    double t = 0;
+    Vec3 point, normal;         ///< normal: outward geometric normal
+    Ray objectRay;              ///< the ray in object space (meaningful when the object is transformed)
+    Vec3 color;                 ///< final colour of this node
+    Vec3 ambient, diffuse, specular, reflection, refraction;  ///< weighted contributions
+    double wLocal = 0, wReflection = 0, wTransmission = 0;
+    bool intoObject = false;    ///< refraction records: the ray travels inside an object
+};
+
+/// Per-thread counters.
+struct TraceStats {
+    uint64_t primaryRays = 0, secondaryRays = 0, shadowRays = 0;
+    void add(const TraceStats& o) {
+        primaryRays += o.primaryRays;
+        secondaryRays += o.secondaryRays;
+        shadowRays += o.shadowRays;
+    }
+    uint64_t total() const { return primaryRays + secondaryRays + shadowRays; }
+};
+
+class Tracer {
+public:
+    Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings)
+        : scene_(scene), bvh_(bvh), settings_(settings) {}
+
+    /// Colour seen along a primary ray. When log is non-null the ray tree is appended to it in
+    /// depth-first order (each node before its children).
+    Vec3 tracePrimary(const Ray& ray, TraceStats& stats, std::vector<TraceRecord>* log = nullptr) const;
+
+    /// Nearest hit along ray (t > small epsilon).
+    Hit firstHit(const Ray& ray) const;
+
+private:
+    struct Result {
+        Vec3 color;
+        double t = kInfinity;  ///< distance to the hit (for Beer's law)
+    };
+    Result trace(const Ray& ray, int depth, TraceRecord::Kind kind, bool inside, TraceStats& stats,
+                 std::vector<TraceRecord>* log) const;
+    void localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceStats& stats, Vec3& diffuse,
+                      Vec3& specular) const;
+
+    const Scene& scene_;
+    const Bvh& bvh_;
+    const RenderSettings& settings_;
+};
+
+}  // namespace rays

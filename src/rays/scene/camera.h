@@ -1,0 +1,30 @@
+// Pinhole camera in the course convention (right handed; right/up used exactly as written).
+#pragma once
+#include "rays/geometry/ray.h"
+#include "rays/math/vec3.h"
+
+namespace rays {
+
+struct Camera {
+    Vec3 location{0, 0, 0};
+    Vec3 up{0, 1, 0};         ///< image-plane vertical extent (not normalised)
+    Vec3 right{1.33333, 0, 0};///< image-plane horizontal extent; |right|/|up| is the aspect ratio
+    Vec3 lookAt{0, 0, -1};
+
+    /// Unit view direction l = normalize(look_at − location).
+    Vec3 forward() const { return normalize(lookAt - location); }
+
+    /// Ray through image-plane coordinates (u, v) in [−½, ½]², v up:
+    /// direction = normalize(u·right + v·up + l).
+    Ray rayAt(double u, double v) const {
+        return Ray{location, normalize(u * right + v * up + forward())};
+    }
+
+    /// Ray through the centre of sub-pixel position (px, py) in pixel units, py counted up from the
+    /// bottom row: u = px/W − ½, v = py/H − ½.
+    Ray rayThrough(double px, double py, int width, int height) const {
+        return rayAt(px / width - 0.5, py / height - 0.5);
+    }
+};
+
+}  // namespace rays

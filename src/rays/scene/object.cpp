@@ -1,0 +1,250 @@
+#include "rays/scene/object.h"
+
+#include <cmath>
+
+namespace rays {
+
+std::string_view shapeName(ShapeType t) {
+    switch (t) {
+        case ShapeType::Sphere: return "Sphere";
+        case ShapeType::Plane: return "Plane";
+        case ShapeType::Triangle: return "Triangle";
+        case ShapeType::Box: return "Box";
+        case ShapeType::Cone: return "Cone";
+    }
+    return "Object";
+}
+
+namespace {
+
+// Chooses the nearest of two sorted roots inside (tMin, tMax).
+bool pickRoot(double t0, double t1, double tMin, double tMax, double& t) {
+    if (t0 > tMin && t0 < tMax) { t = t0; return true; }
+    if (t1 > tMin && t1 < tMax) { t = t1; return true; }
+    return false;
+}
+
+bool hitSphere(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    const Vec3 oc = r.origin - o.p0;
+    const double a = dot(r.dir, r.dir);
+    const double b = dot(oc, r.dir);
+    const double c = dot(oc, oc) - o.r0 * o.r0;
+    const double disc = b * b - a * c;
+    if (disc < 0) return false;
+    const double sq = std::sqrt(disc);
+    if (!pickRoot((-b - sq) / a, (-b + sq) / a, tMin, tMax, h.t)) return false;
+    h.normal = (r.at(h.t) - o.p0) / o.r0;
+    return true;
+}
+
+bool hitPlane(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    const double denom = dot(o.p0, r.dir);
+    if (denom == 0) return false;
+    const double t = (o.r0 - dot(o.p0, r.origin)) / denom;
+    if (!(t > tMin && t < tMax)) return false;
+    h.t = t;
+    h.normal = o.p0;
+    return true;
+}
+
+// Möller–Trumbore (1997).
+bool hitTriangle(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    const Vec3 e1 = o.p1 - o.p0, e2 = o.p2 - o.p0;
+    const Vec3 pv = cross(r.dir, e2);
+    const double det = dot(e1, pv);
+    if (det == 0) return false;
+    const double inv = 1.0 / det;
+    const Vec3 tv = r.origin - o.p0;
+    const double u = dot(tv, pv) * inv;
+    if (u < 0 || u > 1) return false;
+    const Vec3 qv = cross(tv, e1);
+    const double v = dot(r.dir, qv) * inv;
+    if (v < 0 || u + v > 1) return false;
+    const double t = dot(e2, qv) * inv;
+    if (!(t > tMin && t < tMax)) return false;
+    h.t = t;
+    h.geomNormal = normalize(cross(e1, e2));
+    if (o.smooth) {
+        Vec3 n = normalize((1 - u - v) * o.n0 + u * o.n1 + v * o.n2);
+        h.normal = dot(n, h.geomNormal) < 0 ? -n : n;
+    } else {
+        h.normal = h.geomNormal;
+    }
+    return true;
+}
+
+// Slab test (Kay & Kajiya 1986), remembering which face was crossed.
+bool hitBox(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    double tNear = -kInfinity, tFar = kInfinity;
+    int nearAxis = 0, farAxis = 0;
+    double nearSign = 0, farSign = 0;
+    for (int a = 0; a < 3; ++a) {
+        const double d = r.dir[a];
+        if (d == 0) {
+            if (r.origin[a] < o.p0[a] || r.origin[a] > o.p1[a]) return false;
+            continue;
+        }
+        double t0 = (o.p0[a] - r.origin[a]) / d;
+        double t1 = (o.p1[a] - r.origin[a]) / d;
+        double s0 = -1, s1 = 1;  // outward normal sign of the face at t0 / t1
+        if (t0 > t1) {
+            std::swap(t0, t1);
+            std::swap(s0, s1);
+        }
+        if (t0 > tNear) { tNear = t0; nearAxis = a; nearSign = s0; }
+        if (t1 < tFar) { tFar = t1; farAxis = a; farSign = s1; }
+        if (tNear > tFar) return false;
+    }
+    Vec3 n;
+    if (tNear > tMin && tNear < tMax) {
+        h.t = tNear;
+        n[nearAxis] = nearSign;
+    } else if (tFar > tMin && tFar < tMax) {
+        h.t = tFar;
+        n[farAxis] = farSign;
+    } else {
+        return false;
+    }
+    h.normal = n;
+    return true;
+}
+
+// Cone in its canonical frame: axis z ∈ [0, h], radius r0 + k·z with k = (r1 − r0)/h; closed by caps.
+bool hitCone(const Object& o, const Ray& wr, double tMin, double tMax, ShapeHit& h) {
+    const Ray r{o.coneFrame.point(wr.origin), o.coneFrame.vector(wr.dir)};
+    const double height = o.p2.x, k = o.p2.y;
+    double best = tMax;
+    Vec3 bestN;
+    bool found = false;
+    auto consider = [&](double t, Vec3 n) {
+        if (t > tMin && t < best) {
+            best = t;
+            bestN = n;
+            found = true;
+        }
+    };
+    // Side: x² + y² = (r0 + k z)².
+    const Vec3 O = r.origin, D = r.dir;
+    const double rz = o.r0 + k * O.z;
+    const double A = D.x * D.x + D.y * D.y - k * k * D.z * D.z;
+    const double B = 2 * (O.x * D.x + O.y * D.y - rz * k * D.z);
+    const double C = O.x * O.x + O.y * O.y - rz * rz;
+    auto side = [&](double t) {
+        const Vec3 p = r.at(t);
+        if (p.z < 0 || p.z > height) return;
+        const double rad = o.r0 + k * p.z;
+        if (rad < 0) return;
+        consider(t, Vec3{p.x, p.y, -rad * k});
+    };
+    if (std::fabs(A) > 1e-14) {
+        const double disc = B * B - 4 * A * C;
+        if (disc >= 0) {
+            const double sq = std::sqrt(disc);
+            side((-B - sq) / (2 * A));
+            side((-B + sq) / (2 * A));
+        }
+    } else if (B != 0) {
+        side(-C / B);
+    }
+    // Caps.
+    if (D.z != 0) {
+        const double capR[2] = {o.r0, o.r1};
+        const double capZ[2] = {0, height};
+        for (int i = 0; i < 2; ++i) {
+            const double t = (capZ[i] - O.z) / D.z;
+            const Vec3 p = r.at(t);
+            if (p.x * p.x + p.y * p.y <= capR[i] * capR[i]) consider(t, Vec3{0, 0, i == 0 ? -1.0 : 1.0});
+        }
+    }
+    if (!found) return false;
+    h.t = best;
+    // The frame is rigid, so its transpose maps canonical normals back to object space.
+    h.normal = normalize(o.coneFrame.transposedVector(bestN));
+    return true;
+}
+
+bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    bool found = false;
+    switch (o.type) {
+        case ShapeType::Sphere: found = hitSphere(o, r, tMin, tMax, h); break;
+        case ShapeType::Plane: found = hitPlane(o, r, tMin, tMax, h); break;
+        case ShapeType::Triangle: return hitTriangle(o, r, tMin, tMax, h);
+        case ShapeType::Box: found = hitBox(o, r, tMin, tMax, h); break;
+        case ShapeType::Cone: found = hitCone(o, r, tMin, tMax, h); break;
+    }
+    if (found) h.geomNormal = h.normal;
+    return found;
+}
+
+Bounds localBounds(const Object& o) {
+    Bounds b;
+    switch (o.type) {
+        case ShapeType::Sphere:
+            b.extend(o.p0 - Vec3(o.r0));
+            b.extend(o.p0 + Vec3(o.r0));
+            break;
+        case ShapeType::Plane: break;
+        case ShapeType::Triangle:
+            b.extend(o.p0);
+            b.extend(o.p1);
+            b.extend(o.p2);
+            break;
+        case ShapeType::Box:
+            b.extend(o.p0);
+            b.extend(o.p1);
+            break;
+        case ShapeType::Cone: {
+            const double r = std::max(o.r0, o.r1);
+            b.extend(o.p0 - Vec3(r));
+            b.extend(o.p0 + Vec3(r));
+            b.extend(o.p1 - Vec3(r));
+            b.extend(o.p1 + Vec3(r));
+            break;
+        }
+    }
+    return b;
+}
+
+}  // namespace
+
+void prepareObject(Object& o) {
+    if (o.type != ShapeType::Cone) return;
+    const Vec3 axis = o.p1 - o.p0;
+    const double height = length(axis);
+    const Vec3 w = axis / height;
+    const Vec3 helper = std::fabs(w.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 u = normalize(cross(helper, w));
+    const Vec3 v = cross(w, u);
+    // Canonical → object maps x, y, z to u, v, w at the base; coneFrame is its (rigid) inverse.
+    o.coneFrame = Transform::fromColumns(u, v, w, o.p0).inverse();
+    o.p2 = Vec3{height, (o.r1 - o.r0) / height, 0};
+}
+
+Bounds worldBounds(const Object& o) {
+    const Bounds lb = localBounds(o);
+    if (lb.empty() || !o.transformed) return lb;
+    Bounds wb;
+    for (int i = 0; i < 8; ++i) {
+        const Vec3 c{(i & 1) ? lb.hi.x : lb.lo.x, (i & 2) ? lb.hi.y : lb.lo.y, (i & 4) ? lb.hi.z : lb.lo.z};
+        wb.extend(o.toWorld.point(c));
+    }
+    return wb;
+}
+
+bool intersect(const Object& o, const Ray& worldRay, double tMin, double tMax, ShapeHit& hit) {
+    if (!o.transformed) return hitLocal(o, worldRay, tMin, tMax, hit);
+    const Ray local{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)};
+    if (!hitLocal(o, local, tMin, tMax, hit)) return false;
+    hit.normal = normalize(o.toObject.transposedVector(hit.normal));
+    hit.geomNormal = o.smooth ? normalize(o.toObject.transposedVector(hit.geomNormal)) : hit.normal;
+    return true;
+}
+
+bool occludes(const Object& o, const Ray& worldRay, double tMin, double tMax) {
+    ShapeHit h;
+    if (!o.transformed) return hitLocal(o, worldRay, tMin, tMax, h);
+    const Ray local{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)};
+    return hitLocal(o, local, tMin, tMax, h);
+}
+
+}  // namespace rays

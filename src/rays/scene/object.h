@@ -1,0 +1,55 @@
+// A scene object: one analytic shape in object space, an optional affine transform, a material.
+#pragma once
+#include <string_view>
+
+#include "rays/error.h"
+#include "rays/geometry/ray.h"
+#include "rays/math/transform.h"
+#include "rays/scene/material.h"
+
+namespace rays {
+
+enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone };
+
+/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone").
+std::string_view shapeName(ShapeType t);
+
+struct Object {
+    ShapeType type = ShapeType::Sphere;
+    // Shape parameters as written, in object space:
+    //   Sphere   p0 centre, r0 radius          Plane  p0 unit normal, r0 distance (n·x = d)
+    //   Triangle p0 p1 p2 vertices             Box    p0 min corner, p1 max corner
+    //   Cone     p0 base, r0 base radius, p1 cap, r1 cap radius (closed by flat caps)
+    Vec3 p0, p1, p2;
+    double r0 = 0, r1 = 0;
+    bool smooth = false;  ///< Triangle only: interpolate the vertex normals n0, n1, n2
+    Vec3 n0, n1, n2;
+    Material material;
+    bool transformed = false;
+    Transform toWorld;   ///< M (object → world), identity when !transformed
+    Transform toObject;  ///< M⁻¹
+    Transform coneFrame; ///< Cone only: object space → canonical cone (axis z ∈ [0, 1])
+    int line = 0, col = 0;  ///< where the object starts in the scene file
+};
+
+/// Computes derived data (cone frame) once the shape parameters are final.
+void prepareObject(Object& o);
+
+/// World-space bounds; empty for planes (unbounded).
+Bounds worldBounds(const Object& o);
+
+/// Object hit record: t along the ray, the outward world-space unit shading normal and the
+/// geometric normal (they differ only for smooth triangles; both on the same side).
+struct ShapeHit {
+    double t = kInfinity;
+    Vec3 normal;
+    Vec3 geomNormal;
+};
+
+/// Nearest hit of the world ray with t in (tMin, tMax); returns false when none.
+bool intersect(const Object& o, const Ray& worldRay, double tMin, double tMax, ShapeHit& hit);
+
+/// Same test without computing the normal (shadow rays).
+bool occludes(const Object& o, const Ray& worldRay, double tMin, double tMax);
+
+}  // namespace rays

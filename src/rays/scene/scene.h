@@ -1,0 +1,19 @@
+// Scene: everything a scene file describes. Built by the parser, then immutable while rendering.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "rays/scene/camera.h"
+#include "rays/scene/light.h"
+#include "rays/scene/object.h"
+
+namespace rays {
+
+struct Scene {
+    std::string fileName;
+    std::vector<Camera> cameras;  ///< the first is the default; later ones are alternatives
+    std::vector<PointLight> lights;
+    std::vector<Object> objects;  ///< course object ID = index + 1
+};
+
+}  // namespace rays
