@@ -51,6 +51,7 @@ public:
     Parser(const std::string& text, const std::string& file, const ParseOptions& opt)
         : lex_(text, file), opt_(opt) {
         scene_.fileName = file;
+        scene_.objects.reserve(text.size() / 256 + 16);  // about one object per 256 bytes in big files
         advance();
     }
 
@@ -290,13 +291,14 @@ private:
         } else if (want == 3 && v.n == 4) {
             rgb = {v.c[0], v.c[1], v.c[2]};  // 4-component rgb means rgbf (seen in course scenes)
             f = v.c[3];
-        } else if (v.n != want) {
+        } else if (v.n < 3 || v.n > want) {
             fail(loc(at), "expected a " + std::to_string(want) + "-component colour, found " +
                               std::to_string(v.n) + " components");
         } else {
+            // Missing filter / transmit components are 0, as in POV-Ray (`rgbf <1, 1, 1>` occurs).
             rgb = {v.c[0], v.c[1], v.c[2]};
             if (hasFilter) f = v.c[3];
-            if (hasTransmit) {
+            if (hasTransmit && v.c[want - 1] != 0) {
                 warn(loc(kw), "transmit is treated as filter by Rays");
                 f += v.c[want - 1];
             }
@@ -650,12 +652,7 @@ private:
             if (tok_.kind == TokenKind::End) fail(loc(open), "'{' of '" + name + "' is never closed (end of file reached)");
             if (!modifier(o, m) && !unsupportedHere()) unknown(name);
         }
-        if (!m.isIdentity()) {
-            o.transformed = true;
-            o.toWorld = m;
-            o.toObject = m.inverse();
-        }
-        prepareObject(o);
+        prepareObject(o, m);
         scene_.objects.push_back(std::move(o));
     }
 

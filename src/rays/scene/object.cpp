@@ -110,8 +110,7 @@ bool hitBox(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h
 }
 
 // Cone in its canonical frame: axis z ∈ [0, h], radius r0 + k·z with k = (r1 − r0)/h; closed by caps.
-bool hitCone(const Object& o, const Ray& wr, double tMin, double tMax, ShapeHit& h) {
-    const Ray r{o.coneFrame.point(wr.origin), o.coneFrame.vector(wr.dir)};
+bool hitCone(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     const double height = o.p2.x, k = o.p2.y;
     double best = tMax;
     Vec3 bestN;
@@ -158,8 +157,7 @@ bool hitCone(const Object& o, const Ray& wr, double tMin, double tMax, ShapeHit&
     }
     if (!found) return false;
     h.t = best;
-    // The frame is rigid, so its transpose maps canonical normals back to object space.
-    h.normal = normalize(o.coneFrame.transposedVector(bestN));
+    h.normal = bestN;  // canonical frame; intersect() maps it to world space
     return true;
 }
 
@@ -207,7 +205,9 @@ Bounds localBounds(const Object& o) {
 
 }  // namespace
 
-void prepareObject(Object& o) {
+void prepareObject(Object& o, const Transform& objectToWorld) {
+    o.transformed = !objectToWorld.isIdentity();
+    o.toObject = o.transformed ? objectToWorld.inverse() : Transform{};
     if (o.type != ShapeType::Cone) return;
     const Vec3 axis = o.p1 - o.p0;
     const double height = length(axis);
@@ -215,24 +215,40 @@ void prepareObject(Object& o) {
     const Vec3 helper = std::fabs(w.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
     const Vec3 u = normalize(cross(helper, w));
     const Vec3 v = cross(w, u);
-    // Canonical → object maps x, y, z to u, v, w at the base; coneFrame is its (rigid) inverse.
-    o.coneFrame = Transform::fromColumns(u, v, w, o.p0).inverse();
+    // Canonical → object maps x, y, z to u, v, w at the base; its (rigid) inverse follows M⁻¹.
+    o.toObject = Transform::fromColumns(u, v, w, o.p0).inverse() * o.toObject;
     o.p2 = Vec3{height, (o.r1 - o.r0) / height, 0};
 }
 
 Bounds worldBounds(const Object& o) {
-    const Bounds lb = localBounds(o);
-    if (lb.empty() || !o.transformed) return lb;
+    if (!o.transformed) return localBounds(o);
+    const Transform toWorld = o.toObject.inverse();
+    if (o.type == ShapeType::Sphere) {
+        // Exact box of an ellipsoid: half-extent along world axis i is r·|row i of M|.
+        const Vec3 c = toWorld.point(o.p0);
+        Vec3 half;
+        for (int i = 0; i < 3; ++i)
+            half[i] = o.r0 * std::sqrt(toWorld.m[i][0] * toWorld.m[i][0] + toWorld.m[i][1] * toWorld.m[i][1] +
+                                       toWorld.m[i][2] * toWorld.m[i][2]);
+        return Bounds{c - half, c + half};
+    }
+    // Cones: toObject includes the canonical frame, so the box is taken in that frame.
+    Bounds lb = localBounds(o);
+    if (o.type == ShapeType::Cone) {
+        const double r = std::max(o.r0, o.r1);
+        lb = Bounds{{-r, -r, 0}, {r, r, o.p2.x}};
+    }
+    if (lb.empty()) return lb;
     Bounds wb;
     for (int i = 0; i < 8; ++i) {
         const Vec3 c{(i & 1) ? lb.hi.x : lb.lo.x, (i & 2) ? lb.hi.y : lb.lo.y, (i & 4) ? lb.hi.z : lb.lo.z};
-        wb.extend(o.toWorld.point(c));
+        wb.extend(toWorld.point(c));
     }
     return wb;
 }
 
 bool intersect(const Object& o, const Ray& worldRay, double tMin, double tMax, ShapeHit& hit) {
-    if (!o.transformed) return hitLocal(o, worldRay, tMin, tMax, hit);
+    if (!usesLocalSpace(o)) return hitLocal(o, worldRay, tMin, tMax, hit);
     const Ray local{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)};
     if (!hitLocal(o, local, tMin, tMax, hit)) return false;
     hit.normal = normalize(o.toObject.transposedVector(hit.normal));
@@ -242,7 +258,7 @@ bool intersect(const Object& o, const Ray& worldRay, double tMin, double tMax, S
 
 bool occludes(const Object& o, const Ray& worldRay, double tMin, double tMax) {
     ShapeHit h;
-    if (!o.transformed) return hitLocal(o, worldRay, tMin, tMax, h);
+    if (!usesLocalSpace(o)) return hitLocal(o, worldRay, tMin, tMax, h);
     const Ray local{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)};
     return hitLocal(o, local, tMin, tMax, h);
 }

@@ -25,15 +25,19 @@ struct Object {
     bool smooth = false;  ///< Triangle only: interpolate the vertex normals n0, n1, n2
     Vec3 n0, n1, n2;
     Material material;
-    bool transformed = false;
-    Transform toWorld;   ///< M (object → world), identity when !transformed
-    Transform toObject;  ///< M⁻¹
-    Transform coneFrame; ///< Cone only: object space → canonical cone (axis z ∈ [0, 1])
+    bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
+    /// World → intersection space. M⁻¹ for transformed objects; for cones it also maps object space
+    /// to the canonical cone frame (axis along z from 0 to the height). Identity otherwise.
+    Transform toObject;
     int line = 0, col = 0;  ///< where the object starts in the scene file
 };
 
-/// Computes derived data (cone frame) once the shape parameters are final.
-void prepareObject(Object& o);
+/// Sets the transform from the file's M (object → world) and derives the intersection data
+/// (cone frame). Call once the shape parameters are final.
+void prepareObject(Object& o, const Transform& objectToWorld);
+
+/// True when rays must be mapped through toObject before intersecting.
+inline bool usesLocalSpace(const Object& o) { return o.transformed || o.type == ShapeType::Cone; }
 
 /// World-space bounds; empty for planes (unbounded).
 Bounds worldBounds(const Object& o);

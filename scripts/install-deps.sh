@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Rays needs to build and test, only when some are missing.
+set -euo pipefail
+packages=(cmake g++ make pkg-config libspng-dev libturbojpeg0-dev libstb-dev libtinyobjloader-dev
+          libcli11-dev libgtest-dev)
+if [ "${RAYS_BENCH_DEPS:-0}" = 1 ]; then
+  packages+=(libembree-dev libbenchmark-dev povray hyperfine)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}" >&2
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi

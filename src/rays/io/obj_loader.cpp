@@ -1,0 +1,296 @@
+// OBJ loading: a strict pre-scan of our own (tinyobjloader silently reads bad numbers as 0 and only warns,
+// without a usable line number, about out-of-range indices), then tinyobjloader for the actual parse.
+#include "rays/io/obj_loader.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <string_view>
+
+#include <tiny_obj_loader.h>
+
+#include "rays/error.h"
+
+namespace rays {
+namespace {
+
+std::string readWholeFile(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) failFile(path, std::string("cannot open OBJ file: ") + std::strerror(errno));
+    std::string text;
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) text.reserve(size_t(st.st_size));
+    char chunk[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, chunk, sizeof chunk);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            const int e = errno;
+            ::close(fd);
+            failFile(path, std::string("cannot read OBJ file: ") + std::strerror(e));
+        }
+        if (n == 0) break;
+        text.append(chunk, size_t(n));
+    }
+    ::close(fd);
+    return text;
+}
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+std::string quoted(std::string_view s) {
+    if (s.size() > 40) return "'" + std::string(s.substr(0, 40)) + "...'";
+    return "'" + std::string(s) + "'";
+}
+
+/// Validates the v/vn/vt/f lines of an OBJ text; throws Error "PATH:LINE:1: error: ..." at the first problem.
+/// Line numbering matches tinyobjloader's ("\n", "\r\n" and a lone "\r" each end a line).
+class PreScanner {
+public:
+    PreScanner(const std::string& path, std::string_view text) : path_(path), text_(text) {}
+
+    void run() {
+        const char* p = text_.data();
+        const char* const end = p + text_.size();
+        while (p < end) {
+            ++line_;
+            const char* e = p;
+            while (e < end && *e != '\n' && *e != '\r') ++e;
+            scanLine(p, e);
+            if (e == end) break;
+            p = (*e == '\r' && e + 1 < end && e[1] == '\n') ? e + 2 : e + 1;
+        }
+        for (const Pending& f : forward_) {
+            const int count = counts_[f.kind];
+            if (f.index > count) fail(f.line, outOfRange(f.kind, f.index, count, false));
+        }
+    }
+
+private:
+    enum Kind { V = 0, VT = 1, VN = 2 };
+    struct Pending {
+        int line, kind, index;
+    };
+
+    [[noreturn]] void fail(int line, const std::string& msg) const { rays::fail(SourceLoc{path_, line, 1}, msg); }
+
+    static std::string outOfRange(int kind, int index, int count, bool relative) {
+        static const char* const names[3] = {"vertex", "texture coordinate", "normal"};
+        return std::string(names[kind]) + " index " + std::to_string(index) + " is out of range (" +
+               std::to_string(count) + " " + names[kind] + (count == 1 ? "" : "s") +
+               (relative ? " defined before this line)" : " in the file)");
+    }
+
+    /// Next whitespace-separated field in [p, e), advancing p; empty at the end of the line.
+    static std::string_view nextField(const char*& p, const char* e) {
+        while (p < e && isBlank(*p)) ++p;
+        const char* b = p;
+        while (p < e && !isBlank(*p)) ++p;
+        return {b, size_t(p - b)};
+    }
+
+    void scanLine(const char* p, const char* e) {
+        const std::string_view key = nextField(p, e);
+        if (key == "v")
+            scanNumbers(p, e, "v", 3, 7), ++counts_[V];
+        else if (key == "vt")
+            scanNumbers(p, e, "vt", 1, 3), ++counts_[VT];
+        else if (key == "vn")
+            scanNumbers(p, e, "vn", 3, 3), ++counts_[VN];
+        else if (key == "f")
+            scanFace(p, e);
+    }
+
+    void scanNumbers(const char* p, const char* e, const char* key, int minCount, int maxCount) {
+        int n = 0;
+        for (;;) {
+            std::string_view f = nextField(p, e);
+            if (f.empty() || f[0] == '#') break;
+            const std::string_view orig = f;
+            if (f.size() > 1 && f[0] == '+') f.remove_prefix(1);
+            double value = 0;
+            const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), value);
+            if (ec != std::errc() || ptr != f.data() + f.size() || !std::isfinite(value))
+                fail(line_, std::string("invalid number ") + quoted(orig) + " in '" + key + "' line");
+            ++n;
+        }
+        if (n < minCount || n > maxCount) {
+            const std::string expected = minCount == maxCount ? std::to_string(minCount)
+                                                              : std::to_string(minCount) + " to " +
+                                                                    std::to_string(maxCount);
+            fail(line_, std::string("'") + key + "' line needs " + expected + " numbers, got " +
+                            std::to_string(n));
+        }
+    }
+
+    void scanFace(const char* p, const char* e) {
+        int corners = 0;
+        for (;;) {
+            const std::string_view f = nextField(p, e);
+            if (f.empty()) break;
+            if (f[0] == '#') fail(line_, "comment after a face is not supported (put it on its own line)");
+            // i, i/j, i//k or i/j/k
+            std::string_view parts[3];
+            int nparts = 0;
+            size_t start = 0;
+            for (;;) {
+                const size_t slash = f.find('/', start);
+                if (nparts == 3) fail(line_, "invalid face vertex " + quoted(f) + " (too many '/')");
+                parts[nparts++] = f.substr(start, slash == std::string_view::npos ? slash : slash - start);
+                if (slash == std::string_view::npos) break;
+                start = slash + 1;
+            }
+            static const int kinds[3] = {V, VT, VN};
+            for (int i = 0; i < nparts; ++i) {
+                if (parts[i].empty()) {
+                    if (i == 1 && nparts == 3) continue;  // i//k
+                    fail(line_, "invalid face vertex " + quoted(f) + " (missing index)");
+                }
+                checkIndex(parts[i], kinds[i], f);
+            }
+            ++corners;
+        }
+        if (corners < 3) fail(line_, "face needs at least 3 vertices, got " + std::to_string(corners));
+    }
+
+    void checkIndex(std::string_view s, int kind, std::string_view field) {
+        if (s.size() > 1 && s[0] == '+') s.remove_prefix(1);
+        int index = 0;
+        const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), index);
+        if (ec != std::errc() || ptr != s.data() + s.size())
+            fail(line_, "invalid face vertex " + quoted(field) + " (index " + quoted(s) + " is not an integer)");
+        if (index == 0) fail(line_, "invalid face vertex " + quoted(field) + " (indices start at 1, not 0)");
+        const int count = counts_[kind];
+        if (index < 0) {
+            if (-index > count) fail(line_, outOfRange(kind, index, count, true));
+        } else if (index > count) {
+            forward_.push_back({line_, kind, index});  // legal if defined further down; checked at the end
+        }
+    }
+
+    const std::string& path_;
+    std::string_view text_;
+    int line_ = 0;
+    int counts_[3] = {0, 0, 0};
+    std::vector<Pending> forward_;
+};
+
+/// The line number in a tinyobjloader message ("... line 12.)", "line: 12"), or 0.
+int lineFromMessage(const std::string& msg) {
+    for (size_t pos = msg.find("line"); pos != std::string::npos; pos = msg.find("line", pos + 4)) {
+        size_t i = pos + 4;
+        while (i < msg.size() && (msg[i] == ' ' || msg[i] == ':')) ++i;
+        int n = 0;
+        bool digits = false;
+        while (i < msg.size() && msg[i] >= '0' && msg[i] <= '9' && n < 100000000) {
+            n = n * 10 + (msg[i++] - '0');
+            digits = true;
+        }
+        if (digits && n > 0) return n;
+    }
+    return 0;
+}
+
+/// Non-empty lines of a tinyobjloader message, trimmed.
+std::vector<std::string> messageLines(const std::string& msg) {
+    std::vector<std::string> out;
+    size_t b = 0;
+    while (b < msg.size()) {
+        size_t e = msg.find('\n', b);
+        if (e == std::string::npos) e = msg.size();
+        size_t s = b, t = e;
+        while (s < t && isBlank(msg[s])) ++s;
+        while (t > s && isBlank(msg[t - 1])) --t;
+        if (t > s) out.emplace_back(msg, s, t - s);
+        b = e + 1;
+    }
+    return out;
+}
+
+}  // namespace
+
+ObjMesh loadObj(const std::string& path) {
+    {
+        const std::string text = readWholeFile(path);
+        PreScanner(path, text).run();
+    }
+
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    const bool ok = reader.ParseFromFile(path, config);  // MTL searched in the OBJ's folder
+    for (const std::string& w : messageLines(reader.Warning())) std::cerr << path << ": warning: " << w << "\n";
+    if (!ok) {
+        const std::vector<std::string> lines = messageLines(reader.Error());
+        std::string msg;
+        for (const std::string& l : lines) msg += (msg.empty() ? "" : "; ") + l;
+        if (msg.empty()) msg = "cannot parse OBJ file";
+        const int line = lineFromMessage(reader.Error());
+        fail(SourceLoc{path, line, line > 0 ? 1 : 0}, msg);
+    }
+    // A non-fatal error text (e.g. from the MTL parser) is still worth showing.
+    for (const std::string& w : messageLines(reader.Error())) std::cerr << path << ": warning: " << w << "\n";
+
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    ObjMesh mesh;
+    mesh.positions.resize(attrib.vertices.size() / 3);
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+        mesh.positions[i] = Vec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
+    mesh.normals.resize(attrib.normals.size() / 3);
+    for (size_t i = 0; i < mesh.normals.size(); ++i)
+        mesh.normals[i] = Vec3(attrib.normals[3 * i], attrib.normals[3 * i + 1], attrib.normals[3 * i + 2]);
+    mesh.uvs.resize(attrib.texcoords.size() / 2);
+    for (size_t i = 0; i < mesh.uvs.size(); ++i)
+        mesh.uvs[i] = {double(attrib.texcoords[2 * i]), double(attrib.texcoords[2 * i + 1])};
+
+    const std::string dir = path.find('/') == std::string::npos ? "" : path.substr(0, path.rfind('/') + 1);
+    for (const tinyobj::material_t& m : reader.GetMaterials()) {
+        ObjMesh::Material mat;
+        mat.name = m.name;
+        mat.diffuse = Vec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
+        mat.diffuseTexture = m.diffuse_texname;
+        if (!mat.diffuseTexture.empty() && mat.diffuseTexture[0] != '/')
+            mat.diffuseTexture = dir + mat.diffuseTexture;
+        mesh.materials.push_back(std::move(mat));
+    }
+
+    size_t total = 0;
+    for (const tinyobj::shape_t& s : reader.GetShapes()) total += s.mesh.num_face_vertices.size();
+    mesh.faces.reserve(total);
+    mesh.faceMaterial.reserve(total);
+    const int nv = int(mesh.positions.size()), nn = int(mesh.normals.size()), nt = int(mesh.uvs.size());
+    const int nm = int(mesh.materials.size());
+    for (const tinyobj::shape_t& s : reader.GetShapes()) {
+        size_t k = 0;
+        for (size_t f = 0; f < s.mesh.num_face_vertices.size(); ++f) {
+            const size_t n = s.mesh.num_face_vertices[f];
+            if (n == 3) {
+                ObjMesh::Face face;
+                for (int c = 0; c < 3; ++c) {
+                    const tinyobj::index_t& idx = s.mesh.indices[k + size_t(c)];
+                    // The pre-scan guarantees these; check anyway rather than hand out bad indices.
+                    if (idx.vertex_index < 0 || idx.vertex_index >= nv || idx.normal_index >= nn ||
+                        idx.texcoord_index >= nt)
+                        failFile(path, "face index out of range");
+                    face.v[size_t(c)] = idx.vertex_index;
+                    face.n[size_t(c)] = idx.normal_index < 0 ? -1 : idx.normal_index;
+                    face.t[size_t(c)] = idx.texcoord_index < 0 ? -1 : idx.texcoord_index;
+                }
+                const int m = f < s.mesh.material_ids.size() ? s.mesh.material_ids[f] : -1;
+                mesh.faces.push_back(face);
+                mesh.faceMaterial.push_back(m >= 0 && m < nm ? m : -1);
+            }
+            k += n;
+        }
+    }
+    return mesh;
+}
+
+}  // namespace rays

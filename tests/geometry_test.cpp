@@ -1,0 +1,203 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "rays/accel/bvh.h"
+#include "rays/scene/object.h"
+
+using namespace rays;
+
+namespace {
+
+Object makeObject(ShapeType type, Vec3 p0, Vec3 p1, Vec3 p2, double r0, double r1,
+                  const Transform& m = Transform{}) {
+    Object o;
+    o.type = type;
+    o.p0 = p0;
+    o.p1 = p1;
+    o.p2 = p2;
+    o.r0 = r0;
+    o.r1 = r1;
+    prepareObject(o, m);
+    return o;
+}
+
+Object sphere(Vec3 c, double r, const Transform& m = Transform{}) {
+    return makeObject(ShapeType::Sphere, c, {}, {}, r, 0, m);
+}
+
+void expectVec(Vec3 a, Vec3 b, double eps = 1e-9) {
+    EXPECT_NEAR(a.x, b.x, eps);
+    EXPECT_NEAR(a.y, b.y, eps);
+    EXPECT_NEAR(a.z, b.z, eps);
+}
+
+}  // namespace
+
+TEST(Geometry, SphereHitFromOutsideAndInside) {
+    const Object s = sphere({0, 0, 0}, 2);
+    ShapeHit h;
+    ASSERT_TRUE(intersect(s, Ray{{0, 0, 14}, {0, 0, -1}}, 1e-6, kInfinity, h));
+    EXPECT_DOUBLE_EQ(h.t, 12);
+    expectVec(h.normal, {0, 0, 1});
+    ASSERT_TRUE(intersect(s, Ray{{0, 0, 0}, {1, 0, 0}}, 1e-6, kInfinity, h));
+    EXPECT_DOUBLE_EQ(h.t, 2);
+    expectVec(h.normal, {1, 0, 0});  // outward even from inside
+    EXPECT_FALSE(intersect(s, Ray{{0, 3, 14}, {0, 0, -1}}, 1e-6, kInfinity, h));
+    EXPECT_FALSE(intersect(s, Ray{{0, 0, 14}, {0, 0, -1}}, 1e-6, 11.0, h));  // beyond tMax
+}
+
+TEST(Geometry, PlaneUsesNormalAndDistance) {
+    const Object p = makeObject(ShapeType::Plane, {0, 1, 0}, {}, {}, -4, 0);
+    ShapeHit h;
+    ASSERT_TRUE(intersect(p, Ray{{0, 0, 0}, {0, -1, 0}}, 1e-6, kInfinity, h));
+    EXPECT_DOUBLE_EQ(h.t, 4);
+    expectVec(h.normal, {0, 1, 0});
+    EXPECT_FALSE(intersect(p, Ray{{0, 0, 0}, {1, 0, 0}}, 1e-6, kInfinity, h));  // parallel
+}
+
+TEST(Geometry, TriangleInsideEdgesAndOutside) {
+    const Object t = makeObject(ShapeType::Triangle, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0, 0);
+    ShapeHit h;
+    ASSERT_TRUE(intersect(t, Ray{{0.25, 0.25, 5}, {0, 0, -1}}, 1e-6, kInfinity, h));
+    EXPECT_DOUBLE_EQ(h.t, 5);
+    expectVec(h.normal, {0, 0, 1});
+    EXPECT_FALSE(intersect(t, Ray{{0.75, 0.75, 5}, {0, 0, -1}}, 1e-6, kInfinity, h));
+    EXPECT_FALSE(intersect(t, Ray{{-0.1, 0.5, 5}, {0, 0, -1}}, 1e-6, kInfinity, h));
+}
+
+TEST(Geometry, SmoothTriangleInterpolatesNormals) {
+    Object t = makeObject(ShapeType::Triangle, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0, 0);
+    t.smooth = true;
+    t.n0 = normalize(Vec3{-1, 0, 1});
+    t.n1 = normalize(Vec3{1, 0, 1});
+    t.n2 = normalize(Vec3{0, 0, 1});
+    ShapeHit h;
+    ASSERT_TRUE(intersect(t, Ray{{0.5, 0.0, 5}, {0, 0, -1}}, 1e-6, kInfinity, h));
+    expectVec(h.normal, {0, 0, 1});  // halfway between n0 and n1
+    expectVec(h.geomNormal, {0, 0, 1});
+}
+
+TEST(Geometry, BoxFacesAndInside) {
+    const Object b = makeObject(ShapeType::Box, {-1, -2, -3}, {1, 2, 3}, {}, 0, 0);
+    ShapeHit h;
+    ASSERT_TRUE(intersect(b, Ray{{0, 0, 10}, {0, 0, -1}}, 1e-6, kInfinity, h));
+    EXPECT_DOUBLE_EQ(h.t, 7);
+    expectVec(h.normal, {0, 0, 1});
+    ASSERT_TRUE(intersect(b, Ray{{0, 0, 0}, {0, 1, 0}}, 1e-6, kInfinity, h));
+    EXPECT_DOUBLE_EQ(h.t, 2);
+    expectVec(h.normal, {0, 1, 0});
+    ASSERT_TRUE(intersect(b, Ray{{-5, 0, 0}, {1, 0, 0}}, 1e-6, kInfinity, h));
+    expectVec(h.normal, {-1, 0, 0});
+    EXPECT_FALSE(intersect(b, Ray{{5, 5, 5}, {0, 0, -1}}, 1e-6, kInfinity, h));
+}
+
+TEST(Geometry, ConeSideAndCaps) {
+    // Cone along −z from base (0,0,1) radius 2 to apex (0,0,−3).
+    const Object c = makeObject(ShapeType::Cone, {0, 0, 1}, {0, 0, -3}, {}, 2, 0);
+    ShapeHit h;
+    // Down the axis from +z: hits the base cap at z = 1.
+    ASSERT_TRUE(intersect(c, Ray{{0, 0, 10}, {0, 0, -1}}, 1e-6, kInfinity, h));
+    EXPECT_NEAR(h.t, 9, 1e-9);
+    expectVec(h.normal, {0, 0, 1});
+    // From the side at z = −1 (radius 1 there): hits x = −1.
+    ASSERT_TRUE(intersect(c, Ray{{-10, 0, -1}, {1, 0, 0}}, 1e-6, kInfinity, h));
+    EXPECT_NEAR(h.t, 9, 1e-9);
+    // Surface x² + y² = ((z + 3)/2)²: gradient at (−1, 0, −1) is (2x, 2y, −2r·½) = (−2, 0, −1).
+    const Vec3 expected = normalize(Vec3{-2, 0, -1});
+    expectVec(h.normal, expected, 1e-9);
+    // Misses beyond the apex.
+    EXPECT_FALSE(intersect(c, Ray{{-10, 0, -3.5}, {1, 0, 0}}, 1e-6, kInfinity, h));
+}
+
+TEST(Geometry, NonUniformScaleUsesInverseTransposeNormals) {
+    // Unit sphere scaled to an ellipsoid with semi-axes (2, 1, 1).
+    const Object e = sphere({0, 0, 0}, 1, Transform::scale({2, 1, 1}));
+    ShapeHit h;
+    ASSERT_TRUE(intersect(e, Ray{{10, 0, 0}, {-1, 0, 0}}, 1e-6, kInfinity, h));
+    EXPECT_NEAR(h.t, 8, 1e-12);  // world t: the direction is not renormalised
+    // At (√2, √2/2, 0) on x²/4 + y² = 1 the normal ∝ (x/4, y) = (√2/4, √2/2).
+    const Vec3 p{std::sqrt(2.0), std::sqrt(2.0) / 2, 0};
+    const Vec3 dir = normalize(Vec3{std::sqrt(2.0) / 4, std::sqrt(2.0) / 2, 0});
+    ASSERT_TRUE(intersect(e, Ray{p + 3.0 * dir, -dir}, 1e-6, kInfinity, h));
+    EXPECT_NEAR(h.t, 3, 1e-9);
+    expectVec(h.normal, dir, 1e-9);
+}
+
+TEST(Geometry, TransformedBoundsContainTheShape) {
+    const Transform m = Transform::translate({3, 2, -3}) * Transform::rotateCourse({45, 0, 10.5}) *
+                        Transform::scale({10, 3.5, 3.5});
+    const Object e = sphere({0, 0, 0}, 0.5, m);
+    const Bounds b = worldBounds(e);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3 d = normalize(Vec3{u(rng), u(rng), u(rng)});
+        const Vec3 p = m.point(0.5 * d);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_GE(p[a], b.lo[a] - 1e-9);
+            EXPECT_LE(p[a], b.hi[a] + 1e-9);
+        }
+    }
+}
+
+TEST(Bvh, MatchesBruteForceOnRandomRays) {
+    std::mt19937 rng(42);
+    std::uniform_real_distribution<double> u(-10, 10), r(0.05, 1.0), ang(0, 360);
+    std::vector<Object> objects;
+    for (int i = 0; i < 600; ++i) {
+        const Vec3 c{u(rng), u(rng), u(rng)};
+        switch (i % 5) {
+            case 0: objects.push_back(sphere(c, r(rng))); break;
+            case 1:
+                objects.push_back(makeObject(ShapeType::Triangle, c, c + Vec3{r(rng), 0, 0}, c + Vec3{0, r(rng), r(rng)}, 0, 0));
+                break;
+            case 2:
+                objects.push_back(makeObject(ShapeType::Box, c, c + Vec3{r(rng), r(rng), r(rng)}, {}, 0, 0,
+                                             Transform::rotateCourse({ang(rng), ang(rng), 0})));
+                break;
+            case 3:
+                objects.push_back(makeObject(ShapeType::Cone, c, c + Vec3{0, r(rng), r(rng)}, {}, r(rng), 0));
+                break;
+            default:
+                objects.push_back(sphere({0, 0, 0}, 1, Transform::translate(c) * Transform::scale({r(rng), 0.3, 0.7})));
+        }
+    }
+    objects.push_back(makeObject(ShapeType::Plane, normalize(Vec3{0.1, 1, 0}), {}, {}, -12, 0));
+    const Bvh bvh(objects);
+    int hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray{{u(rng), u(rng), u(rng)}, normalize(Vec3{u(rng), u(rng), u(rng)})};
+        Hit brute;
+        ShapeHit sh;
+        for (size_t k = 0; k < objects.size(); ++k)
+            if (intersect(objects[k], ray, 1e-6, brute.t, sh)) {
+                brute.t = sh.t;
+                brute.object = int(k);
+            }
+        const Hit fast = bvh.closest(objects, ray, 1e-6, kInfinity);
+        ASSERT_EQ(fast.object, brute.object) << "ray " << i;
+        if (brute.valid()) {
+            ++hits;
+            EXPECT_DOUBLE_EQ(fast.t, brute.t);
+            EXPECT_TRUE(bvh.any(objects, ray, 1e-6, brute.t + 1e-9));
+            EXPECT_FALSE(bvh.any(objects, ray, 1e-6, brute.t * 0.999));
+        } else {
+            EXPECT_FALSE(bvh.any(objects, ray, 1e-6, kInfinity));
+        }
+    }
+    EXPECT_GT(hits, 5000);  // the test exercises real hits
+}
+
+TEST(Bvh, EmptyAndCoincidentCentroids) {
+    std::vector<Object> none;
+    const Bvh empty(none);
+    EXPECT_FALSE(empty.closest(none, Ray{{0, 0, 0}, {0, 0, 1}}, 1e-6, kInfinity).valid());
+    // 100 identical spheres: every split degenerates; traversal must still work.
+    std::vector<Object> same(100, sphere({0, 0, 0}, 1));
+    const Bvh bvh(same);
+    const Hit h = bvh.closest(same, Ray{{0, 0, 5}, {0, 0, -1}}, 1e-6, kInfinity);
+    ASSERT_TRUE(h.valid());
+    EXPECT_DOUBLE_EQ(h.t, 4);
+}
