@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Whole-render benchmark: Rays against POV-Ray 3.7 on the same scenes, runs alternated in one
+# session (the machines are shared and noisy), medians and the ratio printed.
+#
+#   bench/render.sh [-n RUNS] [-s WxH] [SCENE.pov ...]
+#
+# Defaults: 5 runs, 640x480, and the course scenes bunny, gnarly and balls2 from ../shared.
+# Both renderers use all cores and one sample per pixel (POV-Ray: -A, no anti-aliasing).
+# Needs the `povray` package (RAYS_BENCH_DEPS=1 scripts/install-deps.sh) and a built ./build/rays.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+runs=5
+size=640x480
+while getopts "n:s:" opt; do
+  case $opt in
+    n) runs=$OPTARG ;;
+    s) size=$OPTARG ;;
+    *) echo "usage: $0 [-n RUNS] [-s WxH] [SCENE.pov ...]" >&2; exit 2 ;;
+  esac
+done
+shift $((OPTIND - 1))
+w=${size%x*}
+h=${size#*x}
+scenes=("$@")
+if [ ${#scenes[@]} -eq 0 ]; then
+  for s in bunny gnarly balls2; do scenes+=("../shared/scenes/course/$s.pov"); done
+fi
+rays=$(pwd)/build/rays
+[ -x "$rays" ] || { echo "build first: scripts/build.sh" >&2; exit 2; }
+command -v povray >/dev/null || { echo "povray is not installed (RAYS_BENCH_DEPS=1 scripts/install-deps.sh)" >&2; exit 2; }
+threads=$(nproc)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+now() { date +%s.%N; }
+median() { sort -g | awk '{a[NR]=$1} END {if (NR % 2) print a[(NR+1)/2]; else print (a[NR/2] + a[NR/2+1]) / 2}'; }
+
+printf "%-14s %10s %10s %8s   (%s, %d runs each, %d threads, medians of wall time)\n" \
+  scene "Rays s" "POV-Ray s" ratio "$size" "$runs" "$threads"
+for scene in "${scenes[@]}"; do
+  [ -f "$scene" ] || { echo "missing scene $scene" >&2; exit 2; }
+  name=$(basename "$scene" .pov)
+  : > "$tmp/rays.t"
+  : > "$tmp/pov.t"
+  for ((i = 0; i < runs; i++)); do
+    t0=$(now)
+    "$rays" render "$scene" "$w" "$h" -o "$tmp/$name-rays.png" --quiet
+    t1=$(now)
+    (cd "$tmp" && povray "+I$(realpath "$OLDPWD/$scene" 2>/dev/null || realpath "$scene")" "+O$tmp/$name-pov.png" \
+       "+W$w" "+H$h" -D -A "Work_Threads=$threads" >/dev/null 2>&1)
+    t2=$(now)
+    echo "$t1 - $t0" | bc -l >> "$tmp/rays.t"
+    echo "$t2 - $t1" | bc -l >> "$tmp/pov.t"
+  done
+  r=$(median < "$tmp/rays.t")
+  p=$(median < "$tmp/pov.t")
+  printf "%-14s %10.3f %10.3f %7.1fx\n" "$name" "$r" "$p" "$(echo "$p / $r" | bc -l)"
+done
+echo "ratio = POV-Ray time / Rays time (higher is better for Rays)"
