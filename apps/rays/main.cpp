@@ -4,6 +4,7 @@
 //   rays WIDTH HEIGHT INPUT.pov OUTPUT.png SHADING RAYS_PER_PIXEL DEPTH [MODEL.obj] (positional form).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -111,6 +112,12 @@ ShadingModel parseShading(const std::string& name) {
 int run(int argc, char** argv) {
     std::vector<std::string> args = normaliseCourseFlags(argc, argv);
     if (!args.empty() && isInteger(args[0])) return runPositional(args);
+    static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays"};
+    if (!args.empty() && args[0][0] != '-' &&
+        std::none_of(std::begin(kCommands), std::end(kCommands), [&](const char* c) { return args[0] == c; }))
+        throw Error("rays: error: unknown command '" + args[0] +
+                    "' (commands: render, raycast, sceneinfo, pixelray, firsthit, pixelcolor, printrays; "
+                    "or the positional form WIDTH HEIGHT INPUT OUTPUT SHADING RAYS_PER_PIXEL DEPTH [OBJ])");
 
     CLI::App app{"Rays: a fast ray tracer for POV-Ray-style scenes with feature lines", "rays"};
     app.set_version_flag("--version", std::string("rays ") + RAYS_VERSION);

@@ -65,6 +65,17 @@ void checkOutputIsNotInput(const std::string& output, const std::string& input) 
         failFile(output, "output would overwrite the input file '" + input + "'");
 }
 
+// Fails before rendering when the image could not be written where asked.
+void checkOutputDirectory(const std::string& output) {
+    std::error_code ec;
+    const std::filesystem::path parent = std::filesystem::absolute(output, ec).parent_path();
+    if (!std::filesystem::is_directory(parent, ec))
+        failFile(output, "cannot write the image: directory '" + parent.string() + "' does not exist");
+    if (access(parent.c_str(), W_OK) != 0)
+        failFile(output, "cannot write the image: directory '" + parent.string() + "' is not writable");
+    if (std::filesystem::is_directory(output, ec)) failFile(output, "is a directory");
+}
+
 class ProgressBar {
 public:
     explicit ProgressBar(bool enabled) : enabled_(enabled), start_(Clock::now()) {}
@@ -112,6 +123,7 @@ int runRender(const RenderJob& job) {
     checkImageSize(s.width, s.height);
     if (!isSupportedImageExtension(job.outputPath))
         failFile(job.outputPath, "unsupported output image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
+    checkOutputDirectory(job.outputPath);
     checkOutputIsNotInput(job.outputPath, job.scenePath);
     checkOutputIsNotInput(job.outputPath, job.objPath);
 

@@ -1,6 +1,7 @@
 #include "rays/io/scene_parser.h"
 
 #include <array>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -671,6 +672,8 @@ Scene parseScene(const std::string& text, const std::string& fileName, const Par
 }
 
 Scene loadScene(const std::string& path, const ParseOptions& options) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) failFile(path, "is a directory, not a scene file");
     std::ifstream in(path, std::ios::binary);
     if (!in) failFile(path, "cannot open scene file");
     std::ostringstream ss;
