@@ -179,7 +179,7 @@ std::vector<BadScene> badScenes() {
         {"MalformedNumberExponent", kCamera + "sphere { <0,0,0>, @3e }\n", {"malformed number", "3e"}},
         {"VectorTooShort", kCamera + "\n\nsphere { @<1, 2>, 1 }\n", {"vector", "sphere centre", "2 components"}},
         {"VectorMissingCommas", kCamera + "sphere { <1 @2 3>, 1 }\n", {"expected ','", "vector"}},
-        {"SphereWithoutRadius", kCamera + "sphere { <0,0,0> @}\n", {"expected a number"}},
+        {"SphereWithoutRadius", kCamera + "sphere { <0,0,0> @}\n", {"expected sphere radius"}},
         {"NegativeRadius", kCamera + "sphere { <0,0,0>, @-1 }\n", {"radius", "greater than 0"}},
         {"ZeroRadius", kCamera + "sphere {\n    <0,0,0>,\n    @0\n}\n", {"radius", "greater than 0"}},
         {"ZeroPlaneNormal", kCamera + "plane { @<0,0,0>, 1 pigment { color rgb <1,1,1> } }\n", {"plane normal", "zero"}},

@@ -130,7 +130,7 @@ TEST(Parser, ErrorsCarryFileLineAndColumn) {
     EXPECT_EQ(errorOf(cam + "sphere { <0,0,0>, 3e }"), "t.pov:2:19: error: malformed number '3e'");
     EXPECT_EQ(errorOf(cam + "sphere { <0,0>, 1 }"), "t.pov:2:10: error: expected a 3-component vector for sphere centre, found 2 components");
     EXPECT_EQ(errorOf(cam + "sphere { <0 0 0>, 1 }"), "t.pov:2:13: error: expected ',' or '>' in vector, found number 0");
-    EXPECT_EQ(errorOf(cam + "sphere { <0,0,0> }"), "t.pov:2:18: error: expected a number or vector, found '}'");
+    EXPECT_EQ(errorOf(cam + "sphere { <0,0,0> }"), "t.pov:2:18: error: expected sphere radius, found '}'");
     EXPECT_EQ(errorOf(cam + "sphere { <0,0,0>, -1 }"), "t.pov:2:19: error: sphere radius must be greater than 0");
     EXPECT_EQ(errorOf(cam + "sphere { <0,0,0>, 0 }"), "t.pov:2:19: error: sphere radius must be greater than 0");
     EXPECT_EQ(errorOf(cam + "plane { <0,0,0>, 1 }"), "t.pov:2:9: error: plane normal has zero length");

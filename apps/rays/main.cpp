@@ -126,7 +126,7 @@ int run(int argc, char** argv) {
                "Course flags may be written with one dash: -altbrdf -fresnel -beers -ss=N -sds.");
 
     std::string scene;
-    int width = 0, height = 0, px = 0, py = 0;
+    int width = -1, height = -1, px = 0, py = 0;  // -1: not given
     CourseFlags flags;
     cli::RenderJob job;
     std::string shading, obj;
@@ -197,10 +197,8 @@ int run(int argc, char** argv) {
     job.objPath = obj;
 
     if (render->parsed() || raycast->parsed()) {
-        s.width = width > 0 ? width : 640;
-        s.height = height > 0 ? height : 480;
-        if (width < 0 || height < 0 || (render->parsed() && (render->count("width") + render->count("-W")) && width == 0))
-            cli::checkImageSize(width, height);
+        s.width = width == -1 ? 640 : width;
+        s.height = height == -1 ? 480 : height;
         if (raycast->parsed()) s.shading = ShadingModel::Flat;
         return cli::runRender(job);
     }

@@ -239,7 +239,18 @@ private:
         error("expected a number or vector, found " + describe(tok_));
     }
 
+    // True when the current token can start an expression.
+    bool atExpression() const {
+        return tok_.kind == TokenKind::Number ||
+               (tok_.kind == TokenKind::Symbol && std::string_view("-+(<").find(tok_.text[0]) != std::string_view::npos) ||
+               isIdent("x") || isIdent("y") || isIdent("z") || isIdent("pi");
+    }
+    void expectExpression(std::string_view what) {
+        if (!atExpression()) error("expected " + std::string(what) + ", found " + describe(tok_));
+    }
+
     double number(std::string_view what) {
+        expectExpression(what);
         const Token at = tok_;
         const Value v = expr();
         if (!v.isScalar()) fail(loc(at), "expected a number for " + std::string(what) + ", found a vector");
@@ -247,6 +258,7 @@ private:
         return v.c[0];
     }
     Vec3 vector3(std::string_view what, bool allowScalar = false) {
+        expectExpression(what);
         const Token at = tok_;
         const Value v = expr();
         if (v.isScalar() && allowScalar) return Vec3(v.c[0]);
