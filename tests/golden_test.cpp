@@ -24,6 +24,9 @@ struct GoldenCase {
     int grid;
 };
 
+// gtest prints the case by name instead of its bytes.
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name; }
+
 std::string path(const std::string& rel) { return std::string(RAYS_SOURCE_DIR) + "/tests/" + rel; }
 
 class Golden : public ::testing::TestWithParam<GoldenCase> {};
