@@ -86,7 +86,7 @@ TEST(Tracer, WeightsFollowFilterAndReflection) {
     const Bvh bvh(s.objects);
     RenderSettings rs;
     std::vector<TraceRecord> log;
-    TraceStats st;
+    TraceContext st;
     Tracer(s, bvh, rs).tracePrimary(Ray{{0, 0, 14}, {0, 0, -1}}, st, &log);
     ASSERT_GE(log.size(), 2u);
     EXPECT_NEAR(log[0].wLocal, 0.4 * 0.5, 1e-12);
@@ -105,7 +105,7 @@ TEST(Tracer, TotalInternalReflectionMovesTransmissionToReflection) {
     const Bvh bvh(s.objects);
     RenderSettings rs;
     std::vector<TraceRecord> log;
-    TraceStats st;
+    TraceContext st;
     // A ray from inside at a grazing angle: sin θ = 0.9 > 1/2.
     const Vec3 start{0, 0.9, 0};
     Tracer(s, bvh, rs).tracePrimary(Ray{start, {1, 0, 0}}, st, &log);
@@ -123,7 +123,7 @@ TEST(Tracer, BeersLawAttenuatesWithDistance) {
     const Scene s = sceneFrom(scene);
     const Bvh bvh(s.objects);
     RenderSettings rs;
-    TraceStats st;
+    TraceContext st;
     const Vec3 plain = Tracer(s, bvh, rs).tracePrimary(Ray{{0, 0, 14}, {0, 0, -1}}, st);
     EXPECT_NEAR(plain.x, 1.0, 1e-9);
     EXPECT_NEAR(plain.y, 0.5, 1e-9);  // tinted by the pigment while inside
@@ -141,7 +141,7 @@ TEST(Tracer, RecursionDepthLimitsTheTree) {
         "plane { <0,0,-1>, -20 pigment { color rgb 1 } finish { reflection 1 } }\n");
     const Bvh bvh(s.objects);
     RenderSettings rs;
-    TraceStats st;
+    TraceContext st;
     for (int depth : {0, 1, 6}) {
         rs.maxDepth = depth;
         std::vector<TraceRecord> log;

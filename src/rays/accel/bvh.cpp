@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
+#include <limits>
 
 namespace rays {
 namespace {
@@ -11,21 +13,53 @@ constexpr int kBins = 16;
 constexpr uint32_t kLeafMax = 4;
 constexpr uint32_t kMaxSahDepth = 48;  // beyond this, median splits (traversal stack is 128 deep)
 
-// Slab test against a box with a precomputed reciprocal direction; returns the entry distance or
-// +inf when the box is missed within (tMin, tMax).
-double boxEntry(const Bounds& b, const Vec3& org, const Vec3& inv, double tMin, double tMax) {
-    double t0 = tMin, t1 = tMax;
-    for (int a = 0; a < 3; ++a) {
-        double tn = (b.lo[a] - org[a]) * inv[a];
-        double tf = (b.hi[a] - org[a]) * inv[a];
-        if (tn > tf) std::swap(tn, tf);
-        // NaN (0 · inf) comparisons fail, leaving the interval unchanged: the slab is ignored.
-        t0 = tn > t0 ? tn : t0;
-        t1 = tf < t1 ? tf : t1;
-        if (t0 > t1) return kInfinity;
+// Ray prepared for float slab tests: t = box·inv + offset (offset = −origin·inv).
+struct SlabRay {
+    float inv[3];
+    float off[3];
+    explicit SlabRay(const Ray& r) {
+        for (int a = 0; a < 3; ++a) {
+            // A zero component would give 0·inf = NaN below; a huge finite inverse keeps the
+            // slab test exact in sign (the ray is parallel to that slab).
+            const double d = r.dir[a];
+            const double i = std::fabs(d) > 1e-30 ? 1.0 / d : std::copysign(1e30, d);
+            inv[a] = float(i);
+            off[a] = float(-r.origin[a] * i);
+        }
     }
-    return t0;
+};
+
+// Entry distance of the ray into node n within [tMin, tMax], or +inf when it misses.
+// NaN from 0·inf (ray in a slab plane) fails the comparisons and leaves the interval as is.
+inline float boxEntry(const FlatNode& n, const SlabRay& r, float tMin, float tMax) {
+    float x0 = n.lo[0] * r.inv[0] + r.off[0], x1 = n.hi[0] * r.inv[0] + r.off[0];
+    float y0 = n.lo[1] * r.inv[1] + r.off[1], y1 = n.hi[1] * r.inv[1] + r.off[1];
+    float z0 = n.lo[2] * r.inv[2] + r.off[2], z1 = n.hi[2] * r.inv[2] + r.off[2];
+    if (x0 > x1) std::swap(x0, x1);
+    if (y0 > y1) std::swap(y0, y1);
+    if (z0 > z1) std::swap(z0, z1);
+    const float t0 = std::max(std::max(x0, y0), std::max(z0, tMin));
+    const float t1 = std::min(std::min(x1, y1), std::min(z1, tMax));
+    return t0 <= t1 ? t0 : std::numeric_limits<float>::infinity();
 }
+
+// Float box containing b with a margin for float rounding of the ray (origin and inverse).
+void toFlat(const BvhNode& n, FlatNode& f) {
+    const Vec3 ext = n.bounds.extent();
+    for (int a = 0; a < 3; ++a) {
+        const double pad = 1e-6 * (ext[a] + std::max(std::fabs(n.bounds.lo[a]), std::fabs(n.bounds.hi[a]))) + 1e-30;
+        f.lo[a] = std::nextafter(float(n.bounds.lo[a] - pad), -std::numeric_limits<float>::infinity());
+        f.hi[a] = std::nextafter(float(n.bounds.hi[a] + pad), std::numeric_limits<float>::infinity());
+    }
+    f.first = n.first;
+    f.count = n.count;
+}
+
+constexpr float kFloatInf = std::numeric_limits<float>::infinity();
+
+// Float versions of the ray interval, widened so float rounding never cuts a real hit.
+inline float lowerT(double t) { return float(t) - 1e-6f * std::fabs(float(t)); }
+inline float upperT(double t) { return std::isinf(t) ? kFloatInf : float(t) * (1 + 1e-6f) + 1e-30f; }
 
 }  // namespace
 
@@ -66,6 +100,8 @@ Bvh::Bvh(const std::vector<Object>& objects) {
     nodes_.reserve(2 * prims_.size());
     nodes_.emplace_back();
     build(bounds, centroids, 0, uint32_t(prims_.size()));
+    flat_.resize(nodes_.size());
+    for (size_t i = 0; i < nodes_.size(); ++i) toFlat(nodes_[i], flat_[i]);
 }
 
 // Builds the tree for prims_[begin, end) into node 0 (already allocated). Children are allocated
@@ -188,14 +224,15 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
                     best.geomNormal = sh.geomNormal;
         }
     }
-    if (nodes_.empty()) return best;
-    const Vec3 inv{1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z};
+    if (flat_.empty()) return best;
+    const SlabRay sr(ray);
+    const float fMin = lowerT(tMin);
     uint32_t stack[128];
     int sp = 0;
-    if (boxEntry(nodes_[0].bounds, ray.origin, inv, tMin, best.t) == kInfinity) return best;
+    if (boxEntry(flat_[0], sr, fMin, upperT(best.t)) == kFloatInf) return best;
     stack[sp++] = 0;
     while (sp > 0) {
-        const BvhNode& node = nodes_[stack[--sp]];
+        const FlatNode& node = flat_[stack[--sp]];
         if (node.count > 0) {
             for (uint32_t i = node.first; i < node.first + node.count; ++i) {
                 const uint32_t id = prims_[i];
@@ -209,40 +246,42 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
             continue;
         }
         const uint32_t l = node.first, r = node.first + 1;
-        const double tl = boxEntry(nodes_[l].bounds, ray.origin, inv, tMin, best.t);
-        const double tr = boxEntry(nodes_[r].bounds, ray.origin, inv, tMin, best.t);
+        const float fMax = upperT(best.t);
+        const float tl = boxEntry(flat_[l], sr, fMin, fMax);
+        const float tr = boxEntry(flat_[r], sr, fMin, fMax);
         // Push the far child first so the near one is visited next.
         if (tl <= tr) {
-            if (tr != kInfinity) stack[sp++] = r;
-            if (tl != kInfinity) stack[sp++] = l;
+            if (tr != kFloatInf) stack[sp++] = r;
+            if (tl != kFloatInf) stack[sp++] = l;
         } else {
-            if (tl != kInfinity) stack[sp++] = l;
+            if (tl != kFloatInf) stack[sp++] = l;
             stack[sp++] = r;
         }
     }
     return best;
 }
 
-bool Bvh::any(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
+int Bvh::anyBlocker(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
     for (uint32_t id : unbounded_)
-        if (occludes(objects[id], ray, tMin, tMax)) return true;
-    if (nodes_.empty()) return false;
-    const Vec3 inv{1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z};
+        if (occludes(objects[id], ray, tMin, tMax)) return int(id);
+    if (flat_.empty()) return -1;
+    const SlabRay sr(ray);
+    const float fMin = lowerT(tMin), fMax = upperT(tMax);
     uint32_t stack[128];
     int sp = 0;
     stack[sp++] = 0;
     while (sp > 0) {
-        const BvhNode& node = nodes_[stack[--sp]];
-        if (boxEntry(node.bounds, ray.origin, inv, tMin, tMax) == kInfinity) continue;
+        const FlatNode& node = flat_[stack[--sp]];
+        if (boxEntry(node, sr, fMin, fMax) == kFloatInf) continue;
         if (node.count > 0) {
             for (uint32_t i = node.first; i < node.first + node.count; ++i)
-                if (occludes(objects[prims_[i]], ray, tMin, tMax)) return true;
+                if (occludes(objects[prims_[i]], ray, tMin, tMax)) return int(prims_[i]);
             continue;
         }
         stack[sp++] = node.first + 1;
         stack[sp++] = node.first;
     }
-    return false;
+    return -1;
 }
 
 int Bvh::depth() const {

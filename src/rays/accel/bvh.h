@@ -18,10 +18,20 @@ struct Hit {
     bool valid() const { return object >= 0; }
 };
 
+/// Build-time node (double bounds).
 struct BvhNode {
     Bounds bounds;
     uint32_t first = 0;  ///< leaf: first index into the primitive list; inner: index of the left child
     uint32_t count = 0;  ///< leaf: number of primitives; inner: 0 (right child = left + 1)
+};
+
+/// Traversal node: 32 bytes, two per cache line; float bounds rounded outward and padded so the
+/// float slab test never misses what the double bounds contain.
+struct FlatNode {
+    float lo[3];
+    uint32_t first;
+    float hi[3];
+    uint32_t count;
 };
 
 class Bvh {
@@ -33,7 +43,11 @@ public:
     /// Nearest hit with t in (tMin, tMax) over all objects.
     Hit closest(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
     /// True when any object is hit with t in (tMin, tMax); stops at the first blocker.
-    bool any(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
+    bool any(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
+        return anyBlocker(objects, ray, tMin, tMax) >= 0;
+    }
+    /// Index of some object hit with t in (tMin, tMax), or −1; stops at the first blocker.
+    int anyBlocker(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
 
     size_t nodeCount() const { return nodes_.size(); }
     int depth() const;
@@ -44,7 +58,8 @@ private:
     void medianPartition(std::vector<Bounds>& primBounds, std::vector<Vec3>& centroids, uint32_t begin,
                          uint32_t mid, uint32_t end, int axis);
 
-    std::vector<BvhNode> nodes_;
+    std::vector<BvhNode> nodes_;       ///< build result
+    std::vector<FlatNode> flat_;       ///< what traversal reads
     std::vector<uint32_t> prims_;      ///< object indices, leaves reference ranges of this
     std::vector<uint32_t> unbounded_;  ///< planes: always tested
 };

@@ -7,7 +7,6 @@
 #include <iostream>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <unordered_set>
 
 #include "rays/io/lexer.h"
@@ -52,7 +51,9 @@ public:
     Parser(const std::string& text, const std::string& file, const ParseOptions& opt)
         : lex_(text, file), opt_(opt) {
         scene_.fileName = file;
-        scene_.objects.reserve(text.size() / 256 + 16);  // about one object per 256 bytes in big files
+        // Course files spend 150-250 bytes per object; reserving for 64 avoids every reallocation
+        // (untouched capacity costs address space only).
+        scene_.objects.reserve(text.size() / 64 + 16);
         advance();
     }
 
@@ -686,12 +687,12 @@ Scene parseScene(const std::string& text, const std::string& fileName, const Par
 Scene loadScene(const std::string& path, const ParseOptions& options) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) failFile(path, "is a directory, not a scene file");
-    std::ifstream in(path, std::ios::binary);
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) failFile(path, "cannot open scene file");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) failFile(path, "cannot read scene file");
-    return parseScene(ss.str(), path, options);
+    std::string text(size_t(in.tellg()), '\0');
+    in.seekg(0);
+    if (!in.read(text.data(), std::streamsize(text.size()))) failFile(path, "cannot read scene file");
+    return parseScene(text, path, options);
 }
 
 }  // namespace rays

@@ -134,8 +134,8 @@ void printPixelColor(std::ostream& out, const Scene& scene, const Bvh& bvh, cons
         out << "No Hit\n";
         return;
     }
-    TraceStats stats;
-    const Vec3 c = tracer.tracePrimary(r, stats);
+    TraceContext ctx;
+    const Vec3 c = tracer.tracePrimary(r, ctx);
     out << "T = " << num(h.t) << "\n";
     out << "Object Type: " << shapeName(scene.objects[size_t(h.object)].type) << "\n";
     out << "BRDF: " << shadingName(s.shading) << "\n";
@@ -145,8 +145,8 @@ void printPixelColor(std::ostream& out, const Scene& scene, const Bvh& bvh, cons
 void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y) {
     const Ray r = pixelRay(scene, s, x, y);
     std::vector<TraceRecord> log;
-    TraceStats stats;
-    const Vec3 c = Tracer(scene, bvh, s).tracePrimary(r, stats, &log);
+    TraceContext ctx;
+    const Vec3 c = Tracer(scene, bvh, s).tracePrimary(r, ctx, &log);
     out << "Pixel: [" << x << ", " << y << "] Color: " << bytes(c) << "\n";
     for (const TraceRecord& rec : log) {
         out << "----\n";

@@ -24,7 +24,7 @@ int resolveThreads(int requested) {
 }
 
 Vec3 renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& s, int i, int j,
-                 TraceStats& stats) {
+                 TraceContext& ctx) {
     if (s.spp > 0) {
         // Jittered sampling: stratified on a k×k grid when spp is a perfect square.
         const int k = int(std::lround(std::sqrt(double(s.spp))));
@@ -38,7 +38,7 @@ Vec3 renderPixel(const Tracer& tracer, const Camera& camera, const RenderSetting
                 dx = (n % k + dx) / k;
                 dy = (n / k + dy) / k;
             }
-            sum += tracer.tracePrimary(camera.rayThrough(i + dx, j + dy, s.width, s.height), stats);
+            sum += tracer.tracePrimary(camera.rayThrough(i + dx, j + dy, s.width, s.height), ctx);
         }
         return sum / double(s.spp);
     }
@@ -47,7 +47,7 @@ Vec3 renderPixel(const Tracer& tracer, const Camera& camera, const RenderSetting
     for (int sy = 0; sy < g; ++sy)
         for (int sx = 0; sx < g; ++sx)
             sum += tracer.tracePrimary(
-                camera.rayThrough(i + (sx + 0.5) / g, j + (sy + 0.5) / g, s.width, s.height), stats);
+                camera.rayThrough(i + (sx + 0.5) / g, j + (sy + 0.5) / g, s.width, s.height), ctx);
     return sum / double(g * g);
 }
 
@@ -62,10 +62,10 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     std::atomic<int> nextTile{0}, doneTiles{0};
     std::mutex doneMutex;
     std::condition_variable doneCv;
-    std::vector<TraceStats> perThread(static_cast<size_t>(nThreads));
+    std::vector<TraceContext> perThread(static_cast<size_t>(nThreads));
 
     auto worker = [&](int w) {
-        TraceStats& st = perThread[size_t(w)];
+        TraceContext& st = perThread[size_t(w)];
         for (int t = nextTile.fetch_add(1); t < tileCount; t = nextTile.fetch_add(1)) {
             const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
             const int x1 = std::min(x0 + kTile, s.width), y1 = std::min(y0 + kTile, s.height);
@@ -96,7 +96,7 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         worker(0);
     }
     for (std::thread& th : pool) th.join();
-    for (const TraceStats& st : perThread) stats.add(st);
+    for (const TraceContext& st : perThread) stats.add(st.stats);
     return img;
 }
 

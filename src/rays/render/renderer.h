@@ -15,7 +15,7 @@ using ProgressFn = std::function<void(double fraction)>;
 
 /// Colour of pixel (i, j), j counted up from the bottom row, averaged over the pixel's samples.
 Vec3 renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& s, int i, int j,
-                 TraceStats& stats);
+                 TraceContext& ctx);
 
 /// Renders the whole image (top row first). Deterministic: the result is bit-identical for any
 /// thread count. stats receives the summed counters.

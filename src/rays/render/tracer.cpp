@@ -34,21 +34,33 @@ Vec3 beerTint(Vec3 c, double d) {
 
 Hit Tracer::firstHit(const Ray& ray) const { return bvh_.closest(scene_.objects, ray, kTMin, kInfinity); }
 
-Vec3 Tracer::tracePrimary(const Ray& ray, TraceStats& stats, std::vector<TraceRecord>* log) const {
-    ++stats.primaryRays;
-    return trace(ray, 0, TraceRecord::Kind::Primary, false, stats, log).color;
+Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log) const {
+    ++ctx.stats.primaryRays;
+    return trace(ray, 0, TraceRecord::Kind::Primary, false, ctx, log).color;
 }
 
-void Tracer::localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceStats& stats, Vec3& diffuse,
+bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx) const {
+    ++ctx.stats.shadowRays;
+    const bool cached = light < size_t(TraceContext::kCachedLights);
+    if (cached && ctx.lastBlocker[light] >= 0 &&
+        occludes(scene_.objects[size_t(ctx.lastBlocker[light])], shadow, kTMin, tMax))
+        return true;
+    if (!cached) return bvh_.any(scene_.objects, shadow, kTMin, tMax);
+    const int blocker = bvh_.anyBlocker(scene_.objects, shadow, kTMin, tMax);
+    if (blocker >= 0) ctx.lastBlocker[light] = blocker;
+    return blocker >= 0;
+}
+
+void Tracer::localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
                           Vec3& specular) const {
-    for (const PointLight& light : scene_.lights) {
+    for (size_t li = 0; li < scene_.lights.size(); ++li) {
+        const PointLight& light = scene_.lights[li];
         const Vec3 toLight = light.position - P;
         const double dist = length(toLight);
         if (dist == 0) continue;
         const Vec3 L = toLight / dist;
-        ++stats.shadowRays;
         const Ray shadow{P + kSurfaceOffset * N, L};
-        if (bvh_.any(scene_.objects, shadow, kTMin, dist - kSurfaceOffset)) continue;
+        if (shadowed(shadow, dist - kSurfaceOffset, li, ctx)) continue;
         const LightTerms terms = settings_.shading == ShadingModel::CookTorrance
                                      ? cookTorrance(o.material, N, L, V, light.color)
                                      : blinnPhong(o.material, N, L, V, light.color);
@@ -58,7 +70,7 @@ void Tracer::localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceStats& s
 }
 
 Tracer::Result Tracer::trace(const Ray& ray, int depth, TraceRecord::Kind kind, bool inside,
-                             TraceStats& stats, std::vector<TraceRecord>* log) const {
+                             TraceContext& ctx, std::vector<TraceRecord>* log) const {
     size_t rec = 0;
     if (log) {
         rec = log->size();
@@ -108,7 +120,7 @@ Tracer::Result Tracer::trace(const Ray& ray, int depth, TraceRecord::Kind kind, 
     Vec3 ambient, diffuse, specular;
     if (wLocal > 0) {
         ambient = m.ambient * m.color;
-        localShading(o, P, N, V, stats, diffuse, specular);
+        localShading(o, P, N, V, ctx, diffuse, specular);
     }
 
     Vec3 reflColor, transColor;
@@ -123,14 +135,14 @@ Tracer::Result Tracer::trace(const Ray& ray, int depth, TraceRecord::Kind kind, 
     }
     if (recurse && wRefl > 0) {
         const Vec3 R = normalize(reflect(ray.dir, N));
-        ++stats.secondaryRays;
+        ++ctx.stats.secondaryRays;
         reflColor = trace(Ray{P + kSurfaceOffset * R, R}, depth + 1, TraceRecord::Kind::Reflection, inside,
-                          stats, log).color * m.color;
+                          ctx, log).color * m.color;
     }
     if (recurse && wTrans > 0) {
-        ++stats.secondaryRays;
+        ++ctx.stats.secondaryRays;
         const Result child = trace(Ray{P + kSurfaceOffset * T, T}, depth + 1, TraceRecord::Kind::Refraction,
-                                   entering, stats, log);
+                                   entering, ctx, log);
         if (entering) {
             transColor = child.color * (settings_.beers ? beerTint(m.color, child.t) : m.color);
         } else {

@@ -1,7 +1,9 @@
 // Whitted-style recursive ray tracer following the course conventions: local shading with hard
 // shadows, mirror reflection, refraction with optional Schlick Fresnel and Beer's law.
 #pragma once
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
 #include "rays/accel/bvh.h"
@@ -37,6 +39,15 @@ struct TraceStats {
     uint64_t total() const { return primaryRays + secondaryRays + shadowRays; }
 };
 
+/// Per-thread mutable state of a trace: counters and the shadow cache (the object that last
+/// blocked each light). The cache only changes which object is tested first, never a result.
+struct TraceContext {
+    static constexpr int kCachedLights = 16;
+    TraceStats stats;
+    int lastBlocker[kCachedLights];
+    TraceContext() { std::fill(std::begin(lastBlocker), std::end(lastBlocker), -1); }
+};
+
 class Tracer {
 public:
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings)
@@ -44,7 +55,7 @@ public:
 
     /// Colour seen along a primary ray. When log is non-null the ray tree is appended to it in
     /// depth-first order (each node before its children).
-    Vec3 tracePrimary(const Ray& ray, TraceStats& stats, std::vector<TraceRecord>* log = nullptr) const;
+    Vec3 tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log = nullptr) const;
 
     /// Nearest hit along ray (t > small epsilon).
     Hit firstHit(const Ray& ray) const;
@@ -54,10 +65,11 @@ private:
         Vec3 color;
         double t = kInfinity;  ///< distance to the hit (for Beer's law)
     };
-    Result trace(const Ray& ray, int depth, TraceRecord::Kind kind, bool inside, TraceStats& stats,
+    Result trace(const Ray& ray, int depth, TraceRecord::Kind kind, bool inside, TraceContext& ctx,
                  std::vector<TraceRecord>* log) const;
-    void localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceStats& stats, Vec3& diffuse,
+    void localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
                       Vec3& specular) const;
+    bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx) const;
 
     const Scene& scene_;
     const Bvh& bvh_;

@@ -24,17 +24,31 @@ bool pickRoot(double t0, double t1, double tMin, double tMax, double& t) {
     return false;
 }
 
+// Sphere (p1, r1): the object-space sphere, or the world-space one for similarity transforms.
 bool hitSphere(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
-    const Vec3 oc = r.origin - o.p0;
+    const Vec3 oc = r.origin - o.p1;
     const double a = dot(r.dir, r.dir);
     const double b = dot(oc, r.dir);
-    const double c = dot(oc, oc) - o.r0 * o.r0;
+    const double c = dot(oc, oc) - o.r1 * o.r1;
     const double disc = b * b - a * c;
     if (disc < 0) return false;
     const double sq = std::sqrt(disc);
     if (!pickRoot((-b - sq) / a, (-b + sq) / a, tMin, tMax, h.t)) return false;
-    h.normal = (r.at(h.t) - o.p0) / o.r0;
+    h.normal = (r.at(h.t) - o.p1) / o.r1;
     return true;
+}
+
+// Uniform scale factor s when the linear part of m is s times an orthogonal matrix, else 0.
+double similarityScale(const Transform& m) {
+    Vec3 col[3];
+    for (int j = 0; j < 3; ++j) col[j] = Vec3{m.m[0][j], m.m[1][j], m.m[2][j]};
+    const double s2 = dot(col[0], col[0]);
+    const double tol = 1e-12 * s2;
+    if (std::fabs(dot(col[1], col[1]) - s2) > tol || std::fabs(dot(col[2], col[2]) - s2) > tol) return 0;
+    if (std::fabs(dot(col[0], col[1])) > tol || std::fabs(dot(col[0], col[2])) > tol ||
+        std::fabs(dot(col[1], col[2])) > tol)
+        return 0;
+    return std::sqrt(s2);
 }
 
 bool hitPlane(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
@@ -178,8 +192,8 @@ Bounds localBounds(const Object& o) {
     Bounds b;
     switch (o.type) {
         case ShapeType::Sphere:
-            b.extend(o.p0 - Vec3(o.r0));
-            b.extend(o.p0 + Vec3(o.r0));
+            b.extend(o.p1 - Vec3(o.r1));
+            b.extend(o.p1 + Vec3(o.r1));
             break;
         case ShapeType::Plane: break;
         case ShapeType::Triangle:
@@ -208,6 +222,18 @@ Bounds localBounds(const Object& o) {
 void prepareObject(Object& o, const Transform& objectToWorld) {
     o.transformed = !objectToWorld.isIdentity();
     o.toObject = o.transformed ? objectToWorld.inverse() : Transform{};
+    o.localSpace = o.transformed || o.type == ShapeType::Cone;
+    if (o.type == ShapeType::Sphere) {
+        o.p1 = o.p0;
+        o.r1 = o.r0;
+        const double s = o.transformed ? similarityScale(objectToWorld) : 0.0;
+        if (s > 0) {  // a sphere stays a sphere: intersect it in world space
+            o.p1 = objectToWorld.point(o.p0);
+            o.r1 = s * o.r0;
+            o.localSpace = false;
+        }
+        return;
+    }
     if (o.type != ShapeType::Cone) return;
     const Vec3 axis = o.p1 - o.p0;
     const double height = length(axis);
@@ -221,14 +247,15 @@ void prepareObject(Object& o, const Transform& objectToWorld) {
 }
 
 Bounds worldBounds(const Object& o) {
+    if (!o.localSpace && o.type == ShapeType::Sphere) return Bounds{o.p1 - Vec3(o.r1), o.p1 + Vec3(o.r1)};
     if (!o.transformed) return localBounds(o);
     const Transform toWorld = o.toObject.inverse();
     if (o.type == ShapeType::Sphere) {
         // Exact box of an ellipsoid: half-extent along world axis i is r·|row i of M|.
-        const Vec3 c = toWorld.point(o.p0);
+        const Vec3 c = toWorld.point(o.p1);
         Vec3 half;
         for (int i = 0; i < 3; ++i)
-            half[i] = o.r0 * std::sqrt(toWorld.m[i][0] * toWorld.m[i][0] + toWorld.m[i][1] * toWorld.m[i][1] +
+            half[i] = o.r1 * std::sqrt(toWorld.m[i][0] * toWorld.m[i][0] + toWorld.m[i][1] * toWorld.m[i][1] +
                                        toWorld.m[i][2] * toWorld.m[i][2]);
         return Bounds{c - half, c + half};
     }

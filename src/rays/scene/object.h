@@ -18,6 +18,8 @@ struct Object {
     ShapeType type = ShapeType::Sphere;
     // Shape parameters as written, in object space:
     //   Sphere   p0 centre, r0 radius          Plane  p0 unit normal, r0 distance (n·x = d)
+    //            (p1, r1: the sphere actually intersected — in world space when the transform
+    //            is a similarity, so the ray needs no mapping — set by prepareObject)
     //   Triangle p0 p1 p2 vertices             Box    p0 min corner, p1 max corner
     //   Cone     p0 base, r0 base radius, p1 cap, r1 cap radius (closed by flat caps)
     Vec3 p0, p1, p2;
@@ -26,6 +28,7 @@ struct Object {
     Vec3 n0, n1, n2;
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
+    bool localSpace = false;   ///< rays are mapped through toObject before intersecting
     /// World → intersection space. M⁻¹ for transformed objects; for cones it also maps object space
     /// to the canonical cone frame (axis along z from 0 to the height). Identity otherwise.
     Transform toObject;
@@ -37,7 +40,7 @@ struct Object {
 void prepareObject(Object& o, const Transform& objectToWorld);
 
 /// True when rays must be mapped through toObject before intersecting.
-inline bool usesLocalSpace(const Object& o) { return o.transformed || o.type == ShapeType::Cone; }
+inline bool usesLocalSpace(const Object& o) { return o.localSpace; }
 
 /// World-space bounds; empty for planes (unbounded).
 Bounds worldBounds(const Object& o);
