@@ -4,5 +4,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
-./build/rays render scenes/demo.pov 800 600 -fresnel -beers -ss=2 -o demo.png
+./build/rays render scenes/01-demo.pov 800 600 -fresnel -beers -ss=2 -o demo.png
 echo "wrote $(pwd)/demo.png"

@@ -43,7 +43,8 @@ TEST_P(Golden, MatchesCommittedImage) {
     s.shading = c.shading;
     s.fresnel = c.fresnel;
     s.beers = c.beers;
-    s.gridSamples = c.grid;
+    s.aa = AaMode::Grid;
+    s.spp = c.grid * c.grid;
     TraceStats stats;
     const Image8 img = toImage8(render(scene, bvh, s, stats));
     const std::string golden = path(std::string("golden/") + c.name + ".png");

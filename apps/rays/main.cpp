@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -14,29 +15,12 @@
 #include "rays/error.h"
 #include "rays/render/course_commands.h"
 #include "render_command.h"
+#include "render_options.h"
+#include "scene_library.h"
 
 using namespace rays;
 
 namespace {
-
-// The course writes flags with one dash (-altbrdf, -ss=4); CLI11 wants two for long names.
-std::vector<std::string> normaliseCourseFlags(int argc, char** argv) {
-    static const char* kCourse[] = {"-altbrdf", "-fresnel", "-beers", "-sds", "-gi", "-ss=", "-gi_samples=", "-gi_bounces="};
-    std::vector<std::string> out;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        for (const char* f : kCourse) {
-            const std::string flag = f;
-            const bool prefix = flag.back() == '=';
-            if ((prefix && a.rfind(flag, 0) == 0) || (!prefix && a == flag)) {
-                a = "-" + a;
-                break;
-            }
-        }
-        out.push_back(a);
-    }
-    return out;
-}
 
 bool isInteger(const std::string& s) {
     if (s.empty()) return false;
@@ -70,53 +54,20 @@ int runPositional(const std::vector<std::string>& a) {
     }
     job.settings.spp = toInt(a[5], "RAYS_PER_PIXEL");
     if (job.settings.spp < 1) throw Error("rays: error: RAYS_PER_PIXEL must be at least 1");
+    if (job.settings.spp > 1) job.settings.aa = AaMode::Stratified;
     job.settings.maxDepth = toInt(a[6], "RECURSION_DEPTH");
     if (a.size() == 8) job.objPath = a[7];
     return cli::runRender(job);
 }
 
-struct CourseFlags {
-    bool altbrdf = false, fresnel = false, beers = false, sds = false, gi = false;
-    int ss = 1;
-    std::string giSamples, giBounces;
-};
-
-void addCourseFlags(CLI::App* cmd, CourseFlags& f) {
-    cmd->add_flag("--altbrdf", f.altbrdf, "Cook-Torrance shading (course: -altbrdf)");
-    cmd->add_flag("--fresnel", f.fresnel, "Schlick Fresnel on reflection/refraction (course: -fresnel)");
-    cmd->add_flag("--beers", f.beers, "Beer's law attenuation inside refractive objects (course: -beers)");
-    cmd->add_flag("--sds", f.sds, "accepted for the course; Rays always uses its BVH (course: -sds)");
-    cmd->add_option("--ss", f.ss, "N×N regular supersampling grid per pixel (course: -ss=N)")->check(CLI::Range(1, 64));
-    cmd->add_flag("--gi", f.gi, "global illumination (course part 6; not implemented yet: ignored with a warning)");
-    cmd->add_option("--gi_samples", f.giSamples, "global illumination samples (ignored)");
-    cmd->add_option("--gi_bounces", f.giBounces, "global illumination bounces (ignored)");
-}
-
-void applyCourseFlags(const CourseFlags& f, RenderSettings& s) {
-    if (f.altbrdf) s.shading = ShadingModel::CookTorrance;
-    s.fresnel = f.fresnel;
-    s.beers = f.beers;
-    s.gridSamples = f.ss;
-    if (f.gi || !f.giSamples.empty() || !f.giBounces.empty())
-        std::cerr << "rays: warning: global illumination (-gi) is not implemented yet; rendering without it\n";
-}
-
-ShadingModel parseShading(const std::string& name) {
-    if (name == "blinn-phong") return ShadingModel::BlinnPhong;
-    if (name == "cook-torrance") return ShadingModel::CookTorrance;
-    if (name == "flat") return ShadingModel::Flat;
-    if (name == "normals") return ShadingModel::Normals;
-    throw Error("rays: error: unknown shading model '" + name + "' (use blinn-phong, cook-torrance, flat or normals)");
-}
-
 int run(int argc, char** argv) {
-    std::vector<std::string> args = normaliseCourseFlags(argc, argv);
+    std::vector<std::string> args = cli::normaliseCourseFlags(argc, argv);
     if (!args.empty() && isInteger(args[0])) return runPositional(args);
-    static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays"};
+    static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes"};
     if (!args.empty() && args[0][0] != '-' &&
         std::none_of(std::begin(kCommands), std::end(kCommands), [&](const char* c) { return args[0] == c; }))
         throw Error("rays: error: unknown command '" + args[0] +
-                    "' (commands: render, raycast, sceneinfo, pixelray, firsthit, pixelcolor, printrays; "
+                    "' (commands: render, raycast, sceneinfo, pixelray, firsthit, pixelcolor, printrays, scenes; "
                     "or the positional form WIDTH HEIGHT INPUT OUTPUT SHADING RAYS_PER_PIXEL DEPTH [OBJ])");
 
     CLI::App app{"Rays: a fast ray tracer for POV-Ray-style scenes with feature lines", "rays"};
@@ -127,26 +78,23 @@ int run(int argc, char** argv) {
 
     std::string scene;
     int width = -1, height = -1, px = 0, py = 0;  // -1: not given
-    CourseFlags flags;
+    cli::CourseFlags flags;
+    cli::ModernOptions modern;
     cli::RenderJob job;
-    std::string shading, obj;
+    std::string obj, libraryScene;
     bool povrayRotate = false;
 
     // render
     CLI::App* render = app.add_subcommand("render", "render a scene to an image (default output.png)");
-    render->add_option("scene", scene, "scene file (.pov)")->required();
+    render->add_option("scene", scene, "scene file (.pov); or --scene");
     render->add_option("width", width, "image width in pixels (or -W)");
     render->add_option("height", height, "image height in pixels (or -H)");
-    addCourseFlags(render, flags);
+    cli::addCourseFlags(render, flags);
     render->add_option("-o,--output", job.outputPath, "output image: .png .jpg .ppm .tga .bmp (default output.png)");
     render->add_option("-W,--width", width, "image width in pixels");
     render->add_option("-H,--height", height, "image height in pixels");
-    render->add_option("--shading", shading, "blinn-phong | cook-torrance | flat | normals");
-    render->add_option("--spp", job.settings.spp, "jittered samples per pixel (stratified when a square)")->check(CLI::Range(1, 65536));
-    render->add_option("--depth", job.settings.maxDepth, "recursion depth for reflection and refraction (default 6)")->check(CLI::Range(0, 1000));
-    render->add_option("--threads", job.settings.threads, "worker threads (default: all cores)")->check(CLI::Range(0, 1024));
-    render->add_option("--seed", job.settings.seed, "random seed for jittered sampling");
-    render->add_option("--camera", job.settings.cameraIndex, "index of the camera in the scene (default 0)")->check(CLI::NonNegativeNumber);
+    cli::addModernOptions(render, modern, job.settings);
+    render->add_option("--scene", libraryScene, "render a shipped scene by number or name (see `rays scenes`)");
     render->add_option("--obj", obj, "add an OBJ mesh to the scene with a default material");
     render->add_option("--jpeg-quality", job.jpegQuality, "JPEG quality 1-100 (default 90)")->check(CLI::Range(1, 100));
     render->add_flag("--povray-rotate", povrayRotate, "apply rotate x, then y, then z as POV-Ray does (course: z first)");
@@ -161,6 +109,9 @@ int run(int argc, char** argv) {
     raycast->add_option("-o,--output", job.outputPath, "output image (default output.png)");
     raycast->add_flag("-q,--quiet", job.quiet, "no progress or summary");
 
+    // scenes
+    CLI::App* scenes = app.add_subcommand("scenes", "list the shipped scenes (render one with render --scene N)");
+
     // sceneinfo
     CLI::App* sceneinfo = app.add_subcommand("sceneinfo", "print the camera, lights and objects of a scene");
     sceneinfo->add_option("scene", scene, "scene file")->required();
@@ -173,7 +124,7 @@ int run(int argc, char** argv) {
         c->add_option("height", height, "image height")->required();
         c->add_option("x", px, "pixel column (0 = left)")->required();
         c->add_option("y", py, "pixel row (0 = bottom)")->required();
-        if (withFlags) addCourseFlags(c, flags);
+        if (withFlags) cli::addCourseFlags(c, flags);
         return c;
     };
     CLI::App* pixelray = pixelCommand("pixelray", "print the primary ray of a pixel", false);
@@ -189,10 +140,25 @@ int run(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
 
+    if (scenes->parsed()) {
+        for (const cli::LibraryScene& ls : cli::listScenes(cli::sceneDirectory()))
+            std::printf("%3d  %-20s %s\n", ls.number, ls.name.c_str(), ls.description.c_str());
+        return 0;
+    }
+    if (!libraryScene.empty()) {
+        // With --scene the positionals are W H: they landed one slot early.
+        if (!scene.empty() && isInteger(scene) && height == -1) {
+            height = width;
+            width = toInt(scene, "width");
+            scene.clear();
+        }
+        if (!scene.empty()) throw Error("rays: error: give a scene file or --scene, not both");
+        scene = cli::findScene(libraryScene);
+    }
+    if (render->parsed() && scene.empty()) throw Error("rays: error: no scene: give a scene file or --scene N");
     job.scenePath = scene;
     RenderSettings& s = job.settings;
-    applyCourseFlags(flags, s);
-    if (!shading.empty()) s.shading = parseShading(shading);
+    cli::applyOptions(flags, modern, s);
     job.rotation = povrayRotate ? RotationOrder::Povray : RotationOrder::Course;
     job.objPath = obj;
 

@@ -423,6 +423,26 @@ private:
             else if (isIdent("up")) { advance(); c.up = vector3("up"); }
             else if (isIdent("right")) { advance(); c.right = vector3("right"); }
             else if (isIdent("look_at")) { advance(); c.lookAt = vector3("look_at"); }
+            else if (isIdent("aperture")) {
+                const Token at = tok_;
+                advance();
+                c.aperture = number("aperture");
+                if (c.aperture < 0) fail(loc(at), "aperture must not be negative");
+            } else if (isIdent("focal_point")) {
+                advance();
+                c.focalPoint = vector3("focal_point");
+            } else if (isIdent("blur_samples")) {
+                // blur_samples [min,] max: Rays uses max.
+                const Token at = tok_;
+                advance();
+                double n = number("blur_samples");
+                if (isSymbol(',')) {
+                    advance();
+                    n = number("blur_samples");
+                }
+                if (n < 1 || n != std::floor(n) || n > 65536) fail(loc(at), "blur_samples must be a whole number from 1 to 65536");
+                c.blurSamples = int(n);
+            }
             else if (!unsupportedHere()) unknown("camera");
         });
         const SourceLoc at = loc(kw);
@@ -439,8 +459,9 @@ private:
     void light() {
         const Token kw = tok_;
         advance();
-        PointLight L;
+        Light L;
         bool first = true;
+        bool hasPointAt = false;
         block(kw, [&] {
             if (first) {
                 first = false;
@@ -453,11 +474,66 @@ private:
                 L.color = lightColor();
             } else if (isSymbol(',')) {
                 advance();
+            } else if (isIdent("area_light")) {
+                areaLight(L);
+            } else if (isIdent("jitter")) {
+                advance();
+                L.jitter = true;
+            } else if (isIdent("adaptive")) {
+                const Token at = tok_;
+                advance();
+                const double k = number("adaptive level");
+                if (k < 0 || k != std::floor(k)) fail(loc(at), "adaptive level must be a whole number >= 0");
+                L.adaptive = int(k);
+            } else if (isIdent("circular")) {
+                advance();
+                L.circular = true;
+            } else if (isIdent("orient")) {
+                advance();
+                L.orient = true;
+            } else if (isIdent("parallel")) {
+                advance();
+                L.parallel = true;
+            } else if (isIdent("point_at")) {
+                advance();
+                L.pointAt = vector3("point_at");
+                hasPointAt = true;
             } else if (!unsupportedHere()) {
                 unknown("light_source");
             }
         });
+        if (L.parallel) {
+            const Vec3 d = L.pointAt - L.position;
+            if (length(d) == 0) fail(loc(kw), "parallel light: point_at equals the light position");
+            L.direction = normalize(d);
+        } else if (hasPointAt) {
+            warn(loc(kw), "point_at without parallel (or spotlight) has no effect");
+        }
+        if (!L.area && (L.jitter || L.circular || L.orient || L.adaptive >= 0))
+            warn(loc(kw), "jitter, adaptive, circular and orient apply to area lights only; ignored");
         scene_.lights.push_back(L);
+    }
+
+    // area_light <axis1>, <axis2>, n1, n2
+    void areaLight(Light& L) {
+        const Token kw = tok_;
+        advance();
+        L.axis1 = vector3("area_light axis 1");
+        skipCommas();
+        L.axis2 = vector3("area_light axis 2");
+        skipCommas();
+        Token at = tok_;
+        const double n1 = number("area_light size 1");
+        if (n1 < 1 || n1 != std::floor(n1) || n1 > 1024) fail(loc(at), "area_light sample counts must be whole numbers from 1 to 1024");
+        skipCommas();
+        at = tok_;
+        const double n2 = number("area_light size 2");
+        if (n2 < 1 || n2 != std::floor(n2) || n2 > 1024) fail(loc(at), "area_light sample counts must be whole numbers from 1 to 1024");
+        if (length(cross(L.axis1, L.axis2)) == 0)
+            fail(loc(kw), "area_light axes are degenerate (zero or parallel)");
+        L.area = true;
+        L.n1 = int(n1);
+        L.n2 = int(n2);
     }
 
     void pigment(Material& m) {

@@ -3,17 +3,71 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
-#include <cmath>
+#include <numeric>
 #include <thread>
 
+#include "rays/math/sampling.h"
 #include "rays/render/sampler.h"
 
 namespace rays {
 namespace {
 
 constexpr int kTile = 16;
+
+// Support radius (pixels, around the centre) and weight of the reconstruction filters.
+double filterRadius(PixelFilter f) {
+    switch (f) {
+        case PixelFilter::Box: return 0.5;
+        case PixelFilter::Tent: return 1.0;
+        case PixelFilter::Gaussian: return 1.5;
+    }
+    return 0.5;
+}
+
+double filterWeight(PixelFilter f, double x, double y) {
+    switch (f) {
+        case PixelFilter::Box: return 1.0;
+        case PixelFilter::Tent: return std::max(0.0, 1 - std::fabs(x)) * std::max(0.0, 1 - std::fabs(y));
+        case PixelFilter::Gaussian: return std::exp(-(x * x + y * y) / (2 * 0.25));
+    }
+    return 1.0;
+}
+
+// Position of sample n of count in [0,1)² for the anti-aliasing mode.
+void samplePoint(AaMode mode, int n, int count, SampleRng& rng, double& a, double& b) {
+    if (count == 1 && mode == AaMode::Grid) {
+        a = b = 0.5;
+        return;
+    }
+    if (mode == AaMode::Random) {
+        a = rng.next();
+        b = rng.next();
+        return;
+    }
+    const int k = std::max(1, int(std::lround(std::sqrt(double(count)))));
+    const double ja = mode == AaMode::Grid ? 0.5 : rng.next();
+    const double jb = mode == AaMode::Grid ? 0.5 : rng.next();
+    a = (n % k + ja) / k;
+    b = (n / k % k + jb) / k;
+}
+
+// Samples actually taken for spp: Grid and Stratified use the nearest square k×k.
+int sampleCount(AaMode mode, int spp) {
+    if (mode == AaMode::Random) return std::max(1, spp);
+    const int k = std::max(1, int(std::lround(std::sqrt(double(spp)))));
+    return k * k;
+}
+
+// A multiplier coprime to count, so that lens strata are visited in a different order than
+// pixel strata (decorrelating the two 2-D sample sets).
+int lensStride(int count) {
+    for (int p : {7, 11, 13, 17, 19, 23, 29, 31})
+        if (std::gcd(p, count) == 1) return p;
+    return 1;
+}
 
 }  // namespace
 
@@ -23,71 +77,28 @@ int resolveThreads(int requested) {
     return hw == 0 ? 1 : int(hw);
 }
 
-Vec3 renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& s, int i, int j,
-                 TraceContext& ctx) {
-    if (s.spp > 0) {
-        // Jittered sampling: stratified on a k×k grid when spp is a perfect square.
-        const int k = int(std::lround(std::sqrt(double(s.spp))));
-        const bool strata = k * k == s.spp;
-        Vec3 sum;
-        for (int n = 0; n < s.spp; ++n) {
-            SampleRng rng(uint32_t(i), uint32_t(j), uint32_t(n), s.seed);
-            double dx = rng.next(), dy = rng.next();
-            if (s.spp == 1) dx = dy = 0.5;
-            if (strata) {
-                dx = (n % k + dx) / k;
-                dy = (n / k + dy) / k;
-            }
-            sum += tracer.tracePrimary(camera.rayThrough(i + dx, j + dy, s.width, s.height), ctx);
-        }
-        return sum / double(s.spp);
-    }
-    const int g = std::max(1, s.gridSamples);
-    Vec3 sum;
-    for (int sy = 0; sy < g; ++sy)
-        for (int sx = 0; sx < g; ++sx)
-            sum += tracer.tracePrimary(
-                camera.rayThrough(i + (sx + 0.5) / g, j + (sy + 0.5) / g, s.width, s.height), ctx);
-    return sum / double(g * g);
-}
-
-ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
-              const ProgressFn& progress) {
-    ImageF img(s.width, s.height);
-    const Camera& camera = scene.cameras.at(size_t(s.cameraIndex));
-    const Tracer tracer(scene, bvh, s);
-    const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
-    const int tileCount = tilesX * tilesY;
-    const int nThreads = std::min(resolveThreads(s.threads), std::max(1, tileCount));
-    std::atomic<int> nextTile{0}, doneTiles{0};
-    std::mutex doneMutex;
-    std::condition_variable doneCv;
-    std::vector<TraceContext> perThread(static_cast<size_t>(nThreads));
-
+void parallelFor(int count, int threads, const std::function<void(int, int)>& body, const ProgressFn& progress) {
+    const int n = std::min(resolveThreads(threads), std::max(1, count));
+    std::atomic<int> next{0}, done{0};
+    std::mutex m;
+    std::condition_variable cv;
     auto worker = [&](int w) {
-        TraceContext& st = perThread[size_t(w)];
-        for (int t = nextTile.fetch_add(1); t < tileCount; t = nextTile.fetch_add(1)) {
-            const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
-            const int x1 = std::min(x0 + kTile, s.width), y1 = std::min(y0 + kTile, s.height);
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x)
-                    img.at(x, y) = renderPixel(tracer, camera, s, x, s.height - 1 - y, st);
-            if (doneTiles.fetch_add(1) + 1 == tileCount) {
-                std::lock_guard<std::mutex> lock(doneMutex);
-                doneCv.notify_all();
+        for (int i = next.fetch_add(1); i < count; i = next.fetch_add(1)) {
+            body(i, w);
+            if (done.fetch_add(1) + 1 == count) {
+                std::lock_guard<std::mutex> lock(m);
+                cv.notify_all();
             }
         }
     };
-
     std::vector<std::thread> pool;
-    for (int w = 1; w < nThreads; ++w) pool.emplace_back(worker, w);
+    for (int w = 1; w < n; ++w) pool.emplace_back(worker, w);
     if (progress) {
-        // The calling thread reports progress while the pool works, then joins in.
         std::thread last(worker, 0);
-        std::unique_lock<std::mutex> lock(doneMutex);
-        while (doneTiles.load() < tileCount) {
-            progress(double(doneTiles.load()) / tileCount);
-            doneCv.wait_for(lock, std::chrono::milliseconds(100));
+        std::unique_lock<std::mutex> lock(m);
+        while (done.load() < count) {
+            progress(double(done.load()) / std::max(1, count));
+            cv.wait_for(lock, std::chrono::milliseconds(100));
         }
         lock.unlock();
         last.join();
@@ -95,8 +106,114 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     } else {
         worker(0);
     }
-    for (std::thread& th : pool) th.join();
-    for (const TraceContext& st : perThread) stats.add(st.stats);
+    for (std::thread& t : pool) t.join();
+}
+
+ViewSetup resolveView(const Scene& scene, const RenderSettings& s) {
+    ViewSetup v;
+    v.camera = scene.cameras.at(size_t(s.cameraIndex));
+    v.aperture = s.aperture >= 0 ? s.aperture : v.camera.aperture;
+    v.focalDistance = s.focalDistance > 0 ? s.focalDistance : v.camera.focalDistance();
+    if (v.focalDistance <= 0) v.focalDistance = length(v.camera.lookAt - v.camera.location);
+    v.samples = sampleCount(s.aa, s.spp);
+    if (v.aperture > 0) {
+        const int dof = s.dofSamples > 0 ? s.dofSamples : (v.camera.blurSamples > 0 ? v.camera.blurSamples : 16);
+        v.samples = std::max(v.samples, sampleCount(s.aa == AaMode::Grid && s.spp == 1 ? AaMode::Stratified : s.aa, dof));
+    }
+    return v;
+}
+
+Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettings& s, int i, int j,
+                 TraceContext& ctx, PathInfo* info) {
+    const int count = view.samples;
+    // With depth of field and no explicit anti-aliasing, samples are stratified over the pixel.
+    const AaMode mode = (view.aperture > 0 && s.aa == AaMode::Grid && s.spp == 1) ? AaMode::Stratified : s.aa;
+    const double radius = filterRadius(s.filter);
+    const int stride = lensStride(count);
+    const Camera& cam = view.camera;
+    Vec3 sum;
+    double weightSum = 0;
+    for (int n = 0; n < count; ++n) {
+        ctx.rng = SampleRng(uint32_t(i), uint32_t(j), uint32_t(n), s.seed);
+        double a, b;
+        samplePoint(mode, n, count, ctx.rng, a, b);
+        // Map [0,1)² onto the filter support around the pixel centre.
+        const double dx = (2 * a - 1) * radius, dy = (2 * b - 1) * radius;
+        const double w = filterWeight(s.filter, dx, dy);
+        Ray ray = cam.rayThrough(i + 0.5 + dx, j + 0.5 + dy, s.width, s.height);
+        if (view.aperture > 0) {
+            // Thin lens: start on a disc of radius `aperture` around the eye (camera plane), aim
+            // at the point where the pinhole ray meets the focal plane.
+            const Vec3 fwd = cam.forward();
+            const Vec3 focus = ray.at(view.focalDistance / dot(ray.dir, fwd));
+            double la, lb;
+            samplePoint(AaMode::Stratified, int((int64_t(n) * stride) % count), count, ctx.rng, la, lb);
+            double lx, ly;
+            concentricDisc(la, lb, lx, ly);
+            const Vec3 ru = normalize(cam.right), uu = normalize(cam.up);
+            const Vec3 origin = cam.location + view.aperture * (lx * ru + ly * uu);
+            ray = Ray{origin, normalize(focus - origin)};
+        }
+        sum += w * tracer.tracePrimary(ray, ctx, nullptr, n == 0 ? info : nullptr);
+        weightSum += w;
+    }
+    return weightSum > 0 ? sum / weightSum : Vec3{};
+}
+
+ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
+              const ProgressFn& progress, std::vector<uint8_t>* edgePixels) {
+    ImageF img(s.width, s.height);
+    const ViewSetup view = resolveView(scene, s);
+    const Tracer tracer(scene, bvh, s);
+    const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
+    const int tileCount = tilesX * tilesY;
+    std::vector<TraceContext> perThread(size_t(resolveThreads(s.threads)));
+
+    auto forTiles = [&](const std::function<void(int x, int y, TraceContext&)>& pixel, const ProgressFn& prog) {
+        parallelFor(tileCount, s.threads, [&](int t, int w) {
+            const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
+            const int x1 = std::min(x0 + kTile, s.width), y1 = std::min(y0 + kTile, s.height);
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) pixel(x, y, perThread[size_t(w)]);
+        }, prog);
+    };
+
+    if (!s.aaEdges) {
+        forTiles([&](int x, int y, TraceContext& ctx) {
+            img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx);
+        }, progress);
+    } else {
+        // Pass 1: one centre sample per pixel, remembering what it saw.
+        RenderSettings one = s;
+        one.aa = AaMode::Grid;
+        one.spp = 1;
+        ViewSetup pinhole = view;
+        pinhole.samples = 1;
+        pinhole.aperture = 0;
+        std::vector<PathInfo> seen(size_t(s.width) * size_t(s.height));
+        forTiles([&](int x, int y, TraceContext& ctx) {
+            img.at(x, y) = renderPixel(tracer, pinhole, one, x, s.height - 1 - y, ctx, &seen[size_t(y) * s.width + x]);
+        }, progress ? ProgressFn([&](double f) { progress(0.5 * f); }) : ProgressFn{});
+        // Mark pixels that differ from any of their 8 neighbours.
+        std::vector<uint8_t> mark(seen.size(), 0);
+        for (int y = 0; y < s.height; ++y)
+            for (int x = 0; x < s.width; ++x)
+                for (int dy = -1; dy <= 1 && !mark[size_t(y) * s.width + x]; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int nx = x + dx, ny = y + dy;
+                        if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height) continue;
+                        if (!(seen[size_t(y) * s.width + x] == seen[size_t(ny) * s.width + nx])) {
+                            mark[size_t(y) * s.width + x] = 1;
+                            break;
+                        }
+                    }
+        // Pass 2: full sampling of the marked pixels only.
+        forTiles([&](int x, int y, TraceContext& ctx) {
+            if (mark[size_t(y) * s.width + x]) img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx);
+        }, progress ? ProgressFn([&](double f) { progress(0.5 + 0.5 * f); }) : ProgressFn{});
+        if (edgePixels) *edgePixels = std::move(mark);
+    }
+    for (const TraceContext& c : perThread) stats.add(c.stats);
     return img;
 }
 

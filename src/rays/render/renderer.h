@@ -1,6 +1,7 @@
 // Renderer: turns a scene into an image, tiles rendered in parallel on a small thread pool.
 #pragma once
 #include <functional>
+#include <vector>
 
 #include "rays/accel/bvh.h"
 #include "rays/image/image.h"
@@ -13,16 +14,35 @@ namespace rays {
 /// Called from the coordinating thread about ten times a second with the fraction done (0..1).
 using ProgressFn = std::function<void(double fraction)>;
 
-/// Colour of pixel (i, j), j counted up from the bottom row, averaged over the pixel's samples.
-Vec3 renderPixel(const Tracer& tracer, const Camera& camera, const RenderSettings& s, int i, int j,
-                 TraceContext& ctx);
+/// Camera and sampling parameters resolved once per render (CLI overrides applied).
+struct ViewSetup {
+    Camera camera;
+    double aperture = 0;       ///< lens radius; 0 = pinhole
+    double focalDistance = 1;  ///< along the view direction
+    int samples = 1;           ///< samples per pixel (anti-aliasing and lens together)
+};
+
+/// Resolves the camera and the sample count from the scene and the settings.
+ViewSetup resolveView(const Scene& scene, const RenderSettings& s);
+
+/// Colour of pixel (i, j), j counted up from the bottom row, over all its samples.
+/// When info is non-null it receives what the pixel's first sample saw.
+Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettings& s, int i, int j,
+                 TraceContext& ctx, PathInfo* info = nullptr);
 
 /// Renders the whole image (top row first). Deterministic: the result is bit-identical for any
-/// thread count. stats receives the summed counters.
+/// thread count. stats receives the summed counters. With settings.aaEdges, pass one renders
+/// one centre sample per pixel and pass two supersamples only pixels whose PathInfo differs
+/// from a neighbour's; edgePixels (optional) receives that mask (row-major, top row first).
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, TraceStats& stats,
-              const ProgressFn& progress = {});
+              const ProgressFn& progress = {}, std::vector<uint8_t>* edgePixels = nullptr);
 
 /// Number of worker threads used for a requested count (0 = all hardware threads).
 int resolveThreads(int requested);
+
+/// Runs body(index, worker) for index in [0, count) on `threads` workers handing out indices
+/// dynamically; progress (if set) is called from the calling thread while they run.
+void parallelFor(int count, int threads, const std::function<void(int index, int worker)>& body,
+                 const ProgressFn& progress = {});
 
 }  // namespace rays

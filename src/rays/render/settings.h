@@ -6,6 +6,20 @@ namespace rays {
 
 enum class ShadingModel { BlinnPhong, CookTorrance, Flat, Normals };
 
+/// How the samples of a pixel are placed.
+enum class AaMode {
+    Grid,        ///< regular k×k grid, k = round(√spp) (the course's -ss=N is Grid with N×N)
+    Random,      ///< spp uniform random positions
+    Stratified,  ///< k×k grid cells, one jittered sample in each
+};
+
+/// Reconstruction filter: how samples are weighted by their offset from the pixel centre.
+enum class PixelFilter {
+    Box,       ///< samples over the pixel, equal weights
+    Tent,      ///< samples within 1 pixel of the centre, weight (1−|x|)(1−|y|)
+    Gaussian,  ///< samples within 1.5 pixels, weight exp(−r²/(2·0.5²))
+};
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
@@ -13,9 +27,22 @@ struct RenderSettings {
     bool fresnel = false;      ///< -fresnel: Schlick Fresnel moves weight between reflection and transmission
     bool beers = false;        ///< -beers: refracted colour attenuated by exp(−(1−C)·0.15·d)
     int maxDepth = 6;          ///< secondary-ray recursion limit (primary rays are depth 0)
-    int gridSamples = 1;       ///< -ss=N: N×N regular sub-pixel grid (course supersampling)
-    int spp = 0;               ///< --spp N (> 0 overrides gridSamples): jittered samples, stratified when N is square
-    uint64_t seed = 0;         ///< seeds the per-sample hash RNG (jittered sampling only)
+
+    AaMode aa = AaMode::Grid;  ///< sample placement
+    int spp = 1;               ///< samples per pixel; 1 with Grid is the pixel centre (course)
+    PixelFilter filter = PixelFilter::Box;
+    bool aaEdges = false;      ///< one sample per pixel, then spp samples only where ids or shadows change
+    uint64_t seed = 0;         ///< seeds the per-sample hash RNG
+
+    int areaSamples = 0;       ///< > 0: area lights use this many samples per axis instead of the scene's
+    double aperture = -1;      ///< ≥ 0: lens radius overriding the camera's aperture
+    double focalDistance = -1; ///< > 0: focal distance overriding the camera's focal_point
+    int dofSamples = 0;        ///< > 0: samples per pixel with depth of field, overriding blur_samples
+
+    bool gi = false;           ///< course part 6: cosine-weighted hemisphere samples replace the ambient term
+    int giSamples[2] = {64, 16};  ///< samples at the first and at later bounces
+    int giBounces = 2;         ///< levels of indirect light
+
     int threads = 0;           ///< worker threads; 0 = all hardware threads
     int cameraIndex = 0;       ///< which camera of the scene
 };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rays/math/sampling.h"
 #include "rays/render/shading.h"
 
 namespace rays {
@@ -30,13 +31,22 @@ Vec3 beerTint(Vec3 c, double d) {
     return out;
 }
 
+// Offset of sample i of n along one area-light axis, in [−½, ½] (POV-Ray: i/(n−1) − ½; the
+// centre when n = 1). With jitter the sample moves randomly within its cell.
+double areaOffset(int i, int n, bool jitter, SampleRng& rng) {
+    if (n == 1) return jitter ? rng.next() - 0.5 : 0.0;
+    double s = double(i) / (n - 1) - 0.5;
+    if (jitter) s += (rng.next() - 0.5) / (n - 1);
+    return std::clamp(s, -0.5, 0.5);
+}
+
 }  // namespace
 
 Hit Tracer::firstHit(const Ray& ray) const { return bvh_.closest(scene_.objects, ray, kTMin, kInfinity); }
 
-Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log) const {
+Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log, PathInfo* info) const {
     ++ctx.stats.primaryRays;
-    return trace(ray, 0, TraceRecord::Kind::Primary, false, ctx, log).color;
+    return trace(ray, Frame{}, ctx, log, info).color;
 }
 
 bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx) const {
@@ -51,35 +61,132 @@ bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext
     return blocker >= 0;
 }
 
-void Tracer::localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
-                          Vec3& specular) const {
-    for (size_t li = 0; li < scene_.lights.size(); ++li) {
-        const PointLight& light = scene_.lights[li];
+double Tracer::shadeLight(const Light& light, size_t index, const Object& o, Vec3 P, Vec3 N, Vec3 V,
+                          TraceContext& ctx, Vec3& diffuse, Vec3& specular) const {
+    const Vec3 origin = P + kSurfaceOffset * N;
+    auto addSample = [&](Vec3 L, Vec3 color) {
+        const LightTerms t = settings_.shading == ShadingModel::CookTorrance ? cookTorrance(o.material, N, L, V, color)
+                                                                             : blinnPhong(o.material, N, L, V, color);
+        diffuse += t.diffuse;
+        specular += t.specular;
+    };
+    if (light.parallel) {
+        const Vec3 L = -light.direction;
+        if (shadowed(Ray{origin, L}, kInfinity, index, ctx)) return 0.0;
+        addSample(L, light.color);
+        return 1.0;
+    }
+    if (!light.area) {
         const Vec3 toLight = light.position - P;
         const double dist = length(toLight);
-        if (dist == 0) continue;
+        if (dist == 0) return 1.0;
         const Vec3 L = toLight / dist;
-        const Ray shadow{P + kSurfaceOffset * N, L};
-        if (shadowed(shadow, dist - kSurfaceOffset, li, ctx)) continue;
-        const LightTerms terms = settings_.shading == ShadingModel::CookTorrance
-                                     ? cookTorrance(o.material, N, L, V, light.color)
-                                     : blinnPhong(o.material, N, L, V, light.color);
-        diffuse += terms.diffuse;
-        specular += terms.specular;
+        if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx)) return 0.0;
+        addSample(L, light.color);
+        return 1.0;
     }
+
+    // Area light: n1 × n2 point lights, each with 1/(n1·n2) of the colour.
+    const int n1 = settings_.areaSamples > 0 ? settings_.areaSamples : light.n1;
+    const int n2 = settings_.areaSamples > 0 ? settings_.areaSamples : light.n2;
+    Vec3 a1 = light.axis1, a2 = light.axis2;
+    if (light.orient) {  // turn the light's plane to face P, keeping the axis lengths
+        const Vec3 toP = P - light.position;
+        if (length(toP) > 0) {
+            Vec3 t, b;
+            orthonormalBasis(normalize(toP), t, b);
+            a1 = length(light.axis1) * t;
+            a2 = length(light.axis2) * b;
+        }
+    }
+    auto samplePos = [&](int u, int v) {
+        double s1 = areaOffset(u, n1, light.jitter, ctx.rng), s2 = areaOffset(v, n2, light.jitter, ctx.rng);
+        if (light.circular) {
+            double x, y;
+            concentricDisc(s1 + 0.5, s2 + 0.5, x, y);
+            s1 = 0.5 * x;
+            s2 = 0.5 * y;
+        }
+        return light.position + s1 * a1 + s2 * a2;
+    };
+    const Vec3 color = light.color / double(n1 * n2);
+    auto visible = [&](Vec3 pos, Vec3& L) {
+        const Vec3 toLight = pos - P;
+        const double dist = length(toLight);
+        L = dist > 0 ? toLight / dist : N;
+        return dist == 0 || !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx);
+    };
+    // adaptive: when the four corners agree, their verdict holds for the whole light.
+    int cornerVerdict = -1;  // −1 undecided, 0 all blocked, 1 all visible
+    if (light.adaptive >= 0 && n1 > 1 && n2 > 1 && !light.jitter) {
+        int lit = 0;
+        Vec3 L;
+        for (int c = 0; c < 4; ++c) lit += visible(samplePos((c & 1) ? n1 - 1 : 0, (c & 2) ? n2 - 1 : 0), L);
+        if (lit == 0) return 0.0;
+        if (lit == 4) cornerVerdict = 1;
+    }
+    int lit = 0;
+    for (int v = 0; v < n2; ++v) {
+        for (int u = 0; u < n1; ++u) {
+            const Vec3 pos = samplePos(u, v);
+            Vec3 L;
+            if (cornerVerdict == 1) {
+                const Vec3 toLight = pos - P;
+                const double dist = length(toLight);
+                L = dist > 0 ? toLight / dist : N;
+            } else if (!visible(pos, L)) {
+                continue;
+            }
+            ++lit;
+            addSample(L, color);
+        }
+    }
+    return double(lit) / double(n1 * n2);
 }
 
-Tracer::Result Tracer::trace(const Ray& ray, int depth, TraceRecord::Kind kind, bool inside,
-                             TraceContext& ctx, std::vector<TraceRecord>* log) const {
+int Tracer::localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
+                         Vec3& specular) const {
+    int blocked = 0;
+    for (size_t li = 0; li < scene_.lights.size(); ++li)
+        if (shadeLight(scene_.lights[li], li, o, P, N, V, ctx, diffuse, specular) < 0.5) ++blocked;
+    return blocked;
+}
+
+Vec3 Tracer::gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const {
+    const int n = settings_.giSamples[f.giLevel == 0 ? 0 : 1];
+    if (n <= 0) return {};
+    const int k = std::max(1, int(std::lround(std::sqrt(double(n)))));
+    const bool strata = k * k == n;
+    Vec3 sum;
+    Frame child = f;
+    child.giLevel = f.giLevel + 1;
+    child.depth = f.depth + 1;
+    child.kind = TraceRecord::Kind::Reflection;
+    for (int i = 0; i < n; ++i) {
+        double a = ctx.rng.next(), b = ctx.rng.next();
+        if (strata) {  // stratified: one jittered sample per cell of a k×k grid
+            a = (i % k + a) / k;
+            b = (i / k + b) / k;
+        }
+        const Vec3 d = cosineHemisphere(N, a, b);
+        ++ctx.stats.secondaryRays;
+        sum += trace(Ray{P + kSurfaceOffset * N, d}, child, ctx, nullptr, nullptr).color;
+    }
+    return sum / double(n);
+}
+
+Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, std::vector<TraceRecord>* log,
+                             PathInfo* info) const {
     size_t rec = 0;
     if (log) {
         rec = log->size();
         log->push_back(TraceRecord{});
-        (*log)[rec].kind = kind;
+        (*log)[rec].kind = f.kind;
         (*log)[rec].ray = ray;
-        (*log)[rec].intoObject = inside;
+        (*log)[rec].intoObject = f.inside;
     }
     const Hit hit = firstHit(ray);
+    if (info) info->push(hit.object);
     if (!hit.valid()) return {};
 
     const Object& o = scene_.objects[size_t(hit.object)];
@@ -111,20 +218,25 @@ Tracer::Result Tracer::trace(const Ray& ray, int depth, TraceRecord::Kind kind, 
     }
 
     // Weights (course): local (1−f)(1−r), reflection (1−f)·r + f·F, transmission f·(1−F).
-    const double f = m.filter, refl = m.reflection;
+    const double filter = m.filter, refl = m.reflection;
     const double F = settings_.fresnel ? schlickFresnel(m.ior, dot(N, V)) : 0.0;
-    double wLocal = (1 - f) * (1 - refl);
-    double wRefl = (1 - f) * refl + f * F;
-    double wTrans = f * (1 - F);
+    double wLocal = (1 - filter) * (1 - refl);
+    double wRefl = (1 - filter) * refl + filter * F;
+    double wTrans = filter * (1 - F);
 
     Vec3 ambient, diffuse, specular;
-    if (wLocal > 0) {
-        ambient = m.ambient * m.color;
-        localShading(o, P, N, V, ctx, diffuse, specular);
+    int blocked = 0;
+    if (wLocal > 0 || info) {
+        blocked = localShading(o, P, N, V, ctx, diffuse, specular);
+        if (settings_.gi && f.giLevel < settings_.giBounces)
+            ambient = m.diffuse * m.color * gatherIndirect(P, N, f, ctx);
+        else
+            ambient = m.ambient * m.color;
     }
+    if (info && f.kind == TraceRecord::Kind::Primary) info->blockedLights = blocked;
 
     Vec3 reflColor, transColor;
-    const bool recurse = depth < settings_.maxDepth;
+    const bool recurse = f.depth < settings_.maxDepth;
     Vec3 T;
     if (wTrans > 0) {
         const double eta = entering ? 1.0 / m.ior : m.ior;
@@ -133,21 +245,20 @@ Tracer::Result Tracer::trace(const Ray& ray, int depth, TraceRecord::Kind kind, 
             wTrans = 0;
         }
     }
+    Frame child = f;
+    child.depth = f.depth + 1;
     if (recurse && wRefl > 0) {
         const Vec3 R = normalize(reflect(ray.dir, N));
         ++ctx.stats.secondaryRays;
-        reflColor = trace(Ray{P + kSurfaceOffset * R, R}, depth + 1, TraceRecord::Kind::Reflection, inside,
-                          ctx, log).color * m.color;
+        child.kind = TraceRecord::Kind::Reflection;
+        reflColor = trace(Ray{P + kSurfaceOffset * R, R}, child, ctx, log, info).color * m.color;
     }
     if (recurse && wTrans > 0) {
         ++ctx.stats.secondaryRays;
-        const Result child = trace(Ray{P + kSurfaceOffset * T, T}, depth + 1, TraceRecord::Kind::Refraction,
-                                   entering, ctx, log);
-        if (entering) {
-            transColor = child.color * (settings_.beers ? beerTint(m.color, child.t) : m.color);
-        } else {
-            transColor = child.color;
-        }
+        child.kind = TraceRecord::Kind::Refraction;
+        child.inside = entering;
+        const Result c = trace(Ray{P + kSurfaceOffset * T, T}, child, ctx, log, info);
+        transColor = entering ? c.color * (settings_.beers ? beerTint(m.color, c.t) : m.color) : c.color;
     }
 
     if (log) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rays/accel/bvh.h"
+#include "rays/render/sampler.h"
 #include "rays/render/settings.h"
 #include "rays/scene/scene.h"
 
@@ -39,11 +40,32 @@ struct TraceStats {
     uint64_t total() const { return primaryRays + secondaryRays + shadowRays; }
 };
 
-/// Per-thread mutable state of a trace: counters and the shadow cache (the object that last
-/// blocked each light). The cache only changes which object is tested first, never a result.
+/// What a pixel sample saw, for edge detection and edge-guided anti-aliasing: the object ids of
+/// the ray tree in depth-first order (primary hit first; −1 for a miss) and how many lights were
+/// blocked at the primary hit (an area light counts when most of its samples are blocked).
+struct PathInfo {
+    static constexpr int kMaxIds = 8;
+    int ids[kMaxIds];
+    int count = 0;
+    int blockedLights = 0;
+    void push(int id) {
+        if (count < kMaxIds) ids[count++] = id;
+    }
+    bool operator==(const PathInfo& o) const {
+        if (count != o.count || blockedLights != o.blockedLights) return false;
+        for (int i = 0; i < count; ++i)
+            if (ids[i] != o.ids[i]) return false;
+        return true;
+    }
+};
+
+/// Per-thread mutable state of a trace: counters, the random numbers of the current pixel sample
+/// and the shadow cache (the object that last blocked each light). The cache only changes which
+/// object is tested first, never a result.
 struct TraceContext {
     static constexpr int kCachedLights = 16;
     TraceStats stats;
+    SampleRng rng{0, 0, 0, 0};
     int lastBlocker[kCachedLights];
     TraceContext() { std::fill(std::begin(lastBlocker), std::end(lastBlocker), -1); }
 };
@@ -54,8 +76,11 @@ public:
         : scene_(scene), bvh_(bvh), settings_(settings) {}
 
     /// Colour seen along a primary ray. When log is non-null the ray tree is appended to it in
-    /// depth-first order (each node before its children).
-    Vec3 tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log = nullptr) const;
+    /// depth-first order (each node before its children); when info is non-null it receives the
+    /// ids along the tree and the primary hit's blocked lights. Random decisions (area-light
+    /// jitter, global illumination) draw from ctx.rng.
+    Vec3 tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log = nullptr,
+                      PathInfo* info = nullptr) const;
 
     /// Nearest hit along ray (t > small epsilon).
     Hit firstHit(const Ray& ray) const;
@@ -65,10 +90,22 @@ private:
         Vec3 color;
         double t = kInfinity;  ///< distance to the hit (for Beer's law)
     };
-    Result trace(const Ray& ray, int depth, TraceRecord::Kind kind, bool inside, TraceContext& ctx,
-                 std::vector<TraceRecord>* log) const;
-    void localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
-                      Vec3& specular) const;
+    struct Frame {  // per-ray arguments of the recursion
+        int depth = 0;
+        int giLevel = 0;
+        TraceRecord::Kind kind = TraceRecord::Kind::Primary;
+        bool inside = false;
+    };
+    Result trace(const Ray& ray, const Frame& f, TraceContext& ctx, std::vector<TraceRecord>* log,
+                 PathInfo* info) const;
+    /// Direct light at P; returns the number of lights counted as blocked.
+    int localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
+                     Vec3& specular) const;
+    /// Visible fraction and shading of one light (all its samples) at P.
+    double shadeLight(const Light& light, size_t index, const Object& o, Vec3 P, Vec3 N, Vec3 V,
+                      TraceContext& ctx, Vec3& diffuse, Vec3& specular) const;
+    /// Cosine-weighted average of the light arriving at P (global illumination).
+    Vec3 gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
     bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx) const;
 
     const Scene& scene_;

@@ -10,6 +10,12 @@ struct Camera {
     Vec3 up{0, 1, 0};         ///< image-plane vertical extent (not normalised)
     Vec3 right{1.33333, 0, 0};///< image-plane horizontal extent; |right|/|up| is the aspect ratio
     Vec3 lookAt{0, 0, -1};
+    double aperture = 0;      ///< lens radius (world units); 0 = pinhole
+    Vec3 focalPoint{0, 0, 0}; ///< in perfect focus; the focal distance is measured along the view direction
+    int blurSamples = 0;      ///< samples per pixel when aperture > 0 (0: renderer default)
+
+    /// Distance from location to the focal plane (along the view direction).
+    double focalDistance() const { return dot(focalPoint - location, forward()); }
 
     /// Unit view direction l = normalize(look_at − location).
     Vec3 forward() const { return normalize(lookAt - location); }

@@ -1,12 +1,28 @@
-// Light sources. The course uses point lights with an RGB colour.
+// Light sources: point lights (the course), POV-Ray's area lights (a rectangle or disc sampled by an
+// n1 × n2 grid of point lights) and parallel (directional) lights.
 #pragma once
 #include "rays/math/vec3.h"
 
 namespace rays {
 
-struct PointLight {
+struct Light {
     Vec3 position;
     Vec3 color{1, 1, 1};
+
+    // Area light: a rectangle spanned by axis1 and axis2 (full lengths) centred on position,
+    // sampled by an n1 × n2 grid: sample (u, v) at position + axis1·(u/(n1−1) − ½) + axis2·(v/(n2−1) − ½).
+    bool area = false;
+    Vec3 axis1, axis2;
+    int n1 = 1, n2 = 1;
+    bool jitter = false;    ///< move each sample randomly within its cell
+    int adaptive = -1;      ///< ≥ 0: test the four corner samples first; all agreeing decides visibility
+    bool circular = false;  ///< the grid is mapped onto the disc (ellipse) inscribed in the rectangle
+    bool orient = false;    ///< the light's plane turns to face the shaded point
+
+    // Parallel light: every light ray has direction `direction` (from the light toward point_at).
+    bool parallel = false;
+    Vec3 pointAt{0, 0, 0};
+    Vec3 direction{0, 0, -1};  ///< unit; set by the parser from point_at − position
 };
 
 }  // namespace rays

@@ -12,7 +12,7 @@ namespace rays {
 struct Scene {
     std::string fileName;
     std::vector<Camera> cameras;  ///< the first is the default; later ones are alternatives
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     std::vector<Object> objects;  ///< course object ID = index + 1
 };
 

@@ -1,5 +1,5 @@
-// Rays demo scene: every course-dialect shape, transforms, reflection, refraction and shadows.
-// Render: rays render scenes/demo.pov 800 600 -fresnel -beers -ss=2 -o demo.png
+// Demo: every course-dialect shape, transforms, reflection, refraction and shadows.
+// Render: rays render scenes/01-demo.pov 800 600 -fresnel -beers -ss=2 -o demo.png
 
 camera {
   location  <0, 3, 16>

@@ -1,0 +1,54 @@
+#include "scene_library.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "rays/error.h"
+
+namespace rays::cli {
+
+std::string sceneDirectory() {
+    if (const char* env = std::getenv("RAYS_SCENES")) return env;
+    return RAYS_SCENES_DIR;
+}
+
+std::vector<LibraryScene> listScenes(const std::string& dir) {
+    std::vector<LibraryScene> out;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        const std::string file = entry.path().filename().string();
+        if (entry.path().extension() != ".pov" || file.size() < 4 || !std::isdigit(static_cast<unsigned char>(file[0])))
+            continue;
+        const size_t dash = file.find('-');
+        if (dash == std::string::npos) continue;
+        LibraryScene s;
+        s.number = std::atoi(file.substr(0, dash).c_str());
+        s.name = entry.path().stem().string().substr(dash + 1);
+        s.path = entry.path().string();
+        std::ifstream in(entry.path());
+        std::string line;
+        while (std::getline(in, line)) {
+            if (line.rfind("//", 0) == 0) {
+                s.description = line.substr(line.find_first_not_of("/ "));
+                break;
+            }
+        }
+        out.push_back(s);
+    }
+    std::sort(out.begin(), out.end(), [](const LibraryScene& a, const LibraryScene& b) { return a.number < b.number; });
+    return out;
+}
+
+std::string findScene(const std::string& key) {
+    const std::string dir = sceneDirectory();
+    const auto scenes = listScenes(dir);
+    for (const LibraryScene& s : scenes)
+        if (s.name == key || std::to_string(s.number) == key) return s.path;
+    std::string names;
+    for (const LibraryScene& s : scenes) names += (names.empty() ? "" : ", ") + std::to_string(s.number) + " " + s.name;
+    throw Error("rays: error: no scene '" + key + "' in " + dir + " (scenes: " + (names.empty() ? "none" : names) + ")");
+}
+
+}  // namespace rays::cli
