@@ -14,6 +14,7 @@
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
 #include "rays/render/course_commands.h"
+#include "huge_pages.h"
 #include "render_command.h"
 #include "render_options.h"
 #include "scene_library.h"
@@ -95,6 +96,13 @@ int run(int argc, char** argv) {
     render->add_option("-H,--height", height, "image height in pixels");
     cli::addModernOptions(render, modern, job.settings);
     render->add_option("--scene", libraryScene, "render a shipped scene by number or name (see `rays scenes`)");
+    render->add_option("--edges", job.edges.types, "feature lines: silhouette,occlusion,intersection,crease,material,shadow,reflection | all | none");
+    render->add_option("--edge-method", job.edges.method, "stencil (default) | image");
+    render->add_option("--edge-width", job.edges.width, "line width in pixels, 0.5 to 8 (default 1.5)");
+    render->add_option("--edge-color", job.edges.color, "line colour R,G,B in 0..1 (default 0,0,0)");
+    render->add_option("--crease-angle", job.edges.creaseAngle, "crease threshold in degrees (default 30)");
+    render->add_flag("--lines-only", job.edges.linesOnly, "lines on white, no shading");
+    render->add_option("--edge-mask", job.edges.maskPath, "also write the line coverage as a greyscale image");
     render->add_option("--obj", obj, "add an OBJ mesh to the scene with a default material");
     render->add_option("--jpeg-quality", job.jpegQuality, "JPEG quality 1-100 (default 90)")->check(CLI::Range(1, 100));
     render->add_flag("--povray-rotate", povrayRotate, "apply rotate x, then y, then z as POV-Ray does (course: z first)");
@@ -194,6 +202,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    cli::enableHugePages(argv);
     try {
         return run(argc, argv);
     } catch (const Error& e) {

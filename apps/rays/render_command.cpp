@@ -12,6 +12,7 @@
 #include "rays/image/image.h"
 #include "rays/io/image_io.h"
 #include "rays/io/obj_loader.h"
+#include "rays/npr/feature_lines.h"
 #include "rays/render/renderer.h"
 
 namespace rays::cli {
@@ -100,6 +101,32 @@ private:
 
 }  // namespace
 
+EdgeSettings resolveEdges(const EdgeSettings& fromScene, const EdgeOptions& o) {
+    EdgeSettings e = fromScene;
+    if (!o.types.empty()) e.types = parseEdgeTypes(o.types);
+    if (!o.method.empty()) {
+        if (o.method == "stencil") e.method = EdgeMethod::Stencil;
+        else if (o.method == "image") e.method = EdgeMethod::Image;
+        else throw Error("rays: error: unknown edge method '" + o.method + "' (use stencil or image)");
+    }
+    if (o.width >= 0) e.width = o.width;
+    if (o.creaseAngle >= 0) e.creaseAngle = o.creaseAngle;
+    if (!o.color.empty()) {
+        double c[3];
+        char extra;
+        if (std::sscanf(o.color.c_str(), "%lf,%lf,%lf%c", &c[0], &c[1], &c[2], &extra) != 3)
+            throw Error("rays: error: --edge-color takes R,G,B (0..1), got '" + o.color + "'");
+        e.color = {c[0], c[1], c[2]};
+    }
+    if (o.linesOnly) e.linesOnly = true;
+    // Lines-only without any edge type asked for: draw the outline and creases.
+    if (e.linesOnly && e.types == 0) e.types = kEdgeSilhouette | kEdgeOcclusion | kEdgeCrease | kEdgeIntersection;
+    validateEdgeSettings(e);
+    if (!o.maskPath.empty() && !e.enabled())
+        throw Error("rays: error: --edge-mask needs edge lines (--edges LIST or an edges { } block)");
+    return e;
+}
+
 void checkImageSize(int width, int height) {
     constexpr int kMaxSide = 65536;
     if (width <= 0 || height <= 0)
@@ -126,6 +153,12 @@ int runRender(const RenderJob& job) {
     checkOutputDirectory(job.outputPath);
     checkOutputIsNotInput(job.outputPath, job.scenePath);
     checkOutputIsNotInput(job.outputPath, job.objPath);
+    if (!job.edges.maskPath.empty()) {
+        if (!isSupportedImageExtension(job.edges.maskPath))
+            failFile(job.edges.maskPath, "unsupported mask image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
+        checkOutputDirectory(job.edges.maskPath);
+        checkOutputIsNotInput(job.edges.maskPath, job.scenePath);
+    }
 
     auto t0 = Clock::now();
     const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation);
@@ -138,20 +171,39 @@ int runRender(const RenderJob& job) {
     const Bvh bvh(scene.objects);
     const double buildMs = msSince(t0);
 
+    const EdgeSettings edges = resolveEdges(scene.edges, job.edges);
+
     t0 = Clock::now();
     TraceStats stats;
     ProgressBar bar(!job.quiet && isatty(STDERR_FILENO));
-    const ImageF img = render(scene, bvh, s, stats, [&](double f) { bar(f); });
+    ImageF img(s.width, s.height);
+    std::vector<PathInfo> records;
+    const bool reuse = edges.enabled() && !edges.linesOnly && renderRecordsAreCentred(scene, s);
+    if (!edges.linesOnly) img = render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, reuse ? &records : nullptr);
     const double renderMs = msSince(t0);
+    double linesMs = 0;
+    LineCoverage lines;
+    if (edges.enabled()) {
+        t0 = Clock::now();
+        lines = drawFeatureLines(scene, bvh, s, edges, reuse ? &records : nullptr, stats);
+        compositeLines(img, lines, edges);
+        linesMs = msSince(t0);
+    }
 
     t0 = Clock::now();
+    if (!job.edges.maskPath.empty()) writeImage(job.edges.maskPath, coverageImage(lines), job.jpegQuality);
     writeImage(job.outputPath, toImage8(img), job.jpegQuality);
     const double writeMs = msSince(t0);
 
     if (!job.quiet) {
         const double mrays = renderMs > 0 ? stats.total() / (renderMs * 1000.0) : 0.0;
-        std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, write %.1f ms; %.2f Mrays/s\n",
-                     job.outputPath.c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
+        const double mraysAll = (renderMs + linesMs) > 0 ? stats.total() / ((renderMs + linesMs) * 1000.0) : 0.0;
+        if (edges.enabled())
+            std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, lines %.1f ms, write %.1f ms; %.2f Mrays/s\n",
+                         job.outputPath.c_str(), s.width, s.height, parseMs, buildMs, renderMs, linesMs, writeMs, mraysAll);
+        else
+            std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, write %.1f ms; %.2f Mrays/s\n",
+                         job.outputPath.c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
     }
     if (job.stats) {
         std::fprintf(stderr, "stats: objects %zu, lights %zu, BVH nodes %zu (depth %d), threads %d\n",

@@ -4,15 +4,31 @@
 #include <string>
 
 #include "rays/io/scene_parser.h"
+#include "rays/npr/edge_settings.h"
 #include "rays/render/settings.h"
 
 namespace rays::cli {
+
+/// Feature-line options given on the command line; unset ones keep the scene's `edges { }` values.
+struct EdgeOptions {
+    std::string types;        ///< --edges LIST
+    std::string method;       ///< --edge-method
+    double width = -1;        ///< --edge-width
+    std::string color;        ///< --edge-color R,G,B
+    double creaseAngle = -1;  ///< --crease-angle
+    bool linesOnly = false;   ///< --lines-only
+    std::string maskPath;     ///< --edge-mask FILE
+};
+
+/// The scene's edge settings with the command line's overrides applied; throws Error on bad values.
+EdgeSettings resolveEdges(const EdgeSettings& fromScene, const EdgeOptions& o);
 
 struct RenderJob {
     std::string scenePath;
     std::string outputPath = "output.png";
     std::string objPath;  ///< optional OBJ mesh added with a default material
     RenderSettings settings;
+    EdgeOptions edges;
     RotationOrder rotation = RotationOrder::Course;
     int jpegQuality = 90;
     bool quiet = false;   ///< no progress bar, no summary line

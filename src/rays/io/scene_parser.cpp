@@ -362,6 +362,7 @@ private:
         const Token t = tok_;
         if (t.kind == TokenKind::Identifier) {
             if (t.text == "camera") return camera();
+            if (t.text == "edges") return edges();
             if (t.text == "light_source") return light();
             if (t.text == "sphere" || t.text == "plane" || t.text == "triangle" || t.text == "box" ||
                 t.text == "cone")
@@ -454,6 +455,50 @@ private:
         if (length(cross(normalize(c.right), l)) < 1e-9)
             fail(at, "camera 'right' is parallel to the view direction");
         scene_.cameras.push_back(c);
+    }
+
+    // edges { silhouette crease ... | all | none  edge_method stencil|image  edge_width W
+    //         edge_color rgb <r,g,b>  crease_angle DEG  lines_only }
+    void edges() {
+        const Token kw = tok_;
+        advance();
+        EdgeSettings& e = scene_.edges;
+        block(kw, [&] {
+            const Token item = tok_;
+            if (isSymbol(',')) {
+                advance();
+            } else if (isIdent("edge_method")) {
+                advance();
+                if (isIdent("stencil")) e.method = EdgeMethod::Stencil;
+                else if (isIdent("image")) e.method = EdgeMethod::Image;
+                else error("edge_method must be stencil or image, found " + describe(tok_));
+                advance();
+            } else if (isIdent("edge_width")) {
+                advance();
+                e.width = number("edge_width");
+                if (!(e.width >= 0.5 && e.width <= 8)) fail(loc(item), "edge_width must be between 0.5 and 8 pixels");
+            } else if (isIdent("edge_color") || isIdent("edge_colour")) {
+                advance();
+                e.color = lightColor();
+            } else if (isIdent("crease_angle")) {
+                advance();
+                e.creaseAngle = number("crease_angle");
+                if (!(e.creaseAngle > 0 && e.creaseAngle < 180)) fail(loc(item), "crease_angle must be between 0 and 180 degrees");
+            } else if (isIdent("lines_only")) {
+                advance();
+                e.linesOnly = true;
+            } else if (tok_.kind == TokenKind::Identifier) {
+                try {
+                    e.types |= parseEdgeTypes(std::string(tok_.text));
+                } catch (const Error&) {
+                    error("unknown edge type or setting " + describe(tok_) +
+                          " in edges (types: silhouette occlusion intersection crease material shadow reflection all none)");
+                }
+                advance();
+            } else {
+                unknown("edges");
+            }
+        });
     }
 
     void light() {

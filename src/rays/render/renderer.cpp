@@ -161,7 +161,7 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
 }
 
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
-              const ProgressFn& progress, std::vector<uint8_t>* edgePixels) {
+              const ProgressFn& progress, std::vector<uint8_t>* edgePixels, std::vector<PathInfo>* records) {
     ImageF img(s.width, s.height);
     const ViewSetup view = resolveView(scene, s);
     const Tracer tracer(scene, bvh, s);
@@ -178,9 +178,11 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         }, prog);
     };
 
+    if (records) records->assign(size_t(s.width) * size_t(s.height), PathInfo{});
     if (!s.aaEdges) {
         forTiles([&](int x, int y, TraceContext& ctx) {
-            img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx);
+            PathInfo* info = records ? &(*records)[size_t(y) * s.width + x] : nullptr;
+            img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx, info);
         }, progress);
     } else {
         // Pass 1: one centre sample per pixel, remembering what it saw.
@@ -212,6 +214,7 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
             if (mark[size_t(y) * s.width + x]) img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx);
         }, progress ? ProgressFn([&](double f) { progress(0.5 + 0.5 * f); }) : ProgressFn{});
         if (edgePixels) *edgePixels = std::move(mark);
+        if (records) *records = std::move(seen);
     }
     for (const TraceContext& c : perThread) stats.add(c.stats);
     return img;

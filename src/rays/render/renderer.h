@@ -34,8 +34,10 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
 /// thread count. stats receives the summed counters. With settings.aaEdges, pass one renders
 /// one centre sample per pixel and pass two supersamples only pixels whose PathInfo differs
 /// from a neighbour's; edgePixels (optional) receives that mask (row-major, top row first).
+/// records (optional) receives each pixel's first-sample PathInfo (top row first).
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, TraceStats& stats,
-              const ProgressFn& progress = {}, std::vector<uint8_t>* edgePixels = nullptr);
+              const ProgressFn& progress = {}, std::vector<uint8_t>* edgePixels = nullptr,
+              std::vector<PathInfo>* records = nullptr);
 
 /// Number of worker threads used for a requested count (0 = all hardware threads).
 int resolveThreads(int requested);

@@ -144,6 +144,61 @@ double Tracer::shadeLight(const Light& light, size_t index, const Object& o, Vec
     return double(lit) / double(n1 * n2);
 }
 
+void Tracer::probe(const Ray& ray, bool countShadows, bool followSecondary, TraceContext& ctx, PathInfo& out) const {
+    out = PathInfo{};
+    ++ctx.stats.primaryRays;
+    probeRec(ray, 0, countShadows, followSecondary, ctx, out);
+}
+
+int Tracer::blockedLightsAt(Vec3 P, Vec3 N, TraceContext& ctx) const {
+    const Vec3 origin = P + kSurfaceOffset * N;
+    int blocked = 0;
+    for (size_t li = 0; li < scene_.lights.size(); ++li) {
+        const Light& L = scene_.lights[li];
+        const Vec3 toLight = L.parallel ? -L.direction : L.position - P;
+        const double dist = length(toLight);
+        if (dist == 0) continue;
+        if (shadowed(Ray{origin, toLight / dist}, L.parallel ? kInfinity : dist - kSurfaceOffset, li, ctx)) ++blocked;
+    }
+    return blocked;
+}
+
+void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followSecondary, TraceContext& ctx,
+                      PathInfo& out) const {
+    const Hit hit = firstHit(ray);
+    out.push(hit.object);
+    if (!hit.valid()) return;
+    const Object& o = scene_.objects[size_t(hit.object)];
+    const Vec3 P = ray.at(hit.t);
+    const bool entering = dot(ray.dir, hit.geomNormal) < 0;
+    const Vec3 N = entering ? hit.normal : -hit.normal;
+    if (depth == 0) {
+        out.t = hit.t;
+        out.point = P;
+        out.normal = N;
+        if (countShadows) out.blockedLights = blockedLightsAt(P, N, ctx);
+    }
+    if (!followSecondary || depth >= settings_.maxDepth || out.count >= PathInfo::kMaxIds) return;
+    const Material& m = o.material;
+    const double F = settings_.fresnel ? schlickFresnel(m.ior, dot(N, -ray.dir)) : 0.0;
+    double wRefl = (1 - m.filter) * m.reflection + m.filter * F;
+    double wTrans = m.filter * (1 - F);
+    Vec3 T;
+    if (wTrans > 0 && !refractDir(ray.dir, N, entering ? 1.0 / m.ior : m.ior, T)) {
+        wRefl += wTrans;
+        wTrans = 0;
+    }
+    if (wRefl > 0) {
+        const Vec3 R = normalize(reflect(ray.dir, N));
+        ++ctx.stats.secondaryRays;
+        probeRec(Ray{P + kSurfaceOffset * R, R}, depth + 1, false, true, ctx, out);
+    }
+    if (wTrans > 0) {
+        ++ctx.stats.secondaryRays;
+        probeRec(Ray{P + kSurfaceOffset * T, T}, depth + 1, false, true, ctx, out);
+    }
+}
+
 int Tracer::localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
                          Vec3& specular) const {
     int blocked = 0;
@@ -233,7 +288,12 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
         else
             ambient = m.ambient * m.color;
     }
-    if (info && f.kind == TraceRecord::Kind::Primary) info->blockedLights = blocked;
+    if (info && f.kind == TraceRecord::Kind::Primary) {
+        info->blockedLights = blocked;
+        info->t = hit.t;
+        info->point = P;
+        info->normal = N;
+    }
 
     Vec3 reflColor, transColor;
     const bool recurse = f.depth < settings_.maxDepth;

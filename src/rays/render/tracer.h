@@ -48,6 +48,9 @@ struct PathInfo {
     int ids[kMaxIds];
     int count = 0;
     int blockedLights = 0;
+    double t = kInfinity;  ///< primary hit distance
+    Vec3 point;            ///< primary hit point
+    Vec3 normal;           ///< primary shading normal facing the viewer
     void push(int id) {
         if (count < kMaxIds) ids[count++] = id;
     }
@@ -85,6 +88,14 @@ public:
     /// Nearest hit along ray (t > small epsilon).
     Hit firstHit(const Ray& ray) const;
 
+    /// What a ray sees without shading it, for feature lines: ids along the ray tree (only the
+    /// primary hit unless followSecondary), the primary hit's t and facing normal, and (when
+    /// countShadows) how many lights are blocked there (area lights tested at their centre).
+    void probe(const Ray& ray, bool countShadows, bool followSecondary, TraceContext& ctx, PathInfo& out) const;
+
+    /// Number of lights blocked at P (normal N facing the viewer); area lights are tested at their centre.
+    int blockedLightsAt(Vec3 P, Vec3 N, TraceContext& ctx) const;
+
 private:
     struct Result {
         Vec3 color;
@@ -104,6 +115,8 @@ private:
     /// Visible fraction and shading of one light (all its samples) at P.
     double shadeLight(const Light& light, size_t index, const Object& o, Vec3 P, Vec3 N, Vec3 V,
                       TraceContext& ctx, Vec3& diffuse, Vec3& specular) const;
+    void probeRec(const Ray& ray, int depth, bool countShadows, bool followSecondary, TraceContext& ctx,
+                  PathInfo& out) const;
     /// Cosine-weighted average of the light arriving at P (global illumination).
     Vec3 gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
     bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx) const;

@@ -1,0 +1,184 @@
+#include "rays/npr/feature_lines.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "rays/npr/edge_classify.h"
+#include "rays/npr/stencil.h"
+#include "rays/npr/surfaces.h"
+
+namespace rays {
+namespace {
+
+constexpr int kRowBlock = 8;  // rows per parallel work item
+
+// Probes the centre ray of every pixel.
+std::vector<PathInfo> probeCentres(const Tracer& tracer, const Camera& cam, const RenderSettings& s,
+                                   const EdgeSettings& e, std::vector<TraceContext>& ctx) {
+    std::vector<PathInfo> rec(size_t(s.width) * size_t(s.height));
+    const bool shadows = e.types & kEdgeShadow, secondary = e.types & kEdgeReflection;
+    parallelFor((s.height + kRowBlock - 1) / kRowBlock, s.threads, [&](int block, int w) {
+        for (int y = block * kRowBlock; y < std::min(s.height, (block + 1) * kRowBlock); ++y)
+            for (int x = 0; x < s.width; ++x)
+                tracer.probe(cam.rayThrough(x + 0.5, s.height - 1 - y + 0.5, s.width, s.height), shadows, secondary,
+                             ctx[size_t(w)], rec[size_t(y) * s.width + x]);
+    });
+    return rec;
+}
+
+// Anti-aliased disc stamp: coverage max(·, clamp(w/2 + ½ − d, 0, 1)) around (cx, cy).
+void stamp(LineCoverage& lc, double cx, double cy, double width) {
+    const double reach = width / 2 + 0.5;
+    const int x0 = std::max(0, int(std::floor(cx - reach))), x1 = std::min(lc.width - 1, int(std::ceil(cx + reach)));
+    const int y0 = std::max(0, int(std::floor(cy - reach))), y1 = std::min(lc.height - 1, int(std::ceil(cy + reach)));
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+            const float c = float(std::clamp(reach - d, 0.0, 1.0));
+            float& dst = lc.coverage[size_t(y) * lc.width + x];
+            dst = std::max(dst, c);
+        }
+}
+
+// Image method: an edge between two neighbouring pixels is stamped at their shared midpoint.
+void imageLines(LineCoverage& lc, const std::vector<PathInfo>& rec, const SurfaceIds& ids, const EdgeSettings& e) {
+    const EdgeThresholds th = thresholdsFor(e);
+    const int W = lc.width, H = lc.height;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const PathInfo& p = rec[size_t(y) * W + x];
+            if (x + 1 < W && (classifyPair(p, rec[size_t(y) * W + x + 1], ids, th) & e.types))
+                stamp(lc, x + 1.0, y + 0.5, e.width);
+            if (y + 1 < H && (classifyPair(p, rec[size_t(y + 1) * W + x], ids, th) & e.types))
+                stamp(lc, x + 0.5, y + 1.0, e.width);
+        }
+}
+
+// Pixels within `reach` of a neighbour pair that differs: the only places where stencil rays can
+// find an edge. Creases and depth jumps are sharp, so adjacent pixel centres already show the
+// full normal angle or depth step; the thresholds need no relaxing.
+std::vector<uint8_t> candidates(const std::vector<PathInfo>& rec, int W, int H, const SurfaceIds& ids,
+                                const EdgeSettings& e, int reach, int threads) {
+    const EdgeThresholds th = thresholdsFor(e);
+    std::vector<uint8_t> diff(rec.size(), 0), tmp(rec.size(), 0), out(rec.size(), 0);
+    parallelFor((H + kRowBlock - 1) / kRowBlock, threads, [&](int block, int) {
+        for (int y = block * kRowBlock; y < std::min(H, (block + 1) * kRowBlock); ++y)
+            for (int x = 0; x < W; ++x) {
+                const PathInfo& p = rec[size_t(y) * W + x];
+                if ((x + 1 < W && (classifyPair(p, rec[size_t(y) * W + x + 1], ids, th) & e.types)) ||
+                    (y + 1 < H && (classifyPair(p, rec[size_t(y + 1) * W + x], ids, th) & e.types)))
+                    diff[size_t(y) * W + x] = 1;
+            }
+    });
+    // Separable box dilation by reach around both pixels of each differing pair.
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            if (diff[size_t(y) * W + x])
+                for (int k = std::max(0, x - reach); k <= std::min(W - 1, x + reach + 1); ++k) tmp[size_t(y) * W + k] = 1;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            if (tmp[size_t(y) * W + x])
+                for (int k = std::max(0, y - reach); k <= std::min(H - 1, y + reach + 1); ++k) out[size_t(k) * W + x] = 1;
+    return out;
+}
+
+}  // namespace
+
+bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s) {
+    const Camera& cam = scene.cameras.at(size_t(s.cameraIndex));
+    const double aperture = s.aperture >= 0 ? s.aperture : cam.aperture;
+    return s.aa == AaMode::Grid && s.spp == 1 && aperture <= 0 && !s.aaEdges &&
+           (s.shading == ShadingModel::BlinnPhong || s.shading == ShadingModel::CookTorrance);
+}
+
+LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,
+                              const std::vector<PathInfo>* centreRecords, TraceStats& stats) {
+    LineCoverage lc;
+    lc.width = s.width;
+    lc.height = s.height;
+    lc.coverage.assign(size_t(s.width) * size_t(s.height), 0.0f);
+    if (!e.enabled()) return lc;
+    const Tracer tracer(scene, bvh, s);
+    const Camera& cam = scene.cameras.at(size_t(s.cameraIndex));
+    std::vector<TraceContext> ctx(size_t(resolveThreads(s.threads)));
+    std::vector<PathInfo> probed;
+    if (!centreRecords) {
+        probed = probeCentres(tracer, cam, s, e, ctx);
+        centreRecords = &probed;
+    }
+    const std::vector<PathInfo>& rec = *centreRecords;
+    const SurfaceIds ids = computeSurfaceIds(scene);
+
+    if (e.method == EdgeMethod::Image) {
+        imageLines(lc, rec, ids, e);
+    } else {
+        const double radius = stencilRadius(e.width);
+        const std::vector<StencilOffset> stencil = makeStencil(radius);
+        const int n = int(stencil.size());
+        const std::vector<uint8_t> cand = candidates(rec, s.width, s.height, ids, e, int(std::ceil(radius)), s.threads);
+        const EdgeThresholds th = thresholdsFor(e);
+        const bool shadows = e.types & kEdgeShadow, secondary = e.types & kEdgeReflection;
+        // Stencil positions lie within R pixels of the centre, so their four surrounding pixel
+        // centres lie within ⌈R⌉.
+        const int reach = int(std::ceil(radius));
+        const int side = 2 * reach + 1;
+        parallelFor((s.height + kRowBlock - 1) / kRowBlock, s.threads, [&](int block, int w) {
+            PathInfo other;
+            std::vector<int8_t> near(size_t(side) * side);  // does the record at (dx, dy) differ from the centre?
+            for (int y = block * kRowBlock; y < std::min(s.height, (block + 1) * kRowBlock); ++y)
+                for (int x = 0; x < s.width; ++x) {
+                    if (!cand[size_t(y) * s.width + x]) continue;
+                    const PathInfo& centre = rec[size_t(y) * s.width + x];
+                    for (int dy = -reach; dy <= reach; ++dy) {
+                        const PathInfo* row = &rec[size_t(std::clamp(y + dy, 0, s.height - 1)) * s.width];
+                        for (int dx = -reach; dx <= reach; ++dx)
+                            near[size_t(dy + reach) * side + dx + reach] =
+                                (classifyPair(centre, row[std::clamp(x + dx, 0, s.width - 1)], ids, th) & e.types) != 0;
+                    }
+                    auto differs = [&](int dx, int dy) { return near[size_t(dy + reach) * side + dx + reach]; };
+                    int m = 0;
+                    for (const StencilOffset& o : stencil) {
+                        // Reuse primary hits: when the four pixel centres around the stencil
+                        // position agree, the stencil ray would see the same; cast it otherwise.
+                        const double px = 0.5 + o.dx, py = 0.5 - o.dy;  // relative to the pixel, rows down
+                        const int ix = int(std::floor(px - 0.5)), iy = int(std::floor(py - 0.5));
+                        const int votes = differs(ix, iy) + differs(ix + 1, iy) + differs(ix, iy + 1) + differs(ix + 1, iy + 1);
+                        if (votes == 0) continue;
+                        if (votes == 4) {
+                            ++m;
+                            continue;
+                        }
+                        const Ray r = cam.rayThrough(x + 0.5 + o.dx, s.height - 1 - y + 0.5 + o.dy, s.width, s.height);
+                        // Shadow rays only when nothing else already separates the two samples.
+                        tracer.probe(r, false, secondary, ctx[size_t(w)], other);
+                        other.blockedLights = centre.blockedLights;
+                        if (classifyPair(centre, other, ids, th) & e.types) {
+                            ++m;
+                        } else if (shadows && other.count > 0 && other.ids[0] >= 0) {
+                            other.blockedLights = tracer.blockedLightsAt(r.at(other.t), other.normal, ctx[size_t(w)]);
+                            if (other.blockedLights != centre.blockedLights) ++m;
+                        }
+                    }
+                    lc.coverage[size_t(y) * s.width + x] = float(stencilStrength(m, n));
+                }
+        });
+    }
+    for (const TraceContext& c : ctx) stats.add(c.stats);
+    return lc;
+}
+
+void compositeLines(ImageF& img, const LineCoverage& lines, const EdgeSettings& e) {
+    for (size_t i = 0; i < img.pixels.size(); ++i) {
+        const double c = lines.coverage[i];
+        const Vec3 base = e.linesOnly ? Vec3(1.0) : img.pixels[i];
+        img.pixels[i] = (1 - c) * base + c * e.color;
+    }
+}
+
+Image8 coverageImage(const LineCoverage& lines) {
+    Image8 out(lines.width, lines.height, 1);
+    for (size_t i = 0; i < lines.coverage.size(); ++i) out.pixels[i] = toByte(lines.coverage[i]);
+    return out;
+}
+
+}  // namespace rays

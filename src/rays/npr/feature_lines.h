@@ -1,0 +1,34 @@
+// Feature lines over a rendered image: line coverage per pixel by the stencil or the image method,
+// and compositing.
+#pragma once
+#include <vector>
+
+#include "rays/accel/bvh.h"
+#include "rays/image/image.h"
+#include "rays/npr/edge_settings.h"
+#include "rays/render/renderer.h"
+
+namespace rays {
+
+/// Line coverage in [0, 1] per pixel, top row first.
+struct LineCoverage {
+    int width = 0, height = 0;
+    std::vector<float> coverage;
+    float at(int x, int y) const { return coverage[size_t(y) * size_t(width) + size_t(x)]; }
+};
+
+/// True when the records render() collects can serve as pixel-centre records for the lines.
+bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s);
+
+/// Computes the lines. centreRecords: one record per pixel from the pixel centre (top row first),
+/// or null to probe them here. stats receives the rays cast.
+LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,
+                              const std::vector<PathInfo>* centreRecords, TraceStats& stats);
+
+/// Blends the line colour over img by coverage; with linesOnly the image starts white.
+void compositeLines(ImageF& img, const LineCoverage& lines, const EdgeSettings& e);
+
+/// The coverage as an 8-bit greyscale image (255 = full line).
+Image8 coverageImage(const LineCoverage& lines);
+
+}  // namespace rays
