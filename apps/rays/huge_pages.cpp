@@ -1,5 +1,6 @@
 #include "huge_pages.h"
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -8,6 +9,10 @@
 namespace rays::cli {
 
 void enableHugePages(char** argv) {
+    // Large blocks come from the heap and stay there when freed, so a later buffer of the
+    // render reuses pages that are already mapped instead of faulting in fresh (zeroed) ones.
+    mallopt(M_MMAP_THRESHOLD, 512 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
     if (std::getenv("RAYS_NO_HUGEPAGES") != nullptr) return;
     const char* current = std::getenv("GLIBC_TUNABLES");
     const std::string tunables = current ? current : "";

@@ -6,8 +6,9 @@
 
 namespace rays::cli {
 
-/// Re-executes the program with the huge-page malloc tunable unless it is already set (or
-/// RAYS_NO_HUGEPAGES is set). Returns only when no re-execution happened.
+/// Keeps large freed blocks in the heap for reuse, then re-executes the program with the
+/// huge-page malloc tunable unless it is already set (or RAYS_NO_HUGEPAGES is set). Returns only
+/// when no re-execution happened.
 void enableHugePages(char** argv);
 
 }  // namespace rays::cli

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <iostream>
 
 #include "rays/accel/bvh.h"
@@ -177,15 +178,20 @@ int runRender(const RenderJob& job) {
     TraceStats stats;
     ProgressBar bar(!job.quiet && isatty(STDERR_FILENO));
     ImageF img(s.width, s.height);
-    std::vector<PathInfo> records;
     const bool reuse = edges.enabled() && !edges.linesOnly && renderRecordsAreCentred(scene, s);
-    if (!edges.linesOnly) img = render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, reuse ? &records : nullptr);
+    std::unique_ptr<LineRecords> records;
+    RecordFn onRecord;
+    if (reuse) {
+        records = std::make_unique<LineRecords>(scene, s.width, s.height);
+        onRecord = [&](int x, int y, const PathInfo& info) { records->store(x, y, info); };
+    }
+    if (!edges.linesOnly) img = render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord);
     const double renderMs = msSince(t0);
     double linesMs = 0;
     LineCoverage lines;
     if (edges.enabled()) {
         t0 = Clock::now();
-        lines = drawFeatureLines(scene, bvh, s, edges, reuse ? &records : nullptr, stats);
+        lines = drawFeatureLines(scene, bvh, s, edges, records.get(), stats);
         compositeLines(img, lines, edges);
         linesMs = msSince(t0);
     }

@@ -18,12 +18,26 @@ struct EdgeThresholds {
 
 EdgeThresholds thresholdsFor(const EdgeSettings& e, double relax = 1.0);
 
-/// EdgeType bits that hold between records a and b (both from probe()).
+/// What one sample saw, compacted for fast comparison (40 bytes).
+struct EdgeRecord {
+    int32_t surface = -1;   ///< surface id of the primary hit; −1 = background
+    int32_t material = -1;  ///< material id of the primary hit
+    int32_t blocked = 0;    ///< lights blocked at the primary hit
+    uint32_t path = 0;      ///< hash of the surfaces along the secondary rays (0: none)
+    float t = 0;            ///< primary hit distance
+    float p[3] = {0, 0, 0}; ///< primary hit point
+    float n[3] = {0, 0, 0}; ///< primary facing normal
+};
+
+/// Compacts a probe()/render record.
+EdgeRecord toEdgeRecord(const PathInfo& info, const SurfaceIds& ids);
+
+/// EdgeType bits that hold between records a and b.
 /// - one hits nothing, the other something: silhouette
 /// - different surfaces: silhouette when the depth jumps, else intersection (+ material when the
 ///   materials differ)
 /// - same surface: occlusion when the depth jumps, else crease (normal angle) and material
 /// - blocked-light counts differ: shadow; surfaces along the secondary rays differ: reflection
-uint32_t classifyPair(const PathInfo& a, const PathInfo& b, const SurfaceIds& ids, const EdgeThresholds& th);
+uint32_t classifyPair(const EdgeRecord& a, const EdgeRecord& b, const EdgeThresholds& th);
 
 }  // namespace rays

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "rays/npr/edge_classify.h"
 #include "rays/npr/stencil.h"
@@ -13,17 +14,18 @@ namespace {
 constexpr int kRowBlock = 8;  // rows per parallel work item
 
 // Probes the centre ray of every pixel.
-std::vector<PathInfo> probeCentres(const Tracer& tracer, const Camera& cam, const RenderSettings& s,
-                                   const EdgeSettings& e, std::vector<TraceContext>& ctx) {
-    std::vector<PathInfo> rec(size_t(s.width) * size_t(s.height));
+void probeCentres(const Tracer& tracer, const Camera& cam, const RenderSettings& s, const EdgeSettings& e,
+                  std::vector<TraceContext>& ctx, LineRecords& out) {
     const bool shadows = e.types & kEdgeShadow, secondary = e.types & kEdgeReflection;
     parallelFor((s.height + kRowBlock - 1) / kRowBlock, s.threads, [&](int block, int w) {
+        PathInfo info;
         for (int y = block * kRowBlock; y < std::min(s.height, (block + 1) * kRowBlock); ++y)
-            for (int x = 0; x < s.width; ++x)
+            for (int x = 0; x < s.width; ++x) {
                 tracer.probe(cam.rayThrough(x + 0.5, s.height - 1 - y + 0.5, s.width, s.height), shadows, secondary,
-                             ctx[size_t(w)], rec[size_t(y) * s.width + x]);
+                             ctx[size_t(w)], info);
+                out.store(x, y, info);
+            }
     });
-    return rec;
 }
 
 // Anti-aliased disc stamp: coverage max(·, clamp(w/2 + ½ − d, 0, 1)) around (cx, cy).
@@ -41,15 +43,15 @@ void stamp(LineCoverage& lc, double cx, double cy, double width) {
 }
 
 // Image method: an edge between two neighbouring pixels is stamped at their shared midpoint.
-void imageLines(LineCoverage& lc, const std::vector<PathInfo>& rec, const SurfaceIds& ids, const EdgeSettings& e) {
+void imageLines(LineCoverage& lc, const std::vector<EdgeRecord>& rec, const EdgeSettings& e) {
     const EdgeThresholds th = thresholdsFor(e);
     const int W = lc.width, H = lc.height;
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
-            const PathInfo& p = rec[size_t(y) * W + x];
-            if (x + 1 < W && (classifyPair(p, rec[size_t(y) * W + x + 1], ids, th) & e.types))
+            const EdgeRecord& p = rec[size_t(y) * W + x];
+            if (x + 1 < W && (classifyPair(p, rec[size_t(y) * W + x + 1], th) & e.types))
                 stamp(lc, x + 1.0, y + 0.5, e.width);
-            if (y + 1 < H && (classifyPair(p, rec[size_t(y + 1) * W + x], ids, th) & e.types))
+            if (y + 1 < H && (classifyPair(p, rec[size_t(y + 1) * W + x], th) & e.types))
                 stamp(lc, x + 0.5, y + 1.0, e.width);
         }
 }
@@ -57,16 +59,16 @@ void imageLines(LineCoverage& lc, const std::vector<PathInfo>& rec, const Surfac
 // Pixels within `reach` of a neighbour pair that differs: the only places where stencil rays can
 // find an edge. Creases and depth jumps are sharp, so adjacent pixel centres already show the
 // full normal angle or depth step; the thresholds need no relaxing.
-std::vector<uint8_t> candidates(const std::vector<PathInfo>& rec, int W, int H, const SurfaceIds& ids,
-                                const EdgeSettings& e, int reach, int threads) {
+std::vector<uint8_t> candidates(const std::vector<EdgeRecord>& rec, int W, int H, const EdgeSettings& e, int reach,
+                                int threads) {
     const EdgeThresholds th = thresholdsFor(e);
     std::vector<uint8_t> diff(rec.size(), 0), tmp(rec.size(), 0), out(rec.size(), 0);
     parallelFor((H + kRowBlock - 1) / kRowBlock, threads, [&](int block, int) {
         for (int y = block * kRowBlock; y < std::min(H, (block + 1) * kRowBlock); ++y)
             for (int x = 0; x < W; ++x) {
-                const PathInfo& p = rec[size_t(y) * W + x];
-                if ((x + 1 < W && (classifyPair(p, rec[size_t(y) * W + x + 1], ids, th) & e.types)) ||
-                    (y + 1 < H && (classifyPair(p, rec[size_t(y + 1) * W + x], ids, th) & e.types)))
+                const EdgeRecord& p = rec[size_t(y) * W + x];
+                if ((x + 1 < W && (classifyPair(p, rec[size_t(y) * W + x + 1], th) & e.types)) ||
+                    (y + 1 < H && (classifyPair(p, rec[size_t(y + 1) * W + x], th) & e.types)))
                     diff[size_t(y) * W + x] = 1;
             }
     });
@@ -84,6 +86,9 @@ std::vector<uint8_t> candidates(const std::vector<PathInfo>& rec, int W, int H, 
 
 }  // namespace
 
+LineRecords::LineRecords(const Scene& scene, int w, int h)
+    : ids(computeSurfaceIds(scene)), width(w), height(h), rec(size_t(w) * size_t(h)) {}
+
 bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s) {
     const Camera& cam = scene.cameras.at(size_t(s.cameraIndex));
     const double aperture = s.aperture >= 0 ? s.aperture : cam.aperture;
@@ -92,7 +97,7 @@ bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s) {
 }
 
 LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,
-                              const std::vector<PathInfo>* centreRecords, TraceStats& stats) {
+                              const LineRecords* centre, TraceStats& stats) {
     LineCoverage lc;
     lc.width = s.width;
     lc.height = s.height;
@@ -101,21 +106,22 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
     const Tracer tracer(scene, bvh, s);
     const Camera& cam = scene.cameras.at(size_t(s.cameraIndex));
     std::vector<TraceContext> ctx(size_t(resolveThreads(s.threads)));
-    std::vector<PathInfo> probed;
-    if (!centreRecords) {
-        probed = probeCentres(tracer, cam, s, e, ctx);
-        centreRecords = &probed;
+    std::unique_ptr<LineRecords> probed;
+    if (!centre) {
+        probed = std::make_unique<LineRecords>(scene, s.width, s.height);
+        probeCentres(tracer, cam, s, e, ctx, *probed);
+        centre = probed.get();
     }
-    const std::vector<PathInfo>& rec = *centreRecords;
-    const SurfaceIds ids = computeSurfaceIds(scene);
+    const SurfaceIds& ids = centre->ids;
+    const std::vector<EdgeRecord>& rec = centre->rec;
 
     if (e.method == EdgeMethod::Image) {
-        imageLines(lc, rec, ids, e);
+        imageLines(lc, rec, e);
     } else {
         const double radius = stencilRadius(e.width);
         const std::vector<StencilOffset> stencil = makeStencil(radius);
         const int n = int(stencil.size());
-        const std::vector<uint8_t> cand = candidates(rec, s.width, s.height, ids, e, int(std::ceil(radius)), s.threads);
+        const std::vector<uint8_t> cand = candidates(rec, s.width, s.height, e, int(std::ceil(radius)), s.threads);
         const EdgeThresholds th = thresholdsFor(e);
         const bool shadows = e.types & kEdgeShadow, secondary = e.types & kEdgeReflection;
         // Stencil positions lie within R pixels of the centre, so their four surrounding pixel
@@ -124,39 +130,51 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
         const int side = 2 * reach + 1;
         parallelFor((s.height + kRowBlock - 1) / kRowBlock, s.threads, [&](int block, int w) {
             PathInfo other;
-            std::vector<int8_t> near(size_t(side) * side);  // does the record at (dx, dy) differ from the centre?
+            std::vector<uint8_t> near(size_t(side) * side);  // edge types between the centre and the record at (dx, dy)
             for (int y = block * kRowBlock; y < std::min(s.height, (block + 1) * kRowBlock); ++y)
                 for (int x = 0; x < s.width; ++x) {
                     if (!cand[size_t(y) * s.width + x]) continue;
-                    const PathInfo& centre = rec[size_t(y) * s.width + x];
+                    const EdgeRecord& centre = rec[size_t(y) * s.width + x];
                     for (int dy = -reach; dy <= reach; ++dy) {
-                        const PathInfo* row = &rec[size_t(std::clamp(y + dy, 0, s.height - 1)) * s.width];
+                        const EdgeRecord* row = &rec[size_t(std::clamp(y + dy, 0, s.height - 1)) * s.width];
                         for (int dx = -reach; dx <= reach; ++dx)
                             near[size_t(dy + reach) * side + dx + reach] =
-                                (classifyPair(centre, row[std::clamp(x + dx, 0, s.width - 1)], ids, th) & e.types) != 0;
+                                uint8_t(classifyPair(centre, row[std::clamp(x + dx, 0, s.width - 1)], th) & e.types);
                     }
-                    auto differs = [&](int dx, int dy) { return near[size_t(dy + reach) * side + dx + reach]; };
+                    auto cell = [&](int dx, int dy) { return near[size_t(dy + reach) * side + dx + reach]; };
                     int m = 0;
                     for (const StencilOffset& o : stencil) {
                         // Reuse primary hits: when the four pixel centres around the stencil
                         // position agree, the stencil ray would see the same; cast it otherwise.
                         const double px = 0.5 + o.dx, py = 0.5 - o.dy;  // relative to the pixel, rows down
                         const int ix = int(std::floor(px - 0.5)), iy = int(std::floor(py - 0.5));
-                        const int votes = differs(ix, iy) + differs(ix + 1, iy) + differs(ix, iy + 1) + differs(ix + 1, iy + 1);
-                        if (votes == 0) continue;
-                        if (votes == 4) {
+                        const uint8_t a = cell(ix, iy), b = cell(ix + 1, iy), c = cell(ix, iy + 1), d = cell(ix + 1, iy + 1);
+                        const uint8_t any = a | b | c | d, all = a & b & c & d;
+                        if (any == 0) continue;
+                        if (all != 0 && any == all) {
+                            ++m;
+                            continue;
+                        }
+                        // Mixed cell: the edge runs between its centres. Far from the midway
+                        // contour of the bilinear indicator the answer is clear; cast only near it.
+                        const double fx = px - 0.5 - ix, fy = py - 0.5 - iy;
+                        const double v = (1 - fx) * (1 - fy) * (a != 0) + fx * (1 - fy) * (b != 0) +
+                                         (1 - fx) * fy * (c != 0) + fx * fy * (d != 0);
+                        if (v <= 0.25) continue;
+                        if (v >= 0.75) {
                             ++m;
                             continue;
                         }
                         const Ray r = cam.rayThrough(x + 0.5 + o.dx, s.height - 1 - y + 0.5 + o.dy, s.width, s.height);
-                        // Shadow rays only when nothing else already separates the two samples.
+                        // Shadow rays only where the shadow count changes nearby and nothing else
+                        // already separates the two samples.
                         tracer.probe(r, false, secondary, ctx[size_t(w)], other);
-                        other.blockedLights = centre.blockedLights;
-                        if (classifyPair(centre, other, ids, th) & e.types) {
+                        EdgeRecord er = toEdgeRecord(other, ids);
+                        er.blocked = centre.blocked;
+                        if (classifyPair(centre, er, th) & e.types) {
                             ++m;
-                        } else if (shadows && other.count > 0 && other.ids[0] >= 0) {
-                            other.blockedLights = tracer.blockedLightsAt(r.at(other.t), other.normal, ctx[size_t(w)]);
-                            if (other.blockedLights != centre.blockedLights) ++m;
+                        } else if (shadows && (any & kEdgeShadow) && er.surface >= 0) {
+                            if (tracer.blockedLightsAt(other.hitPoint(), other.hitNormal(), ctx[size_t(w)]) != centre.blocked) ++m;
                         }
                     }
                     lc.coverage[size_t(y) * s.width + x] = float(stencilStrength(m, n));

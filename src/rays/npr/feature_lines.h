@@ -5,7 +5,9 @@
 
 #include "rays/accel/bvh.h"
 #include "rays/image/image.h"
+#include "rays/npr/edge_classify.h"
 #include "rays/npr/edge_settings.h"
+#include "rays/npr/surfaces.h"
 #include "rays/render/renderer.h"
 
 namespace rays {
@@ -20,10 +22,20 @@ struct LineCoverage {
 /// True when the records render() collects can serve as pixel-centre records for the lines.
 bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s);
 
-/// Computes the lines. centreRecords: one record per pixel from the pixel centre (top row first),
-/// or null to probe them here. stats receives the rays cast.
+/// Pixel-centre hit records for the lines, compacted; filled by store() (from render()'s
+/// onRecord) or by drawFeatureLines itself.
+struct LineRecords {
+    SurfaceIds ids;
+    int width = 0, height = 0;
+    std::vector<EdgeRecord> rec;  ///< top row first
+    LineRecords(const Scene& scene, int w, int h);
+    void store(int x, int y, const PathInfo& info) { rec[size_t(y) * size_t(width) + size_t(x)] = toEdgeRecord(info, ids); }
+};
+
+/// Computes the lines. centre: records of the pixel centres, or null to probe them here.
+/// stats receives the rays cast.
 LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,
-                              const std::vector<PathInfo>* centreRecords, TraceStats& stats);
+                              const LineRecords* centre, TraceStats& stats);
 
 /// Blends the line colour over img by coverage; with linesOnly the image starts white.
 void compositeLines(ImageF& img, const LineCoverage& lines, const EdgeSettings& e);

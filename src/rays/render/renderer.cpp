@@ -154,6 +154,7 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
             const Vec3 origin = cam.location + view.aperture * (lx * ru + ly * uu);
             ray = Ray{origin, normalize(focus - origin)};
         }
+        if (n == 0 && info) *info = PathInfo{};
         sum += w * tracer.tracePrimary(ray, ctx, nullptr, n == 0 ? info : nullptr);
         weightSum += w;
     }
@@ -161,7 +162,7 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
 }
 
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
-              const ProgressFn& progress, std::vector<uint8_t>* edgePixels, std::vector<PathInfo>* records) {
+              const ProgressFn& progress, std::vector<uint8_t>* edgePixels, const RecordFn& onRecord) {
     ImageF img(s.width, s.height);
     const ViewSetup view = resolveView(scene, s);
     const Tracer tracer(scene, bvh, s);
@@ -178,11 +179,11 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         }, prog);
     };
 
-    if (records) records->assign(size_t(s.width) * size_t(s.height), PathInfo{});
     if (!s.aaEdges) {
         forTiles([&](int x, int y, TraceContext& ctx) {
-            PathInfo* info = records ? &(*records)[size_t(y) * s.width + x] : nullptr;
-            img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx, info);
+            PathInfo info;
+            img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx, onRecord ? &info : nullptr);
+            if (onRecord) onRecord(x, y, info);
         }, progress);
     } else {
         // Pass 1: one centre sample per pixel, remembering what it saw.
@@ -214,7 +215,9 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
             if (mark[size_t(y) * s.width + x]) img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx);
         }, progress ? ProgressFn([&](double f) { progress(0.5 + 0.5 * f); }) : ProgressFn{});
         if (edgePixels) *edgePixels = std::move(mark);
-        if (records) *records = std::move(seen);
+        if (onRecord)
+            for (int y = 0; y < s.height; ++y)
+                for (int x = 0; x < s.width; ++x) onRecord(x, y, seen[size_t(y) * s.width + x]);
     }
     for (const TraceContext& c : perThread) stats.add(c.stats);
     return img;

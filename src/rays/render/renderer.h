@@ -34,10 +34,12 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
 /// thread count. stats receives the summed counters. With settings.aaEdges, pass one renders
 /// one centre sample per pixel and pass two supersamples only pixels whose PathInfo differs
 /// from a neighbour's; edgePixels (optional) receives that mask (row-major, top row first).
-/// records (optional) receives each pixel's first-sample PathInfo (top row first).
+/// onRecord (optional) is called, from worker threads, with each pixel's first-sample PathInfo
+/// (x right, y down from the top row); calls for different pixels may run concurrently.
+using RecordFn = std::function<void(int x, int y, const PathInfo& info)>;
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, TraceStats& stats,
               const ProgressFn& progress = {}, std::vector<uint8_t>* edgePixels = nullptr,
-              std::vector<PathInfo>* records = nullptr);
+              const RecordFn& onRecord = {});
 
 /// Number of worker threads used for a requested count (0 = all hardware threads).
 int resolveThreads(int requested);

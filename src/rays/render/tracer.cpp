@@ -173,10 +173,8 @@ void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followS
     const bool entering = dot(ray.dir, hit.geomNormal) < 0;
     const Vec3 N = entering ? hit.normal : -hit.normal;
     if (depth == 0) {
-        out.t = hit.t;
-        out.point = P;
-        out.normal = N;
-        if (countShadows) out.blockedLights = blockedLightsAt(P, N, ctx);
+        out.setHit(hit.t, P, N);
+        if (countShadows) out.blockedLights = int16_t(blockedLightsAt(P, N, ctx));
     }
     if (!followSecondary || depth >= settings_.maxDepth || out.count >= PathInfo::kMaxIds) return;
     const Material& m = o.material;
@@ -289,10 +287,8 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
             ambient = m.ambient * m.color;
     }
     if (info && f.kind == TraceRecord::Kind::Primary) {
-        info->blockedLights = blocked;
-        info->t = hit.t;
-        info->point = P;
-        info->normal = N;
+        info->blockedLights = int16_t(blocked);
+        info->setHit(hit.t, P, N);
     }
 
     Vec3 reflColor, transColor;

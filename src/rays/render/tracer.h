@@ -44,16 +44,25 @@ struct TraceStats {
 /// the ray tree in depth-first order (primary hit first; −1 for a miss) and how many lights were
 /// blocked at the primary hit (an area light counts when most of its samples are blocked).
 struct PathInfo {
-    static constexpr int kMaxIds = 8;
-    int ids[kMaxIds];
-    int count = 0;
-    int blockedLights = 0;
-    double t = kInfinity;  ///< primary hit distance
-    Vec3 point;            ///< primary hit point
-    Vec3 normal;           ///< primary shading normal facing the viewer
+    static constexpr int kMaxIds = 4;
+    int32_t ids[kMaxIds];
+    int16_t count = 0;
+    int16_t blockedLights = 0;
+    float t = 0;            ///< primary hit distance
+    float point[3];         ///< primary hit point
+    float normal[3];        ///< primary shading normal facing the viewer
     void push(int id) {
         if (count < kMaxIds) ids[count++] = id;
     }
+    void setHit(double dist, Vec3 p, Vec3 n) {
+        t = float(dist);
+        for (int k = 0; k < 3; ++k) {
+            point[k] = float(p[k]);
+            normal[k] = float(n[k]);
+        }
+    }
+    Vec3 hitPoint() const { return {point[0], point[1], point[2]}; }
+    Vec3 hitNormal() const { return {normal[0], normal[1], normal[2]}; }
     bool operator==(const PathInfo& o) const {
         if (count != o.count || blockedLights != o.blockedLights) return false;
         for (int i = 0; i < count; ++i)
