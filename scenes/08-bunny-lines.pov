@@ -1,10 +1,10 @@
 // Feature lines: the Stanford bunny ringed by four spheres: outline, intersection and self-occlusion.
 // rays render --scene bunny-lines --obj ../shared/models/stanford-bunny.obj --edges silhouette,occlusion,intersection,crease
 camera {
-  location <-0.05, 0.2, 0.42>
+  location <-0.04, 0.16, 0.27>
   up       <0, 1, 0>
   right    <1.33333, 0, 0>
-  look_at  <-0.017, 0.1, 0>
+  look_at  <-0.017, 0.095, 0>
 }
 
 light_source { <-1, 2, 1.5> color rgb <1.1, 1.1, 1.1> }
