@@ -120,8 +120,10 @@ EdgeSettings resolveEdges(const EdgeSettings& fromScene, const EdgeOptions& o) {
         e.color = {c[0], c[1], c[2]};
     }
     if (o.linesOnly) e.linesOnly = true;
-    // Lines-only without any edge type asked for: draw the outline and creases.
-    if (e.linesOnly && e.types == 0) e.types = kEdgeSilhouette | kEdgeOcclusion | kEdgeCrease | kEdgeIntersection;
+    // Lines-only without any edge type asked for (an explicit --edges none stays empty): draw the
+    // outline, folds, intersections and creases.
+    if (e.linesOnly && e.types == 0 && o.types.empty())
+        e.types = kEdgeSilhouette | kEdgeOcclusion | kEdgeCrease | kEdgeIntersection;
     validateEdgeSettings(e);
     if (!o.maskPath.empty() && !e.enabled())
         throw Error("rays: error: --edge-mask needs edge lines (--edges LIST or an edges { } block)");
@@ -189,7 +191,7 @@ int runRender(const RenderJob& job) {
     const double renderMs = msSince(t0);
     double linesMs = 0;
     LineCoverage lines;
-    if (edges.enabled()) {
+    if (edges.enabled() || edges.linesOnly) {
         t0 = Clock::now();
         lines = drawFeatureLines(scene, bvh, s, edges, records.get(), stats);
         compositeLines(img, lines, edges);
