@@ -45,14 +45,10 @@ int runPositional(const std::vector<std::string>& a) {
     job.scenePath = a[2];
     job.outputPath = a[3];
     const int model = toInt(a[4], "SHADING_MODEL");
-    switch (model) {
-        case 0: job.settings.shading = ShadingModel::BlinnPhong; break;
-        case 1: job.settings.shading = ShadingModel::CookTorrance; break;
-        case 4: job.settings.shading = ShadingModel::Flat; break;
-        case 5: job.settings.shading = ShadingModel::Normals; break;
-        default:
-            throw Error("rays: error: SHADING_MODEL must be 0 (Blinn-Phong), 1 (Cook-Torrance), 4 (flat) or 5 (normals); got " + a[4]);
-    }
+    if (model > 5)
+        throw Error("rays: error: SHADING_MODEL must be 0 (Blinn-Phong), 1 (Cook-Torrance), 2 (Oren-Nayar), 3 (Lambert), "
+                    "4 (flat) or 5 (normals); got " + a[4]);
+    job.settings.shading = ShadingModel(model);
     job.settings.spp = toInt(a[5], "RAYS_PER_PIXEL");
     if (job.settings.spp < 1) throw Error("rays: error: RAYS_PER_PIXEL must be at least 1");
     if (job.settings.spp > 1) job.settings.aa = AaMode::Stratified;
@@ -64,11 +60,11 @@ int runPositional(const std::vector<std::string>& a) {
 int run(int argc, char** argv) {
     std::vector<std::string> args = cli::normaliseCourseFlags(argc, argv);
     if (!args.empty() && isInteger(args[0])) return runPositional(args);
-    static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes"};
+    static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes", "assets", "filter"};
     if (!args.empty() && args[0][0] != '-' &&
         std::none_of(std::begin(kCommands), std::end(kCommands), [&](const char* c) { return args[0] == c; }))
         throw Error("rays: error: unknown command '" + args[0] +
-                    "' (commands: render, raycast, sceneinfo, pixelray, firsthit, pixelcolor, printrays, scenes; "
+                    "' (commands: render, raycast, sceneinfo, pixelray, firsthit, pixelcolor, printrays, scenes, assets, filter; "
                     "or the positional form WIDTH HEIGHT INPUT OUTPUT SHADING RAYS_PER_PIXEL DEPTH [OBJ])");
 
     CLI::App app{"Rays: a fast ray tracer for POV-Ray-style scenes with feature lines", "rays"};
@@ -120,6 +116,11 @@ int run(int argc, char** argv) {
     // scenes
     CLI::App* scenes = app.add_subcommand("scenes", "list the shipped scenes (render one with render --scene N)");
 
+    // assets
+    std::string assetDir;
+    CLI::App* assets = app.add_subcommand("assets", "write the procedural textures the demo scenes use (checker, bricks, brick normal and height maps)");
+    assets->add_option("dir", assetDir, "output folder (must exist)")->required();
+
     // sceneinfo
     CLI::App* sceneinfo = app.add_subcommand("sceneinfo", "print the camera, lights and objects of a scene");
     sceneinfo->add_option("scene", scene, "scene file")->required();
@@ -148,6 +149,7 @@ int run(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
 
+    if (assets->parsed()) return cli::writeAssets(assetDir);
     if (scenes->parsed()) {
         for (const cli::LibraryScene& ls : cli::listScenes(cli::sceneDirectory()))
             std::printf("%3d  %-20s %s\n", ls.number, ls.name.c_str(), ls.description.c_str());

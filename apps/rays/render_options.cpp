@@ -49,7 +49,7 @@ void addCourseFlags(CLI::App* cmd, CourseFlags& f) {
 }
 
 void addModernOptions(CLI::App* cmd, ModernOptions& o, RenderSettings& s) {
-    cmd->add_option("--shading", o.shading, "blinn-phong | cook-torrance | flat | normals");
+    cmd->add_option("--shading", o.shading, "blinn-phong | cook-torrance | oren-nayar | lambert | flat | normals");
     cmd->add_option("--aa", o.aa, "sample placement: grid | random | stratified (default stratified with --spp, else grid)");
     cmd->add_option("--spp", o.spp, "samples per pixel (grid and stratified use the nearest square)")->check(CLI::Range(1, 65536));
     cmd->add_option("--filter", o.filter, "reconstruction filter: box | tent | gaussian (default box)");
@@ -81,13 +81,8 @@ void applyOptions(const CourseFlags& f, const ModernOptions& o, RenderSettings& 
     }
     if (!f.giBounces.empty()) s.giBounces = positiveInt(f.giBounces, "gi_bounces");
 
-    if (!o.shading.empty()) {
-        if (o.shading == "blinn-phong") s.shading = ShadingModel::BlinnPhong;
-        else if (o.shading == "cook-torrance") s.shading = ShadingModel::CookTorrance;
-        else if (o.shading == "flat") s.shading = ShadingModel::Flat;
-        else if (o.shading == "normals") s.shading = ShadingModel::Normals;
-        else bad("unknown shading model '" + o.shading + "' (use blinn-phong, cook-torrance, flat or normals)");
-    }
+    if (!o.shading.empty() && !parseShadingName(o.shading.c_str(), s.shading))
+        bad("unknown shading model '" + o.shading + "' (use blinn-phong, cook-torrance, oren-nayar, lambert, flat or normals)");
     if (o.spp > 0) {
         s.spp = o.spp;
         s.aa = AaMode::Stratified;

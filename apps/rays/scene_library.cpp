@@ -52,3 +52,24 @@ std::string findScene(const std::string& key) {
 }
 
 }  // namespace rays::cli
+
+#include "rays/image/procedural.h"
+#include "rays/io/image_io.h"
+
+namespace rays::cli {
+
+int writeAssets(const std::string& dir) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) failFile(dir, "is not a folder");
+    const std::filesystem::path d(dir);
+    const uint8_t light[3] = {230, 230, 220}, dark[3] = {40, 60, 110};
+    writeImage((d / "checker.png").string(), checkerImage(256, 8, light, dark));
+    const Image8 height = brickHeightImage(256, 256, 8);
+    writeImage((d / "bricks.png").string(), brickColorImage(256, 256, 8));
+    writeImage((d / "bricks-height.png").string(), height);
+    writeImage((d / "bricks-normal.png").string(), normalMapFromHeight(height, 6.0));
+    std::fprintf(stderr, "rays: wrote checker.png, bricks.png, bricks-height.png, bricks-normal.png in %s\n", dir.c_str());
+    return 0;
+}
+
+}  // namespace rays::cli

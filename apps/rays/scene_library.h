@@ -22,3 +22,10 @@ std::vector<LibraryScene> listScenes(const std::string& dir);
 std::string findScene(const std::string& key);
 
 }  // namespace rays::cli
+
+namespace rays::cli {
+
+/// Writes checker.png, bricks.png, bricks-height.png and bricks-normal.png (256×256) into dir.
+int writeAssets(const std::string& dir);
+
+}  // namespace rays::cli

@@ -584,12 +584,140 @@ private:
     void pigment(Material& m) {
         const Token kw = tok_;
         advance();
+        Transform xf;
         block(kw, [&] {
             if (isIdent("color") || isIdent("colour") || isIdent("rgb") || isIdent("rgbf") ||
-                isIdent("rgbt") || isIdent("rgbft") || isSymbol('<'))
+                isIdent("rgbt") || isIdent("rgbft") || isSymbol('<')) {
                 colorSpec(m);
-            else if (!unsupportedHere()) unknown("pigment");
+            } else if (isIdent("image_map")) {
+                imageMap(m.pigmentMap, m.mapType, m.mapOnce, m.mapBilinear, nullptr, nullptr, true);
+            } else if (isIdent("uv_mapping")) {
+                advance();
+                m.mapType = 3;
+            } else if (!textureTransformItem(xf) && !unsupportedHere()) {
+                unknown("pigment");
+            }
         });
+        m.pigmentTransform = storeTextureTransform(xf, m.pigmentTransform);
+    }
+
+    // scale / rotate / translate inside a pigment or normal block: accumulates into m.
+    bool textureTransformItem(Transform& m) {
+        const Token t = tok_;
+        if (isIdent("scale")) {
+            advance();
+            const Vec3 sc = vector3("scale", true);
+            if (sc.x == 0 || sc.y == 0 || sc.z == 0) fail(loc(t), "scale has a zero component");
+            m = Transform::scale(sc) * m;
+        } else if (isIdent("rotate")) {
+            advance();
+            m = rotation(vector3("rotate")) * m;
+        } else if (isIdent("translate")) {
+            advance();
+            m = Transform::translate(vector3("translate", true)) * m;
+        } else {
+            return false;
+        }
+        return true;
+    }
+    int storeTextureTransform(const Transform& m, int previous) {
+        if (m.isIdentity()) return previous;
+        scene_.textureTransforms.push_back({m, m.inverse()});
+        return int(scene_.textureTransforms.size()) - 1;
+    }
+
+    // normal { normal_map { png "file" [strength S] [map_type M] } | bump_map { png "file" [bump_size S] ... } }
+    void normal(Material& m) {
+        const Token kw = tok_;
+        advance();
+        Transform xf;
+        block(kw, [&] {
+            bool once = false, bilinear = true;
+            if (isIdent("normal_map")) {
+                imageMap(m.normalMap, m.normalMapType, once, bilinear, &m.normalStrength, "strength", false);
+            } else if (isIdent("bump_map")) {
+                imageMap(m.bumpMap, m.normalMapType, once, bilinear, &m.bumpSize, "bump_size", false);
+            } else if (isIdent("uv_mapping")) {
+                advance();
+                m.normalMapType = 3;
+            } else if (!textureTransformItem(xf) && !unsupportedHere()) {
+                unknown("normal");
+            }
+        });
+        m.normalTransform = storeTextureTransform(xf, m.normalTransform);
+    }
+
+    // image_map / normal_map / bump_map { TYPE "file" [map_type M] [interpolate N] [once] [gamma G]
+    //                                     [<amountName> S] }: loads the file (relative paths are
+    // relative to the scene's folder) and stores its texture index.
+    void imageMap(int& index, int& mapType, bool& once, bool& bilinear, double* amount, const char* amountName,
+                  bool colour) {
+        const Token kw = tok_;
+        advance();
+        double gamma = 1.0;
+        std::string file;
+        Token fileTok;
+        block(kw, [&] {
+            static const char* kTypes[] = {"png", "jpeg", "jpg", "tga", "ppm", "pgm", "gif", "bmp", "hdr", "exr", "tiff", "sys", "iff"};
+            bool isType = false;
+            for (const char* t : kTypes) isType |= isIdent(t);
+            if (isType) {
+                advance();
+                if (tok_.kind != TokenKind::String) error("expected a file name string after the image type");
+                fileTok = tok_;
+                file = std::string(tok_.text);
+                advance();
+            } else if (tok_.kind == TokenKind::String) {
+                fileTok = tok_;
+                file = std::string(tok_.text);
+                advance();
+            } else if (isIdent("map_type")) {
+                const Token at = tok_;
+                advance();
+                const double t = number("map_type");
+                if (t != 0 && t != 1 && t != 2) fail(loc(at), "map_type must be 0 (planar), 1 (spherical) or 2 (cylindrical)");
+                mapType = int(t);
+            } else if (isIdent("interpolate")) {
+                advance();
+                bilinear = number("interpolate") >= 2;
+            } else if (isIdent("once")) {
+                advance();
+                once = true;
+            } else if (isIdent("gamma") && colour) {
+                const Token at = tok_;
+                advance();
+                gamma = number("gamma");
+                if (!(gamma > 0)) fail(loc(at), "gamma must be greater than 0");
+            } else if (amount && isIdent(amountName)) {
+                advance();
+                *amount = number(amountName);
+            } else if (isSymbol(',')) {
+                advance();
+            } else if (!unsupportedHere()) {
+                unknown(std::string(kw.text));
+            }
+        });
+        if (file.empty()) fail(loc(kw), std::string(kw.text) + " needs an image file");
+        index = texture(file, fileTok, colour ? gamma : 1.0);
+    }
+
+    // Loads (once per file and gamma) a texture named in the scene.
+    int texture(const std::string& file, const Token& at, double gamma) {
+        namespace fs = std::filesystem;
+        fs::path path(file);
+        if (path.is_relative()) path = fs::path(lex_.fileName()).parent_path() / path;
+        const std::string key = path.string() + "|" + std::to_string(gamma);
+        if (auto it = textureIndex_.find(key); it != textureIndex_.end()) return it->second;
+        std::error_code ec;
+        if (!fs::is_regular_file(path, ec)) fail(loc(at), "cannot open image file '" + path.string() + "'");
+        try {
+            scene_.textures.push_back(loadTexture(path.string(), gamma));
+        } catch (const Error& e) {
+            fail(loc(at), std::string(e.what()));
+        }
+        const int index = int(scene_.textures.size()) - 1;
+        textureIndex_[key] = index;
+        return index;
     }
 
     void finish(Material& m) {
@@ -626,6 +754,8 @@ private:
             else if (isIdent("ior")) {
                 value(m.ior, m.hasIor, -1e30, 1e30, "");
                 if (m.ior <= 0) fail(loc(item), "ior must be greater than 0");
+            } else if (isIdent("sigma")) {
+                value(m.sigma, dummy, 0, 90, "must be between 0 and 90 degrees");
             } else if (isIdent("metallic")) {
                 // POV-Ray allows a bare `metallic` meaning 1.
                 if (startsExpression(1)) value(m.metallic, m.hasMetallic, 0, 1, "must be between 0 and 1");
@@ -655,12 +785,13 @@ private:
         });
     }
 
-    void texture(Material& m) {
+    void textureBlock(Material& m) {
         const Token kw = tok_;
         advance();
         block(kw, [&] {
             if (isIdent("pigment")) pigment(m);
             else if (isIdent("finish")) finish(m);
+            else if (isIdent("normal")) normal(m);
             else if (!unsupportedHere()) unknown("texture");
         });
     }
@@ -675,7 +806,17 @@ private:
         if (isIdent("pigment")) { pigment(o.material); return true; }
         if (isIdent("finish")) { finish(o.material); return true; }
         if (isIdent("interior")) { interior(o.material); return true; }
-        if (isIdent("texture")) { texture(o.material); return true; }
+        if (isIdent("texture")) { textureBlock(o.material); return true; }
+        if (isIdent("normal")) { normal(o.material); return true; }
+        if (isIdent("shading")) {
+            advance();
+            ShadingModel model;
+            if (tok_.kind != TokenKind::Identifier || !parseShadingName(std::string(tok_.text).c_str(), model))
+                error("shading must be blinn_phong, cook_torrance, oren_nayar, lambert, flat or normals, found " + describe(tok_));
+            o.material.shading = int(model);
+            advance();
+            return true;
+        }
         if (isIdent("scale")) {
             advance();
             const Vec3 s = vector3("scale", true);
@@ -796,6 +937,7 @@ private:
     Token tok_;
     Scene scene_;
     std::map<std::string, int> warnedCount_;
+    std::map<std::string, int> textureIndex_;
     double v12_[12] = {};
 };
 

@@ -2,9 +2,10 @@
 #pragma once
 #include <cstdint>
 
+#include "rays/scene/shading_model.h"
+
 namespace rays {
 
-enum class ShadingModel { BlinnPhong, CookTorrance, Flat, Normals };
 
 /// How the samples of a pixel are placed.
 enum class AaMode {
@@ -47,7 +48,5 @@ struct RenderSettings {
     int cameraIndex = 0;       ///< which camera of the scene
 };
 
-/// Name printed by the course commands ("Blinn-Phong", "Cook-Torrance", "Flat", "Normals").
-const char* shadingName(ShadingModel m);
 
 }  // namespace rays

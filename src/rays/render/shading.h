@@ -22,6 +22,12 @@ LightTerms blinnPhong(const Material& m, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor
 /// metallic, which also removes the diffuse term). Zero when N·L ≤ 0.
 LightTerms cookTorrance(const Material& m, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor);
 
+/// Lambert: diffuse only, Lc·kd·C·max(0, N·L).
+LightTerms lambert(const Material& m, Vec3 N, Vec3 L, Vec3 lightColor);
+
+/// Oren-Nayar rough diffuse (roughness σ = material.sigma in degrees); equals Lambert at σ = 0.
+LightTerms orenNayar(const Material& m, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor);
+
 /// Schlick's approximation with F0 = ((ior − 1)/(ior + 1))², cosTheta = |N·V|.
 double schlickFresnel(double ior, double cosTheta);
 

@@ -4,6 +4,7 @@
 
 #include "rays/math/sampling.h"
 #include "rays/render/shading.h"
+#include "rays/render/texturing.h"
 
 namespace rays {
 namespace {
@@ -61,12 +62,23 @@ bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext
     return blocker >= 0;
 }
 
-double Tracer::shadeLight(const Light& light, size_t index, const Object& o, Vec3 P, Vec3 N, Vec3 V,
-                          TraceContext& ctx, Vec3& diffuse, Vec3& specular) const {
+ShadingModel Tracer::modelFor(const Material& m) const {
+    if (settings_.shading == ShadingModel::Flat || settings_.shading == ShadingModel::Normals || m.shading < 0)
+        return settings_.shading;
+    return ShadingModel(m.shading);
+}
+
+double Tracer::shadeLight(const Light& light, size_t index, const Material& m, ShadingModel model, Vec3 P, Vec3 N,
+                          Vec3 V, TraceContext& ctx, Vec3& diffuse, Vec3& specular) const {
     const Vec3 origin = P + kSurfaceOffset * N;
     auto addSample = [&](Vec3 L, Vec3 color) {
-        const LightTerms t = settings_.shading == ShadingModel::CookTorrance ? cookTorrance(o.material, N, L, V, color)
-                                                                             : blinnPhong(o.material, N, L, V, color);
+        LightTerms t;
+        switch (model) {
+            case ShadingModel::CookTorrance: t = cookTorrance(m, N, L, V, color); break;
+            case ShadingModel::OrenNayar: t = orenNayar(m, N, L, V, color); break;
+            case ShadingModel::Lambert: t = lambert(m, N, L, color); break;
+            default: t = blinnPhong(m, N, L, V, color);
+        }
         diffuse += t.diffuse;
         specular += t.specular;
     };
@@ -197,11 +209,11 @@ void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followS
     }
 }
 
-int Tracer::localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
-                         Vec3& specular) const {
+int Tracer::localShading(const Material& m, ShadingModel model, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx,
+                         Vec3& diffuse, Vec3& specular) const {
     int blocked = 0;
     for (size_t li = 0; li < scene_.lights.size(); ++li)
-        if (shadeLight(scene_.lights[li], li, o, P, N, V, ctx, diffuse, specular) < 0.5) ++blocked;
+        if (shadeLight(scene_.lights[li], li, m, model, P, N, V, ctx, diffuse, specular) < 0.5) ++blocked;
     return blocked;
 }
 
@@ -243,20 +255,29 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     if (!hit.valid()) return {};
 
     const Object& o = scene_.objects[size_t(hit.object)];
-    const Material& m = o.material;
     const Vec3 P = ray.at(hit.t);
     const Vec3 V = -ray.dir;
     const bool entering = dot(ray.dir, hit.geomNormal) < 0;
-    const Vec3 N = entering ? hit.normal : -hit.normal;  // faces the viewer
+    Vec3 N = entering ? hit.normal : -hit.normal;  // faces the viewer
+    // Image maps change the pigment, normal and bump maps the shading normal.
+    Material mapped;
+    const Material* mp = &o.material;
+    if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0) {
+        mapped = o.material;
+        applyMaps(scene_, o, P, mapped.color, N);
+        mp = &mapped;
+    }
+    const Material& m = *mp;
+    const ShadingModel model = modelFor(m);
 
     Result res;
     res.t = hit.t;
-    if (settings_.shading == ShadingModel::Flat) {
+    if (model == ShadingModel::Flat) {
         res.color = m.color;
-    } else if (settings_.shading == ShadingModel::Normals) {
+    } else if (model == ShadingModel::Normals) {
         res.color = 0.5 * (N + Vec3(1.0));
     }
-    if (settings_.shading == ShadingModel::Flat || settings_.shading == ShadingModel::Normals) {
+    if (model == ShadingModel::Flat || model == ShadingModel::Normals) {
         if (log) {
             TraceRecord& r = (*log)[rec];
             r.hit = true;
@@ -280,7 +301,7 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     Vec3 ambient, diffuse, specular;
     int blocked = 0;
     if (wLocal > 0 || info) {
-        blocked = localShading(o, P, N, V, ctx, diffuse, specular);
+        blocked = localShading(m, model, P, N, V, ctx, diffuse, specular);
         if (settings_.gi && f.giLevel < settings_.giBounces)
             ambient = m.diffuse * m.color * gatherIndirect(P, N, f, ctx);
         else

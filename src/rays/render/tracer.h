@@ -118,12 +118,14 @@ private:
     };
     Result trace(const Ray& ray, const Frame& f, TraceContext& ctx, std::vector<TraceRecord>* log,
                  PathInfo* info) const;
+    /// The shading model for a material: the render's flat/normals modes win, then the object's own.
+    ShadingModel modelFor(const Material& m) const;
     /// Direct light at P; returns the number of lights counted as blocked.
-    int localShading(const Object& o, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx, Vec3& diffuse,
-                     Vec3& specular) const;
+    int localShading(const Material& m, ShadingModel model, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx,
+                     Vec3& diffuse, Vec3& specular) const;
     /// Visible fraction and shading of one light (all its samples) at P.
-    double shadeLight(const Light& light, size_t index, const Object& o, Vec3 P, Vec3 N, Vec3 V,
-                      TraceContext& ctx, Vec3& diffuse, Vec3& specular) const;
+    double shadeLight(const Light& light, size_t index, const Material& m, ShadingModel model, Vec3 P, Vec3 N,
+                      Vec3 V, TraceContext& ctx, Vec3& diffuse, Vec3& specular) const;
     void probeRec(const Ray& ray, int depth, bool countShadows, bool followSecondary, TraceContext& ctx,
                   PathInfo& out) const;
     /// Cosine-weighted average of the light arriving at P (global illumination).

@@ -7,6 +7,7 @@
 #include "rays/scene/camera.h"
 #include "rays/scene/light.h"
 #include "rays/scene/object.h"
+#include "rays/scene/texture.h"
 
 namespace rays {
 
@@ -15,6 +16,12 @@ struct Scene {
     std::vector<Camera> cameras;  ///< the first is the default; later ones are alternatives
     std::vector<Light> lights;
     std::vector<Object> objects;  ///< course object ID = index + 1
+    std::vector<Texture> textures;  ///< image, normal and bump maps referenced by materials
+    /// Transforms written inside pigment / normal blocks: texture space → object space (M) and back.
+    struct TextureTransform {
+        Transform toObject, toTexture;
+    };
+    std::vector<TextureTransform> textureTransforms;
     EdgeSettings edges;           ///< feature lines asked for by an `edges { }` block (CLI overrides)
 };
 
