@@ -1,9 +1,11 @@
-// Bounding volume hierarchy over the bounded objects of a scene; unbounded objects (planes) are
-// tested separately. Build: binned SAH (Wald 2007); traversal: ordered, with an any-hit variant.
+// Acceleration for a scene's objects: untransformed triangles go into a wide SIMD TriangleBvh
+// (triangle_bvh.h); the other bounded objects into a binary BVH (binned SAH, Wald 2007; ordered
+// traversal with an any-hit variant); unbounded objects (planes) are tested separately.
 #pragma once
 #include <cstdint>
 #include <vector>
 
+#include "rays/accel/triangle_bvh.h"
 #include "rays/geometry/ray.h"
 #include "rays/scene/object.h"
 
@@ -44,12 +46,16 @@ public:
     Hit closest(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
     /// True when any object is hit with t in (tMin, tMax); stops at the first blocker.
     bool any(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
-        return anyBlocker(objects, ray, tMin, tMax) >= 0;
+        return anyBlocker(objects, ray, tMin, tMax) != kNoBlocker;
     }
-    /// Index of some object hit with t in (tMin, tMax), or −1; stops at the first blocker.
+    static constexpr int kNoBlocker = -1;     ///< anyBlocker: nothing in the way
+    static constexpr int kSomeTriangle = -2;  ///< anyBlocker: blocked by a triangle (which one is not known)
+    /// Index of some object hit with t in (tMin, tMax), kSomeTriangle, or kNoBlocker; stops at the
+    /// first blocker.
     int anyBlocker(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
 
     size_t nodeCount() const { return nodes_.size(); }
+    size_t triangleCount() const { return triObject_.size(); }
     int depth() const;
 
 private:
@@ -62,6 +68,8 @@ private:
     std::vector<FlatNode> flat_;       ///< what traversal reads
     std::vector<uint32_t> prims_;      ///< object indices, leaves reference ranges of this
     std::vector<uint32_t> unbounded_;  ///< planes: always tested
+    TriangleBvh triangles_;            ///< untransformed triangle objects
+    std::vector<uint32_t> triObject_;  ///< triangle index in triangles_ → object index
 };
 
 }  // namespace rays

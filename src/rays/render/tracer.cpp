@@ -59,7 +59,7 @@ bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext
     if (!cached) return bvh_.any(scene_.objects, shadow, kTMin, tMax);
     const int blocker = bvh_.anyBlocker(scene_.objects, shadow, kTMin, tMax);
     if (blocker >= 0) ctx.lastBlocker[light] = blocker;
-    return blocker >= 0;
+    return blocker != Bvh::kNoBlocker;
 }
 
 ShadingModel Tracer::modelFor(const Material& m) const {

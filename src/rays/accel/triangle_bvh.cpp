@@ -1,0 +1,262 @@
+// TriangleBvh construction: triangle boxes -> binned SAH binary BVH -> 8-wide nodes + SoA
+// triangle blocks. Traversal lives in triangle_bvh_traverse.cpp.
+#include "rays/accel/triangle_bvh.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "rays/accel/binned_sah.h"
+#include "rays/accel/task_pool.h"
+
+namespace rays {
+namespace {
+
+using namespace tribvh;
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr uint32_t kPrepChunk = 16384;
+
+/// Collapses a binary BVH into 8-wide nodes: starting from a node's two children, the child with
+/// the largest surface area is repeatedly replaced by its own children until there are eight
+/// (or only leaves). Sibling nodes are stored contiguously; leaves get consecutive blocks in
+/// depth-first order.
+class Collapser {
+public:
+    struct LeafJob {
+        uint32_t firstBlock, firstRef, count;
+    };
+
+    using NodeVector = std::vector<WideNode, HugePageAllocator<WideNode>>;
+    Collapser(const BinaryBvh& bin, NodeVector& nodes, uint32_t leafBlockCap)
+        : bin_(bin), nodes_(nodes), leafBlockCap_(leafBlockCap) {}
+
+    void run() {
+        nodes_.clear();
+        nodes_.reserve(bin_.nodes.size() / 4 + 1);
+        nodes_.emplace_back();
+        fill(0, bin_.root, true);
+    }
+    std::vector<LeafJob> leaves;
+    uint32_t blockCount = 0;
+
+private:
+    // Fills nodes_[w] from binary node b (the root may itself be a leaf).
+    void fill(uint32_t w, uint32_t b, bool isRoot) {
+        uint32_t kids[kWidth];
+        int k = 0;
+        const BinaryNode& bn = bin_.nodes[b];
+        if (bn.leaf()) {
+            (void)isRoot;
+            kids[k++] = b;
+        } else {
+            kids[k++] = bn.first;
+            kids[k++] = bn.first + 1;
+        }
+        while (k < kWidth) {
+            int best = -1;
+            float bestArea = -1.0f;
+            for (int i = 0; i < k; ++i) {
+                const BinaryNode& c = bin_.nodes[kids[i]];
+                if (c.leaf()) continue;
+                const float a = c.halfArea();
+                if (a > bestArea) {
+                    bestArea = a;
+                    best = i;
+                }
+            }
+            if (best < 0) break;
+            const uint32_t c = kids[best];
+            kids[best] = bin_.nodes[c].first;
+            kids[k++] = bin_.nodes[c].first + 1;
+        }
+        // Allocate inner children contiguously, then set boxes and references.
+        uint32_t refs[kWidth];
+        for (int i = 0; i < k; ++i) {
+            const BinaryNode& c = bin_.nodes[kids[i]];
+            if (c.leaf()) {
+                const uint32_t blocks = (c.count + kBlockSize - 1) / kBlockSize;
+                if (blocks > leafBlockCap_ || blockCount + blocks > kMaxBlockIndex)
+                    throw std::length_error("TriangleBvh: too many triangles");
+                refs[i] = leafRef(blockCount, blocks);
+                leaves.push_back({blockCount, c.first, c.count});
+                blockCount += blocks;
+            } else {
+                refs[i] = uint32_t(nodes_.size());
+                nodes_.emplace_back();
+            }
+        }
+        WideNode& node = nodes_[w];
+        for (int i = 0; i < kWidth; ++i) {
+            const bool used = i < k;
+            const BinaryNode* c = used ? &bin_.nodes[kids[i]] : nullptr;
+            for (int a = 0; a < 3; ++a) {
+                node.box[2 * a][i] = used ? c->lo[a] : kInf;
+                node.box[2 * a + 1][i] = used ? c->hi[a] : -kInf;
+            }
+            node.child[i] = used ? refs[i] : kLeafFlag;
+        }
+        node.childCount = uint32_t(k);
+        for (int i = 0; i < k; ++i)
+            if (!isLeaf(refs[i])) fill(refs[i], kids[i], false);
+    }
+
+    const BinaryBvh& bin_;
+    NodeVector& nodes_;
+    uint32_t leafBlockCap_;
+};
+
+}  // namespace
+
+void TriangleBvh::build(const float* positions, size_t vertexCount, const uint32_t* indices, size_t triangleCount,
+                        int threads) {
+    nodes_.clear();
+    blocks_.clear();
+    triangles_ = 0;
+    for (int a = 0; a < 3; ++a) {
+        lo_[a] = kInf;
+        hi_[a] = -kInf;
+    }
+    if (triangleCount == 0 || positions == nullptr || indices == nullptr) return;
+    if (triangleCount > kMaxBlockIndex) throw std::length_error("TriangleBvh: too many triangles");
+
+    TaskPool pool(threads);
+
+    // Triangle boxes; degenerate (zero-area, computed in double) and non-finite triangles are
+    // marked and dropped.
+    HugeArray<PrimRef> refs(triangleCount);
+    std::vector<uint8_t> valid(triangleCount);
+    const size_t chunks = (triangleCount + kPrepChunk - 1) / kPrepChunk;
+    pool.run(chunks, [&](size_t c) {
+        const size_t end = std::min(triangleCount, (c + 1) * kPrepChunk);
+        for (size_t i = c * kPrepChunk; i < end; ++i) {
+            const uint32_t* idx = indices + 3 * i;
+            PrimRef& r = refs[i];
+            r.id = uint32_t(i);
+            r.pad = 0;
+            valid[i] = 0;
+            if (idx[0] >= vertexCount || idx[1] >= vertexCount || idx[2] >= vertexCount) continue;
+            const float* p[3] = {positions + 3 * size_t(idx[0]), positions + 3 * size_t(idx[1]),
+                                 positions + 3 * size_t(idx[2])};
+            bool finite = true;
+            for (int a = 0; a < 3; ++a) {
+                r.lo[a] = std::min({p[0][a], p[1][a], p[2][a]});
+                r.hi[a] = std::max({p[0][a], p[1][a], p[2][a]});
+                finite = finite && std::isfinite(p[0][a]) && std::isfinite(p[1][a]) && std::isfinite(p[2][a]);
+            }
+            if (!finite) continue;
+            double e1[3], e2[3];
+            for (int a = 0; a < 3; ++a) {
+                e1[a] = double(p[1][a]) - double(p[0][a]);
+                e2[a] = double(p[2][a]) - double(p[0][a]);
+            }
+            const double nx = e1[1] * e2[2] - e1[2] * e2[1];
+            const double ny = e1[2] * e2[0] - e1[0] * e2[2];
+            const double nz = e1[0] * e2[1] - e1[1] * e2[0];
+            valid[i] = (nx != 0.0 || ny != 0.0 || nz != 0.0) ? 1 : 0;
+        }
+    });
+    size_t n = 0;
+    for (size_t i = 0; i < triangleCount; ++i)
+        if (valid[i]) refs[n++] = refs[i];
+    refs.truncate(n);
+    valid = {};
+    if (n == 0) return;
+
+    SahSettings settings;
+    settings.blockSize = kBlockSize;
+    settings.maxLeafSize = kBlockSize;
+    if (getenv("TC")) settings.traversalCost = float(atof(getenv("TC")));
+    if (getenv("ML")) settings.maxLeafSize = uint32_t(atoi(getenv("ML")));
+    BinaryBvh bin = buildBinnedSah(refs, settings, pool);
+
+    Collapser collapse(bin, nodes_, kMaxLeafBlocks);
+    collapse.run();
+    nodes_.shrink_to_fit();
+    const BinaryNode& root = bin.nodes[bin.root];
+    for (int a = 0; a < 3; ++a) {
+        lo_[a] = root.lo[a];
+        hi_[a] = root.hi[a];
+    }
+    bin = {};
+
+    // Triangle blocks, in parallel (each leaf writes only its own blocks).
+    blocks_.resize(collapse.blockCount);
+    const std::vector<Collapser::LeafJob>& jobs = collapse.leaves;
+    const size_t jobChunk = 4096;
+    pool.run((jobs.size() + jobChunk - 1) / jobChunk, [&](size_t c) {
+        const size_t end = std::min(jobs.size(), (c + 1) * jobChunk);
+        for (size_t j = c * jobChunk; j < end; ++j) {
+            const Collapser::LeafJob& job = jobs[j];
+            for (uint32_t k = 0; k < job.count; k += kBlockSize) {
+                TriBlock& b = blocks_[job.firstBlock + k / kBlockSize];
+                for (uint32_t lane = 0; lane < uint32_t(kBlockSize); ++lane) {
+                    const bool used = k + lane < job.count;
+                    // Unused lanes: a zero-area triangle at the block's first vertex.
+                    const uint32_t tri = refs[job.firstRef + (used ? k + lane : k)].id;
+                    const uint32_t* idx = indices + 3 * size_t(tri);
+                    for (int vtx = 0; vtx < 3; ++vtx) {
+                        const float* p = positions + 3 * size_t(idx[used ? vtx : 0]);
+                        for (int a = 0; a < 3; ++a) b.v[vtx][a][lane] = p[a];
+                    }
+                    b.prim[lane] = used ? tri : UINT32_MAX;
+                }
+            }
+        }
+    });
+    triangles_ = n;
+}
+
+size_t TriangleBvh::memoryBytes() const {
+    return hugeFootprint(nodes_.capacity() * sizeof(WideNode)) + hugeFootprint(blocks_.capacity() * sizeof(TriBlock));
+}
+
+void TriangleBvh::bounds(float lo[3], float hi[3]) const {
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = lo_[a];
+        hi[a] = hi_[a];
+    }
+}
+
+TriangleBvh::Stats TriangleBvh::stats() const {
+    Stats s;
+    s.nodes = nodes_.size();
+    s.blocks = blocks_.size();
+    s.triangles = triangles_;
+    if (nodes_.empty()) return s;
+    auto area = [](const WideNode& n, int i) {
+        const float dx = n.box[1][i] - n.box[0][i], dy = n.box[3][i] - n.box[2][i], dz = n.box[5][i] - n.box[4][i];
+        return double(dx) * (double(dy) + double(dz)) + double(dy) * double(dz);
+    };
+    const double rootArea = [&] {
+        const float dx = hi_[0] - lo_[0], dy = hi_[1] - lo_[1], dz = hi_[2] - lo_[2];
+        return std::max(1e-30, double(dx) * (double(dy) + double(dz)) + double(dy) * double(dz));
+    }();
+    struct Item {
+        uint32_t node;
+        int depth;
+        double area;
+    };
+    std::vector<Item> stack{{0, 1, rootArea}};
+    while (!stack.empty()) {
+        const Item it = stack.back();
+        stack.pop_back();
+        s.depth = std::max(s.depth, it.depth);
+        s.sahCost += it.area / rootArea;  // one node visit (8 boxes)
+        const WideNode& n = nodes_[it.node];
+        for (uint32_t i = 0; i < n.childCount; ++i) {
+            const uint32_t ref = n.child[i];
+            if (isLeaf(ref)) {
+                ++s.leaves;
+                s.sahCost += area(n, int(i)) / rootArea * leafBlockCount(ref);
+            } else {
+                stack.push_back({ref, it.depth + 1, area(n, int(i))});
+            }
+        }
+    }
+    return s;
+}
+
+}  // namespace rays
