@@ -12,6 +12,7 @@
 #include "rays/error.h"
 #include "rays/image/image.h"
 #include "rays/io/image_io.h"
+#include "rays/io/mesh_from_obj.h"
 #include "rays/io/obj_loader.h"
 #include "rays/npr/feature_lines.h"
 #include "rays/render/renderer.h"
@@ -25,39 +26,24 @@ double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// Default look of an OBJ mesh given on the positional command line.
-Material objMaterial(const ObjMesh& mesh, int faceMaterial) {
-    Material m;
-    m.color = {0.8, 0.8, 0.8};
-    if (faceMaterial >= 0 && size_t(faceMaterial) < mesh.materials.size())
-        m.color = mesh.materials[size_t(faceMaterial)].diffuse;
-    m.ambient = 0.2;
-    m.diffuse = 0.7;
-    m.specular = 0.2;
-    m.roughness = 0.3;
-    return m;
-}
-
+// An OBJ given on the command line becomes one mesh object with a default material: the MTL's
+// first diffuse colour (else grey 0.8), ambient 0.2, diffuse 0.7, specular 0.2, roughness 0.3.
 void appendObj(Scene& scene, const std::string& path) {
-    const ObjMesh mesh = loadObj(path);
-    scene.objects.reserve(scene.objects.size() + mesh.faces.size());
-    for (size_t f = 0; f < mesh.faces.size(); ++f) {
-        const ObjMesh::Face& face = mesh.faces[f];
-        Object o;
-        o.type = ShapeType::Triangle;
-        o.p0 = mesh.positions[size_t(face.v[0])];
-        o.p1 = mesh.positions[size_t(face.v[1])];
-        o.p2 = mesh.positions[size_t(face.v[2])];
-        if (length(cross(o.p1 - o.p0, o.p2 - o.p0)) == 0) continue;  // degenerate: never hit
-        if (face.n[0] >= 0 && face.n[1] >= 0 && face.n[2] >= 0) {
-            o.smooth = true;
-            o.n0 = normalize(mesh.normals[size_t(face.n[0])]);
-            o.n1 = normalize(mesh.normals[size_t(face.n[1])]);
-            o.n2 = normalize(mesh.normals[size_t(face.n[2])]);
-        }
-        o.material = objMaterial(mesh, f < mesh.faceMaterial.size() ? mesh.faceMaterial[f] : -1);
-        scene.objects.push_back(o);
-    }
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) failFile(path, "cannot open OBJ file");
+    const ObjMesh obj = loadObj(path);
+    Object o;
+    o.material.color = obj.materials.empty() ? Vec3{0.8, 0.8, 0.8} : obj.materials[0].diffuse;
+    o.material.ambient = 0.2;
+    o.material.diffuse = 0.7;
+    o.material.specular = 0.2;
+    o.material.roughness = 0.3;
+    std::unique_ptr<Mesh> mesh = meshFromObj(obj);
+    o.type = ShapeType::Mesh;
+    o.mesh = mesh.get();
+    scene.meshes.push_back(std::move(mesh));
+    prepareObject(o, Transform{});
+    scene.objects.push_back(o);
 }
 
 // Refuses to overwrite an input file with the image.

@@ -277,6 +277,10 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
                     best.object = int(id);
                     best.normal = sh.normal;
                     best.geomNormal = sh.geomNormal;
+                    best.hasUV = sh.hasUV;
+                    best.u = sh.u;
+                    best.v = sh.v;
+                    best.dpdu = sh.dpdu;
                 }
             }
             continue;

@@ -17,6 +17,9 @@ struct Hit {
     double t = kInfinity;
     Vec3 normal;      ///< shading normal (outward)
     Vec3 geomNormal;  ///< geometric normal (outward; decides entering versus leaving)
+    bool hasUV = false;   ///< meshes with texture coordinates:
+    double u = 0, v = 0;  ///< the uv at the hit
+    Vec3 dpdu;            ///< and the object-space tangent dP/du
     bool valid() const { return object >= 0; }
 };
 

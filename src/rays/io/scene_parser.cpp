@@ -10,6 +10,8 @@
 #include <unordered_set>
 
 #include "rays/io/lexer.h"
+#include "rays/io/mesh_from_obj.h"
+#include "rays/io/obj_loader.h"
 
 namespace rays {
 namespace {
@@ -365,7 +367,7 @@ private:
             if (t.text == "edges") return edges();
             if (t.text == "light_source") return light();
             if (t.text == "sphere" || t.text == "plane" || t.text == "triangle" || t.text == "box" ||
-                t.text == "cone")
+                t.text == "cone" || t.text == "mesh" || t.text == "mesh2" || t.text == "obj_mesh")
                 return object();
             if (unsupportedHere()) return;
             error("unknown keyword " + describe(t));
@@ -903,6 +905,12 @@ private:
             const Vec3 b = vector3("box corner");
             o.p0 = vmin(a, b);
             o.p1 = vmax(a, b);
+        } else if (name == "mesh") {
+            meshTriangles(o, kw);
+        } else if (name == "mesh2") {
+            mesh2Sections(o, kw);
+        } else if (name == "obj_mesh") {
+            objMesh(o);
         } else {
             o.type = ShapeType::Cone;
             o.p0 = vector3("cone base");
@@ -930,6 +938,197 @@ private:
         }
         prepareObject(o, m);
         scene_.objects.push_back(std::move(o));
+    }
+
+    // ---- meshes ----------------------------------------------------------------------------------
+    // Finalizes a mesh built by the parser (errors point at the mesh keyword) and attaches it.
+    void attachMesh(Object& o, std::unique_ptr<Mesh> mesh, const Token& kw) {
+        if (mesh->triangleCount() == 0) fail(loc(kw), "mesh has no triangles");
+        try {
+            mesh->finalize();
+        } catch (const Error& e) {
+            fail(loc(kw), e.what());
+        }
+        o.type = ShapeType::Mesh;
+        o.mesh = mesh.get();
+        scene_.meshes.push_back(std::move(mesh));
+    }
+
+    // mesh { triangle { <a>, <b>, <c> [uv_vectors <uv>, <uv>, <uv>] }
+    //        smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> [uv_vectors ...] } ... }
+    void meshTriangles(Object& o, const Token& kw) {
+        auto mesh = std::make_unique<Mesh>();
+        struct Corner { Vec3 p, n; double u = 0, v = 0; };
+        std::vector<Corner> corners;
+        bool anySmooth = false, anyUV = false;
+        std::vector<uint8_t> smooth;
+        while (isIdent("triangle") || isIdent("smooth_triangle")) {
+            const Token tri = tok_;
+            const bool isSmooth = isIdent("smooth_triangle");
+            advance();
+            Corner c[3];
+            bool hasUV = false;
+            block(tri, [&] {
+                if (hasUV) unknown(std::string(tri.text));
+                for (int k = 0; k < 3; ++k) {
+                    skipCommas();
+                    c[k].p = vector3("mesh vertex");
+                    if (isSmooth) {
+                        skipCommas();
+                        const Token at = tok_;
+                        c[k].n = vector3("mesh vertex normal");
+                        if (length(c[k].n) == 0) fail(loc(at), "vertex normal has zero length");
+                    }
+                }
+                skipCommas();
+                if (isIdent("uv_vectors")) {
+                    advance();
+                    for (int k = 0; k < 3; ++k) {
+                        skipCommas();
+                        const Token at = tok_;
+                        const Value uv = expr();
+                        if (uv.n != 2) fail(loc(at), "uv_vectors takes 2-component vectors <u, v>");
+                        c[k].u = uv.c[0];
+                        c[k].v = uv.c[1];
+                    }
+                    hasUV = true;
+                }
+                skipCommas();
+                if (!isSymbol('}')) unknown(std::string(tri.text));
+            });
+            if (!isSmooth) {
+                const Vec3 n = cross(c[1].p - c[0].p, c[2].p - c[0].p);
+                for (Corner& k : c) k.n = length(n) > 0 ? normalize(n) : Vec3{0, 0, 1};
+            }
+            anySmooth |= isSmooth;
+            anyUV |= hasUV;
+            for (const Corner& k : c) corners.push_back(k);
+        }
+        for (size_t i = 0; i < corners.size(); ++i) {
+            const Corner& k = corners[i];
+            mesh->positions.insert(mesh->positions.end(), {float(k.p.x), float(k.p.y), float(k.p.z)});
+            mesh->indices.push_back(uint32_t(i));
+            if (anySmooth) {
+                const Vec3 n = normalize(k.n);
+                mesh->normals.insert(mesh->normals.end(), {float(n.x), float(n.y), float(n.z)});
+                mesh->normalIndices.push_back(uint32_t(i));
+            }
+            if (anyUV) {
+                mesh->uvs.insert(mesh->uvs.end(), {float(k.u), float(k.v)});
+                mesh->uvIndices.push_back(uint32_t(i));
+            }
+        }
+        attachMesh(o, std::move(mesh), kw);
+    }
+
+    // NAME { N, item, item, ... } with exactly N items of `width` components (3 or 2).
+    template <class F>
+    void countedList(const char* name, int width, F&& each) {
+        const Token kw = tok_;
+        advance();
+        block(kw, [&] {
+            const Token at = tok_;
+            const double n = number(std::string(name) + " count");
+            if (n < 0 || n != std::floor(n)) fail(loc(at), std::string(name) + " count must be a whole number");
+            for (size_t i = 0; i < size_t(n); ++i) {
+                skipCommas();
+                const Token item = tok_;
+                if (isSymbol('}')) fail(loc(item), std::string(name) + " has fewer items than its count " + std::to_string(size_t(n)));
+                const Value v = expr();
+                if (v.n != width) fail(loc(item), std::string(name) + " items must be " + std::to_string(width) + "-component vectors");
+                each(v, item);
+            }
+            skipCommas();
+            if (!isSymbol('}')) fail(loc(tok_), std::string(name) + " has more items than its count " + std::to_string(size_t(n)));
+        });
+    }
+
+    // mesh2 { vertex_vectors { } [normal_vectors { }] [uv_vectors { }] face_indices { }
+    //         [normal_indices { }] [uv_indices { }] }, zero-based indices.
+    void mesh2Sections(Object& o, const Token& kw) {
+        auto mesh = std::make_unique<Mesh>();
+        Mesh& m = *mesh;
+        auto toIndex = [&](const Value& v, const Token& at, std::vector<uint32_t>& out) {
+            for (int k = 0; k < 3; ++k) {
+                if (v.c[k] < 0 || v.c[k] != std::floor(v.c[k])) fail(loc(at), "mesh2 indices must be whole numbers >= 0");
+                out.push_back(uint32_t(v.c[k]));
+            }
+        };
+        for (;;) {
+            skipCommas();
+            if (isIdent("vertex_vectors")) {
+                countedList("vertex_vectors", 3, [&](const Value& v, const Token&) {
+                    m.positions.insert(m.positions.end(), {float(v.c[0]), float(v.c[1]), float(v.c[2])});
+                });
+            } else if (isIdent("normal_vectors")) {
+                countedList("normal_vectors", 3, [&](const Value& v, const Token& at) {
+                    Vec3 n{v.c[0], v.c[1], v.c[2]};
+                    if (length(n) == 0) fail(loc(at), "normal_vectors entry has zero length");
+                    n = normalize(n);
+                    m.normals.insert(m.normals.end(), {float(n.x), float(n.y), float(n.z)});
+                });
+            } else if (isIdent("uv_vectors")) {
+                countedList("uv_vectors", 2, [&](const Value& v, const Token&) {
+                    m.uvs.insert(m.uvs.end(), {float(v.c[0]), float(v.c[1])});
+                });
+            } else if (isIdent("face_indices")) {
+                countedList("face_indices", 3, [&](const Value& v, const Token& at) { toIndex(v, at, m.indices); });
+            } else if (isIdent("normal_indices")) {
+                countedList("normal_indices", 3, [&](const Value& v, const Token& at) { toIndex(v, at, m.normalIndices); });
+            } else if (isIdent("uv_indices")) {
+                countedList("uv_indices", 3, [&](const Value& v, const Token& at) { toIndex(v, at, m.uvIndices); });
+            } else {
+                break;
+            }
+        }
+        // Without explicit index lists, normals and uvs follow the vertex indices (POV-Ray).
+        if (!m.normals.empty() && m.normalIndices.empty()) m.normalIndices = m.indices;
+        if (!m.uvs.empty() && m.uvIndices.empty()) m.uvIndices = m.indices;
+        attachMesh(o, std::move(mesh), kw);
+    }
+
+    // obj_mesh { "file.obj" modifiers }: an OBJ file (relative to the scene's folder). Before the
+    // modifiers the material is the MTL's first diffuse colour (and map_Kd as a uv image map),
+    // else grey 0.8, with ambient 0.2 and diffuse 0.7.
+    void objMesh(Object& o) {
+        const Token kw = tok_;
+        if (tok_.kind != TokenKind::String) error("expected the OBJ file name string, found " + describe(tok_));
+        namespace fs = std::filesystem;
+        fs::path path(std::string(tok_.text));
+        if (path.is_relative()) path = fs::path(lex_.fileName()).parent_path() / path;
+        std::error_code ec;
+        if (!fs::is_regular_file(path, ec)) error("cannot open OBJ file '" + path.string() + "'");
+        advance();
+        const ObjMesh obj = loadObj(path.string());  // errors name the OBJ file and its line
+        Material& mat = o.material;
+        mat.color = {0.8, 0.8, 0.8};
+        mat.ambient = 0.2;
+        mat.diffuse = 0.7;
+        if (!obj.materials.empty()) {
+            mat.color = obj.materials[0].diffuse;
+            if (!obj.materials[0].diffuseTexture.empty()) {
+                mat.pigmentMap = texture(obj.materials[0].diffuseTexture, kw, 1.0);
+                mat.mapType = 3;
+                mat.mapBilinear = true;
+            }
+        }
+        std::unique_ptr<Mesh> mesh;
+        try {
+            mesh = meshFromObj(obj);
+        } catch (const Error& e) {
+            fail(loc(kw), e.what());
+        }
+        skipCommas();
+        if (isIdent("smooth")) {  // vertex normals from the faces when the file has none
+            advance();
+            if (!mesh->hasNormals()) {
+                mesh->computeVertexNormals();
+                mesh->finalize();
+            }
+        }
+        o.type = ShapeType::Mesh;
+        o.mesh = mesh.get();
+        scene_.meshes.push_back(std::move(mesh));
     }
 
     Lexer lex_;

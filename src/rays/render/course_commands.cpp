@@ -5,6 +5,7 @@
 
 #include "rays/image/image.h"
 #include "rays/render/tracer.h"
+#include "rays/scene/mesh.h"
 
 namespace rays {
 namespace {
@@ -57,6 +58,9 @@ void printObject(std::ostream& out, const Object& o) {
             break;
         case ShapeType::Box:
             out << "- Min: " << vec(o.p0) << "\n- Max: " << vec(o.p1) << "\n";
+            break;
+        case ShapeType::Mesh:
+            out << "- Triangles: " << o.mesh->triangleCount() << "\n";
             break;
         case ShapeType::Cone:
             out << "- Base: " << vec(o.p0) << "\n- Base Radius: " << num(o.r0) << "\n- Cap: " << vec(o.p1)

@@ -64,15 +64,29 @@ Vec3 decodeNormal(Vec3 texel) {
     return n;
 }
 
-void applyMaps(const Scene& scene, const Object& o, Vec3 P, Vec3& color, Vec3& N) {
+void applyMaps(const Scene& scene, const Object& o, Vec3 P, const SurfaceUV& uv, Vec3& color, Vec3& N) {
     const Material& m = o.material;
     const Vec3 pObj = o.toObject.point(P);
     auto toTexture = [&](int xf) {
         return xf < 0 ? pObj : scene.textureTransforms[size_t(xf)].toTexture.point(pObj);
     };
+    // Texture coordinates of a map: the mesh's own (uv mapping) or projected from texture space.
+    auto coords = [&](int mapType, int xf, double& u, double& v) {
+        if (mapType == 3) {
+            u = uv.u;
+            v = uv.v;
+            if (xf >= 0) {  // a transform in the block moves the uv plane
+                const Vec3 q = scene.textureTransforms[size_t(xf)].toTexture.point(Vec3{u, v, 0});
+                u = q.x;
+                v = q.y;
+            }
+        } else {
+            mapCoordinates(mapType, toTexture(xf), u, v);
+        }
+    };
     if (m.pigmentMap >= 0) {
         double u, v;
-        mapCoordinates(m.mapType, toTexture(m.pigmentTransform), u, v);
+        coords(m.mapType, m.pigmentTransform, u, v);
         const bool outside = u < 0 || u >= 1 || v < 0 || v >= 1;
         if (!(m.mapOnce && outside)) color = scene.textures[size_t(m.pigmentMap)].sample(u, v, m.mapBilinear);
     }
@@ -81,11 +95,16 @@ void applyMaps(const Scene& scene, const Object& o, Vec3 P, Vec3& color, Vec3& N
     const Texture& tex = scene.textures[size_t(map)];
     const Vec3 p = toTexture(m.normalTransform);
     double u, v;
-    mapCoordinates(m.normalMapType, p, u, v);
+    coords(m.normalMapType, m.normalTransform, u, v);
     Vec3 du, dv;
-    mapDerivatives(m.normalMapType, p, du, dv);
     Transform toWorld = o.toObject.inverse();
-    if (m.normalTransform >= 0) toWorld = toWorld * scene.textureTransforms[size_t(m.normalTransform)].toObject;
+    if (m.normalMapType == 3) {
+        du = uv.dpdu;  // object space; the bitangent follows from N
+        dv = cross(o.toObject.transposedVector(N), du);
+    } else {
+        mapDerivatives(m.normalMapType, p, du, dv);
+        if (m.normalTransform >= 0) toWorld = toWorld * scene.textureTransforms[size_t(m.normalTransform)].toObject;
+    }
     Vec3 T, B;
     tangentFrame(N, toWorld.vector(du), toWorld.vector(dv), T, B);
     if (m.normalMap >= 0) {

@@ -21,8 +21,16 @@ void tangentFrame(Vec3 N, Vec3 dPdu, Vec3 dPdv, Vec3& T, Vec3& B);
 /// Tangent-space normal from an 8-bit-style RGB texel (c·255 − 128)/127, +Z up.
 Vec3 decodeNormal(Vec3 texel);
 
+/// Surface parametrisation at a hit, for uv mapping (map type 3): mesh texture coordinates and
+/// the object-space tangent dP/du.
+struct SurfaceUV {
+    bool valid = false;
+    double u = 0, v = 0;
+    Vec3 dpdu;
+};
+
 /// Applies the object's image map and normal or bump map at world point P with facing normal N:
 /// color receives the pigment colour (unchanged without an image map), N the perturbed normal.
-void applyMaps(const Scene& scene, const Object& o, Vec3 P, Vec3& color, Vec3& N);
+void applyMaps(const Scene& scene, const Object& o, Vec3 P, const SurfaceUV& uv, Vec3& color, Vec3& N);
 
 }  // namespace rays

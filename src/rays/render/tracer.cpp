@@ -264,7 +264,8 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     const Material* mp = &o.material;
     if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0) {
         mapped = o.material;
-        applyMaps(scene_, o, P, mapped.color, N);
+        const SurfaceUV uv{hit.hasUV, hit.u, hit.v, hit.dpdu};
+        applyMaps(scene_, o, P, uv, mapped.color, N);
         mp = &mapped;
     }
     const Material& m = *mp;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "rays/scene/mesh.h"
+
 namespace rays {
 
 std::string_view shapeName(ShapeType t) {
@@ -11,6 +13,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Triangle: return "Triangle";
         case ShapeType::Box: return "Box";
         case ShapeType::Cone: return "Cone";
+        case ShapeType::Mesh: return "Mesh";
     }
     return "Object";
 }
@@ -181,6 +184,18 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Sphere: found = hitSphere(o, r, tMin, tMax, h); break;
         case ShapeType::Plane: found = hitPlane(o, r, tMin, tMax, h); break;
         case ShapeType::Triangle: return hitTriangle(o, r, tMin, tMax, h);
+        case ShapeType::Mesh: {
+            MeshHit mh;
+            if (!intersectMesh(*o.mesh, r, tMin, tMax, mh)) return false;
+            h.t = mh.t;
+            h.normal = mh.normal;
+            h.geomNormal = mh.geomNormal;
+            h.hasUV = o.mesh->hasUVs();
+            h.u = mh.u;
+            h.v = mh.v;
+            h.dpdu = mh.dpdu;
+            return true;
+        }
         case ShapeType::Box: found = hitBox(o, r, tMin, tMax, h); break;
         case ShapeType::Cone: found = hitCone(o, r, tMin, tMax, h); break;
     }
@@ -204,6 +219,9 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Box:
             b.extend(o.p0);
             b.extend(o.p1);
+            break;
+        case ShapeType::Mesh:
+            b = o.mesh->bounds;
             break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);
@@ -279,11 +297,16 @@ bool intersect(const Object& o, const Ray& worldRay, double tMin, double tMax, S
     const Ray local{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)};
     if (!hitLocal(o, local, tMin, tMax, hit)) return false;
     hit.normal = normalize(o.toObject.transposedVector(hit.normal));
-    hit.geomNormal = o.smooth ? normalize(o.toObject.transposedVector(hit.geomNormal)) : hit.normal;
+    hit.geomNormal = (o.smooth || o.type == ShapeType::Mesh) ? normalize(o.toObject.transposedVector(hit.geomNormal))
+                                                             : hit.normal;
     return true;
 }
 
 bool occludes(const Object& o, const Ray& worldRay, double tMin, double tMax) {
+    if (o.type == ShapeType::Mesh) {
+        if (!usesLocalSpace(o)) return occludesMesh(*o.mesh, worldRay, tMin, tMax);
+        return occludesMesh(*o.mesh, Ray{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)}, tMin, tMax);
+    }
     ShapeHit h;
     if (!usesLocalSpace(o)) return hitLocal(o, worldRay, tMin, tMax, h);
     const Ray local{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)};

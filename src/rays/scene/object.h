@@ -9,7 +9,9 @@
 
 namespace rays {
 
-enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone };
+enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh };
+
+struct Mesh;
 
 /// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone").
 std::string_view shapeName(ShapeType t);
@@ -26,6 +28,7 @@ struct Object {
     double r0 = 0, r1 = 0;
     bool smooth = false;  ///< Triangle only: interpolate the vertex normals n0, n1, n2
     Vec3 n0, n1, n2;
+    const Mesh* mesh = nullptr;  ///< Mesh only: the geometry (owned by the Scene)
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
     bool localSpace = false;   ///< rays are mapped through toObject before intersecting
@@ -46,11 +49,15 @@ inline bool usesLocalSpace(const Object& o) { return o.localSpace; }
 Bounds worldBounds(const Object& o);
 
 /// Object hit record: t along the ray, the outward world-space unit shading normal and the
-/// geometric normal (they differ only for smooth triangles; both on the same side).
+/// geometric normal (they differ only for smooth triangles and meshes; both on the same side),
+/// and for meshes with texture coordinates the uv and the object-space tangent dP/du.
 struct ShapeHit {
     double t = kInfinity;
     Vec3 normal;
     Vec3 geomNormal;
+    bool hasUV = false;
+    double u = 0, v = 0;
+    Vec3 dpdu;
 };
 
 /// Nearest hit of the world ray with t in (tMin, tMax); returns false when none.

@@ -1,11 +1,13 @@
 // Scene: everything a scene file describes. Built by the parser, then immutable while rendering.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "rays/npr/edge_settings.h"
 #include "rays/scene/camera.h"
 #include "rays/scene/light.h"
+#include "rays/scene/mesh.h"
 #include "rays/scene/object.h"
 #include "rays/scene/texture.h"
 
@@ -17,6 +19,7 @@ struct Scene {
     std::vector<Light> lights;
     std::vector<Object> objects;  ///< course object ID = index + 1
     std::vector<Texture> textures;  ///< image, normal and bump maps referenced by materials
+    std::vector<std::unique_ptr<Mesh>> meshes;  ///< geometry of Mesh objects (stable addresses)
     /// Transforms written inside pigment / normal blocks: texture space → object space (M) and back.
     struct TextureTransform {
         Transform toObject, toTexture;

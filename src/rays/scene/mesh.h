@@ -1,0 +1,52 @@
+// Indexed triangle meshes (OBJ files, POV-Ray mesh and mesh2): geometry stored once, with its own
+// wide SIMD BVH in object space, optional per-vertex normals (smooth shading) and texture
+// coordinates with per-vertex tangents (normal mapping).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "rays/accel/triangle_bvh.h"
+#include "rays/geometry/ray.h"
+
+namespace rays {
+
+struct Mesh {
+    std::vector<float> positions;        ///< xyz per vertex
+    std::vector<uint32_t> indices;       ///< 3 per triangle, into positions
+    std::vector<float> normals;          ///< xyz per normal; empty = flat shading
+    std::vector<uint32_t> normalIndices; ///< 3 per triangle, into normals (when normals exist)
+    std::vector<float> uvs;              ///< uv per texture vertex; empty = none
+    std::vector<uint32_t> uvIndices;     ///< 3 per triangle, into uvs (when uvs exist)
+    std::vector<float> tangents;         ///< xyz per position vertex (from uvs; empty without)
+    TriangleBvh bvh;                     ///< over positions/indices, object space
+    Bounds bounds;                       ///< object-space bounds
+
+    size_t triangleCount() const { return indices.size() / 3; }
+    bool hasNormals() const { return !normalIndices.empty(); }
+    bool hasUVs() const { return !uvIndices.empty(); }
+
+    /// Checks the index arrays, computes bounds and tangents and builds the BVH. Throws Error
+    /// (message without location) when an index is out of range.
+    void finalize();
+    /// Sets per-vertex normals to the area-weighted average of the adjacent face normals (smooth
+    /// shading for meshes that have none). Call before finalize().
+    void computeVertexNormals();
+    size_t memoryBytes() const;
+};
+
+/// What a ray hit on a mesh, in object space.
+struct MeshHit {
+    uint32_t triangle = 0;
+    double t = 0;
+    Vec3 geomNormal;   ///< unit, from the winding (a, b, c)
+    Vec3 normal;       ///< interpolated vertex normal (or geomNormal), same side as geomNormal
+    double u = 0, v = 0;  ///< texture coordinates (0 without uvs)
+    Vec3 dpdu;         ///< tangent along u (zero without uvs)
+};
+
+/// Nearest hit of an object-space ray with t in (tMin, tMax).
+bool intersectMesh(const Mesh& m, const Ray& ray, double tMin, double tMax, MeshHit& hit);
+/// Any hit with t in (tMin, tMax).
+bool occludesMesh(const Mesh& m, const Ray& ray, double tMin, double tMax);
+
+}  // namespace rays
