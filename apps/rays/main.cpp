@@ -14,7 +14,9 @@
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
 #include "rays/render/course_commands.h"
+#include "filter_command.h"
 #include "huge_pages.h"
+#include "rays/image/filter.h"
 #include "render_command.h"
 #include "render_options.h"
 #include "scene_library.h"
@@ -58,6 +60,8 @@ int runPositional(const std::vector<std::string>& a) {
 }
 
 int run(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "filter")
+        return cli::runFilterCommand(std::vector<std::string>(argv + 2, argv + argc));
     std::vector<std::string> args = cli::normaliseCourseFlags(argc, argv);
     if (!args.empty() && isInteger(args[0])) return runPositional(args);
     static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes", "assets", "filter"};
@@ -92,6 +96,8 @@ int run(int argc, char** argv) {
     render->add_option("-H,--height", height, "image height in pixels");
     cli::addModernOptions(render, modern, job.settings);
     render->add_option("--scene", libraryScene, "render a shipped scene by number or name (see `rays scenes`)");
+    std::string post;
+    render->add_option("--post", post, "filter kernels applied to the rendered image, e.g. gaussian_blur_3,sharpen (see rays filter)");
     render->add_option("--edges", job.edges.types, "feature lines: silhouette,occlusion,intersection,crease,material,shadow,reflection | all | none");
     render->add_option("--edge-method", job.edges.method, "stencil (default) | image");
     render->add_option("--edge-width", job.edges.width, "line width in pixels, 0.5 to 8 (default 1.5)");
@@ -166,6 +172,7 @@ int run(int argc, char** argv) {
         scene = cli::findScene(libraryScene);
     }
     if (render->parsed() && scene.empty()) throw Error("rays: error: no scene: give a scene file or --scene N");
+    if (!post.empty()) job.post = parseKernelList(splitKernelList(post));  // bad kernels fail before rendering
     job.scenePath = scene;
     RenderSettings& s = job.settings;
     cli::applyOptions(flags, modern, s);

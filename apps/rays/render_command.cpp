@@ -14,6 +14,7 @@
 #include "rays/io/image_io.h"
 #include "rays/io/mesh_from_obj.h"
 #include "rays/io/obj_loader.h"
+#include "rays/image/filter.h"
 #include "rays/npr/feature_lines.h"
 #include "rays/render/renderer.h"
 
@@ -174,6 +175,7 @@ int runRender(const RenderJob& job) {
         onRecord = [&](int x, int y, const PathInfo& info) { records->store(x, y, info); };
     }
     if (!edges.linesOnly) img = render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord);
+    if (!job.post.empty()) img = applyFilters(img, job.post, BorderMode::Clamp, s.threads);
     const double renderMs = msSince(t0);
     double linesMs = 0;
     LineCoverage lines;

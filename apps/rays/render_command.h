@@ -4,6 +4,7 @@
 #include <string>
 
 #include "rays/io/scene_parser.h"
+#include "rays/image/kernels.h"
 #include "rays/npr/edge_settings.h"
 #include "rays/render/settings.h"
 
@@ -29,6 +30,7 @@ struct RenderJob {
     std::string objPath;  ///< optional OBJ mesh added with a default material
     RenderSettings settings;
     EdgeOptions edges;
+    std::vector<KernelSpec> post;  ///< --post: filters applied to the rendered image (before lines)
     RotationOrder rotation = RotationOrder::Course;
     int jpegQuality = 90;
     bool quiet = false;   ///< no progress bar, no summary line

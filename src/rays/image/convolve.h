@@ -2,11 +2,11 @@
 // passes), box blur by running sums, Sobel gradient magnitude, median, scaling; four border modes.
 //
 // Every function filters each plane independently into dst (resized to src's shape; dst must not
-// be src), splits the planes into fixed bands of rows and runs the bands on `threads` threads
-// (0 = all cores) with parallelFor. Band boundaries do not depend on the thread count, so the
-// results are bit-identical for any number of threads. Inner loops work on blocks of pixels of a
-// fixed width that the compiler vectorises; borders are handled once per row (padded row copies,
-// row pointers), never per pixel.
+// be src), splits the planes into tiles (bands of rows, cut into strips of columns for the tall
+// windows) and runs them on `threads` threads (0 = all cores) with parallelFor. Tile boundaries do
+// not depend on the thread count, so the results are bit-identical for any number of threads.
+// Inner loops work on blocks of pixels of a fixed width that the compiler vectorises; borders are
+// handled once per row (padded row copies, row pointers), never per pixel.
 //
 // The linear filters are true convolutions: out(x, y) = Σ K[j][i] · in(x + rx − i, y + ry − j)
 // with rx = (kw − 1)/2, ry = (kh − 1)/2, so a single white pixel turns into the kernel itself.
@@ -25,10 +25,30 @@ enum class BorderMode : uint8_t {
     Reflect,  ///< mirrored about the edge pixel, which is not repeated (…c b | a b c … x y z | y x…)
 };
 
+namespace detail {
+void* allocatePlaneMemory(size_t bytes);
+void freePlaneMemory(void* p, size_t bytes) noexcept;
+}  // namespace detail
+
+/// Allocator of image planes: blocks of 4 MiB and more are 2 MiB-aligned and advised as
+/// transparent huge pages (Linux madvise), which makes first touching them far cheaper; smaller
+/// blocks come from operator new.
+template <class T>
+struct PlaneAllocator {
+    using value_type = T;
+    PlaneAllocator() = default;
+    template <class U>
+    PlaneAllocator(const PlaneAllocator<U>&) noexcept {}
+    T* allocate(size_t n) { return static_cast<T*>(detail::allocatePlaneMemory(n * sizeof(T))); }
+    void deallocate(T* p, size_t n) noexcept { detail::freePlaneMemory(p, n * sizeof(T)); }
+    template <class U>
+    bool operator==(const PlaneAllocator<U>&) const noexcept { return true; }
+};
+
 /// Planar float image: `channels` planes of width×height floats, each top row first.
 struct PlanarImage {
     int width = 0, height = 0, channels = 0;
-    std::vector<float> data;
+    std::vector<float, PlaneAllocator<float>> data;
 
     PlanarImage() = default;
     PlanarImage(int w, int h, int c) : width(w), height(h), channels(c), data(size_t(w) * size_t(h) * size_t(c)) {}
