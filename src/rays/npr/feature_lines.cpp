@@ -128,6 +128,24 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
         // centres lie within ⌈R⌉.
         const int reach = int(std::ceil(radius));
         const int side = 2 * reach + 1;
+        // Per stencil offset (the same for every pixel): the four pixel centres around it, as
+        // indices into the window, and its bilinear weights.
+        struct Tap {
+            int cell[4];
+            double w[4];
+            double dx, dy;
+        };
+        std::vector<Tap> taps;
+        for (const StencilOffset& o : stencil) {
+            const double px = 0.5 + o.dx, py = 0.5 - o.dy;  // relative to the pixel, rows down
+            const int ix = int(std::floor(px - 0.5)), iy = int(std::floor(py - 0.5));
+            const double fx = px - 0.5 - ix, fy = py - 0.5 - iy;
+            auto at = [&](int dx, int dy) { return (dy + reach) * side + dx + reach; };
+            taps.push_back({{at(ix, iy), at(ix + 1, iy), at(ix, iy + 1), at(ix + 1, iy + 1)},
+                            {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy},
+                            o.dx,
+                            o.dy});
+        }
         parallelFor((s.height + kRowBlock - 1) / kRowBlock, s.threads, [&](int block, int w) {
             PathInfo other;
             std::vector<uint8_t> near(size_t(side) * side);  // edge types between the centre and the record at (dx, dy)
@@ -141,14 +159,12 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
                             near[size_t(dy + reach) * side + dx + reach] =
                                 uint8_t(classifyPair(centre, row[std::clamp(x + dx, 0, s.width - 1)], th) & e.types);
                     }
-                    auto cell = [&](int dx, int dy) { return near[size_t(dy + reach) * side + dx + reach]; };
                     int m = 0;
-                    for (const StencilOffset& o : stencil) {
+                    for (const Tap& tap : taps) {
                         // Reuse primary hits: when the four pixel centres around the stencil
                         // position agree, the stencil ray would see the same; cast it otherwise.
-                        const double px = 0.5 + o.dx, py = 0.5 - o.dy;  // relative to the pixel, rows down
-                        const int ix = int(std::floor(px - 0.5)), iy = int(std::floor(py - 0.5));
-                        const uint8_t a = cell(ix, iy), b = cell(ix + 1, iy), c = cell(ix, iy + 1), d = cell(ix + 1, iy + 1);
+                        const uint8_t a = near[size_t(tap.cell[0])], b = near[size_t(tap.cell[1])];
+                        const uint8_t c = near[size_t(tap.cell[2])], d = near[size_t(tap.cell[3])];
                         const uint8_t any = a | b | c | d, all = a & b & c & d;
                         if (any == 0) continue;
                         if (all != 0 && any == all) {
@@ -157,14 +173,13 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
                         }
                         // Mixed cell: the edge runs between its centres. Far from the midway
                         // contour of the bilinear indicator the answer is clear; cast only near it.
-                        const double fx = px - 0.5 - ix, fy = py - 0.5 - iy;
-                        const double v = (1 - fx) * (1 - fy) * (a != 0) + fx * (1 - fy) * (b != 0) +
-                                         (1 - fx) * fy * (c != 0) + fx * fy * (d != 0);
+                        const double v = tap.w[0] * (a != 0) + tap.w[1] * (b != 0) + tap.w[2] * (c != 0) + tap.w[3] * (d != 0);
                         if (v <= 0.25) continue;
                         if (v >= 0.75) {
                             ++m;
                             continue;
                         }
+                        const StencilOffset o{tap.dx, tap.dy};
                         const Ray r = cam.rayThrough(x + 0.5 + o.dx, s.height - 1 - y + 0.5 + o.dy, s.width, s.height);
                         // Shadow rays only where the shadow count changes nearby and nothing else
                         // already separates the two samples.
