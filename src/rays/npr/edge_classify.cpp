@@ -14,7 +14,7 @@ EdgeThresholds thresholdsFor(const EdgeSettings& e, double relax) {
 }
 
 EdgeRecord toEdgeRecord(const PathInfo& info, const SurfaceIds& ids) {
-    EdgeRecord r;
+    EdgeRecord r{-1, -1, 0, 0, 0.0f, {0, 0, 0}, {0, 0, 0}};
     const int o = info.count > 0 ? info.ids[0] : -1;
     if (o < 0) return r;
     r.surface = ids.surfaceOf(o);

@@ -19,14 +19,16 @@ struct EdgeThresholds {
 EdgeThresholds thresholdsFor(const EdgeSettings& e, double relax = 1.0);
 
 /// What one sample saw, compacted for fast comparison (40 bytes).
+/// Trivially constructible (large arrays of it are allocated without zero-filling); use
+/// toEdgeRecord to make one.
 struct EdgeRecord {
-    int32_t surface = -1;   ///< surface id of the primary hit; −1 = background
-    int32_t material = -1;  ///< material id of the primary hit
-    int32_t blocked = 0;    ///< lights blocked at the primary hit
-    uint32_t path = 0;      ///< hash of the surfaces along the secondary rays (0: none)
-    float t = 0;            ///< primary hit distance
-    float p[3] = {0, 0, 0}; ///< primary hit point
-    float n[3] = {0, 0, 0}; ///< primary facing normal
+    int32_t surface;   ///< surface id of the primary hit; −1 = background
+    int32_t material;  ///< material id of the primary hit
+    int32_t blocked;   ///< lights blocked at the primary hit
+    uint32_t path;     ///< hash of the surfaces along the secondary rays (0: none)
+    float t;           ///< primary hit distance
+    float p[3];        ///< primary hit point
+    float n[3];        ///< primary facing normal
 };
 
 /// Compacts a probe()/render record.

@@ -43,7 +43,7 @@ void stamp(LineCoverage& lc, double cx, double cy, double width) {
 }
 
 // Image method: an edge between two neighbouring pixels is stamped at their shared midpoint.
-void imageLines(LineCoverage& lc, const std::vector<EdgeRecord>& rec, const EdgeSettings& e) {
+void imageLines(LineCoverage& lc, const LineRecords::RecordVector& rec, const EdgeSettings& e) {
     const EdgeThresholds th = thresholdsFor(e);
     const int W = lc.width, H = lc.height;
     for (int y = 0; y < H; ++y)
@@ -59,7 +59,7 @@ void imageLines(LineCoverage& lc, const std::vector<EdgeRecord>& rec, const Edge
 // Pixels within `reach` of a neighbour pair that differs: the only places where stencil rays can
 // find an edge. Creases and depth jumps are sharp, so adjacent pixel centres already show the
 // full normal angle or depth step; the thresholds need no relaxing.
-std::vector<uint8_t> candidates(const std::vector<EdgeRecord>& rec, int W, int H, const EdgeSettings& e, int reach,
+std::vector<uint8_t> candidates(const LineRecords::RecordVector& rec, int W, int H, const EdgeSettings& e, int reach,
                                 int threads) {
     const EdgeThresholds th = thresholdsFor(e);
     std::vector<uint8_t> diff(rec.size(), 0), tmp(rec.size(), 0), out(rec.size(), 0);
@@ -113,7 +113,7 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
         centre = probed.get();
     }
     const SurfaceIds& ids = centre->ids;
-    const std::vector<EdgeRecord>& rec = centre->rec;
+    const LineRecords::RecordVector& rec = centre->rec;
 
     if (e.method == EdgeMethod::Image) {
         imageLines(lc, rec, e);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "rays/accel/bvh.h"
+#include "rays/accel/huge_pages.h"
 #include "rays/image/image.h"
 #include "rays/npr/edge_classify.h"
 #include "rays/npr/edge_settings.h"
@@ -27,7 +28,8 @@ bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s);
 struct LineRecords {
     SurfaceIds ids;
     int width = 0, height = 0;
-    std::vector<EdgeRecord> rec;  ///< top row first
+    using RecordVector = std::vector<EdgeRecord, tribvh::HugePageAllocator<EdgeRecord>>;  // no zero fill
+    RecordVector rec;  ///< top row first; every entry is written by store()
     LineRecords(const Scene& scene, int w, int h);
     void store(int x, int y, const PathInfo& info) { rec[size_t(y) * size_t(width) + size_t(x)] = toEdgeRecord(info, ids); }
 };
