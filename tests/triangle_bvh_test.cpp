@@ -459,3 +459,21 @@ TEST(TriangleBvh, RebuildReplacesContent) {
     EXPECT_FALSE(bvh.intersect({{0, 0, -5}, {0, 0, 1}}, 0, INFINITY, h));
     EXPECT_TRUE(bvh.intersect({{10, 0, -5}, {0, 0, 1}}, 0, INFINITY, h));
 }
+
+TEST(TriangleBvh, TraversalVariantsGiveTheSameHits) {
+    const Mesh m = icosphere(4, 0.3, 17);
+    const TriangleBvh bvh = buildBvh(m);
+    using V = TriangleBvh::TraversalVariant;
+    size_t differ = 0;
+    for (const TriRay& r : randomRays(4000, 18, 1.5f, false)) {
+        TriHit ref;
+        const bool hit = bvh.intersect(r, 0, INFINITY, ref);
+        for (V v : {V::Default, V::Unordered, V::ScalarLeaves, V::ScalarLeavesUnordered}) {
+            TriHit h;
+            const bool vh = bvh.intersect(r, 0, INFINITY, h, v);
+            if (vh != hit || (hit && (h.t != ref.t || h.prim != ref.prim))) ++differ;
+            if (bvh.occluded(r, 0, INFINITY, v) != hit) ++differ;
+        }
+    }
+    EXPECT_EQ(differ, 0u);
+}

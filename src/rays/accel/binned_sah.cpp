@@ -1,7 +1,6 @@
 #include "rays/accel/binned_sah.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -17,11 +16,7 @@ constexpr uint32_t kMaxSahDepth = 56;     ///< deeper ranges are split at the ob
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 /// Bins used for a range of n primitives: fewer for small ranges (cheaper, same quality there).
-int binCount(uint32_t n) {
-    static const int forced = getenv("BINS") ? atoi(getenv("BINS")) : 0;
-    if (forced) return forced;
-    return n >= 1024 ? 32 : (n >= 64 ? 16 : 8);
-}
+int binCount(uint32_t n) { return n >= 1024 ? 32 : (n >= 64 ? 16 : 8); }
 
 struct Box {
     VFloat4 lo = VFloat4::broadcast(kInf), hi = VFloat4::broadcast(-kInf);

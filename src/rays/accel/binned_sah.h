@@ -1,13 +1,15 @@
 // Binned SAH builder (Wald 2007) producing a binary BVH over primitive boxes. The surface area
 // heuristic counts primitives in blocks (the leaves are intersected blockSize at a time with
-// SIMD), splits are chosen among kBins planes per axis over the centroid bounds, and leaves hold
-// at most maxLeafSize primitives.
+// SIMD), splits are chosen among 8-32 planes per axis (more for larger ranges) over the centroid
+// bounds, and leaves hold at most maxLeafSize primitives. Ranges deeper than 56 levels are split
+// at the object median, which bounds the depth (traversal stacks are fixed-size).
 //
-// Threads: large ranges are binned and partitioned data-parallel (fixed-size chunks), then the
-// subtrees below are built as independent tasks. Chunk boundaries, merge order and the partition
-// algorithm depend only on the range sizes, never on the thread count, so the tree (and the
-// order of the primitive references) is identical for any number of threads. Node indices may
-// differ; only the tree structure is meaningful.
+// Threads: the upper levels are processed one range at a time, binned and partitioned
+// data-parallel over fixed-size chunks (each chunk partitioned in place, then misplaced runs
+// swapped k-th with k-th); the subtrees below are then built as independent tasks, largest first.
+// Chunk boundaries, merge order and the partition algorithm depend only on the range sizes,
+// never on the thread count, so the tree (and the order of the primitive references) is the same
+// for any number of threads. Node indices may differ; only the tree structure is meaningful.
 #pragma once
 
 #include <cstdint>

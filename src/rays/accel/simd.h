@@ -100,6 +100,10 @@ RAYS_FORCEINLINE VFloat4 materialize(VFloat4 a) {
     __asm__("" : "+x"(a.v));
     return a;
 }
+RAYS_FORCEINLINE float materialize(float a) {
+    __asm__("" : "+x"(a));
+    return a;
+}
 
 #else
 
@@ -229,6 +233,10 @@ inline VFloat4 loadu4(const float* p) { return VFloat4::load(p); }
 inline VFloat4 materialize(VFloat4 a) {
     volatile float keep[4] = {a.v[0], a.v[1], a.v[2], a.v[3]};
     return {{keep[0], keep[1], keep[2], keep[3]}};
+}
+inline float materialize(float a) {
+    volatile float keep = a;
+    return keep;
 }
 
 #endif

@@ -3,10 +3,10 @@
 #include "rays/accel/triangle_bvh.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 #include "rays/accel/binned_sah.h"
 #include "rays/accel/task_pool.h"
@@ -99,6 +99,7 @@ private:
             node.child[i] = used ? refs[i] : kLeafFlag;
         }
         node.childCount = uint32_t(k);
+        for (uint32_t& p : node.pad) p = 0;
         for (int i = 0; i < k; ++i)
             if (!isLeaf(refs[i])) fill(refs[i], kids[i], false);
     }
@@ -122,6 +123,9 @@ void TriangleBvh::build(const float* positions, size_t vertexCount, const uint32
     if (triangleCount == 0 || positions == nullptr || indices == nullptr) return;
     if (triangleCount > kMaxBlockIndex) throw std::length_error("TriangleBvh: too many triangles");
 
+    // Small inputs are built on the calling thread: starting threads would cost more than it saves.
+    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    threads = int(std::min<size_t>(size_t(threads), std::max<size_t>(1, triangleCount / 16384)));
     TaskPool pool(threads);
 
     // Triangle boxes; degenerate (zero-area, computed in double) and non-finite triangles are
@@ -168,8 +172,7 @@ void TriangleBvh::build(const float* positions, size_t vertexCount, const uint32
     SahSettings settings;
     settings.blockSize = kBlockSize;
     settings.maxLeafSize = kBlockSize;
-    if (getenv("TC")) settings.traversalCost = float(atof(getenv("TC")));
-    if (getenv("ML")) settings.maxLeafSize = uint32_t(atoi(getenv("ML")));
+
     BinaryBvh bin = buildBinnedSah(refs, settings, pool);
 
     Collapser collapse(bin, nodes_, kMaxLeafBlocks);

@@ -6,20 +6,22 @@
 // a 4-wide intersection test (triangle_bvh_layout.h).
 //
 // Traversal: closest hit with near-first ordering (hit children sorted by entry distance, a
-// stack of (node, distance) entries culled against the current hit), and an any-hit variant for
-// shadow rays that stops at the first blocker.
+// stack of (node, distance) entries culled against the current hit, pushed children
+// prefetched), and an unordered any-hit variant for shadow rays that stops at the first blocker.
 //
 // Robustness: the triangle test is the watertight test of Woop, Benthin and Wald (JCGT 2013) in
 // single precision: vertices are translated to the ray origin and sheared so that the ray runs
 // along +z, then the three 2D edge functions are evaluated with separately rounded products.
-// An edge shared by two triangles is evaluated from the same transformed vertices with the
-// operands swapped, which yields exactly the negated value, and rounding of a product difference
-// is monotonic, so the computed sign of every edge function is either exact or zero. Points on an
-// edge (zero) count as inside, so a ray through a shared edge or vertex of a closed mesh always
-// hits at least one of the adjacent triangles (possibly both, at the same t). The box test widens
-// every slab by a few ulps (relative to the distance and to |origin / direction|) so that box
-// rounding cannot cull a triangle the ray touches. Triangles whose area is exactly zero or with
-// non-finite vertices are left out at build time and are never hit.
+// A shared vertex is transformed identically in every triangle, an edge shared by two triangles
+// is evaluated from the same transformed vertices with the operands swapped, which yields exactly
+// the negated value, and rounding a difference of two products is monotonic, so every computed
+// edge sign is either the exact sign for the transformed vertices or zero. Zero counts as inside,
+// so where a ray crosses a closed mesh through a shared edge or vertex it hits at least one of
+// the adjacent triangles (possibly two, at the same t); no double-precision fallback is needed.
+// The box test widens every slab by a few ulps (relative to t, plus |origin * (1 / direction)|
+// ulps absolute) so that rounding cannot cull a box the ray touches; direction components below
+// 1e-30 are treated as +-1e-30 there. Triangles whose area is exactly zero (computed in double)
+// or with non-finite vertices are left out at build time and are never hit.
 #pragma once
 
 #include <cstddef>
@@ -53,6 +55,13 @@ public:
     bool intersect(const TriRay& ray, float tMin, float tMax, TriHit& hit) const;
     /// Any hit with t in (tMin, tMax) (shadow rays: stops at the first blocker).
     bool occluded(const TriRay& ray, float tMin, float tMax) const;
+
+    /// Reduced traversals, for benchmarks that measure what each technique buys (same hits as
+    /// the default up to ties; slower): without near-first ordering, and/or with the four
+    /// triangles of a leaf block tested one at a time in scalar code.
+    enum class TraversalVariant { Default, Unordered, ScalarLeaves, ScalarLeavesUnordered };
+    bool intersect(const TriRay& ray, float tMin, float tMax, TriHit& hit, TraversalVariant variant) const;
+    bool occluded(const TriRay& ray, float tMin, float tMax, TraversalVariant variant) const;
     /// BVH + triangle data it owns.
     size_t memoryBytes() const;
     bool empty() const { return nodes_.empty(); }
@@ -70,7 +79,7 @@ public:
     Stats stats() const;
 
 private:
-    template <bool AnyHit>
+    template <bool AnyHit, bool Ordered, bool SimdLeaves>
     bool traverse(const TriRay& ray, float tMin, float tMax, TriHit* hit) const;
 
     std::vector<tribvh::WideNode, tribvh::HugePageAllocator<tribvh::WideNode>> nodes_;  ///< [0]: root

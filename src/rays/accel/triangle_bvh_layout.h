@@ -18,11 +18,12 @@ constexpr uint32_t kLeafFlag = 0x80000000u;
 constexpr uint32_t kMaxBlockIndex = (1u << 28) - 1;
 
 struct alignas(64) WideNode {
+    uint32_t child[kWidth];
+    uint32_t childCount;  ///< used slots (the first childCount)
+    uint32_t pad[7];
     /// Child boxes, one lane per child: [0] lo.x, [1] hi.x, [2] lo.y, [3] hi.y, [4] lo.z, [5] hi.z.
     /// The near plane on axis a for a ray with dir[a] >= 0 is row 2a, the far plane 2a + 1.
     float box[6][kWidth];
-    uint32_t child[kWidth];
-    uint32_t childCount;  ///< used slots (the first childCount); informative
 };
 static_assert(sizeof(WideNode) == 256);
 

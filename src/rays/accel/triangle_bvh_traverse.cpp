@@ -1,20 +1,27 @@
 // TriangleBvh traversal: 8-wide box tests, near-first ordering, 4-wide watertight triangle
-// tests. See triangle_bvh.h for the robustness argument.
+// tests. See triangle_bvh.h for the robustness argument. The Unordered and ScalarLeaves variants
+// exist to measure what ordering and SIMD leaves buy (bench/traverse.cpp --ablation).
 #include <cmath>
 #include <cstring>
-#include <cstdlib>
 #include <limits>
 
 #include "rays/accel/simd.h"
 #include "rays/accel/triangle_bvh.h"
 
 namespace rays {
+
+#ifdef RAYS_TRIBVH_COUNTERS
+// Development statistics (compile with -DRAYS_TRIBVH_COUNTERS).
+thread_local uint64_t gTriBvhNodeVisits = 0, gTriBvhBlockTests = 0, gTriBvhRays = 0;
+#define RAYS_COUNT(x) (++(x))
+#else
+#define RAYS_COUNT(x) ((void)0)
+#endif
+
 namespace {
 
 using namespace tribvh;
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-static const bool kPrefetch = getenv("PF") != nullptr;
 constexpr int kStackSize = 1024;  // >= 7 * maximum depth + 1 (the builder bounds the depth by ~90)
 
 /// Per-ray constants for the box and triangle tests.
@@ -25,6 +32,8 @@ struct RayData {
     uint32_t nearRow[3], farRow[3];
     // Triangles (Woop et al. 2013): axis permutation, shear, permuted origin.
     int kx, ky, kz;
+    float shx, shy, shz;     // shear: dir[kx] / dir[kz], dir[ky] / dir[kz], 1 / dir[kz]
+    float orgx, orgy, orgz;  // org[kx], org[ky], org[kz]
     VFloat4 sx, sy, sz, ox, oy, oz;
 
     explicit RayData(const TriRay& r) {
@@ -52,10 +61,15 @@ struct RayData {
             kx = ky;
             ky = t;
         }
-        const float rz = 1.0f / r.dir[kz];
-        sx = VFloat4::broadcast(r.dir[kx] * rz);
-        sy = VFloat4::broadcast(r.dir[ky] * rz);
-        sz = VFloat4::broadcast(rz);
+        shz = 1.0f / r.dir[kz];
+        shx = r.dir[kx] * shz;
+        shy = r.dir[ky] * shz;
+        sx = VFloat4::broadcast(shx);
+        sy = VFloat4::broadcast(shy);
+        sz = VFloat4::broadcast(shz);
+        orgx = r.org[kx];
+        orgy = r.org[ky];
+        orgz = r.org[kz];
         ox = VFloat4::broadcast(r.org[kx]);
         oy = VFloat4::broadcast(r.org[ky]);
         oz = VFloat4::broadcast(r.org[kz]);
@@ -96,13 +110,44 @@ RAYS_FORCEINLINE void edgeTest(const TriBlock& b, const RayData& r, BlockTest& o
     o.det = det ^ sign;
 }
 
+/// The same watertight test on one lane of a block, in scalar code (ScalarLeaves variant).
+/// Returns true with t, u, v when the triangle is hit with tMin < t < tHit.
+bool scalarTriangle(const TriBlock& b, int lane, const RayData& r, float tMin, float tHit, float& t, float& u,
+                    float& v) {
+    float px[3], py[3], pz[3];
+    for (int k = 0; k < 3; ++k) {
+        const float dx = b.v[k][r.kx][lane] - r.orgx, dy = b.v[k][r.ky][lane] - r.orgy;
+        const float dz = b.v[k][r.kz][lane] - r.orgz;
+        px[k] = std::fma(-r.shx, dz, dx);
+        py[k] = std::fma(-r.shy, dz, dy);
+        pz[k] = r.shz * dz;
+    }
+    const float e0 = materialize(px[2] * py[1]) - materialize(py[2] * px[1]);
+    const float e1 = materialize(px[0] * py[2]) - materialize(py[0] * px[2]);
+    const float e2 = materialize(px[1] * py[0]) - materialize(py[1] * px[0]);
+    const bool inside = (e0 >= 0 && e1 >= 0 && e2 >= 0) || (e0 <= 0 && e1 <= 0 && e2 <= 0);
+    const float det = e0 + e1 + e2;
+    if (!inside || det == 0.0f) return false;
+    const float tt = std::fma(e0, pz[0], std::fma(e1, pz[1], e2 * pz[2]));
+    const float sgn = det < 0.0f ? -1.0f : 1.0f;
+    const float tn = tt * sgn, dn = det * sgn;
+    if (!(tn > tMin * dn && tn < tHit * dn)) return false;
+    const float tv = tn / dn;
+    if (!(tv > tMin && tv < tHit)) return false;
+    t = tv;
+    u = e1 / det;
+    v = e2 / det;
+    return true;
+}
+
 }  // namespace
 
-template <bool AnyHit>
+template <bool AnyHit, bool Ordered, bool SimdLeaves>
 bool TriangleBvh::traverse(const TriRay& ray, float tMin, float tMax, TriHit* hit) const {
     if (nodes_.empty() || !(tMax > tMin)) return false;
     if (ray.dir[0] == 0.0f && ray.dir[1] == 0.0f && ray.dir[2] == 0.0f) return false;
     const RayData r(ray);
+    RAYS_COUNT(gTriBvhRays);
     struct Entry {
         uint32_t ref;
         float dist;
@@ -119,17 +164,18 @@ bool TriangleBvh::traverse(const TriRay& ray, float tMin, float tMax, TriHit* hi
     float bestU = 0, bestV = 0;
     uint32_t ref = 0;
     // Pushed entries are visited later: start fetching them now.
-    auto prefetch = [&](uint32_t r) {
-        const char* p = isLeaf(r) ? reinterpret_cast<const char*>(blocks + leafFirstBlock(r))
-                                  : reinterpret_cast<const char*>(nodes + r);
+    auto prefetch = [&](uint32_t c) {
+        const char* p = isLeaf(c) ? reinterpret_cast<const char*>(blocks + leafFirstBlock(c))
+                                  : reinterpret_cast<const char*>(nodes + c);
         __builtin_prefetch(p);
         __builtin_prefetch(p + 64);
         __builtin_prefetch(p + 128);
-        if (!isLeaf(r)) __builtin_prefetch(p + 192);
+        if (!isLeaf(c)) __builtin_prefetch(p + 192);
     };
 
     for (;;) {
         if (!isLeaf(ref)) {
+            RAYS_COUNT(gTriBvhNodeVisits);
             const WideNode& n = nodes[ref];
             const float* box = n.box[0];
             const VFloat8 tnx = fmsub(VFloat8::load(box + 8 * r.nearRow[0]), r.rdNear[0], r.odNear[0]);
@@ -141,14 +187,16 @@ bool TriangleBvh::traverse(const TriRay& ray, float tMin, float tMax, TriHit* hi
             const VFloat8 tn = max(max(tnx, tny), max(tnz, vtMin));
             const VFloat8 tf = min(min(tfx, tfy), min(tfz, vtHit));
             uint32_t mask = lessEqualBits(tn, tf);
-            if constexpr (AnyHit) {
-                // Any hit: no ordering, continue with the first child hit, push the others.
+            if constexpr (AnyHit || !Ordered) {
+                // No ordering: continue with the first child hit, push the others.
                 if (mask) {
+                    alignas(32) float dist[8];
+                    if constexpr (!AnyHit) tn.store(dist);
                     ref = n.child[lowestBit(mask)];
                     for (mask &= mask - 1; mask; mask &= mask - 1) {
-                        const uint32_t c = n.child[lowestBit(mask)];
-                        if (kPrefetch) prefetch(c);
-                        *sp++ = {c, 0.0f};
+                        const unsigned i = lowestBit(mask);
+                        prefetch(n.child[i]);
+                        *sp++ = {n.child[i], AnyHit ? 0.0f : dist[i]};
                     }
                     continue;
                 }
@@ -167,23 +215,25 @@ bool TriangleBvh::traverse(const TriRay& ray, float tMin, float tMax, TriHit* hi
                 const float d0 = dist[i0], d1 = dist[i1];
                 if (!mask) {
                     if (d0 <= d1) {
-                        if (kPrefetch) prefetch(c1);
+                        prefetch(c1);
                         *sp++ = {c1, d1};
                         ref = c0;
                     } else {
-                        if (kPrefetch) prefetch(c0);
+                        prefetch(c0);
                         *sp++ = {c0, d0};
                         ref = c1;
                     }
                     continue;
                 }
                 Entry* base = sp;
+                prefetch(c0);
+                prefetch(c1);
                 *sp++ = {c0, d0};
                 *sp++ = {c1, d1};
                 do {
                     const unsigned i = lowestBit(mask);
                     mask &= mask - 1;
-                    if (kPrefetch) prefetch(n.child[i]);
+                    prefetch(n.child[i]);
                     *sp++ = {n.child[i], dist[i]};
                 } while (mask);
                 // Sort the new entries by decreasing distance: the nearest ends on top.
@@ -203,6 +253,20 @@ bool TriangleBvh::traverse(const TriRay& ray, float tMin, float tMax, TriHit* hi
             const TriBlock* b = blocks + leafFirstBlock(ref);
             const TriBlock* end = b + leafBlockCount(ref);
             for (; b < end; ++b) {
+                RAYS_COUNT(gTriBvhBlockTests);
+                if constexpr (!SimdLeaves) {
+                    for (int lane = 0; lane < kBlockSize; ++lane) {
+                        float t, u, v;
+                        if (!scalarTriangle(*b, lane, r, tMin, tHit, t, u, v)) continue;
+                        if constexpr (AnyHit) return true;
+                        tHit = t;
+                        vtHit = VFloat8::broadcast(tHit);
+                        bestPrim = b->prim[lane];
+                        bestU = u;
+                        bestV = v;
+                    }
+                    continue;
+                }
                 BlockTest bt;
                 edgeTest(*b, r, bt);
                 if (!bt.mask) continue;
@@ -223,10 +287,9 @@ bool TriangleBvh::traverse(const TriRay& ray, float tMin, float tMax, TriHit* hi
                         const unsigned l = lowestBit(mm);
                         if (ts[l] < ts[lane]) lane = l;
                     }
-                    alignas(16) float vs[4], ws[4], ds[4], us[4];
+                    alignas(16) float vs[4], ws[4], ds[4];
                     bt.v.store(vs);
                     bt.w.store(ws);
-                    bt.u.store(us);
                     (bt.u + bt.v + bt.w).store(ds);
                     tHit = ts[lane];
                     vtHit = VFloat8::broadcast(tHit);
@@ -260,11 +323,31 @@ finished:
 }
 
 bool TriangleBvh::intersect(const TriRay& ray, float tMin, float tMax, TriHit& hit) const {
-    return traverse<false>(ray, tMin, tMax, &hit);
+    return traverse<false, true, true>(ray, tMin, tMax, &hit);
 }
 
 bool TriangleBvh::occluded(const TriRay& ray, float tMin, float tMax) const {
-    return traverse<true>(ray, tMin, tMax, nullptr);
+    return traverse<true, false, true>(ray, tMin, tMax, nullptr);
+}
+
+bool TriangleBvh::intersect(const TriRay& ray, float tMin, float tMax, TriHit& hit, TraversalVariant variant) const {
+    switch (variant) {
+        case TraversalVariant::Unordered:
+            return traverse<false, false, true>(ray, tMin, tMax, &hit);
+        case TraversalVariant::ScalarLeaves:
+            return traverse<false, true, false>(ray, tMin, tMax, &hit);
+        case TraversalVariant::ScalarLeavesUnordered:
+            return traverse<false, false, false>(ray, tMin, tMax, &hit);
+        case TraversalVariant::Default:
+            break;
+    }
+    return traverse<false, true, true>(ray, tMin, tMax, &hit);
+}
+
+bool TriangleBvh::occluded(const TriRay& ray, float tMin, float tMax, TraversalVariant variant) const {
+    if (variant == TraversalVariant::ScalarLeaves || variant == TraversalVariant::ScalarLeavesUnordered)
+        return traverse<true, false, false>(ray, tMin, tMax, nullptr);
+    return traverse<true, false, true>(ray, tMin, tMax, nullptr);
 }
 
 }  // namespace rays

@@ -1,0 +1,15 @@
+# bench_traverse: Rays' TriangleBvh against Embree 3 on the same ray sets (bench/traverse.cpp).
+# Included from bench/CMakeLists.txt when the project is configured with -DRAYS_BUILD_BENCH=ON;
+# needs libembree-dev (Embree 3) and the rays_core library target.
+#   cmake -S . -B build-bench -DRAYS_BUILD_BENCH=ON && cmake --build build-bench --target bench_traverse
+#   ./build-bench/bench/bench_traverse            (about a minute; --quick for a smoke run)
+find_package(embree 3 REQUIRED)
+find_package(tinyobjloader REQUIRED)
+find_package(Threads REQUIRED)
+
+add_executable(bench_traverse ${CMAKE_CURRENT_LIST_DIR}/traverse.cpp)
+target_compile_options(bench_traverse PRIVATE ${RAYS_WARNINGS})
+target_link_libraries(bench_traverse PRIVATE rays_core embree tinyobjloader::tinyobjloader Threads::Threads)
+# Models and scenes live in shared/, beside the source tree.
+get_filename_component(RAYS_BENCH_SHARED_DIR "${CMAKE_CURRENT_LIST_DIR}/../../shared" ABSOLUTE)
+target_compile_definitions(bench_traverse PRIVATE RAYS_SHARED_DIR="${RAYS_BENCH_SHARED_DIR}")
