@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "rays/render/course_commands.h"
 #include "filter_command.h"
 #include "huge_pages.h"
+#include "interrupt.h"
 #include "rays/image/filter.h"
 #include "render_command.h"
 #include "render_options.h"
@@ -110,6 +112,7 @@ int run(int argc, char** argv) {
     render->add_flag("--povray-rotate", povrayRotate, "apply rotate x, then y, then z as POV-Ray does (course: z first)");
     render->add_flag("-q,--quiet", job.quiet, "no progress bar or summary on stderr");
     render->add_flag("--stats", job.stats, "print counters (rays by kind, BVH size) on stderr");
+    render->add_flag("--save-partial", job.savePartial, "on Ctrl-C, save what was rendered as OUTPUT.partial.png");
 
     // raycast
     CLI::App* raycast = app.add_subcommand("raycast", "render flat object colours (course part 1) to output.png");
@@ -151,8 +154,9 @@ int run(int argc, char** argv) {
         std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them reversed
         app.parse(reversed);
     } catch (const CLI::ParseError& e) {
-        const int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+        // One line with the usual prefix, like every other error (CLI11 adds a second line).
+        throw Error(std::string("rays: error: ") + e.what() + " (see rays --help)");
     }
 
     if (assets->parsed()) return cli::writeAssets(assetDir);
@@ -214,6 +218,12 @@ int main(int argc, char** argv) {
     cli::enableHugePages(argv);
     try {
         return run(argc, argv);
+    } catch (const cli::Interrupted& e) {
+        std::cerr << "rays: interrupted; no image written\n";
+        return e.exitStatus();
+    } catch (const std::bad_alloc&) {
+        std::cerr << "rays: error: out of memory\n";
+        return 1;
     } catch (const Error& e) {
         std::cerr << e.what() << '\n';
         return 2;

@@ -17,6 +17,8 @@
 #include "rays/image/filter.h"
 #include "rays/npr/feature_lines.h"
 #include "rays/render/renderer.h"
+#include "interrupt.h"
+#include "render_budget.h"
 
 namespace rays::cli {
 namespace {
@@ -33,6 +35,7 @@ void appendObj(Scene& scene, const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) failFile(path, "cannot open OBJ file");
     const ObjMesh obj = loadObj(path);
+    if (obj.faces.empty()) failFile(path, "OBJ file has no faces (is it an OBJ file?)");
     Object o;
     o.material.color = obj.materials.empty() ? Vec3{0.8, 0.8, 0.8} : obj.materials[0].diffuse;
     o.material.ambient = 0.2;
@@ -52,6 +55,31 @@ void checkOutputIsNotInput(const std::string& output, const std::string& input) 
     std::error_code ec;
     if (!input.empty() && std::filesystem::exists(output, ec) && std::filesystem::equivalent(output, input, ec))
         failFile(output, "output would overwrite the input file '" + input + "'");
+}
+
+// Refuses to overwrite an image the scene reads (image_map, normal_map, bump_map).
+void checkOutputIsNoTexture(const std::string& output, const Scene& scene) {
+    for (const Texture& t : scene.textures) checkOutputIsNotInput(output, t.path);
+}
+
+// After a signal (Ctrl-C): optionally saves what was rendered so far as OUTPUT.partial.png, then
+// throws Interrupted; the output itself is never written.
+void stopIfInterrupted(const RenderJob& job, const Scene* scene, const ImageF* img) {
+    if (!interrupted()) return;
+    if (job.savePartial && img && scene && img->width > 0) {
+        const std::string partial = partialImagePath(job.outputPath);
+        try {
+            checkOutputIsNotInput(partial, job.scenePath);
+            checkOutputIsNotInput(partial, job.objPath);
+            checkOutputIsNoTexture(partial, *scene);
+            CriticalSection writing;
+            writeImage(partial, toImage8(*img), job.jpegQuality);
+            std::fprintf(stderr, "rays: warning: partial image saved to %s\n", partial.c_str());
+        } catch (const Error& e) {
+            std::fprintf(stderr, "rays: warning: partial image not saved: %s\n", e.what());
+        }
+    }
+    throwIfInterrupted();
 }
 
 // Fails before rendering when the image could not be written where asked.
@@ -136,6 +164,7 @@ Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath,
 }
 
 int runRender(const RenderJob& job) {
+    InterruptScope interruptScope;  // Ctrl-C / SIGTERM stop the render cleanly (exit 130 / 143)
     const RenderSettings& s = job.settings;
     checkImageSize(s.width, s.height);
     if (!isSupportedImageExtension(job.outputPath))
@@ -148,6 +177,7 @@ int runRender(const RenderJob& job) {
             failFile(job.edges.maskPath, "unsupported mask image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
         checkOutputDirectory(job.edges.maskPath);
         checkOutputIsNotInput(job.edges.maskPath, job.scenePath);
+        checkOutputIsNotInput(job.edges.maskPath, job.objPath);
     }
 
     auto t0 = Clock::now();
@@ -155,13 +185,22 @@ int runRender(const RenderJob& job) {
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
                                     std::to_string(scene.cameras.size()) + ")");
+    checkOutputIsNoTexture(job.outputPath, scene);
+    if (!job.edges.maskPath.empty()) checkOutputIsNoTexture(job.edges.maskPath, scene);
     const double parseMs = msSince(t0);
+    const EdgeSettings edges = resolveEdges(scene.edges, job.edges);
+    BufferFeatures buffers;
+    buffers.aaEdges = s.aaEdges && !edges.linesOnly;
+    buffers.lines = edges.enabled() || edges.linesOnly;
+    buffers.mask = !job.edges.maskPath.empty();
+    buffers.post = !job.post.empty();
+    checkRenderBudget(s.width, s.height, resolveView(scene, s).samples, buffers);
+    stopIfInterrupted(job, &scene, nullptr);
 
     t0 = Clock::now();
     const Bvh bvh(scene.objects);
     const double buildMs = msSince(t0);
-
-    const EdgeSettings edges = resolveEdges(scene.edges, job.edges);
+    stopIfInterrupted(job, &scene, nullptr);
 
     t0 = Clock::now();
     TraceStats stats;
@@ -175,6 +214,7 @@ int runRender(const RenderJob& job) {
         onRecord = [&](int x, int y, const PathInfo& info) { records->store(x, y, info); };
     }
     if (!edges.linesOnly) img = render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord);
+    stopIfInterrupted(job, &scene, &img);
     if (!job.post.empty()) img = applyFilters(img, job.post, BorderMode::Clamp, s.threads);
     const double renderMs = msSince(t0);
     double linesMs = 0;
@@ -182,13 +222,19 @@ int runRender(const RenderJob& job) {
     if (edges.enabled() || edges.linesOnly) {
         t0 = Clock::now();
         lines = drawFeatureLines(scene, bvh, s, edges, records.get(), stats);
+        stopIfInterrupted(job, &scene, &img);
         compositeLines(img, lines, edges);
         linesMs = msSince(t0);
     }
 
     t0 = Clock::now();
-    if (!job.edges.maskPath.empty()) writeImage(job.edges.maskPath, coverageImage(lines), job.jpegQuality);
-    writeImage(job.outputPath, toImage8(img), job.jpegQuality);
+    {
+        // A signal from here on waits until both files are complete: never a temporary left behind.
+        CriticalSection writing;
+        stopIfInterrupted(job, &scene, &img);
+        if (!job.edges.maskPath.empty()) writeImage(job.edges.maskPath, coverageImage(lines), job.jpegQuality);
+        writeImage(job.outputPath, toImage8(img), job.jpegQuality);
+    }
     const double writeMs = msSince(t0);
 
     if (!job.quiet) {

@@ -35,9 +35,11 @@ struct RenderJob {
     int jpegQuality = 90;
     bool quiet = false;   ///< no progress bar, no summary line
     bool stats = false;   ///< extra counters on stderr
+    bool savePartial = false;  ///< --save-partial: on Ctrl-C, keep what was rendered as OUTPUT.partial.png
 };
 
-/// Runs the job; throws Error on bad input. Returns the process exit status (0).
+/// Runs the job; throws Error on bad input and Interrupted (interrupt.h) after Ctrl-C or SIGTERM.
+/// Returns the process exit status (0).
 int runRender(const RenderJob& job);
 
 /// Loads the scene and, when objPath is set, appends its triangles.

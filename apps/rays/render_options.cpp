@@ -1,5 +1,6 @@
 #include "render_options.h"
 
+#include <cmath>
 #include <cstdlib>
 
 #include "rays/error.h"
@@ -15,6 +16,21 @@ int positiveInt(const std::string& text, const char* what) {
     if (text.empty() || *end != '\0' || v < 1 || v > 65536)
         bad(std::string(what) + " must be a whole number from 1 to 65536, got '" + text + "'");
     return int(v);
+}
+
+// CLI::NonNegativeNumber and CLI::PositiveNumber print DBL_MAX in full ("not in range 0.000000 to
+// 17976931348623157...") when they fail: the same checks with a short message.
+CLI::Validator atLeast(double lo, bool strict) {
+    const std::string rule = std::string(strict ? "must be greater than " : "must be at least ") + (lo == 0 ? "0" : std::to_string(lo));
+    return CLI::Validator(
+        [lo, strict, rule](std::string& in) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(in.c_str(), &end);
+            if (in.empty() || *end != '\0' || !std::isfinite(v)) return "expected a number, got '" + in + "'";
+            if (strict ? !(v > lo) : !(v >= lo)) return rule + ", got " + in;
+            return {};
+        },
+        strict ? "POSITIVE" : "NONNEGATIVE");
 }
 
 }  // namespace
@@ -55,13 +71,13 @@ void addModernOptions(CLI::App* cmd, ModernOptions& o, RenderSettings& s) {
     cmd->add_option("--filter", o.filter, "reconstruction filter: box | tent | gaussian (default box)");
     cmd->add_flag("--aa-edges", o.aaEdges, "edge-guided anti-aliasing: supersample only where object ids or shadows change");
     cmd->add_option("--area-samples", o.areaSamples, "samples per axis for every area light (overrides the scene)")->check(CLI::Range(1, 1024));
-    cmd->add_option("--aperture", o.aperture, "lens radius for depth of field (overrides the camera's aperture)")->check(CLI::NonNegativeNumber);
-    cmd->add_option("--focal-distance", o.focalDistance, "distance to the focal plane along the view direction")->check(CLI::PositiveNumber);
+    cmd->add_option("--aperture", o.aperture, "lens radius for depth of field (overrides the camera's aperture)")->check(atLeast(0, false));
+    cmd->add_option("--focal-distance", o.focalDistance, "distance to the focal plane along the view direction")->check(atLeast(0, true));
     cmd->add_option("--dof-samples", o.dofSamples, "samples per pixel with depth of field (overrides blur_samples)")->check(CLI::Range(1, 65536));
     cmd->add_option("--depth", s.maxDepth, "recursion depth for reflection and refraction (default 6)")->check(CLI::Range(0, 1000));
     cmd->add_option("--threads", s.threads, "worker threads (default: all cores)")->check(CLI::Range(0, 1024));
     cmd->add_option("--seed", s.seed, "random seed for jittered samples, area lights, lens and GI");
-    cmd->add_option("--camera", s.cameraIndex, "index of the camera in the scene (default 0)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--camera", s.cameraIndex, "index of the camera in the scene (default 0)")->check(atLeast(0, false));
 }
 
 void applyOptions(const CourseFlags& f, const ModernOptions& o, RenderSettings& s) {

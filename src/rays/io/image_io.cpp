@@ -17,6 +17,7 @@
 #include <turbojpeg.h>
 
 #include "rays/error.h"
+#include "rays/io/image_guard.h"
 
 #define STBI_NO_STDIO
 #define STBI_ONLY_PNG
@@ -346,11 +347,22 @@ Image8 readImage(const std::string& path) {
             }
             if (n == 0) break;
             bytes.insert(bytes.end(), chunk, chunk + n);
+            if (bytes.size() > size_t(INT32_MAX)) {  // also stops endless sources such as /dev/zero
+                ::close(fd);
+                failRead("file too large");
+            }
         }
         ::close(fd);
     }
     if (bytes.empty()) failRead("file is empty");
-    if (bytes.size() > size_t(INT32_MAX)) failRead("file too large");
+    removeEmptyPngData(bytes);
+    if (const std::string hazard = imageDecoderHazard(bytes.data(), bytes.size()); !hazard.empty()) failRead(hazard);
+    int infoW = 0, infoH = 0, infoC = 0;
+    if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &infoW, &infoH, &infoC) &&
+        (infoW > kMaxImageSide || infoH > kMaxImageSide || uint64_t(infoW) * uint64_t(infoH) > kMaxImagePixels))
+        failRead("image is " + std::to_string(infoW) + "x" + std::to_string(infoH) +
+                 ", larger than the limit (65536 per side and 268435456 pixels)");
+    if (const std::string why = imageSizeHazard(bytes.data(), bytes.size(), infoW, infoH); !why.empty()) failRead(why);
 
     int w = 0, h = 0, comp = 0;
     stbi_uc* px = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &comp, 0);
@@ -360,6 +372,10 @@ Image8 readImage(const std::string& path) {
         if (why == "Image not of any known type, or corrupt")
             why = "not a PNG, JPEG, BMP, TGA or binary PPM/PGM file, or corrupt";
         failRead(why);
+    }
+    if (w <= 0 || h <= 0 || comp < 1 || comp > 4) {  // stb_image accepts a PPM of height 0
+        stbi_image_free(px);
+        failRead("image has no pixels (" + std::to_string(w) + "x" + std::to_string(h) + ")");
     }
     Image8 img;
     img.width = w;

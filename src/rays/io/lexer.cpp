@@ -37,7 +37,7 @@ Token Lexer::next() {
         lexNumber(t);
     } else if (c == '"') {
         lexString(t);
-    } else if (std::strchr("{}<>,-+*/()[]=#;", c) != nullptr) {
+    } else if (c != '\0' && std::strchr("{}<>,-+*/()[]=#;", c) != nullptr) {  // strchr finds the NUL too
         t.kind = TokenKind::Symbol;
         t.text = s_.substr(i_, 1);
         advance();
@@ -106,6 +106,14 @@ void Lexer::lexNumber(Token& t) {
     const char* first = s_.data() + b;
     const char* last = s_.data() + i_;
     auto [ptr, ec] = std::from_chars(first, last, t.number);
+    if (ec == std::errc::result_out_of_range && ptr == last) {
+        // Too large for a double (1e999) is an error; too small (1e-999) is 0, as in POV-Ray.
+        const size_t e = t.text.find_first_of("eE");
+        const bool negativeExponent = e != std::string_view::npos && e + 1 < t.text.size() && t.text[e + 1] == '-';
+        if (!negativeExponent) fail(locOf(t), "number '" + std::string(t.text) + "' is too large");
+        t.number = 0;
+        return;
+    }
     if (ec != std::errc() || ptr != last) fail(locOf(t), "malformed number '" + std::string(t.text) + "'");
 }
 

@@ -82,8 +82,9 @@ private:
 
     static std::string outOfRange(int kind, int index, int count, bool relative) {
         static const char* const names[3] = {"vertex", "texture coordinate", "normal"};
+        static const char* const plurals[3] = {"vertices", "texture coordinates", "normals"};
         return std::string(names[kind]) + " index " + std::to_string(index) + " is out of range (" +
-               std::to_string(count) + " " + names[kind] + (count == 1 ? "" : "s") +
+               std::to_string(count) + " " + (count == 1 ? names[kind] : plurals[kind]) +
                (relative ? " defined before this line)" : " in the file)");
     }
 

@@ -184,6 +184,14 @@ private:
         return r;
     }
     Value factor() {
+        // Parentheses, vectors and unary signs recurse: bound the depth (a stack overflow otherwise).
+        struct Nesting {
+            int& depth;
+            explicit Nesting(int& d) : depth(++d) {}
+            ~Nesting() { --depth; }
+        } nesting(nesting_);
+        if (nesting_ > kMaxNesting)
+            error("expression nested too deeply (more than " + std::to_string(kMaxNesting) + " levels)");
         Value v;
         if (tok_.kind == TokenKind::Number) {
             v.c[0] = tok_.number;
@@ -530,7 +538,7 @@ private:
                 const Token at = tok_;
                 advance();
                 const double k = number("adaptive level");
-                if (k < 0 || k != std::floor(k)) fail(loc(at), "adaptive level must be a whole number >= 0");
+                if (k < 0 || k > 1000 || k != std::floor(k)) fail(loc(at), "adaptive level must be a whole number from 0 to 1000");
                 L.adaptive = int(k);
             } else if (isIdent("circular")) {
                 advance();
@@ -1029,7 +1037,8 @@ private:
         block(kw, [&] {
             const Token at = tok_;
             const double n = number(std::string(name) + " count");
-            if (n < 0 || n != std::floor(n)) fail(loc(at), std::string(name) + " count must be a whole number");
+            if (n < 0 || n != std::floor(n) || n > 4294967295.0)
+                fail(loc(at), std::string(name) + " count must be a whole number from 0 to 4294967295");
             for (size_t i = 0; i < size_t(n); ++i) {
                 skipCommas();
                 const Token item = tok_;
@@ -1050,7 +1059,8 @@ private:
         Mesh& m = *mesh;
         auto toIndex = [&](const Value& v, const Token& at, std::vector<uint32_t>& out) {
             for (int k = 0; k < 3; ++k) {
-                if (v.c[k] < 0 || v.c[k] != std::floor(v.c[k])) fail(loc(at), "mesh2 indices must be whole numbers >= 0");
+                if (v.c[k] < 0 || v.c[k] != std::floor(v.c[k]) || v.c[k] > 4294967295.0)
+                    fail(loc(at), "mesh2 indices must be whole numbers from 0 to 4294967295");
                 out.push_back(uint32_t(v.c[k]));
             }
         };
@@ -1138,6 +1148,8 @@ private:
     std::map<std::string, int> warnedCount_;
     std::map<std::string, int> textureIndex_;
     double v12_[12] = {};
+    static constexpr int kMaxNesting = 256;  ///< parentheses, vectors and signs inside one expression
+    int nesting_ = 0;
 };
 
 }  // namespace

@@ -77,13 +77,23 @@ int resolveThreads(int requested) {
     return hw == 0 ? 1 : int(hw);
 }
 
+namespace {
+std::atomic<const std::atomic<bool>*> cancelFlag{nullptr};
+bool cancelled() {
+    const std::atomic<bool>* f = cancelFlag.load(std::memory_order_acquire);
+    return f && f->load(std::memory_order_relaxed);
+}
+}  // namespace
+
+void setCancelFlag(const std::atomic<bool>* flag) { cancelFlag.store(flag, std::memory_order_release); }
+
 void parallelFor(int count, int threads, const std::function<void(int, int)>& body, const ProgressFn& progress) {
     const int n = std::min(resolveThreads(threads), std::max(1, count));
     std::atomic<int> next{0}, done{0};
     std::mutex m;
     std::condition_variable cv;
     auto worker = [&](int w) {
-        for (int i = next.fetch_add(1); i < count; i = next.fetch_add(1)) {
+        for (int i = next.fetch_add(1); i < count && !cancelled(); i = next.fetch_add(1)) {
             body(i, w);
             if (done.fetch_add(1) + 1 == count) {
                 std::lock_guard<std::mutex> lock(m);
@@ -96,7 +106,7 @@ void parallelFor(int count, int threads, const std::function<void(int, int)>& bo
     if (progress) {
         std::thread last(worker, 0);
         std::unique_lock<std::mutex> lock(m);
-        while (done.load() < count) {
+        while (done.load() < count && !cancelled()) {
             progress(double(done.load()) / std::max(1, count));
             cv.wait_for(lock, std::chrono::milliseconds(100));
         }

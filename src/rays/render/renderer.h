@@ -1,5 +1,6 @@
 // Renderer: turns a scene into an image, tiles rendered in parallel on a small thread pool.
 #pragma once
+#include <atomic>
 #include <functional>
 #include <vector>
 
@@ -45,8 +46,15 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings
 int resolveThreads(int requested);
 
 /// Runs body(index, worker) for index in [0, count) on `threads` workers handing out indices
-/// dynamically; progress (if set) is called from the calling thread while they run.
+/// dynamically; progress (if set) is called from the calling thread while they run. Stops early
+/// (running bodies finish, no new index starts) once the cancel flag is set, see setCancelFlag.
 void parallelFor(int count, int threads, const std::function<void(int index, int worker)>& body,
                  const ProgressFn& progress = {});
+
+/// Cancellation for the command line's Ctrl-C: while *flag is true, parallelFor starts no further
+/// index, so render() and the feature lines return early and the tiles not rendered stay black
+/// (the caller must not use such an image as a finished one). nullptr (the default) turns it off.
+/// The flag is only read (from any thread); the caller owns it.
+void setCancelFlag(const std::atomic<bool>* flag);
 
 }  // namespace rays

@@ -1,0 +1,77 @@
+#include "interrupt.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+
+#include "rays/render/renderer.h"
+
+namespace rays::cli {
+namespace {
+
+// Everything the handler touches is a lock-free atomic (async-signal-safe).
+std::atomic<bool> stopRequested{false};
+std::atomic<int> signalCount{0};
+std::atomic<int> lastSignal{0};
+std::atomic<int> criticalDepth{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
+
+struct sigaction previousInt, previousTerm;
+
+void say(const char* text) {
+    size_t n = 0;
+    while (text[n]) ++n;
+    ssize_t ignored = ::write(STDERR_FILENO, text, n);
+    (void)ignored;
+}
+
+extern "C" void onSignal(int sig) {
+    lastSignal.store(sig);
+    stopRequested.store(true);
+    if (signalCount.fetch_add(1) == 0) {
+        say("\nrays: interrupted: stopping (signal again to quit at once)\n");
+    } else if (criticalDepth.load() == 0) {
+        say("rays: interrupted again: quitting\n");
+        ::_exit(128 + sig);
+    }
+}
+
+}  // namespace
+
+InterruptScope::InterruptScope() {
+    stopRequested.store(false);
+    signalCount.store(0);
+    lastSignal.store(0);
+    struct sigaction sa {};
+    sa.sa_handler = onSignal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    ::sigaction(SIGINT, &sa, &previousInt);
+    ::sigaction(SIGTERM, &sa, &previousTerm);
+    setCancelFlag(&stopRequested);
+}
+
+InterruptScope::~InterruptScope() {
+    setCancelFlag(nullptr);
+    ::sigaction(SIGINT, &previousInt, nullptr);
+    ::sigaction(SIGTERM, &previousTerm, nullptr);
+}
+
+bool interrupted() { return stopRequested.load(); }
+
+void throwIfInterrupted() {
+    if (stopRequested.load()) throw Interrupted(lastSignal.load() ? lastSignal.load() : SIGINT);
+}
+
+CriticalSection::CriticalSection() { criticalDepth.fetch_add(1); }
+CriticalSection::~CriticalSection() { criticalDepth.fetch_sub(1); }
+
+std::string partialImagePath(const std::string& output) {
+    const size_t slash = output.find_last_of('/');
+    const size_t dot = output.find_last_of('.');
+    const bool hasExt = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    return (hasExt ? output.substr(0, dot) : output) + ".partial.png";
+}
+
+}  // namespace rays::cli

@@ -1,0 +1,52 @@
+// Ctrl-C (SIGINT) and SIGTERM during a render: the first signal asks the render to stop (workers
+// finish their tile, no new tile starts, see rays::setCancelFlag); the pipeline checks between its
+// phases, writes no output and exits with 128 + the signal (130 for Ctrl-C). A second signal exits
+// at once, except while an image is being written (the atomic write then completes first).
+#pragma once
+#include <exception>
+#include <string>
+
+namespace rays::cli {
+
+/// Thrown at a checkpoint after a signal; main() prints the message and returns exitStatus().
+class Interrupted : public std::exception {
+public:
+    explicit Interrupted(int signal) : signal_(signal) {}
+    int signal() const { return signal_; }
+    int exitStatus() const { return 128 + signal_; }
+    const char* what() const noexcept override { return "interrupted"; }
+
+private:
+    int signal_;
+};
+
+/// While alive: SIGINT and SIGTERM are caught (and the renderer's cancel flag points at ours);
+/// the previous handlers are restored on destruction. One scope at a time.
+class InterruptScope {
+public:
+    InterruptScope();
+    ~InterruptScope();
+    InterruptScope(const InterruptScope&) = delete;
+    InterruptScope& operator=(const InterruptScope&) = delete;
+};
+
+/// True once a signal arrived inside an InterruptScope.
+bool interrupted();
+/// Throws Interrupted when interrupted().
+void throwIfInterrupted();
+
+/// While alive, a second signal does not exit at once (it is remembered like the first): used
+/// around writing the image files so a signal never leaves a temporary file behind.
+class CriticalSection {
+public:
+    CriticalSection();
+    ~CriticalSection();
+    CriticalSection(const CriticalSection&) = delete;
+    CriticalSection& operator=(const CriticalSection&) = delete;
+};
+
+/// The partial image's path: OUTPUT with its extension replaced by ".partial.png"
+/// ("out.jpg" -> "out.partial.png", "dir/a.b.png" -> "dir/a.b.partial.png").
+std::string partialImagePath(const std::string& output);
+
+}  // namespace rays::cli

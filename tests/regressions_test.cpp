@@ -1,0 +1,139 @@
+// Fuzzing regressions: every input saved in tests/regressions/ (a crash, hang or sanitizer report
+// found by the fuzzers in fuzz/, see docs/fuzzing.md) is run through the same entry point as the
+// fuzzer (fuzz/entry_points.h) and must now end normally; the reader it exercises must refuse it
+// with the one-line message listed here. File names start with the fuzz target: scene-, obj-,
+// kernel-, image-. The sanitizer builds (scripts/sanitize.sh) run these too, which is where a
+// regression of a memory or UB fix would show.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../fuzz/entry_points.h"
+#include "rays/error.h"
+#include "rays/image/kernels.h"
+#include "rays/io/image_io.h"
+#include "rays/io/obj_loader.h"
+#include "rays/io/scene_parser.h"
+#include "support/process.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kDir = fs::path(RAYS_SOURCE_DIR) / "tests" / "regressions";
+
+struct Regression {
+    std::string file;     ///< name in tests/regressions/
+    std::string message;  ///< part of the Error the reader now throws for it
+};
+
+void PrintTo(const Regression& r, std::ostream* os) { *os << r.file; }
+
+// Mirrors the "Findings" table of docs/fuzzing.md.
+std::vector<Regression> regressions() {
+    return {
+        {"image-jpeg-dht-overflow.jpg", "cannot read image: corrupt JPEG (Huffman table with more than 256 codes)"},
+        {"image-tga-truncated-huge.tga", "cannot read image: file of 459 bytes is too small for a 8308x26223 image"},
+        {"image-ppm-zero-height.ppm", "cannot read image: image has no pixels (5x0)"},
+        {"image-ppm-width-overflow.ppm", "cannot read image: corrupt PPM/PGM header (number too large)"},
+        {"image-png-empty-idat.png", "cannot read image: "},
+        {"scene-deep-parentheses.pov", "fuzz.pov:1:279: error: expression nested too deeply (more than 256 levels)"},
+        {"scene-adaptive-huge.pov", "fuzz.pov:3:78: error: adaptive level must be a whole number from 0 to 1000"},
+        {"scene-mesh2-index-huge.pov", "fuzz.pov:12:21: error: mesh2 indices must be whole numbers from 0 to 4294967295"},
+    };
+}
+
+std::string readBytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::string prefixOf(const std::string& file) { return file.substr(0, file.find('-')); }
+
+/// The message of the Error the target's reader throws for the bytes ("" when it accepts them).
+std::string errorOf(const std::string& target, const std::string& bytes, const fs::path& scratch) {
+    try {
+        if (target == "scene") {
+            rays::ParseOptions opt;
+            opt.warn = [](const std::string&) {};
+            rays::parseScene(bytes, "fuzz.pov", opt);
+        } else {
+            const fs::path p = scratch / ("input." + target);
+            std::ofstream(p, std::ios::binary) << bytes;
+            if (target == "image") rays::readImage(p.string());
+            else if (target == "obj") rays::loadObj(p.string());
+            else if (target == "kernel") rays::parseKernelText(bytes, p.string());
+        }
+    } catch (const rays::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+class Regressions : public ::testing::TestWithParam<Regression> {};
+
+TEST_P(Regressions, SameEntryPointAsTheFuzzerEndsNormally) {
+    const Regression& r = GetParam();
+    const std::string bytes = readBytes(kDir / r.file);
+    ASSERT_FALSE(bytes.empty()) << "missing " << (kDir / r.file);
+    const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+    const std::string target = prefixOf(r.file);
+    if (target == "scene") rays::fuzz::fuzzScene(data, bytes.size());
+    else if (target == "obj") rays::fuzz::fuzzObj(data, bytes.size());
+    else if (target == "kernel") rays::fuzz::fuzzKernel(data, bytes.size());
+    else if (target == "image") rays::fuzz::fuzzImage(data, bytes.size());
+    else FAIL() << "unknown target prefix in " << r.file;
+}
+
+TEST_P(Regressions, ReaderRefusesItWithItsMessage) {
+    const Regression& r = GetParam();
+    rays::test::TempDir dir;
+    const std::string msg = errorOf(prefixOf(r.file), readBytes(kDir / r.file), dir.path());
+    EXPECT_NE(msg.find(r.message), std::string::npos) << "message: " << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
+}
+
+INSTANTIATE_TEST_SUITE_P(Fuzz, Regressions, ::testing::ValuesIn(regressions()),
+                         [](const ::testing::TestParamInfo<Regression>& info) {
+                             std::string n = info.param.file;
+                             std::replace_if(n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+                             return n;
+                         });
+
+TEST(RegressionsFolder, EveryInputIsListed) {
+    std::vector<std::string> listed;
+    for (const Regression& r : regressions()) listed.push_back(r.file);
+    for (const auto& e : fs::directory_iterator(kDir))
+        EXPECT_NE(std::find(listed.begin(), listed.end(), e.path().filename().string()), listed.end())
+            << e.path().filename() << " is not in the table of tests/regressions_test.cpp";
+}
+
+// The fix for image-png-empty-idat.png drops zero-length IDAT chunks before stb_image sees them;
+// they are legal, so a valid PNG with one must still read back exactly.
+TEST(RegressionsPng, EmptyIdatChunkInAValidPngIsHarmless) {
+    rays::test::TempDir dir;
+    rays::Image8 img(7, 5, 3);
+    for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = uint8_t(i * 13);
+    std::vector<uint8_t> png = rays::encodeImage("png", img);
+    // Insert "length 0, IDAT, CRC" before the first IDAT chunk.
+    const std::string s(png.begin(), png.end());
+    const size_t idat = s.find("IDAT");
+    ASSERT_NE(idat, std::string::npos);
+    const uint8_t empty[12] = {0, 0, 0, 0, 'I', 'D', 'A', 'T', 0x35, 0xAF, 0x06, 0x1E};
+    png.insert(png.begin() + long(idat - 4), empty, empty + 12);
+    const fs::path p = dir.path() / "empty-idat.png";
+    std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), long(png.size()));
+    const rays::Image8 back = rays::readImage(p.string());
+    EXPECT_EQ(back.width, 7);
+    EXPECT_EQ(back.height, 5);
+    EXPECT_EQ(back.pixels, img.pixels);
+}
+
+}  // namespace
