@@ -71,6 +71,22 @@ bool pnmHeaderNumbersFit(const uint8_t* p, const uint8_t* end) {
     return true;
 }
 
+// The chunks of a PNG up to IEND must lie inside the file. stb_image 2.27 grows its IDAT buffer to
+// the declared chunk length before reading it, so a few bytes declaring a 2 GiB chunk made it
+// allocate 2 GiB (found by fuzzing). A chunk running past the end fails in stb anyway.
+bool pngChunksFit(const uint8_t* data, size_t size) {
+    size_t pos = 8;
+    while (size - pos >= 8) {
+        const uint8_t* c = data + pos;
+        const uint32_t length = uint32_t(c[0]) << 24 | uint32_t(c[1]) << 16 | uint32_t(c[2]) << 8 | c[3];
+        if (std::memcmp(c + 4, "IEND", 4) == 0) break;
+        if (length > size - pos - 8) return false;
+        pos += 8 + size_t(length) + 4;
+        if (pos > size) break;
+    }
+    return true;
+}
+
 }  // namespace
 
 std::string imageDecoderHazard(const uint8_t* data, size_t size) {
@@ -79,6 +95,8 @@ std::string imageDecoderHazard(const uint8_t* data, size_t size) {
     while (i < size && data[i] == 0xFF) ++i;
     if (i >= 1 && i < size && data[i] == 0xD8 && !jpegHuffmanTablesFit(data + i + 1, data + size))
         return "corrupt JPEG (Huffman table with more than 256 codes)";
+    if (size >= 8 && std::memcmp(data, "\x89PNG\r\n\x1a\n", 8) == 0 && !pngChunksFit(data, size))
+        return "corrupt PNG (a chunk runs past the end of the file)";
     if (size >= 2 && data[0] == 'P' && (data[1] == '5' || data[1] == '6') && !pnmHeaderNumbersFit(data + 2, data + size))
         return "corrupt PPM/PGM header (number too large)";
     return {};

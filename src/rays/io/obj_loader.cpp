@@ -106,6 +106,26 @@ private:
             scanNumbers(p, e, "vn", 3, 3), ++counts_[VN];
         else if (key == "f")
             scanFace(p, e);
+        else if (key == "vw")
+            scanSkinWeights(p, e);
+    }
+
+    // tinyobjloader's `vw VERTEX JOINT WEIGHT [JOINT WEIGHT ...]` extension (skin weights, unused by
+    // Rays): it converts each joint id to int without a check (undefined behaviour for 1e39, found by
+    // fuzzing), so joint ids must be numbers from 0 to 2^24.
+    void scanSkinWeights(const char* p, const char* e) {
+        nextField(p, e);  // the vertex
+        for (int k = 0;; ++k) {
+            std::string_view f = nextField(p, e);
+            if (f.empty() || f[0] == '#') break;
+            if (k % 2 != 0) continue;  // a weight
+            const std::string_view orig = f;
+            if (f.size() > 1 && f[0] == '+') f.remove_prefix(1);
+            double value = 0;
+            const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), value);
+            if (ec != std::errc() || ptr != f.data() + f.size() || !(value >= 0 && value <= 16777216.0))
+                fail(line_, "invalid joint id " + quoted(orig) + " in 'vw' line (a number from 0 to 16777216)");
+        }
     }
 
     void scanNumbers(const char* p, const char* e, const char* key, int minCount, int maxCount) {
