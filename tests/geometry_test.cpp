@@ -194,6 +194,68 @@ TEST(Bvh, MatchesBruteForceOnRandomRays) {
     EXPECT_GT(hits, 5000);  // the test exercises real hits
 }
 
+// The object BVH rejects leaf slots with a single-precision bounding-sphere test: it must never
+// reject a sphere the exact test hits, also for rays that graze a sphere, start on one (shadow and
+// reflection rays), start far away, or have unnormalised directions, in a scene far from the origin.
+TEST(Bvh, SphereRejectTestNeverLosesAHit) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1, 1), r(0.01, 2.0), scaleExp(-3, 3);
+    const Vec3 offset{1000, -2000, 500};
+    std::vector<Object> objects;
+    for (int i = 0; i < 3000; ++i)
+        objects.push_back(sphere(offset + 40.0 * Vec3{u(rng), u(rng), u(rng)}, r(rng),
+                                 i % 3 == 0 ? Transform::scale(Vec3(1.5)) : Transform{}));
+    const Bvh bvh(objects);
+    auto randomUnit = [&] {
+        for (;;) {
+            const Vec3 v{u(rng), u(rng), u(rng)};
+            if (dot(v, v) > 0.01 && dot(v, v) <= 1) return normalize(v);
+        }
+    };
+    int hits = 0, grazing = 0;
+    for (int i = 0; i < 30000; ++i) {
+        const Object& target = objects[size_t(rng() % objects.size())];
+        const Vec3 c = target.p1;
+        const double radius = target.r1;
+        Vec3 dir = randomUnit();
+        Vec3 origin;
+        switch (i % 3) {
+            case 0: origin = offset + 60.0 * Vec3{u(rng), u(rng), u(rng)}; break;
+            case 1: {  // on the target's surface, offset along the normal like a secondary ray
+                const Vec3 n = randomUnit();
+                origin = c + radius * n + 1e-4 * n;
+                if (dot(dir, n) < 0) dir = -dir;
+                break;
+            }
+            default: {  // tangent to the target, up to a relative 1e-9 inside or outside
+                Vec3 side = normalize(cross(dir, randomUnit()));
+                origin = c + radius * (1 + 1e-9 * u(rng)) * side - 30.0 * dir;
+                ++grazing;
+            }
+        }
+        const Ray ray{origin, dir * std::pow(10.0, scaleExp(rng))};
+        Hit brute;
+        ShapeHit sh;
+        for (size_t k = 0; k < objects.size(); ++k)
+            if (intersect(objects[k], ray, 1e-9, brute.t, sh)) {
+                brute.t = sh.t;
+                brute.object = int(k);
+            }
+        const Hit fast = bvh.closest(objects, ray, 1e-9, kInfinity);
+        ASSERT_EQ(fast.object, brute.object) << "ray " << i;
+        bool blocked = false;
+        for (size_t k = 0; k < objects.size() && !blocked; ++k) blocked = occludes(objects[k], ray, 1e-9, kInfinity);
+        ASSERT_EQ(bvh.any(objects, ray, 1e-9, kInfinity), blocked) << "ray " << i;
+        if (brute.valid()) {
+            ++hits;
+            EXPECT_EQ(fast.t, brute.t);
+            EXPECT_TRUE(bvh.any(objects, ray, 1e-9, std::nextafter(brute.t, kInfinity))) << "ray " << i;
+        }
+    }
+    EXPECT_GT(hits, 12000);
+    EXPECT_GT(grazing, 9000);
+}
+
 TEST(Bvh, EmptyAndCoincidentCentroids) {
     std::vector<Object> none;
     const Bvh empty(none);

@@ -1,10 +1,12 @@
 // Acceleration for a scene's objects: untransformed triangles go into a wide SIMD TriangleBvh
-// (triangle_bvh.h); the other bounded objects into a binary BVH (binned SAH, Wald 2007; ordered
-// traversal with an any-hit variant); unbounded objects (planes) are tested separately.
+// (triangle_bvh.h); the other bounded objects into an 8-wide ObjectBvh (object_bvh.h) whose leaves
+// reject with a 4-wide bounding-sphere test before the exact double-precision object tests;
+// unbounded objects (planes) are tested separately.
 #pragma once
 #include <cstdint>
 #include <vector>
 
+#include "rays/accel/object_bvh.h"
 #include "rays/accel/triangle_bvh.h"
 #include "rays/geometry/ray.h"
 #include "rays/scene/object.h"
@@ -21,22 +23,6 @@ struct Hit {
     double u = 0, v = 0;  ///< the uv at the hit
     Vec3 dpdu;            ///< and the object-space tangent dP/du
     bool valid() const { return object >= 0; }
-};
-
-/// Build-time node (double bounds).
-struct BvhNode {
-    Bounds bounds;
-    uint32_t first = 0;  ///< leaf: first index into the primitive list; inner: index of the left child
-    uint32_t count = 0;  ///< leaf: number of primitives; inner: 0 (right child = left + 1)
-};
-
-/// Traversal node: 32 bytes, two per cache line; float bounds rounded outward and padded so the
-/// float slab test never misses what the double bounds contain.
-struct FlatNode {
-    float lo[3];
-    uint32_t first;
-    float hi[3];
-    uint32_t count;
 };
 
 class Bvh {
@@ -57,19 +43,14 @@ public:
     /// first blocker.
     int anyBlocker(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
 
-    size_t nodeCount() const { return nodes_.size(); }
+    /// 8-wide nodes of the object BVH and of the triangle BVH.
+    size_t nodeCount() const { return objects_.nodeCount() + triangles_.stats().nodes; }
     size_t triangleCount() const { return triObject_.size(); }
+    /// Deeper of the two trees, in wide levels.
     int depth() const;
 
 private:
-    void build(std::vector<Bounds>& primBounds, std::vector<Vec3>& centroids, uint32_t begin,
-               uint32_t end);
-    void medianPartition(std::vector<Bounds>& primBounds, std::vector<Vec3>& centroids, uint32_t begin,
-                         uint32_t mid, uint32_t end, int axis);
-
-    std::vector<BvhNode> nodes_;       ///< build result
-    std::vector<FlatNode> flat_;       ///< what traversal reads
-    std::vector<uint32_t> prims_;      ///< object indices, leaves reference ranges of this
+    ObjectBvh objects_;                ///< bounded objects other than untransformed triangles
     std::vector<uint32_t> unbounded_;  ///< planes: always tested
     TriangleBvh triangles_;            ///< untransformed triangle objects
     std::vector<uint32_t> triObject_;  ///< triangle index in triangles_ → object index

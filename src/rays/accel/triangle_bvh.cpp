@@ -10,6 +10,7 @@
 
 #include "rays/accel/binned_sah.h"
 #include "rays/accel/task_pool.h"
+#include "rays/accel/wide_collapse.h"
 
 namespace rays {
 namespace {
@@ -18,96 +19,6 @@ using namespace tribvh;
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr uint32_t kPrepChunk = 16384;
-
-/// Collapses a binary BVH into 8-wide nodes: starting from a node's two children, the child with
-/// the largest surface area is repeatedly replaced by its own children until there are eight
-/// (or only leaves). Sibling nodes are stored contiguously; leaves get consecutive blocks in
-/// depth-first order.
-class Collapser {
-public:
-    struct LeafJob {
-        uint32_t firstBlock, firstRef, count;
-    };
-
-    using NodeVector = std::vector<WideNode, HugePageAllocator<WideNode>>;
-    Collapser(const BinaryBvh& bin, NodeVector& nodes, uint32_t leafBlockCap)
-        : bin_(bin), nodes_(nodes), leafBlockCap_(leafBlockCap) {}
-
-    void run() {
-        nodes_.clear();
-        nodes_.reserve(bin_.nodes.size() / 4 + 1);
-        nodes_.emplace_back();
-        fill(0, bin_.root, true);
-    }
-    std::vector<LeafJob> leaves;
-    uint32_t blockCount = 0;
-
-private:
-    // Fills nodes_[w] from binary node b (the root may itself be a leaf).
-    void fill(uint32_t w, uint32_t b, bool isRoot) {
-        uint32_t kids[kWidth];
-        int k = 0;
-        const BinaryNode& bn = bin_.nodes[b];
-        if (bn.leaf()) {
-            (void)isRoot;
-            kids[k++] = b;
-        } else {
-            kids[k++] = bn.first;
-            kids[k++] = bn.first + 1;
-        }
-        while (k < kWidth) {
-            int best = -1;
-            float bestArea = -1.0f;
-            for (int i = 0; i < k; ++i) {
-                const BinaryNode& c = bin_.nodes[kids[i]];
-                if (c.leaf()) continue;
-                const float a = c.halfArea();
-                if (a > bestArea) {
-                    bestArea = a;
-                    best = i;
-                }
-            }
-            if (best < 0) break;
-            const uint32_t c = kids[best];
-            kids[best] = bin_.nodes[c].first;
-            kids[k++] = bin_.nodes[c].first + 1;
-        }
-        // Allocate inner children contiguously, then set boxes and references.
-        uint32_t refs[kWidth];
-        for (int i = 0; i < k; ++i) {
-            const BinaryNode& c = bin_.nodes[kids[i]];
-            if (c.leaf()) {
-                const uint32_t blocks = (c.count + kBlockSize - 1) / kBlockSize;
-                if (blocks > leafBlockCap_ || blockCount + blocks > kMaxBlockIndex)
-                    throw std::length_error("TriangleBvh: too many triangles");
-                refs[i] = leafRef(blockCount, blocks);
-                leaves.push_back({blockCount, c.first, c.count});
-                blockCount += blocks;
-            } else {
-                refs[i] = uint32_t(nodes_.size());
-                nodes_.emplace_back();
-            }
-        }
-        WideNode& node = nodes_[w];
-        for (int i = 0; i < kWidth; ++i) {
-            const bool used = i < k;
-            const BinaryNode* c = used ? &bin_.nodes[kids[i]] : nullptr;
-            for (int a = 0; a < 3; ++a) {
-                node.box[2 * a][i] = used ? c->lo[a] : kInf;
-                node.box[2 * a + 1][i] = used ? c->hi[a] : -kInf;
-            }
-            node.child[i] = used ? refs[i] : kLeafFlag;
-        }
-        node.childCount = uint32_t(k);
-        for (uint32_t& p : node.pad) p = 0;
-        for (int i = 0; i < k; ++i)
-            if (!isLeaf(refs[i])) fill(refs[i], kids[i], false);
-    }
-
-    const BinaryBvh& bin_;
-    NodeVector& nodes_;
-    uint32_t leafBlockCap_;
-};
 
 }  // namespace
 

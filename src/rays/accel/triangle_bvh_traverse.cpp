@@ -7,12 +7,13 @@
 
 #include "rays/accel/simd.h"
 #include "rays/accel/triangle_bvh.h"
+#include "rays/accel/wide_traverse.h"
 
 namespace rays {
 
 #ifdef RAYS_TRIBVH_COUNTERS
 // Development statistics (compile with -DRAYS_TRIBVH_COUNTERS).
-thread_local uint64_t gTriBvhNodeVisits = 0, gTriBvhBlockTests = 0, gTriBvhRays = 0;
+thread_local uint64_t gTriBvhBlockTests = 0, gTriBvhRays = 0;
 #define RAYS_COUNT(x) (++(x))
 #else
 #define RAYS_COUNT(x) ((void)0)
@@ -22,36 +23,15 @@ namespace {
 
 using namespace tribvh;
 
-constexpr int kStackSize = 1024;  // >= 7 * maximum depth + 1 (the builder bounds the depth by ~90)
-
-/// Per-ray constants for the box and triangle tests.
+/// Per-ray constants for the triangle tests (Woop et al. 2013): axis permutation, shear, permuted
+/// origin. The box test has its own (BoxRay, wide_traverse.h).
 struct RayData {
-    // Boxes: t = box * rd - od per axis, with the near planes lowered and the far planes raised by
-    // a few ulps (relative) plus |org * rd| ulps (absolute) so rounding never culls a touched box.
-    VFloat8 rdNear[3], odNear[3], rdFar[3], odFar[3];
-    uint32_t nearRow[3], farRow[3];
-    // Triangles (Woop et al. 2013): axis permutation, shear, permuted origin.
     int kx, ky, kz;
     float shx, shy, shz;     // shear: dir[kx] / dir[kz], dir[ky] / dir[kz], 1 / dir[kz]
     float orgx, orgy, orgz;  // org[kx], org[ky], org[kz]
     VFloat4 sx, sy, sz, ox, oy, oz;
 
     explicit RayData(const TriRay& r) {
-        for (int a = 0; a < 3; ++a) {
-            float d = r.dir[a];
-            // Avoid infinities (0 * inf = NaN in the slab test): a tiny direction behaves the same.
-            if (std::fabs(d) < 1e-30f) d = std::copysign(1e-30f, d);
-            const float rd = 1.0f / d;
-            const float od = r.org[a] * rd;
-            const float slack = std::fabs(od) * 0x1p-20f;
-            const float grow = 1.0f + 0x1p-20f;
-            rdNear[a] = VFloat8::broadcast(rd);
-            odNear[a] = VFloat8::broadcast(od + slack);
-            rdFar[a] = VFloat8::broadcast(rd * grow);
-            odFar[a] = VFloat8::broadcast(od * grow - slack);
-            nearRow[a] = uint32_t(2 * a + (d < 0.0f ? 1 : 0));
-            farRow[a] = nearRow[a] ^ 1u;
-        }
         const float ax = std::fabs(r.dir[0]), ay = std::fabs(r.dir[1]), az = std::fabs(r.dir[2]);
         kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
         kx = kz == 2 ? 0 : kz + 1;
@@ -147,171 +127,72 @@ bool TriangleBvh::traverse(const TriRay& ray, float tMin, float tMax, TriHit* hi
     if (nodes_.empty() || !(tMax > tMin)) return false;
     if (ray.dir[0] == 0.0f && ray.dir[1] == 0.0f && ray.dir[2] == 0.0f) return false;
     const RayData r(ray);
+    const BoxRay br(ray.org, ray.dir);
     RAYS_COUNT(gTriBvhRays);
-    struct Entry {
-        uint32_t ref;
-        float dist;
-    };
-    Entry stack[kStackSize];
-    Entry* sp = stack;
     float tHit = tMax;
-    VFloat8 vtHit = VFloat8::broadcast(tMax);
-    const VFloat8 vtMin = VFloat8::broadcast(tMin);
     const VFloat4 vtMin4 = VFloat4::broadcast(tMin);
-    const WideNode* nodes = nodes_.data();
     const TriBlock* blocks = blocks_.data();
     uint32_t bestPrim = UINT32_MAX;
     float bestU = 0, bestV = 0;
-    uint32_t ref = 0;
-    // Pushed entries are visited later: start fetching them now.
-    auto prefetch = [&](uint32_t c) {
-        const char* p = isLeaf(c) ? reinterpret_cast<const char*>(blocks + leafFirstBlock(c))
-                                  : reinterpret_cast<const char*>(nodes + c);
+    auto prefetchLeaf = [&](uint32_t c) {
+        const char* p = reinterpret_cast<const char*>(blocks + leafFirstBlock(c));
         __builtin_prefetch(p);
         __builtin_prefetch(p + 64);
         __builtin_prefetch(p + 128);
-        if (!isLeaf(c)) __builtin_prefetch(p + 192);
     };
-
-    for (;;) {
-        if (!isLeaf(ref)) {
-            RAYS_COUNT(gTriBvhNodeVisits);
-            const WideNode& n = nodes[ref];
-            const float* box = n.box[0];
-            const VFloat8 tnx = fmsub(VFloat8::load(box + 8 * r.nearRow[0]), r.rdNear[0], r.odNear[0]);
-            const VFloat8 tny = fmsub(VFloat8::load(box + 8 * r.nearRow[1]), r.rdNear[1], r.odNear[1]);
-            const VFloat8 tnz = fmsub(VFloat8::load(box + 8 * r.nearRow[2]), r.rdNear[2], r.odNear[2]);
-            const VFloat8 tfx = fmsub(VFloat8::load(box + 8 * r.farRow[0]), r.rdFar[0], r.odFar[0]);
-            const VFloat8 tfy = fmsub(VFloat8::load(box + 8 * r.farRow[1]), r.rdFar[1], r.odFar[1]);
-            const VFloat8 tfz = fmsub(VFloat8::load(box + 8 * r.farRow[2]), r.rdFar[2], r.odFar[2]);
-            const VFloat8 tn = max(max(tnx, tny), max(tnz, vtMin));
-            const VFloat8 tf = min(min(tfx, tfy), min(tfz, vtHit));
-            uint32_t mask = lessEqualBits(tn, tf);
-            if constexpr (AnyHit || !Ordered) {
-                // No ordering: continue with the first child hit, push the others.
-                if (mask) {
-                    alignas(32) float dist[8];
-                    if constexpr (!AnyHit) tn.store(dist);
-                    ref = n.child[lowestBit(mask)];
-                    for (mask &= mask - 1; mask; mask &= mask - 1) {
-                        const unsigned i = lowestBit(mask);
-                        prefetch(n.child[i]);
-                        *sp++ = {n.child[i], AnyHit ? 0.0f : dist[i]};
-                    }
-                    continue;
+    // Tests the leaf's blocks; any-hit: true at the first hit; closest: lowers tHit.
+    auto leaf = [&](uint32_t ref, float& tBest) -> bool {
+        const TriBlock* b = blocks + leafFirstBlock(ref);
+        const TriBlock* end = b + leafBlockCount(ref);
+        for (; b < end; ++b) {
+            RAYS_COUNT(gTriBvhBlockTests);
+            if constexpr (!SimdLeaves) {
+                for (int lane = 0; lane < kBlockSize; ++lane) {
+                    float t, u, v;
+                    if (!scalarTriangle(*b, lane, r, tMin, tBest, t, u, v)) continue;
+                    if constexpr (AnyHit) return true;
+                    tBest = t;
+                    bestPrim = b->prim[lane];
+                    bestU = u;
+                    bestV = v;
                 }
-            } else if (mask) {
-                alignas(32) float dist[8];
-                tn.store(dist);
-                const unsigned i0 = lowestBit(mask);
-                mask &= mask - 1;
-                if (!mask) {
-                    ref = n.child[i0];
-                    continue;
-                }
-                const unsigned i1 = lowestBit(mask);
-                mask &= mask - 1;
-                const uint32_t c0 = n.child[i0], c1 = n.child[i1];
-                const float d0 = dist[i0], d1 = dist[i1];
-                if (!mask) {
-                    if (d0 <= d1) {
-                        prefetch(c1);
-                        *sp++ = {c1, d1};
-                        ref = c0;
-                    } else {
-                        prefetch(c0);
-                        *sp++ = {c0, d0};
-                        ref = c1;
-                    }
-                    continue;
-                }
-                Entry* base = sp;
-                prefetch(c0);
-                prefetch(c1);
-                *sp++ = {c0, d0};
-                *sp++ = {c1, d1};
-                do {
-                    const unsigned i = lowestBit(mask);
-                    mask &= mask - 1;
-                    prefetch(n.child[i]);
-                    *sp++ = {n.child[i], dist[i]};
-                } while (mask);
-                // Sort the new entries by decreasing distance: the nearest ends on top.
-                for (Entry* e = base + 1; e < sp; ++e) {
-                    const Entry x = *e;
-                    Entry* f = e;
-                    while (f > base && f[-1].dist < x.dist) {
-                        *f = f[-1];
-                        --f;
-                    }
-                    *f = x;
-                }
-                ref = (--sp)->ref;
                 continue;
             }
-        } else {
-            const TriBlock* b = blocks + leafFirstBlock(ref);
-            const TriBlock* end = b + leafBlockCount(ref);
-            for (; b < end; ++b) {
-                RAYS_COUNT(gTriBvhBlockTests);
-                if constexpr (!SimdLeaves) {
-                    for (int lane = 0; lane < kBlockSize; ++lane) {
-                        float t, u, v;
-                        if (!scalarTriangle(*b, lane, r, tMin, tHit, t, u, v)) continue;
-                        if constexpr (AnyHit) return true;
-                        tHit = t;
-                        vtHit = VFloat8::broadcast(tHit);
-                        bestPrim = b->prim[lane];
-                        bestU = u;
-                        bestV = v;
-                    }
-                    continue;
-                }
-                BlockTest bt;
-                edgeTest(*b, r, bt);
-                if (!bt.mask) continue;
-                // Distance test before dividing: tMin < t < tHit.
-                const VFloat4 tHit4 = VFloat4::broadcast(tHit);
-                uint32_t m = bt.mask & bits(cmpGt(bt.t, vtMin4 * bt.det) & cmpLt(bt.t, tHit4 * bt.det));
+            BlockTest bt;
+            edgeTest(*b, r, bt);
+            if (!bt.mask) continue;
+            // Distance test before dividing: tMin < t < tBest.
+            const VFloat4 tHit4 = VFloat4::broadcast(tBest);
+            uint32_t m = bt.mask & bits(cmpGt(bt.t, vtMin4 * bt.det) & cmpLt(bt.t, tHit4 * bt.det));
+            if (!m) continue;
+            if constexpr (AnyHit) {
+                return true;
+            } else {
+                const VFloat4 t = bt.t / bt.det;
+                m &= bits(cmpGt(t, vtMin4) & cmpLt(t, tHit4));
                 if (!m) continue;
-                if constexpr (AnyHit) {
-                    return true;
-                } else {
-                    const VFloat4 t = bt.t / bt.det;
-                    m &= bits(cmpGt(t, vtMin4) & cmpLt(t, tHit4));
-                    if (!m) continue;
-                    alignas(16) float ts[4];
-                    t.store(ts);
-                    unsigned lane = lowestBit(m);
-                    for (uint32_t mm = m & (m - 1); mm; mm &= mm - 1) {
-                        const unsigned l = lowestBit(mm);
-                        if (ts[l] < ts[lane]) lane = l;
-                    }
-                    alignas(16) float vs[4], ws[4], ds[4];
-                    bt.v.store(vs);
-                    bt.w.store(ws);
-                    (bt.u + bt.v + bt.w).store(ds);
-                    tHit = ts[lane];
-                    vtHit = VFloat8::broadcast(tHit);
-                    bestPrim = b->prim[lane];
-                    bestU = vs[lane] / ds[lane];
-                    bestV = ws[lane] / ds[lane];
+                alignas(16) float ts[4];
+                t.store(ts);
+                unsigned lane = lowestBit(m);
+                for (uint32_t mm = m & (m - 1); mm; mm &= mm - 1) {
+                    const unsigned l = lowestBit(mm);
+                    if (ts[l] < ts[lane]) lane = l;
                 }
+                alignas(16) float vs[4], ws[4], ds[4];
+                bt.v.store(vs);
+                bt.w.store(ws);
+                (bt.u + bt.v + bt.w).store(ds);
+                tBest = ts[lane];
+                bestPrim = b->prim[lane];
+                bestU = vs[lane] / ds[lane];
+                bestV = ws[lane] / ds[lane];
             }
         }
-        // Pop the nearest pending entry that can still hold a closer hit.
-        for (;;) {
-            if (sp == stack) goto finished;
-            --sp;
-            if (AnyHit || sp->dist <= tHit) {
-                ref = sp->ref;
-                break;
-            }
-        }
-    }
-finished:
-    if constexpr (AnyHit) {
         return false;
+    };
+    const bool blocked = traverseWide<AnyHit, Ordered>(nodes_.data(), br, tMin, tHit, prefetchLeaf, leaf);
+    if constexpr (AnyHit) {
+        return blocked;
     } else {
         if (bestPrim == UINT32_MAX) return false;
         hit->prim = bestPrim;
