@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sanitizer builds for CI (run after scripts/test.sh):
+# Sanitizer builds for CI (scripts/test.sh runs them before the optimised build and suite):
 #   1. build-asan: the whole project with g++ -fsanitize=address,undefined (UBSan aborts on the first
 #      error: -fno-sanitize-recover=all), -O1, and the whole CTest suite, including the CLI tests,
 #      which run the instrumented `rays` binary.

@@ -47,6 +47,7 @@ std::vector<Regression> regressions() {
         {"scene-mesh2-index-huge.pov", "fuzz.pov:12:21: error: mesh2 indices must be whole numbers from 0 to 4294967295"},
         {"obj-skin-weight-joint-huge.obj", "6:1: error: invalid joint id '1e390' in 'vw' line (a number from 0 to 16777216)"},
         {"image-png-chunk-length-huge.png", "cannot read image: corrupt PNG (a chunk runs past the end of the file)"},
+        {"image-jpeg-corrupt-scan.jpg", "cannot read image: corrupt JPEG (Corrupt JPEG data: premature end of data segment)"},
     };
 }
 

@@ -1,5 +1,5 @@
-// Image file encoding/decoding: libspng (PNG out), TurboJPEG (JPEG out), stb_image_write (TGA, BMP out),
-// a few lines of our own (PPM/PGM out) and stb_image (all input).
+// Image file encoding/decoding: libspng (PNG out), TurboJPEG (JPEG in and out), stb_image_write (TGA,
+// BMP out), a few lines of our own (PPM/PGM out) and stb_image (PNG, BMP, TGA, PPM/PGM in).
 #include "rays/io/image_io.h"
 
 #include <fcntl.h>
@@ -21,7 +21,6 @@
 
 #define STBI_NO_STDIO
 #define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
 #define STBI_ONLY_BMP
 #define STBI_ONLY_TGA
 #define STBI_ONLY_PNM
@@ -327,6 +326,44 @@ void writeImage(const std::string& path, const Image8& img, int jpegQuality) {
     }
 }
 
+namespace {
+
+bool isJpeg(const std::vector<uint8_t>& b) { return b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF; }
+
+std::string tooLargeMessage(int w, int h) {
+    return "image is " + std::to_string(w) + "x" + std::to_string(h) +
+           ", larger than the limit (65536 per side and 268435456 pixels)";
+}
+
+// JPEG input goes to libjpeg-turbo (continuously fuzzed upstream) rather than stb_image, whose 2.27
+// decoder misbehaves on corrupt entropy-coded data. Warnings (truncated or corrupt data, which the
+// library would otherwise fill with grey) are errors, so a damaged file is refused, not half-read.
+template <class Fail>
+Image8 decodeJpeg(const std::vector<uint8_t>& bytes, Fail&& failRead) {
+    std::unique_ptr<void, int (*)(tjhandle)> tj(tjInitDecompress(), tjDestroy);
+    if (!tj) failRead(std::string("JPEG decoder: ") + tjGetErrorStr2(nullptr));
+    int w = 0, h = 0, subsampling = 0, colorspace = 0;
+    if (tjDecompressHeader3(tj.get(), bytes.data(), static_cast<unsigned long>(bytes.size()), &w, &h, &subsampling,
+                            &colorspace) != 0)
+        failRead(std::string("corrupt JPEG (") + tjGetErrorStr2(tj.get()) + ")");
+    if (w <= 0 || h <= 0) failRead("image has no pixels (" + std::to_string(w) + "x" + std::to_string(h) + ")");
+    if (w > kMaxImageSide || h > kMaxImageSide || uint64_t(w) * uint64_t(h) > kMaxImagePixels)
+        failRead(tooLargeMessage(w, h));
+    if (const std::string why = imageSizeHazard(bytes.data(), bytes.size(), w, h); !why.empty()) failRead(why);
+    if (colorspace == TJCS_CMYK || colorspace == TJCS_YCCK) failRead("CMYK JPEG images are not supported");
+    Image8 img;
+    img.width = w;
+    img.height = h;
+    img.channels = colorspace == TJCS_GRAY ? 1 : 3;
+    img.pixels.resize(size_t(w) * size_t(h) * size_t(img.channels));
+    if (tjDecompress2(tj.get(), bytes.data(), static_cast<unsigned long>(bytes.size()), img.pixels.data(), w, 0, h,
+                      img.channels == 1 ? TJPF_GRAY : TJPF_RGB, TJFLAG_STOPONWARNING) != 0)
+        failRead(std::string("corrupt JPEG (") + tjGetErrorStr2(tj.get()) + ")");
+    return img;
+}
+
+}  // namespace
+
 Image8 readImage(const std::string& path) {
     auto failRead = [&](const std::string& why) { failFile(path, "cannot read image: " + why); };
 
@@ -357,11 +394,11 @@ Image8 readImage(const std::string& path) {
     if (bytes.empty()) failRead("file is empty");
     removeEmptyPngData(bytes);
     if (const std::string hazard = imageDecoderHazard(bytes.data(), bytes.size()); !hazard.empty()) failRead(hazard);
+    if (isJpeg(bytes)) return decodeJpeg(bytes, failRead);
     int infoW = 0, infoH = 0, infoC = 0;
     if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &infoW, &infoH, &infoC) &&
         (infoW > kMaxImageSide || infoH > kMaxImageSide || uint64_t(infoW) * uint64_t(infoH) > kMaxImagePixels))
-        failRead("image is " + std::to_string(infoW) + "x" + std::to_string(infoH) +
-                 ", larger than the limit (65536 per side and 268435456 pixels)");
+        failRead(tooLargeMessage(infoW, infoH));
     if (const std::string why = imageSizeHazard(bytes.data(), bytes.size(), infoW, infoH); !why.empty()) failRead(why);
 
     int w = 0, h = 0, comp = 0;
