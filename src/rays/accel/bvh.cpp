@@ -45,13 +45,20 @@ bool finiteBounds(const Bounds& b) {
 
 }  // namespace
 
+// Below this many untransformed triangles, a separate triangle BVH (a second traversal per ray,
+// with its own setup) costs more than testing them as objects.
+constexpr size_t kTriangleBvhMin = 64;
+
 Bvh::Bvh(const std::vector<Object>& objects) {
     std::vector<ObjectBvh::Prim> prims;
     std::vector<float> positions;
     std::vector<uint32_t> indices;
+    size_t plainTriangles = 0;
+    for (const Object& o : objects) plainTriangles += o.type == ShapeType::Triangle && !o.localSpace;
+    const bool triangleBvh = plainTriangles >= kTriangleBvhMin;
     for (uint32_t i = 0; i < objects.size(); ++i) {
         const Object& o = objects[i];
-        if (o.type == ShapeType::Triangle && !o.localSpace) {
+        if (triangleBvh && o.type == ShapeType::Triangle && !o.localSpace) {
             for (Vec3 p : {o.p0, o.p1, o.p2}) {
                 indices.push_back(uint32_t(positions.size() / 3));
                 positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});

@@ -1,4 +1,4 @@
-// Acceleration for a scene's objects: untransformed triangles go into a wide SIMD TriangleBvh
+// Acceleration for a scene's objects: untransformed triangles (64 or more) go into a wide SIMD TriangleBvh
 // (triangle_bvh.h); the other bounded objects into an 8-wide ObjectBvh (object_bvh.h) whose leaves
 // reject with a 4-wide bounding-sphere test before the exact double-precision object tests;
 // unbounded objects (planes) are tested separately.
