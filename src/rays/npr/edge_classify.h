@@ -1,5 +1,7 @@
 // Which edge types separate two samples' hit records.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "rays/npr/edge_settings.h"
@@ -40,6 +42,27 @@ EdgeRecord toEdgeRecord(const PathInfo& info, const SurfaceIds& ids);
 ///   materials differ)
 /// - same surface: occlusion when the depth jumps, else crease (normal angle) and material
 /// - blocked-light counts differ: shadow; surfaces along the secondary rays differ: reflection
-uint32_t classifyPair(const EdgeRecord& a, const EdgeRecord& b, const EdgeThresholds& th);
+/// Inline: the stencil calls it 25 times per candidate pixel.
+inline uint32_t classifyPair(const EdgeRecord& a, const EdgeRecord& b, const EdgeThresholds& th) {
+    if (a.surface < 0 && b.surface < 0) return 0;
+    if (a.surface < 0 || b.surface < 0) return kEdgeSilhouette;
+    uint32_t r = 0;
+    const float dx = b.p[0] - a.p[0], dy = b.p[1] - a.p[1], dz = b.p[2] - a.p[2];
+    const float gap = std::max(std::fabs(dx * a.n[0] + dy * a.n[1] + dz * a.n[2]),
+                               std::fabs(dx * b.n[0] + dy * b.n[1] + dz * b.n[2]));
+    const bool depthJump = gap > float(0.25 * th.depthRatio) * std::min(a.t, b.t);
+    const bool materialDiffers = a.material != b.material;
+    if (a.surface != b.surface) {
+        r |= depthJump ? kEdgeSilhouette : (kEdgeIntersection | (materialDiffers ? kEdgeMaterial : 0u));
+    } else if (depthJump) {
+        r |= kEdgeOcclusion;
+    } else {
+        if (a.n[0] * b.n[0] + a.n[1] * b.n[1] + a.n[2] * b.n[2] < float(th.cosCrease)) r |= kEdgeCrease;
+        if (materialDiffers) r |= kEdgeMaterial;
+    }
+    if (a.blocked != b.blocked) r |= kEdgeShadow;
+    if (a.path != b.path) r |= kEdgeReflection;
+    return r;
+}
 
 }  // namespace rays
