@@ -50,9 +50,15 @@ Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRe
     return trace(ray, Frame{}, ctx, log, info).color;
 }
 
-bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx) const {
+bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface) const {
     ++ctx.stats.shadowRays;
     const bool cached = light < size_t(TraceContext::kCachedLights);
+    // Any-hit: testing a likely blocker first changes the cost, never the answer.
+    if (intoSurface && ctx.surfaceObject >= 0 &&
+        occludes(scene_.objects[size_t(ctx.surfaceObject)], shadow, kTMin, tMax)) {
+        if (cached) ctx.lastBlocker[light] = ctx.surfaceObject;
+        return true;
+    }
     if (cached && ctx.lastBlocker[light] >= 0 &&
         occludes(scene_.objects[size_t(ctx.lastBlocker[light])], shadow, kTMin, tMax))
         return true;
@@ -84,7 +90,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
     };
     if (light.parallel) {
         const Vec3 L = -light.direction;
-        if (shadowed(Ray{origin, L}, kInfinity, index, ctx)) return 0.0;
+        if (shadowed(Ray{origin, L}, kInfinity, index, ctx, dot(L, N) < 0)) return 0.0;
         addSample(L, light.color);
         return 1.0;
     }
@@ -93,7 +99,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         const double dist = length(toLight);
         if (dist == 0) return 1.0;
         const Vec3 L = toLight / dist;
-        if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx)) return 0.0;
+        if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0)) return 0.0;
         addSample(L, light.color);
         return 1.0;
     }
@@ -126,7 +132,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         const Vec3 toLight = pos - P;
         const double dist = length(toLight);
         L = dist > 0 ? toLight / dist : N;
-        return dist == 0 || !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx);
+        return dist == 0 || !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0);
     };
     // adaptive: when the four corners agree, their verdict holds for the whole light.
     int cornerVerdict = -1;  // −1 undecided, 0 all blocked, 1 all visible
@@ -302,7 +308,9 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     Vec3 ambient, diffuse, specular;
     int blocked = 0;
     if (wLocal > 0 || info) {
+        ctx.surfaceObject = hit.object;
         blocked = localShading(m, model, P, N, V, ctx, diffuse, specular);
+        ctx.surfaceObject = -1;
         if (settings_.gi && f.giLevel < settings_.giBounces)
             ambient = m.diffuse * m.color * gatherIndirect(P, N, f, ctx);
         else

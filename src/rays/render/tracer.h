@@ -79,6 +79,7 @@ struct TraceContext {
     TraceStats stats;
     SampleRng rng{0, 0, 0, 0};
     int lastBlocker[kCachedLights];
+    int surfaceObject = -1;  ///< the object being shaded (its shadow rays test it first when they go into it)
     TraceContext() { std::fill(std::begin(lastBlocker), std::end(lastBlocker), -1); }
 };
 
@@ -130,7 +131,9 @@ private:
                   PathInfo& out) const;
     /// Cosine-weighted average of the light arriving at P (global illumination).
     Vec3 gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
-    bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx) const;
+    /// intoSurface: the ray leaves towards the inside of the surface being shaded, which then
+    /// most likely blocks it (tested first).
+    bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface = false) const;
 
     const Scene& scene_;
     const Bvh& bvh_;
