@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "rays/accel/object_bvh_traverse.h"
+#include "rays/geometry/sphere_hit.h"
 
 namespace rays {
 namespace {
@@ -33,6 +34,7 @@ ObjectBvh::Prim objectPrim(const Object& o, const Bounds& b, uint32_t id) {
     if (o.type == ShapeType::Sphere && !o.localSpace) {
         for (int a = 0; a < 3; ++a) p.center[a] = o.p1[a];
         p.sphereRadius = o.r1;
+        p.isSphere = true;
     }
     return p;
 }
@@ -119,7 +121,19 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
             }
         }
     }
-    auto exact = [&](uint32_t id, float& tBest) {
+    auto exact = [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float& tBest) {
+        if (sphere.radius >= 0) {  // the same test as intersect(), on compact data
+            const Vec3 c{sphere.centre[0], sphere.centre[1], sphere.centre[2]};
+            double t;
+            if (!sphereHitT(c, sphere.radius, ray, tMin, best.t, t)) return false;
+            best.t = t;
+            best.object = int(id);
+            best.normal = (ray.at(t) - c) / sphere.radius;
+            best.geomNormal = best.normal;
+            best.hasUV = false;
+            tBest = upperT(t);
+            return false;
+        }
         if (!intersect(objects[id], ray, tMin, best.t, sh)) return false;
         best.t = sh.t;
         best.object = int(id);
@@ -148,8 +162,12 @@ int Bvh::anyBlocker(const std::vector<Object>& objects, const Ray& ray, double t
         if (triangles_.occluded(tr, float(tMin), upperT(tMax + slack))) return kSomeTriangle;
     }
     int blocker = kNoBlocker;
-    auto exact = [&](uint32_t id, float&) {
-        if (!occludes(objects[id], ray, tMin, tMax)) return false;
+    auto exact = [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float&) {
+        double t;
+        if (sphere.radius >= 0
+                ? !sphereHitT(Vec3{sphere.centre[0], sphere.centre[1], sphere.centre[2]}, sphere.radius, ray, tMin, tMax, t)
+                : !occludes(objects[id], ray, tMin, tMax))
+            return false;
         blocker = int(id);
         return true;
     };

@@ -50,6 +50,7 @@ void sphereSlot(const ObjectBvh::Prim& p, objbvh::ShapeBlock& b, int lane) {
 void ObjectBvh::build(const std::vector<Prim>& prims) {
     nodes_.clear();
     blocks_.clear();
+    spheres_.clear();
     if (prims.empty()) return;
     if (prims.size() > kMaxBlockIndex) throw std::length_error("too many objects for the BVH");
     TaskPool pool(prims.size() >= kParallelBuild ? 0 : 1);
@@ -70,6 +71,7 @@ void ObjectBvh::build(const std::vector<Prim>& prims) {
     bin = {};
 
     blocks_.resize(collapse.blockCount);
+    spheres_.assign(blocks_.size() * kBlockSize, ExactSphere{{0, 0, 0}, -1});
     for (const Collapser::LeafJob& job : collapse.leaves) {
         for (uint32_t k = 0; k < job.count; k += kBlockSize) {
             objbvh::ShapeBlock& b = blocks_[job.firstBlock + k / kBlockSize];
@@ -83,6 +85,9 @@ void ObjectBvh::build(const std::vector<Prim>& prims) {
                 const Prim& p = prims[refs[job.firstRef + k + lane].id];
                 sphereSlot(p, b, int(lane));
                 b.id[lane] = p.id;
+                if (p.isSphere)
+                    spheres_[size_t(job.firstBlock + k / kBlockSize) * kBlockSize + lane] =
+                        ExactSphere{{p.center[0], p.center[1], p.center[2]}, p.sphereRadius};
             }
         }
     }

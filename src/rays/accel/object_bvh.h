@@ -37,7 +37,14 @@ public:
         double lo[3], hi[3];
         double center[3];
         double sphereRadius = -1;
+        bool isSphere = false;  ///< the object is exactly that sphere (world space)
         uint32_t id = 0;
+    };
+    /// A slot's sphere in double precision when the object is a world-space sphere (radius < 0
+    /// otherwise): the caller's exact test can use it without touching the object itself.
+    struct ExactSphere {
+        double centre[3];
+        double radius;
     };
 
     /// Builds over prims (boxes must be non-empty and finite). Replaces any previous content.
@@ -49,8 +56,8 @@ public:
     int depth() const;
 
     /// Walks the leaves the ray (float origin and direction, need not be unit length) may hit with
-    /// t in [tMin, tHit] and calls exact(id, tHit) for each object slot its sphere test cannot
-    /// reject. AnyHit: exact returns true when the object blocks the ray, and so does the walk.
+    /// t in [tMin, tHit] and calls exact(id, sphere, tHit) for each object slot its sphere test
+    /// cannot reject (sphere: the slot's ExactSphere). AnyHit: exact returns true when the object blocks the ray, and so does the walk.
     /// Closest hit: exact lowers tHit (a float upper bound of the best hit so far) when it finds a
     /// closer hit. Defined in object_bvh_traverse.h.
     template <bool AnyHit, class Exact>
@@ -59,6 +66,7 @@ public:
 private:
     std::vector<tribvh::WideNode, tribvh::HugePageAllocator<tribvh::WideNode>> nodes_;
     std::vector<objbvh::ShapeBlock> blocks_;
+    std::vector<ExactSphere> spheres_;  ///< per slot (block * 4 + lane)
 };
 
 }  // namespace rays

@@ -37,6 +37,7 @@ bool ObjectBvh::traverse(const float org[3], const float dir[3], float tMin, flo
     const VFloat4 originMargin = VFloat4::broadcast(0x1p-12f * originSize);
     const VFloat4 vtMin = VFloat4::broadcast(tMin);
     const objbvh::ShapeBlock* blocks = blocks_.data();
+    const ExactSphere* spheres = spheres_.data();
 
     // Slots of block b that the ray may hit within [tMin, tBest].
     auto candidates = [&](const objbvh::ShapeBlock& b, float tBest) -> uint32_t {
@@ -61,12 +62,13 @@ bool ObjectBvh::traverse(const float org[3], const float dir[3], float tMin, flo
         const objbvh::ShapeBlock* b = blocks + leafFirstBlock(ref);
         const objbvh::ShapeBlock* end = b + leafBlockCount(ref);
         for (; b < end; ++b) {
+            const ExactSphere* sphere = spheres + size_t(b - blocks) * kBlockSize;
             for (uint32_t m = candidates(*b, tBest); m; m &= m - 1) {
-                const uint32_t id = b->id[lowestBit(m)];
+                const unsigned lane = lowestBit(m);
                 if constexpr (AnyHit) {
-                    if (exact(id, tBest)) return true;
+                    if (exact(b->id[lane], sphere[lane], tBest)) return true;
                 } else {
-                    exact(id, tBest);
+                    exact(b->id[lane], sphere[lane], tBest);
                 }
             }
         }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rays/geometry/sphere_hit.h"
 #include "rays/scene/mesh.h"
 
 namespace rays {
@@ -20,23 +21,9 @@ std::string_view shapeName(ShapeType t) {
 
 namespace {
 
-// Chooses the nearest of two sorted roots inside (tMin, tMax).
-bool pickRoot(double t0, double t1, double tMin, double tMax, double& t) {
-    if (t0 > tMin && t0 < tMax) { t = t0; return true; }
-    if (t1 > tMin && t1 < tMax) { t = t1; return true; }
-    return false;
-}
-
 // Sphere (p1, r1): the object-space sphere, or the world-space one for similarity transforms.
 bool hitSphere(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
-    const Vec3 oc = r.origin - o.p1;
-    const double a = dot(r.dir, r.dir);
-    const double b = dot(oc, r.dir);
-    const double c = dot(oc, oc) - o.r1 * o.r1;
-    const double disc = b * b - a * c;
-    if (disc < 0) return false;
-    const double sq = std::sqrt(disc);
-    if (!pickRoot((-b - sq) / a, (-b + sq) / a, tMin, tMax, h.t)) return false;
+    if (!sphereHitT(o.p1, o.r1, r, tMin, tMax, h.t)) return false;
     h.normal = (r.at(h.t) - o.p1) / o.r1;
     return true;
 }
@@ -180,6 +167,7 @@ bool hitCone(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& 
 
 bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     bool found = false;
+    h.hasUV = false;  // h may be reused across objects
     switch (o.type) {
         case ShapeType::Sphere: found = hitSphere(o, r, tMin, tMax, h); break;
         case ShapeType::Plane: found = hitPlane(o, r, tMin, tMax, h); break;
