@@ -223,7 +223,7 @@ int runRender(const RenderJob& job) {
         t0 = Clock::now();
         lines = drawFeatureLines(scene, bvh, s, edges, records.get(), stats);
         stopIfInterrupted(job, &scene, &img);
-        compositeLines(img, lines, edges);
+        compositeLines(img, lines, edges, s.threads);
         linesMs = msSince(t0);
     }
 

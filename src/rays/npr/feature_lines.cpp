@@ -72,15 +72,24 @@ std::vector<uint8_t> candidates(const LineRecords::RecordVector& rec, int W, int
                     diff[size_t(y) * W + x] = 1;
             }
     });
-    // Separable box dilation by reach around both pixels of each differing pair.
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x)
-            if (diff[size_t(y) * W + x])
-                for (int k = std::max(0, x - reach); k <= std::min(W - 1, x + reach + 1); ++k) tmp[size_t(y) * W + k] = 1;
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x)
-            if (tmp[size_t(y) * W + x])
-                for (int k = std::max(0, y - reach); k <= std::min(H - 1, y + reach + 1); ++k) out[size_t(k) * W + x] = 1;
+    // Separable box dilation by reach around both pixels of each differing pair: along rows, then
+    // each output row gathers the rows within reach (above: reach + 1, for the pair's lower pixel).
+    const int blocks = (H + kRowBlock - 1) / kRowBlock;
+    parallelFor(blocks, threads, [&](int block, int) {
+        for (int y = block * kRowBlock; y < std::min(H, (block + 1) * kRowBlock); ++y)
+            for (int x = 0; x < W; ++x)
+                if (diff[size_t(y) * W + x])
+                    for (int k = std::max(0, x - reach); k <= std::min(W - 1, x + reach + 1); ++k) tmp[size_t(y) * W + k] = 1;
+    });
+    parallelFor(blocks, threads, [&](int block, int) {
+        for (int y = block * kRowBlock; y < std::min(H, (block + 1) * kRowBlock); ++y) {
+            uint8_t* o = &out[size_t(y) * W];
+            for (int k = std::max(0, y - reach - 1); k <= std::min(H - 1, y + reach); ++k) {
+                const uint8_t* t = &tmp[size_t(k) * W];
+                for (int x = 0; x < W; ++x) o[x] |= t[x];
+            }
+        }
+    });
     return out;
 }
 
@@ -200,12 +209,18 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
     return lc;
 }
 
-void compositeLines(ImageF& img, const LineCoverage& lines, const EdgeSettings& e) {
-    for (size_t i = 0; i < img.pixels.size(); ++i) {
-        const double c = lines.coverage[i];
-        const Vec3 base = e.linesOnly ? Vec3(1.0) : img.pixels[i];
-        img.pixels[i] = (1 - c) * base + c * e.color;
-    }
+void compositeLines(ImageF& img, const LineCoverage& lines, const EdgeSettings& e, int threads) {
+    const int rows = img.height;
+    parallelFor((rows + kRowBlock - 1) / kRowBlock, threads, [&](int block, int) {
+        const size_t begin = size_t(block) * kRowBlock * size_t(img.width);
+        const size_t end = std::min(img.pixels.size(), begin + size_t(kRowBlock) * size_t(img.width));
+        for (size_t i = begin; i < end; ++i) {
+            const double c = lines.coverage[i];
+            if (c == 0 && !e.linesOnly) continue;
+            const Vec3 base = e.linesOnly ? Vec3(1.0) : img.pixels[i];
+            img.pixels[i] = (1 - c) * base + c * e.color;
+        }
+    });
 }
 
 Image8 coverageImage(const LineCoverage& lines) {

@@ -40,7 +40,7 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
                               const LineRecords* centre, TraceStats& stats);
 
 /// Blends the line colour over img by coverage; with linesOnly the image starts white.
-void compositeLines(ImageF& img, const LineCoverage& lines, const EdgeSettings& e);
+void compositeLines(ImageF& img, const LineCoverage& lines, const EdgeSettings& e, int threads = 0);
 
 /// The coverage as an 8-bit greyscale image (255 = full line).
 Image8 coverageImage(const LineCoverage& lines);
