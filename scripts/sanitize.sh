@@ -6,7 +6,7 @@
 #   2. build-tsan: the project with -fsanitize=thread and the tests that render or filter with
 #      several threads (TSAN_TESTS below).
 # Usage: scripts/sanitize.sh [asan|tsan]... (default: both). Exit status non-zero on the first failure.
-# Both together take about 12 minutes on 2 cores (build ~4 min each, tests ~2 min each).
+# Both together took 10 minutes on 2 cores from a clean clone (ASan build + whole suite 431 s, TSan 156 s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
