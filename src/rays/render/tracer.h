@@ -73,8 +73,10 @@ struct PathInfo {
 
 /// Per-thread mutable state of a trace: counters, the random numbers of the current pixel sample
 /// and the shadow cache (the object that last blocked each light). The cache only changes which
-/// object is tested first, never a result.
-struct TraceContext {
+/// object is tested first, never a result. Cache-line aligned: the contexts of the render threads
+/// sit side by side in a vector and are written on every ray, so sharing a line would make the
+/// threads wait on each other (gnarly.pov rendered 20 % slower on 2 threads that way).
+struct alignas(64) TraceContext {
     static constexpr int kCachedLights = 16;
     TraceStats stats;
     SampleRng rng{0, 0, 0, 0};
