@@ -205,7 +205,7 @@ int runRender(const RenderJob& job) {
     t0 = Clock::now();
     TraceStats stats;
     ProgressBar bar(!job.quiet && isatty(STDERR_FILENO));
-    ImageF img(s.width, s.height);
+    ImageF img;
     const bool reuse = edges.enabled() && !edges.linesOnly && renderRecordsAreCentred(scene, s);
     std::unique_ptr<LineRecords> records;
     RecordFn onRecord;
@@ -213,7 +213,8 @@ int runRender(const RenderJob& job) {
         records = std::make_unique<LineRecords>(scene, s.width, s.height);
         onRecord = [&](int x, int y, const PathInfo& info) { records->store(x, y, info); };
     }
-    if (!edges.linesOnly) img = render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord);
+    img = edges.linesOnly ? ImageF(s.width, s.height)
+                          : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord);
     stopIfInterrupted(job, &scene, &img);
     if (!job.post.empty()) img = applyFilters(img, job.post, BorderMode::Clamp, s.threads);
     const double renderMs = msSince(t0);

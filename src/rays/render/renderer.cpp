@@ -173,20 +173,33 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
 
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
               const ProgressFn& progress, std::vector<uint8_t>* edgePixels, const RecordFn& onRecord) {
-    ImageF img(s.width, s.height);
+    ImageF img = ImageF::uninitialized(s.width, s.height);  // every pixel is written below
     const ViewSetup view = resolveView(scene, s);
     const Tracer tracer(scene, bvh, s);
     const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
     const int tileCount = tilesX * tilesY;
     std::vector<TraceContext> perThread(size_t(resolveThreads(s.threads)));
 
+    // Tiles finished by the first pass; a cancelled render leaves the others black (the image is
+    // not zero-filled up front: the render threads are the first to touch it).
+    std::vector<uint8_t> tileDone(size_t(tileCount), 0);
+    bool firstPass = true;
     auto forTiles = [&](const std::function<void(int x, int y, TraceContext&)>& pixel, const ProgressFn& prog) {
         parallelFor(tileCount, s.threads, [&](int t, int w) {
             const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
             const int x1 = std::min(x0 + kTile, s.width), y1 = std::min(y0 + kTile, s.height);
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) pixel(x, y, perThread[size_t(w)]);
+            if (firstPass) tileDone[size_t(t)] = 1;
         }, prog);
+        if (firstPass && cancelled())
+            for (int t = 0; t < tileCount; ++t) {
+                if (tileDone[size_t(t)]) continue;
+                const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
+                for (int y = y0; y < std::min(y0 + kTile, s.height); ++y)
+                    for (int x = x0; x < std::min(x0 + kTile, s.width); ++x) img.at(x, y) = Vec3{};
+            }
+        firstPass = false;
     };
 
     if (!s.aaEdges) {
