@@ -159,12 +159,12 @@ std::vector<BadInput> catalogue() {
                  {{"scene.pov", kCamera + "sphere { <0,0,0>, 2 pigment { image_map { png \"tex.png\" } } }\n"},
                   {"tex.png", "not an image"}},
                  render(), 2,
-                 "scene.pov:2:47: error: tex.png: error: cannot read image: not a PNG, JPEG, BMP, TGA or binary PPM/PGM "
+                 "scene.pov:2:47: error: tex.png: cannot read image: not a PNG, JPEG, BMP, TGA or binary PPM/PGM "
                  "file, or corrupt"});
     t.push_back({"texture-truncated",
                  {{"scene.pov", kCamera + "sphere { <0,0,0>, 2 pigment { image_map { png \"tex.png\" } } }\n"},
                   {"tex.png", png.substr(0, 60)}},
-                 render(), 2, "scene.pov:2:47: error: tex.png: error: cannot read image: corrupt PNG (a chunk runs past the end of the file)"});
+                 render(), 2, "scene.pov:2:47: error: tex.png: cannot read image: corrupt PNG (a chunk runs past the end of the file)"});
     t.push_back({"texture-is-a-directory",
                  {{"scene.pov", kCamera + "sphere { <0,0,0>, 2 pigment { image_map { png \"tex.png\" } } }\n"},
                   {"tex.png", "", true}},

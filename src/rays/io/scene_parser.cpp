@@ -41,6 +41,14 @@ const std::unordered_set<std::string_view>& povrayKeywords() {
     return k;
 }
 
+// The message of an error from a file the scene refers to ("tex.png: error: why"), to be put
+// after the scene's own location: "scene.pov:2:47: error: tex.png: why" (one "error:" per line).
+std::string nestedMessage(const Error& e) {
+    std::string m = e.what();
+    if (const size_t at = m.find(": error: "); at != std::string::npos) m.replace(at, 9, ": ");
+    return m;
+}
+
 // A parsed expression value: a scalar (n == 1) or a vector of n components (2..5).
 struct Value {
     int n = 1;
@@ -723,7 +731,7 @@ private:
         try {
             scene_.textures.push_back(loadTexture(path.string(), gamma));
         } catch (const Error& e) {
-            fail(loc(at), std::string(e.what()));
+            fail(loc(at), nestedMessage(e));
         }
         const int index = int(scene_.textures.size()) - 1;
         textureIndex_[key] = index;
@@ -955,7 +963,7 @@ private:
         try {
             mesh->finalize();
         } catch (const Error& e) {
-            fail(loc(kw), e.what());
+            fail(loc(kw), nestedMessage(e));
         }
         o.type = ShapeType::Mesh;
         o.mesh = mesh.get();
@@ -1126,7 +1134,7 @@ private:
         try {
             mesh = meshFromObj(obj);
         } catch (const Error& e) {
-            fail(loc(kw), e.what());
+            fail(loc(kw), nestedMessage(e));
         }
         skipCommas();
         if (isIdent("smooth")) {  // vertex normals from the faces when the file has none
