@@ -1,70 +1,31 @@
+// The scene structure of the course dialect and POV-Ray: top level, camera, lights, objects and
+// their modifiers, materials and textures, obj_mesh; tokens and expressions come from TokenReader
+// (token_reader.h), inline mesh bodies from mesh_blocks.h.
 #include "rays/io/scene_parser.h"
 
-#include <array>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <map>
-#include <numbers>
-#include <unordered_set>
 
 #include "rays/io/lexer.h"
+#include "rays/io/mesh_blocks.h"
 #include "rays/io/mesh_from_obj.h"
 #include "rays/io/obj_loader.h"
+#include "rays/io/token_reader.h"
 
 namespace rays {
 namespace {
 
-// POV-Ray 3.7 keywords Rays reads but does not implement yet: they are skipped with a warning.
-const std::unordered_set<std::string_view>& povrayKeywords() {
-    static const std::unordered_set<std::string_view> k = {
-        "adaptive", "agate", "all", "alpha", "angle", "aperture", "area_light", "background",
-        "bicubic_patch", "blob", "blur_samples", "boxed", "brick", "brilliance", "bump_map",
-        "bump_size", "bumps", "checker", "circular", "confidence", "conserve_energy", "crand",
-        "cubic", "cylinder", "cylindrical", "dents", "difference", "direction", "disc",
-        "double_illuminate", "emission", "fade_color", "fade_distance", "fade_power", "falloff",
-        "focal_point", "fog", "gradient", "granite", "height_field", "hexagon", "hollow",
-        "image_map", "interpolate", "intersection", "inverse", "irid", "isosurface", "jitter",
-        "julia_fractal", "lathe", "leopard", "light_group", "looks_like", "map_type", "marble",
-        "media", "merge", "mesh", "mesh2", "no_image", "no_reflection", "no_shadow", "normal",
-        "normal_map", "object", "open", "orient", "orthographic", "parallel", "parametric",
-        "perspective", "phong", "phong_size", "photons", "point_at", "poly", "polygon", "prism",
-        "quadric", "radial", "radiosity", "radius", "ripples", "sky", "sky_sphere", "smooth_triangle",
-        "sor", "spherical", "spotlight", "sphere_sweep", "superellipsoid", "text", "tightness",
-        "torus", "transmit", "turbulence", "union", "uv_mapping", "warp", "waves", "wood",
-        "wrinkles", "global_settings", "max_trace_level", "assumed_gamma", "ambient_light",
-        "shadowless", "media_interaction", "media_attenuation", "subsurface", "specular_map",
-        "texture_map", "pigment_map", "normal_map", "color_map", "colour_map", "finish_map",
-        "material", "clipped_by", "bounded_by", "sturm", "caustics", "dispersion", "metallic_map",
-    };
-    return k;
-}
+using namespace scenetext;
 
-// The message of an error from a file the scene refers to ("tex.png: error: why"), to be put
-// after the scene's own location: "scene.pov:2:47: error: tex.png: why" (one "error:" per line).
-std::string nestedMessage(const Error& e) {
-    std::string m = e.what();
-    if (const size_t at = m.find(": error: "); at != std::string::npos) m.replace(at, 9, ": ");
-    return m;
-}
-
-// A parsed expression value: a scalar (n == 1) or a vector of n components (2..5).
-struct Value {
-    int n = 1;
-    std::array<double, 5> c{};
-    bool isScalar() const { return n == 1; }
-};
-
-class Parser {
+class Parser : TokenReader {
 public:
-    Parser(const std::string& text, const std::string& file, const ParseOptions& opt)
-        : lex_(text, file), opt_(opt) {
+    Parser(const std::string& text, const std::string& file, const ParseOptions& opt) : TokenReader(text, file, opt) {
         scene_.fileName = file;
         // Course files spend 150-250 bytes per object; reserving for 64 avoids every reallocation
         // (untouched capacity costs address space only).
         scene_.objects.reserve(text.size() / 64 + 16);
-        advance();
     }
 
     Scene run() {
@@ -75,221 +36,7 @@ public:
     }
 
 private:
-    // ---- token helpers -------------------------------------------------------------------
-    void advance() { tok_ = lex_.next(); }
-    SourceLoc loc(const Token& t) const { return lex_.locOf(t); }
-    SourceLoc loc() const { return loc(tok_); }
-    bool isSymbol(char c) const { return tok_.kind == TokenKind::Symbol && tok_.text[0] == c; }
-    bool isIdent(std::string_view s) const { return tok_.kind == TokenKind::Identifier && tok_.text == s; }
-    [[noreturn]] void error(const std::string& msg) const { fail(loc(), msg); }
-    void expectSymbol(char c, std::string_view context) {
-        if (!isSymbol(c))
-            error("expected '" + std::string(1, c) + "' " + std::string(context) + ", found " + describe(tok_));
-        advance();
-    }
-    void skipCommas() {
-        while (isSymbol(',')) advance();
-    }
-
-    // ---- warnings --------------------------------------------------------------------------
-    void warn(const SourceLoc& at, const std::string& msg) {
-        const std::string line = formatError(at, msg);
-        // formatError says "error:"; warnings say "warning:".
-        const std::string text = line.substr(0, line.find(": error: ")) + ": warning: " + msg;
-        if (opt_.warn) opt_.warn(text);
-        else std::cerr << text << '\n';
-    }
-    void warnUnsupported(const Token& t) {
-        const std::string name(t.text);
-        if (warnedCount_[name]++ == 0)
-            warn(loc(t), "'" + name + "' is valid POV-Ray but not supported by Rays yet; ignored");
-    }
-    void flushWarnings() {
-        for (const auto& [name, count] : warnedCount_)
-            if (count > 1)
-                warn(SourceLoc{lex_.fileName(), 0, 0},
-                     "'" + name + "' ignored " + std::to_string(count - 1) + " more time(s)");
-    }
-
-    // Skips what follows an unsupported keyword: a balanced { } block, or scalar/vector
-    // arguments (numbers, strings, <...>, commas and arithmetic).
-    void skipUnsupported() {
-        const Token kw = tok_;
-        warnUnsupported(kw);
-        advance();
-        if (isSymbol('{')) {
-            skipBlock();
-            return;
-        }
-        for (;;) {
-            if (tok_.kind == TokenKind::Number || tok_.kind == TokenKind::String) {
-                advance();
-            } else if (tok_.kind == TokenKind::Symbol && std::string_view("<>,-+*/()").find(tok_.text[0]) != std::string_view::npos) {
-                advance();
-            } else if (tok_.kind == TokenKind::Identifier &&
-                       (tok_.text == "x" || tok_.text == "y" || tok_.text == "z" || tok_.text == "pi" ||
-                        tok_.text == "rgb" || tok_.text == "rgbf" || tok_.text == "rgbt" ||
-                        tok_.text == "rgbft" || tok_.text == "color" || tok_.text == "colour" ||
-                        tok_.text == "png" || tok_.text == "jpeg" || tok_.text == "tga" || tok_.text == "gif")) {
-                advance();
-            } else {
-                return;
-            }
-        }
-    }
-    void skipBlock() {
-        const Token open = tok_;
-        expectSymbol('{', "");
-        int depth = 1;
-        while (depth > 0) {
-            if (tok_.kind == TokenKind::End) fail(loc(open), "'{' is never closed (end of file reached)");
-            if (isSymbol('{')) ++depth;
-            if (isSymbol('}')) --depth;
-            advance();
-        }
-    }
-
-    // ---- expressions -------------------------------------------------------------------------
-    Value expr() {
-        Value v = term();
-        while (isSymbol('+') || isSymbol('-')) {
-            const bool minus = isSymbol('-');
-            advance();
-            Value r = term();
-            v = combine(v, r, minus ? '-' : '+');
-        }
-        return v;
-    }
-    Value term() {
-        Value v = factor();
-        while (isSymbol('*') || isSymbol('/')) {
-            const char op = tok_.text[0];
-            const Token at = tok_;
-            advance();
-            Value r = factor();
-            if (op == '/') {
-                for (int i = 0; i < r.n; ++i)
-                    if (r.c[i] == 0) fail(loc(at), "division by zero");
-            }
-            v = combine(v, r, op);
-        }
-        return v;
-    }
-    Value combine(const Value& a, const Value& b, char op) {
-        if (!a.isScalar() && !b.isScalar() && a.n != b.n)
-            error("vector sizes differ (" + std::to_string(a.n) + " and " + std::to_string(b.n) + ")");
-        Value r;
-        r.n = std::max(a.n, b.n);
-        for (int i = 0; i < r.n; ++i) {
-            const double x = a.c[a.isScalar() ? 0 : i], y = b.c[b.isScalar() ? 0 : i];
-            switch (op) {
-                case '+': r.c[i] = x + y; break;
-                case '-': r.c[i] = x - y; break;
-                case '*': r.c[i] = x * y; break;
-                default: r.c[i] = x / y; break;
-            }
-        }
-        return r;
-    }
-    Value factor() {
-        // Parentheses, vectors and unary signs recurse: bound the depth (a stack overflow otherwise).
-        struct Nesting {
-            int& depth;
-            explicit Nesting(int& d) : depth(++d) {}
-            ~Nesting() { --depth; }
-        } nesting(nesting_);
-        if (nesting_ > kMaxNesting)
-            error("expression nested too deeply (more than " + std::to_string(kMaxNesting) + " levels)");
-        Value v;
-        if (tok_.kind == TokenKind::Number) {
-            v.c[0] = tok_.number;
-            advance();
-            return v;
-        }
-        if (isSymbol('-') || isSymbol('+')) {
-            const bool neg = isSymbol('-');
-            advance();
-            v = factor();
-            if (neg)
-                for (int i = 0; i < v.n; ++i) v.c[i] = -v.c[i];
-            return v;
-        }
-        if (isSymbol('(')) {
-            advance();
-            v = expr();
-            expectSymbol(')', "to close '('");
-            return v;
-        }
-        if (isSymbol('<')) {
-            const Token open = tok_;
-            advance();
-            v.n = 0;
-            for (;;) {
-                const Token at = tok_;
-                Value comp = expr();
-                if (!comp.isScalar()) fail(loc(at), "vector component must be a number");
-                if (v.n == 5) fail(loc(at), "vector has more than 5 components");
-                v.c[v.n++] = comp.c[0];
-                if (isSymbol(',')) {
-                    advance();
-                    continue;
-                }
-                if (isSymbol('>')) break;
-                error("expected ',' or '>' in vector, found " + describe(tok_));
-            }
-            advance();
-            if (v.n < 2) fail(loc(open), "vector needs at least 2 components");
-            return v;
-        }
-        if (tok_.kind == TokenKind::Identifier) {
-            if (tok_.text == "x" || tok_.text == "y" || tok_.text == "z") {
-                v.n = 3;
-                v.c[tok_.text[0] - 'x'] = 1;
-                advance();
-                return v;
-            }
-            if (tok_.text == "pi") {
-                v.c[0] = std::numbers::pi;
-                advance();
-                return v;
-            }
-        }
-        if (tok_.kind == TokenKind::End) error("expected a number or vector, found end of file");
-        error("expected a number or vector, found " + describe(tok_));
-    }
-
-    // True when the current token can start an expression.
-    bool atExpression() const {
-        return tok_.kind == TokenKind::Number ||
-               (tok_.kind == TokenKind::Symbol && std::string_view("-+(<").find(tok_.text[0]) != std::string_view::npos) ||
-               isIdent("x") || isIdent("y") || isIdent("z") || isIdent("pi");
-    }
-    void expectExpression(std::string_view what) {
-        if (!atExpression()) error("expected " + std::string(what) + ", found " + describe(tok_));
-    }
-
-    double number(std::string_view what) {
-        expectExpression(what);
-        const Token at = tok_;
-        const Value v = expr();
-        if (!v.isScalar()) fail(loc(at), "expected a number for " + std::string(what) + ", found a vector");
-        if (!std::isfinite(v.c[0])) fail(loc(at), std::string(what) + " is not a finite number");
-        return v.c[0];
-    }
-    Vec3 vector3(std::string_view what, bool allowScalar = false) {
-        expectExpression(what);
-        const Token at = tok_;
-        const Value v = expr();
-        if (v.isScalar() && allowScalar) return Vec3(v.c[0]);
-        if (v.n != 3)
-            fail(loc(at), "expected a 3-component vector for " + std::string(what) + ", found " +
-                              (v.isScalar() ? std::string("a number") : std::to_string(v.n) + " components"));
-        for (int i = 0; i < 3; ++i)
-            if (!std::isfinite(v.c[i])) fail(loc(at), std::string(what) + " has a non-finite component");
-        return {v.c[0], v.c[1], v.c[2]};
-    }
-
-    // ---- colours -------------------------------------------------------------------------------
+    // ---- colours    // ---- colours -------------------------------------------------------------------------------
     // `color` / `colour` is optional; then rgb / rgbf / rgbt / rgbft and a vector (or a bare vector).
     void colorSpec(Material& m) {
         if (isIdent("color") || isIdent("colour")) advance();
@@ -345,35 +92,6 @@ private:
         Material m;
         colorSpec(m);
         return m.color;
-    }
-
-    // ---- blocks -----------------------------------------------------------------------------------
-    // Calls item() for each entry of a { } block until the closing brace.
-    template <class F>
-    void block(const Token& owner, F&& item) {
-        const Token open = tok_;
-        expectSymbol('{', "after '" + std::string(owner.text) + "'");
-        for (;;) {
-            if (isSymbol('}')) {
-                advance();
-                return;
-            }
-            if (tok_.kind == TokenKind::End)
-                fail(loc(open), "'{' of '" + std::string(owner.text) + "' is never closed (end of file reached)");
-            item();
-        }
-    }
-    [[noreturn]] void unknown(std::string_view where) {
-        if (tok_.kind == TokenKind::Identifier)
-            error("unknown keyword " + describe(tok_) + " in " + std::string(where));
-        error("unexpected " + describe(tok_) + " in " + std::string(where));
-    }
-    bool unsupportedHere() {
-        if (tok_.kind == TokenKind::Identifier && povrayKeywords().count(tok_.text)) {
-            skipUnsupported();
-            return true;
-        }
-        return false;
     }
 
     void topLevel() {
@@ -922,9 +640,9 @@ private:
             o.p0 = vmin(a, b);
             o.p1 = vmax(a, b);
         } else if (name == "mesh") {
-            meshTriangles(o, kw);
+            attachMesh(o, readMeshTriangles(*this), kw);
         } else if (name == "mesh2") {
-            mesh2Sections(o, kw);
+            attachMesh(o, readMesh2Sections(*this), kw);
         } else if (name == "obj_mesh") {
             objMesh(o);
         } else {
@@ -968,141 +686,6 @@ private:
         o.type = ShapeType::Mesh;
         o.mesh = mesh.get();
         scene_.meshes.push_back(std::move(mesh));
-    }
-
-    // mesh { triangle { <a>, <b>, <c> [uv_vectors <uv>, <uv>, <uv>] }
-    //        smooth_triangle { <a>, <na>, <b>, <nb>, <c>, <nc> [uv_vectors ...] } ... }
-    void meshTriangles(Object& o, const Token& kw) {
-        auto mesh = std::make_unique<Mesh>();
-        struct Corner { Vec3 p, n; double u = 0, v = 0; };
-        std::vector<Corner> corners;
-        bool anySmooth = false, anyUV = false;
-        std::vector<uint8_t> smooth;
-        while (isIdent("triangle") || isIdent("smooth_triangle")) {
-            const Token tri = tok_;
-            const bool isSmooth = isIdent("smooth_triangle");
-            advance();
-            Corner c[3];
-            bool hasUV = false;
-            block(tri, [&] {
-                if (hasUV) unknown(std::string(tri.text));
-                for (int k = 0; k < 3; ++k) {
-                    skipCommas();
-                    c[k].p = vector3("mesh vertex");
-                    if (isSmooth) {
-                        skipCommas();
-                        const Token at = tok_;
-                        c[k].n = vector3("mesh vertex normal");
-                        if (length(c[k].n) == 0) fail(loc(at), "vertex normal has zero length");
-                    }
-                }
-                skipCommas();
-                if (isIdent("uv_vectors")) {
-                    advance();
-                    for (int k = 0; k < 3; ++k) {
-                        skipCommas();
-                        const Token at = tok_;
-                        const Value uv = expr();
-                        if (uv.n != 2) fail(loc(at), "uv_vectors takes 2-component vectors <u, v>");
-                        c[k].u = uv.c[0];
-                        c[k].v = uv.c[1];
-                    }
-                    hasUV = true;
-                }
-                skipCommas();
-                if (!isSymbol('}')) unknown(std::string(tri.text));
-            });
-            if (!isSmooth) {
-                const Vec3 n = cross(c[1].p - c[0].p, c[2].p - c[0].p);
-                for (Corner& k : c) k.n = length(n) > 0 ? normalize(n) : Vec3{0, 0, 1};
-            }
-            anySmooth |= isSmooth;
-            anyUV |= hasUV;
-            for (const Corner& k : c) corners.push_back(k);
-        }
-        for (size_t i = 0; i < corners.size(); ++i) {
-            const Corner& k = corners[i];
-            mesh->positions.insert(mesh->positions.end(), {float(k.p.x), float(k.p.y), float(k.p.z)});
-            mesh->indices.push_back(uint32_t(i));
-            if (anySmooth) {
-                const Vec3 n = normalize(k.n);
-                mesh->normals.insert(mesh->normals.end(), {float(n.x), float(n.y), float(n.z)});
-                mesh->normalIndices.push_back(uint32_t(i));
-            }
-            if (anyUV) {
-                mesh->uvs.insert(mesh->uvs.end(), {float(k.u), float(k.v)});
-                mesh->uvIndices.push_back(uint32_t(i));
-            }
-        }
-        attachMesh(o, std::move(mesh), kw);
-    }
-
-    // NAME { N, item, item, ... } with exactly N items of `width` components (3 or 2).
-    template <class F>
-    void countedList(const char* name, int width, F&& each) {
-        const Token kw = tok_;
-        advance();
-        block(kw, [&] {
-            const Token at = tok_;
-            const double n = number(std::string(name) + " count");
-            if (n < 0 || n != std::floor(n) || n > 4294967295.0)
-                fail(loc(at), std::string(name) + " count must be a whole number from 0 to 4294967295");
-            for (size_t i = 0; i < size_t(n); ++i) {
-                skipCommas();
-                const Token item = tok_;
-                if (isSymbol('}')) fail(loc(item), std::string(name) + " has fewer items than its count " + std::to_string(size_t(n)));
-                const Value v = expr();
-                if (v.n != width) fail(loc(item), std::string(name) + " items must be " + std::to_string(width) + "-component vectors");
-                each(v, item);
-            }
-            skipCommas();
-            if (!isSymbol('}')) fail(loc(tok_), std::string(name) + " has more items than its count " + std::to_string(size_t(n)));
-        });
-    }
-
-    // mesh2 { vertex_vectors { } [normal_vectors { }] [uv_vectors { }] face_indices { }
-    //         [normal_indices { }] [uv_indices { }] }, zero-based indices.
-    void mesh2Sections(Object& o, const Token& kw) {
-        auto mesh = std::make_unique<Mesh>();
-        Mesh& m = *mesh;
-        auto toIndex = [&](const Value& v, const Token& at, std::vector<uint32_t>& out) {
-            for (int k = 0; k < 3; ++k) {
-                if (v.c[k] < 0 || v.c[k] != std::floor(v.c[k]) || v.c[k] > 4294967295.0)
-                    fail(loc(at), "mesh2 indices must be whole numbers from 0 to 4294967295");
-                out.push_back(uint32_t(v.c[k]));
-            }
-        };
-        for (;;) {
-            skipCommas();
-            if (isIdent("vertex_vectors")) {
-                countedList("vertex_vectors", 3, [&](const Value& v, const Token&) {
-                    m.positions.insert(m.positions.end(), {float(v.c[0]), float(v.c[1]), float(v.c[2])});
-                });
-            } else if (isIdent("normal_vectors")) {
-                countedList("normal_vectors", 3, [&](const Value& v, const Token& at) {
-                    Vec3 n{v.c[0], v.c[1], v.c[2]};
-                    if (length(n) == 0) fail(loc(at), "normal_vectors entry has zero length");
-                    n = normalize(n);
-                    m.normals.insert(m.normals.end(), {float(n.x), float(n.y), float(n.z)});
-                });
-            } else if (isIdent("uv_vectors")) {
-                countedList("uv_vectors", 2, [&](const Value& v, const Token&) {
-                    m.uvs.insert(m.uvs.end(), {float(v.c[0]), float(v.c[1])});
-                });
-            } else if (isIdent("face_indices")) {
-                countedList("face_indices", 3, [&](const Value& v, const Token& at) { toIndex(v, at, m.indices); });
-            } else if (isIdent("normal_indices")) {
-                countedList("normal_indices", 3, [&](const Value& v, const Token& at) { toIndex(v, at, m.normalIndices); });
-            } else if (isIdent("uv_indices")) {
-                countedList("uv_indices", 3, [&](const Value& v, const Token& at) { toIndex(v, at, m.uvIndices); });
-            } else {
-                break;
-            }
-        }
-        // Without explicit index lists, normals and uvs follow the vertex indices (POV-Ray).
-        if (!m.normals.empty() && m.normalIndices.empty()) m.normalIndices = m.indices;
-        if (!m.uvs.empty() && m.uvIndices.empty()) m.uvIndices = m.indices;
-        attachMesh(o, std::move(mesh), kw);
     }
 
     // obj_mesh { "file.obj" modifiers }: an OBJ file (relative to the scene's folder). Before the
@@ -1149,15 +732,9 @@ private:
         scene_.meshes.push_back(std::move(mesh));
     }
 
-    Lexer lex_;
-    const ParseOptions& opt_;
-    Token tok_;
     Scene scene_;
-    std::map<std::string, int> warnedCount_;
     std::map<std::string, int> textureIndex_;
     double v12_[12] = {};
-    static constexpr int kMaxNesting = 256;  ///< parentheses, vectors and signs inside one expression
-    int nesting_ = 0;
 };
 
 }  // namespace
