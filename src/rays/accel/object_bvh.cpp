@@ -7,8 +7,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "rays/accel/binned_sah.h"
-#include "rays/accel/task_pool.h"
 #include "rays/accel/wide_collapse.h"
 
 namespace rays {
@@ -61,18 +59,11 @@ void ObjectBvh::build(const std::vector<Prim>& prims) {
         refs[i].id = uint32_t(i);
         refs[i].pad = 0;
     }
-    SahSettings settings;
-    settings.blockSize = kBlockSize;
-    settings.maxLeafSize = kBlockSize;
-    BinaryBvh bin = buildBinnedSah(refs, settings, pool);
-    Collapser collapse(bin, nodes_, kMaxLeafBlocks);
-    collapse.run();
-    nodes_.shrink_to_fit();
-    bin = {};
+    const WideTree tree = buildWideTree(refs, pool, nodes_);
 
-    blocks_.resize(collapse.blockCount);
+    blocks_.resize(tree.blockCount);
     spheres_.assign(blocks_.size() * kBlockSize, ExactSphere{{0, 0, 0}, -1});
-    for (const Collapser::LeafJob& job : collapse.leaves) {
+    for (const Collapser::LeafJob& job : tree.leaves) {
         for (uint32_t k = 0; k < job.count; k += kBlockSize) {
             objbvh::ShapeBlock& b = blocks_[job.firstBlock + k / kBlockSize];
             for (uint32_t lane = 0; lane < uint32_t(kBlockSize); ++lane) {

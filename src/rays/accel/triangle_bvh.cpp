@@ -80,25 +80,15 @@ void TriangleBvh::build(const float* positions, size_t vertexCount, const uint32
     valid = {};
     if (n == 0) return;
 
-    SahSettings settings;
-    settings.blockSize = kBlockSize;
-    settings.maxLeafSize = kBlockSize;
-
-    BinaryBvh bin = buildBinnedSah(refs, settings, pool);
-
-    Collapser collapse(bin, nodes_, kMaxLeafBlocks);
-    collapse.run();
-    nodes_.shrink_to_fit();
-    const BinaryNode& root = bin.nodes[bin.root];
+    const WideTree tree = buildWideTree(refs, pool, nodes_);
     for (int a = 0; a < 3; ++a) {
-        lo_[a] = root.lo[a];
-        hi_[a] = root.hi[a];
+        lo_[a] = tree.lo[a];
+        hi_[a] = tree.hi[a];
     }
-    bin = {};
 
     // Triangle blocks, in parallel (each leaf writes only its own blocks).
-    blocks_.resize(collapse.blockCount);
-    const std::vector<Collapser::LeafJob>& jobs = collapse.leaves;
+    blocks_.resize(tree.blockCount);
+    const std::vector<Collapser::LeafJob>& jobs = tree.leaves;
     const size_t jobChunk = 4096;
     pool.run((jobs.size() + jobChunk - 1) / jobChunk, [&](size_t c) {
         const size_t end = std::min(jobs.size(), (c + 1) * jobChunk);

@@ -76,4 +76,23 @@ void Collapser::fill(uint32_t w, uint32_t b) {
         if (!isLeaf(refs[i])) fill(refs[i], kids[i]);
 }
 
+WideTree buildWideTree(HugeArray<PrimRef>& refs, TaskPool& pool, Collapser::NodeVector& nodes) {
+    SahSettings settings;
+    settings.blockSize = kBlockSize;
+    settings.maxLeafSize = kBlockSize;
+    const BinaryBvh bin = buildBinnedSah(refs, settings, pool);
+    Collapser collapse(bin, nodes, kMaxLeafBlocks);
+    collapse.run();
+    nodes.shrink_to_fit();
+    WideTree tree;
+    tree.leaves = std::move(collapse.leaves);
+    tree.blockCount = collapse.blockCount;
+    const BinaryNode& root = bin.nodes[bin.root];
+    for (int a = 0; a < 3; ++a) {
+        tree.lo[a] = root.lo[a];
+        tree.hi[a] = root.hi[a];
+    }
+    return tree;
+}
+
 }  // namespace rays::tribvh

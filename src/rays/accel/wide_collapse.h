@@ -7,6 +7,7 @@
 
 #include "rays/accel/binned_sah.h"
 #include "rays/accel/huge_pages.h"
+#include "rays/accel/task_pool.h"
 #include "rays/accel/triangle_bvh_layout.h"
 
 namespace rays::tribvh {
@@ -36,5 +37,16 @@ private:
     NodeVector& nodes_;
     uint32_t leafBlockCap_;
 };
+
+/// The result of buildWideTree besides the nodes: where each leaf's primitives go and the bounds.
+struct WideTree {
+    std::vector<Collapser::LeafJob> leaves;  ///< block ranges per leaf, refs ranges in leaf order
+    uint32_t blockCount = 0;
+    float lo[3], hi[3];  ///< bounds of all refs
+};
+
+/// Builds the 8-wide tree over refs (non-empty; reordered): binned SAH with leaves of at most
+/// kBlockSize primitives (one block), collapsed into nodes.
+WideTree buildWideTree(HugeArray<PrimRef>& refs, TaskPool& pool, Collapser::NodeVector& nodes);
 
 }  // namespace rays::tribvh
