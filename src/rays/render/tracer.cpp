@@ -41,6 +41,25 @@ double areaOffset(int i, int n, bool jitter, SampleRng& rng) {
     return std::clamp(s, -0.5, 0.5);
 }
 
+// Course weights of a hit: local (1−f)(1−r), reflection (1−f)·r + f·F, transmission f·(1−F);
+// under total internal reflection the transmitted weight goes to the reflection. T is the
+// refracted direction when wTrans > 0.
+struct SecondaryWeights {
+    double wLocal, wRefl, wTrans;
+    Vec3 T;
+};
+
+SecondaryWeights secondaryWeights(const Material& m, Vec3 dir, Vec3 N, bool entering, bool fresnel) {
+    const double F = fresnel ? schlickFresnel(m.ior, dot(N, -dir)) : 0.0;
+    SecondaryWeights w{(1 - m.filter) * (1 - m.reflection), (1 - m.filter) * m.reflection + m.filter * F,
+                       m.filter * (1 - F), Vec3{}};
+    if (w.wTrans > 0 && !refractDir(dir, N, entering ? 1.0 / m.ior : m.ior, w.T)) {
+        w.wRefl += w.wTrans;
+        w.wTrans = 0;
+    }
+    return w;
+}
+
 }  // namespace
 
 Hit Tracer::firstHit(const Ray& ray) const { return bvh_.closest(scene_.objects, ray, kTMin, kInfinity); }
@@ -195,23 +214,15 @@ void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followS
         if (countShadows) out.blockedLights = int16_t(blockedLightsAt(P, N, ctx));
     }
     if (!followSecondary || depth >= settings_.maxDepth || out.count >= PathInfo::kMaxIds) return;
-    const Material& m = o.material;
-    const double F = settings_.fresnel ? schlickFresnel(m.ior, dot(N, -ray.dir)) : 0.0;
-    double wRefl = (1 - m.filter) * m.reflection + m.filter * F;
-    double wTrans = m.filter * (1 - F);
-    Vec3 T;
-    if (wTrans > 0 && !refractDir(ray.dir, N, entering ? 1.0 / m.ior : m.ior, T)) {
-        wRefl += wTrans;
-        wTrans = 0;
-    }
-    if (wRefl > 0) {
+    const SecondaryWeights w = secondaryWeights(o.material, ray.dir, N, entering, settings_.fresnel);
+    if (w.wRefl > 0) {
         const Vec3 R = normalize(reflect(ray.dir, N));
         ++ctx.stats.secondaryRays;
         probeRec(Ray{P + kSurfaceOffset * R, R}, depth + 1, false, true, ctx, out);
     }
-    if (wTrans > 0) {
+    if (w.wTrans > 0) {
         ++ctx.stats.secondaryRays;
-        probeRec(Ray{P + kSurfaceOffset * T, T}, depth + 1, false, true, ctx, out);
+        probeRec(Ray{P + kSurfaceOffset * w.T, w.T}, depth + 1, false, true, ctx, out);
     }
 }
 
@@ -298,12 +309,9 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
         return res;
     }
 
-    // Weights (course): local (1−f)(1−r), reflection (1−f)·r + f·F, transmission f·(1−F).
-    const double filter = m.filter, refl = m.reflection;
-    const double F = settings_.fresnel ? schlickFresnel(m.ior, dot(N, V)) : 0.0;
-    double wLocal = (1 - filter) * (1 - refl);
-    double wRefl = (1 - filter) * refl + filter * F;
-    double wTrans = filter * (1 - F);
+    const SecondaryWeights w = secondaryWeights(m, ray.dir, N, entering, settings_.fresnel);
+    const double wLocal = w.wLocal, wRefl = w.wRefl, wTrans = w.wTrans;
+    const Vec3& T = w.T;
 
     Vec3 ambient, diffuse, specular;
     int blocked = 0;
@@ -323,14 +331,6 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
 
     Vec3 reflColor, transColor;
     const bool recurse = f.depth < settings_.maxDepth;
-    Vec3 T;
-    if (wTrans > 0) {
-        const double eta = entering ? 1.0 / m.ior : m.ior;
-        if (!refractDir(ray.dir, N, eta, T)) {  // total internal reflection
-            wRefl += wTrans;
-            wTrans = 0;
-        }
-    }
     Frame child = f;
     child.depth = f.depth + 1;
     if (recurse && wRefl > 0) {
