@@ -93,6 +93,16 @@ void checkOutputDirectory(const std::string& output) {
     if (std::filesystem::is_directory(output, ec)) failFile(output, "is a directory");
 }
 
+// An image the render will write (what: "output" or "mask"): a known format, in a folder that
+// exists, and not one of the job's input files.
+void checkImageOutput(const std::string& path, const char* what, const RenderJob& job) {
+    if (!isSupportedImageExtension(path))
+        failFile(path, std::string("unsupported ") + what + " image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
+    checkOutputDirectory(path);
+    checkOutputIsNotInput(path, job.scenePath);
+    checkOutputIsNotInput(path, job.objPath);
+}
+
 class ProgressBar {
 public:
     explicit ProgressBar(bool enabled) : enabled_(enabled), start_(Clock::now()) {}
@@ -167,18 +177,8 @@ int runRender(const RenderJob& job) {
     InterruptScope interruptScope;  // Ctrl-C / SIGTERM stop the render cleanly (exit 130 / 143)
     const RenderSettings& s = job.settings;
     checkImageSize(s.width, s.height);
-    if (!isSupportedImageExtension(job.outputPath))
-        failFile(job.outputPath, "unsupported output image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
-    checkOutputDirectory(job.outputPath);
-    checkOutputIsNotInput(job.outputPath, job.scenePath);
-    checkOutputIsNotInput(job.outputPath, job.objPath);
-    if (!job.edges.maskPath.empty()) {
-        if (!isSupportedImageExtension(job.edges.maskPath))
-            failFile(job.edges.maskPath, "unsupported mask image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
-        checkOutputDirectory(job.edges.maskPath);
-        checkOutputIsNotInput(job.edges.maskPath, job.scenePath);
-        checkOutputIsNotInput(job.edges.maskPath, job.objPath);
-    }
+    checkImageOutput(job.outputPath, "output", job);
+    if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
 
     auto t0 = Clock::now();
     const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation);
@@ -205,7 +205,6 @@ int runRender(const RenderJob& job) {
     t0 = Clock::now();
     TraceStats stats;
     ProgressBar bar(!job.quiet && isatty(STDERR_FILENO));
-    ImageF img;
     const bool reuse = edges.enabled() && !edges.linesOnly && renderRecordsAreCentred(scene, s);
     std::unique_ptr<LineRecords> records;
     RecordFn onRecord;
@@ -213,8 +212,8 @@ int runRender(const RenderJob& job) {
         records = std::make_unique<LineRecords>(scene, s.width, s.height);
         onRecord = [&](int x, int y, const PathInfo& info) { records->store(x, y, info); };
     }
-    img = edges.linesOnly ? ImageF(s.width, s.height)
-                          : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord);
+    ImageF img = edges.linesOnly ? ImageF(s.width, s.height)
+                                 : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord);
     stopIfInterrupted(job, &scene, &img);
     if (!job.post.empty()) img = applyFilters(img, job.post, BorderMode::Clamp, s.threads);
     const double renderMs = msSince(t0);
