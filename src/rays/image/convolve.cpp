@@ -216,6 +216,42 @@ struct Chunks {
     }
 };
 
+// acc = Σ_i k[i] · tap(i)[pixel] over one block, tap(i) pointing at tap i's source for the
+// block's first pixel. A symmetric kernel adds each mirrored pair of sources first (half the
+// multiplications).
+template <class Acc, class Tap>
+[[gnu::always_inline]] inline void accumulateTaps(Acc& acc, const std::vector<float>& k, bool symmetric, Tap&& tap) {
+    constexpr int C = Acc::C;
+    const int n = int(k.size());
+    if (symmetric) {
+        const int mid = n / 2;
+        const float* centre = tap(mid);
+        const float kc = k[size_t(mid)];
+        acc.each([&](float* __restrict v, int off) {
+            for (int l = 0; l < C; ++l) v[l] = kc * centre[off + l];
+        });
+        for (int j = 0; j < mid; ++j) {
+            const float* u = tap(j);
+            const float* z = tap(n - 1 - j);
+            const float kj = k[size_t(j)];
+            acc.each([&](float* __restrict v, int off) {
+                for (int l = 0; l < C; ++l) v[l] += kj * (u[off + l] + z[off + l]);
+            });
+        }
+    } else {
+        acc.each([&](float* __restrict v, int) {
+            for (int l = 0; l < C; ++l) v[l] = 0.0f;
+        });
+        for (int j = 0; j < n; ++j) {
+            const float* u = tap(j);
+            const float kj = k[size_t(j)];
+            acc.each([&](float* __restrict v, int off) {
+                for (int l = 0; l < C; ++l) v[l] += kj * u[off + l];
+            });
+        }
+    }
+}
+
 bool isSymmetric(const std::vector<float>& k) {
     for (size_t i = 0; i < k.size() / 2; ++i)
         if (k[i] != k[k.size() - 1 - i]) return false;
@@ -321,7 +357,7 @@ void convolveSeparable(const PlanarImage& src, PlanarImage& dst, const std::vect
     prepareDst(src, dst);
     const int w = src.width;
     const int kw = int(horizontal.size()), kh = int(vertical.size());
-    const int rx = kw / 2, ry = kh / 2;
+    const int rx = kw / 2;
     // Convolution = correlation with the reversed weights.
     const std::vector<float> hf(horizontal.rbegin(), horizontal.rend());
     const std::vector<float> vf(vertical.rbegin(), vertical.rend());
@@ -341,66 +377,15 @@ void convolveSeparable(const PlanarImage& src, PlanarImage& dst, const std::vect
             const float* const* r = in.rows();
             forEachBlockOverlapping(padWidth, [&](auto width, int x) {
                 Chunks<decltype(width)::value> acc;
-                constexpr int C = decltype(acc)::C;
-                if (vSym) {
-                    const float* centre = r[ry] + x;
-                    const float kc = vf[size_t(ry)];
-                    acc.each([&](float* __restrict v, int off) {
-                        for (int l = 0; l < C; ++l) v[l] = kc * centre[off + l];
-                    });
-                    for (int j = 0; j < ry; ++j) {
-                        const float* u = r[j] + x;
-                        const float* z = r[kh - 1 - j] + x;
-                        const float k = vf[size_t(j)];
-                        acc.each([&](float* __restrict v, int off) {
-                            for (int l = 0; l < C; ++l) v[l] += k * (u[off + l] + z[off + l]);
-                        });
-                    }
-                } else {
-                    acc.each([&](float* __restrict v, int) {
-                        for (int l = 0; l < C; ++l) v[l] = 0.0f;
-                    });
-                    for (int j = 0; j < kh; ++j) {
-                        const float* u = r[j] + x;
-                        const float k = vf[size_t(j)];
-                        acc.each([&](float* __restrict v, int off) {
-                            for (int l = 0; l < C; ++l) v[l] += k * u[off + l];
-                        });
-                    }
-                }
+                accumulateTaps(acc, vf, vSym, [&](int j) { return r[j] + x; });
                 acc.store(pad + x, false);
             });
             // Horizontal pass from the padded row.
             float* out = dst.plane(c) + size_t(y) * size_t(w) + size_t(xs);
             forEachBlockOverlapping(xe - xs, [&](auto width, int x0) {
                 Chunks<decltype(width)::value> acc;
-                constexpr int C = decltype(acc)::C;
                 const float* s = pad + x0;
-                if (hSym) {
-                    const float kc = hf[size_t(rx)];
-                    acc.each([&](float* __restrict v, int off) {
-                        for (int l = 0; l < C; ++l) v[l] = kc * s[rx + off + l];
-                    });
-                    for (int i = 0; i < rx; ++i) {
-                        const float k = hf[size_t(i)];
-                        const float* u = s + i;
-                        const float* z = s + (kw - 1 - i);
-                        acc.each([&](float* __restrict v, int off) {
-                            for (int l = 0; l < C; ++l) v[l] += k * (u[off + l] + z[off + l]);
-                        });
-                    }
-                } else {
-                    acc.each([&](float* __restrict v, int) {
-                        for (int l = 0; l < C; ++l) v[l] = 0.0f;
-                    });
-                    for (int i = 0; i < kw; ++i) {
-                        const float k = hf[size_t(i)];
-                        const float* u = s + i;
-                        acc.each([&](float* __restrict v, int off) {
-                            for (int l = 0; l < C; ++l) v[l] += k * u[off + l];
-                        });
-                    }
-                }
+                accumulateTaps(acc, hf, hSym, [&](int i) { return s + i; });
                 acc.store(out + x0, absolute);
             });
         }
