@@ -1,6 +1,5 @@
 #include "rays/image/convolve.h"
 
-#include <sys/mman.h>
 
 #include <algorithm>
 #include <bit>
@@ -279,30 +278,6 @@ inline float sqrtNewton(float s) {
 
 }  // namespace
 
-namespace detail {
-
-// Blocks from this size on get huge pages: first-touch page faults of a 4096x4096 float plane
-// (64 MiB) cost ~180 ms with 4 KiB pages on the benchmark VM and ~7 ms with 2 MiB pages.
-constexpr size_t kHugeThreshold = size_t(4) << 20;
-constexpr size_t kHugePage = size_t(2) << 20;
-
-void* allocatePlaneMemory(size_t bytes) {
-    if (bytes < kHugeThreshold) return ::operator new(bytes);
-    const size_t size = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-    void* p = std::aligned_alloc(kHugePage, size);
-    if (!p) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-    ::madvise(p, size, MADV_HUGEPAGE);  // advice only: failure just means 4 KiB pages
-#endif
-    return p;
-}
-
-void freePlaneMemory(void* p, size_t bytes) noexcept {
-    if (bytes < kHugeThreshold) ::operator delete(p);
-    else std::free(p);
-}
-
-}  // namespace detail
 
 int borderIndex(int i, int n, BorderMode mode) {
     if (i >= 0 && i < n) return i;
