@@ -142,6 +142,22 @@ TEST(Geometry, TransformedBoundsContainTheShape) {
     }
 }
 
+namespace {
+
+// The nearest hit by testing every object (t and object only).
+Hit bruteForceClosest(const std::vector<Object>& objects, const Ray& ray, double tMin) {
+    Hit brute;
+    ShapeHit sh;
+    for (size_t k = 0; k < objects.size(); ++k)
+        if (intersect(objects[k], ray, tMin, brute.t, sh)) {
+            brute.t = sh.t;
+            brute.object = int(k);
+        }
+    return brute;
+}
+
+}  // namespace
+
 TEST(Bvh, MatchesBruteForceOnRandomRays) {
     std::mt19937 rng(42);
     std::uniform_real_distribution<double> u(-10, 10), r(0.05, 1.0), ang(0, 360);
@@ -169,13 +185,7 @@ TEST(Bvh, MatchesBruteForceOnRandomRays) {
     int hits = 0;
     for (int i = 0; i < 20000; ++i) {
         const Ray ray{{u(rng), u(rng), u(rng)}, normalize(Vec3{u(rng), u(rng), u(rng)})};
-        Hit brute;
-        ShapeHit sh;
-        for (size_t k = 0; k < objects.size(); ++k)
-            if (intersect(objects[k], ray, 1e-6, brute.t, sh)) {
-                brute.t = sh.t;
-                brute.object = int(k);
-            }
+        const Hit brute = bruteForceClosest(objects, ray, 1e-6);
         const Hit fast = bvh.closest(objects, ray, 1e-6, kInfinity);
         ASSERT_EQ(fast.object, brute.object) << "ray " << i;
         if (brute.valid()) {
@@ -234,13 +244,7 @@ TEST(Bvh, SphereRejectTestNeverLosesAHit) {
             }
         }
         const Ray ray{origin, dir * std::pow(10.0, scaleExp(rng))};
-        Hit brute;
-        ShapeHit sh;
-        for (size_t k = 0; k < objects.size(); ++k)
-            if (intersect(objects[k], ray, 1e-9, brute.t, sh)) {
-                brute.t = sh.t;
-                brute.object = int(k);
-            }
+        const Hit brute = bruteForceClosest(objects, ray, 1e-9);
         const Hit fast = bvh.closest(objects, ray, 1e-9, kInfinity);
         ASSERT_EQ(fast.object, brute.object) << "ray " << i;
         bool blocked = false;
