@@ -54,6 +54,14 @@ bool project(const Camera& c, Vec3 p, double& x, double& y) {
 using PixelSet = std::set<std::pair<int, int>>;
 
 // Pixels containing visible samples of a curve. visible(p) decides visibility.
+// The circle centre + cos(2πu)·a + sin(2πu)·b, u in [0, 1), as a curve for truthPixels.
+std::function<Vec3(double)> circle(Vec3 centre, Vec3 a, Vec3 b) {
+    return [=](double u) {
+        const double angle = 2 * std::numbers::pi * u;
+        return centre + std::cos(angle) * a + std::sin(angle) * b;
+    };
+}
+
 PixelSet truthPixels(const Camera& cam, const std::function<Vec3(double)>& curve,
                      const std::function<bool(Vec3)>& visible = {}) {
     PixelSet out;
@@ -125,10 +133,7 @@ TEST_P(EdgeMethods, SphereSilhouetteIsItsProjectedCircle) {
     const Scene scene = sceneFrom(std::string(kCamera) + "sphere { <0, 0, 0>, 2 pigment { color rgb 1 } }\n");
     // Tangent circle seen from distance 10: plane z = r²/D, radius r·√(1 − r²/D²).
     const double z = 0.4, rad = 2 * std::sqrt(1 - 0.04);
-    const PixelSet truth = truthPixels(scene.cameras[0], [&](double u) {
-        const double a = 2 * std::numbers::pi * u;
-        return Vec3{rad * std::cos(a), rad * std::sin(a), z};
-    });
+    const PixelSet truth = truthPixels(scene.cameras[0], circle({0, 0, z}, {rad, 0, 0}, {0, rad, 0}));
     expectGood(score(lines(scene, kEdgeSilhouette, GetParam()), truth), "silhouette");
 }
 
@@ -138,10 +143,7 @@ TEST_P(EdgeMethods, IntersectionCircleOfTwoSpheres) {
         "sphere { <-0.6, 0, 0>, 1 pigment { color rgb 1 } }\n"
         "sphere { <0.6, 0, 0>, 1 pigment { color rgb <1, 0, 0> } }\n");
     const Bvh bvh(scene.objects);
-    const PixelSet truth = truthPixels(scene.cameras[0], [](double u) {
-        const double a = 2 * std::numbers::pi * u;
-        return Vec3{0, 0.8 * std::cos(a), 0.8 * std::sin(a)};
-    }, visibleIn(scene, bvh));
+    const PixelSet truth = truthPixels(scene.cameras[0], circle({0, 0, 0}, {0, 0.8, 0}, {0, 0, 0.8}), visibleIn(scene, bvh));
     expectGood(score(lines(scene, kEdgeIntersection, GetParam()), truth), "intersection");
 }
 
@@ -179,10 +181,7 @@ TEST_P(EdgeMethods, SphereOutlineSeenInAMirror) {
         "plane { <0, 0, 1>, 0 pigment { color rgb 1 } finish { reflection 1 } }\n"
         "sphere { <0, 0, 8>, 1 pigment { color rgb <1, 0, 0> } finish { ambient 1 } }\n");
     const double D = 13, z = -8 + 1 / D, rad = std::sqrt(1 - 1 / (D * D));
-    const PixelSet truth = truthPixels(scene.cameras[0], [&](double u) {
-        const double a = 2 * std::numbers::pi * u;
-        return Vec3{rad * std::cos(a), rad * std::sin(a), z};
-    });
+    const PixelSet truth = truthPixels(scene.cameras[0], circle({0, 0, z}, {rad, 0, 0}, {0, rad, 0}));
     // Projection through the mirror equals projecting the virtual point with the same camera.
     expectGood(score(lines(scene, kEdgeReflection, GetParam()), truth), "reflected outline");
 }
@@ -198,14 +197,8 @@ TEST_P(EdgeMethods, ShadowBoundaryOfASphereOnAPlane) {
         "sphere { <0, 2, 0>, 1 pigment { color rgb 1 } finish { diffuse 1 } }\n");
     const Bvh bvh(scene.objects);
     const double shadowR = 4 * std::tan(std::numbers::pi / 6);
-    PixelSet truth = truthPixels(scene.cameras[0], [&](double u) {
-        const double a = 2 * std::numbers::pi * u;
-        return Vec3{shadowR * std::cos(a), 0, shadowR * std::sin(a)};
-    }, visibleIn(scene, bvh));
-    const PixelSet terminator = truthPixels(scene.cameras[0], [](double u) {
-        const double a = 2 * std::numbers::pi * u;
-        return Vec3{0.866 * std::cos(a), 2.5, 0.866 * std::sin(a)};
-    }, visibleIn(scene, bvh));
+    PixelSet truth = truthPixels(scene.cameras[0], circle({0, 0, 0}, {shadowR, 0, 0}, {0, 0, shadowR}), visibleIn(scene, bvh));
+    const PixelSet terminator = truthPixels(scene.cameras[0], circle({0, 2.5, 0}, {0.866, 0, 0}, {0, 0, 0.866}), visibleIn(scene, bvh));
     truth.insert(terminator.begin(), terminator.end());
     expectGood(score(lines(scene, kEdgeShadow, GetParam()), truth), "shadow boundary");
 }
