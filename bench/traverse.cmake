@@ -9,6 +9,7 @@ find_package(Threads REQUIRED)
 
 add_executable(bench_traverse ${CMAKE_CURRENT_LIST_DIR}/traverse.cpp)
 target_compile_options(bench_traverse PRIVATE ${RAYS_WARNINGS})
+target_include_directories(bench_traverse PRIVATE ${CMAKE_CURRENT_LIST_DIR}/../tests)  # support/icosphere.h
 target_link_libraries(bench_traverse PRIVATE rays_core embree tinyobjloader::tinyobjloader Threads::Threads)
 # Models and scenes live in shared/, beside the source tree.
 get_filename_component(RAYS_BENCH_SHARED_DIR "${CMAKE_CURRENT_LIST_DIR}/../../shared" ABSOLUTE)

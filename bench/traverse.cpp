@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "rays/accel/binned_sah.h"  // the scalar binary baseline of --ablation
+#include "support/icosphere.h"
 #include "rays/accel/triangle_bvh.h"
 
 #ifndef RAYS_SHARED_DIR
@@ -123,41 +124,16 @@ bool loadPovTriangles(const std::string& path, Mesh& m) {
 
 /// Displaced icosphere with 20 * 4^levels triangles (stand-in when a model file is missing).
 Mesh displacedIcosphere(int levels, const std::string& name) {
-    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    std::vector<V3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                         {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    std::vector<std::array<uint32_t, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                              {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                              {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                              {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (V3& p : v) p = normalize(p);
-    for (int l = 0; l < levels; ++l) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            const auto key = std::minmax(a, b);
-            const auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            v.push_back(normalize((v[a] + v[b]) * 0.5f));
-            return mid[key] = uint32_t(v.size() - 1);
-        };
-        std::vector<std::array<uint32_t, 3>> g;
-        for (const auto& tri : f) {
-            const uint32_t a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c = midpoint(tri[2], tri[0]);
-            g.push_back({tri[0], a, c});
-            g.push_back({tri[1], b, a});
-            g.push_back({tri[2], c, b});
-            g.push_back({a, b, c});
-        }
-        f.swap(g);
-    }
+    const test::Icosphere sphere = test::unitIcosphere(levels);
     Mesh m;
     m.name = name;
-    for (const V3& p : v) {
+    for (const auto& d : sphere.vertices) {
+        const V3 p{float(d[0]), float(d[1]), float(d[2])};
         const float r = 0.1f * (1.0f + 0.15f * std::sin(7 * p.x) * std::sin(9 * p.y) + 0.05f * std::sin(31 * p.z));
         const V3 q = p * r;
         m.pos.insert(m.pos.end(), {q.x, q.y, q.z});
     }
-    for (const auto& tri : f) m.idx.insert(m.idx.end(), tri.begin(), tri.end());
+    for (const auto& tri : sphere.faces) m.idx.insert(m.idx.end(), tri.begin(), tri.end());
     return m;
 }
 

@@ -7,11 +7,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <random>
 #include <vector>
 
 #include "rays/accel/triangle_bvh.h"
+#include "support/icosphere.h"
 
 using namespace rays;
 
@@ -41,48 +41,15 @@ struct Mesh {
 /// Closed icosphere, subdivided `levels` times (20 * 4^levels triangles), radius perturbed by up
 /// to `bumps` (relative) per vertex so the surface is not symmetric.
 Mesh icosphere(int levels, double bumps, uint32_t seed, double radius = 1.0, std::array<double, 3> c = {0, 0, 0}) {
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    std::vector<std::array<double, 3>> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                            {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    std::vector<std::array<uint32_t, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                              {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                              {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                              {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (auto& p : v) {
-        const double l = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-        for (double& x : p) x /= l;
-    }
-    for (int level = 0; level < levels; ++level) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            const auto key = std::minmax(a, b);
-            auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            std::array<double, 3> m;
-            for (int k = 0; k < 3; ++k) m[k] = (v[a][k] + v[b][k]) / 2;
-            const double l = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-            for (double& x : m) x /= l;
-            v.push_back(m);
-            return mid[key] = uint32_t(v.size() - 1);
-        };
-        std::vector<std::array<uint32_t, 3>> g;
-        for (const auto& tri : f) {
-            const uint32_t a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c2 = midpoint(tri[2], tri[0]);
-            g.push_back({tri[0], a, c2});
-            g.push_back({tri[1], b, a});
-            g.push_back({tri[2], c2, b});
-            g.push_back({a, b, c2});
-        }
-        f = g;
-    }
+    const test::Icosphere sphere = test::unitIcosphere(levels);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> bump(1.0 - bumps, 1.0);
     Mesh m;
-    for (const auto& p : v) {
+    for (const auto& p : sphere.vertices) {
         const double r = radius * bump(rng);
         m.addVertex(c[0] + r * p[0], c[1] + r * p[1], c[2] + r * p[2]);
     }
-    for (const auto& tri : f) m.addTriangle(tri[0], tri[1], tri[2]);
+    for (const auto& tri : sphere.faces) m.addTriangle(tri[0], tri[1], tri[2]);
     return m;
 }
 
