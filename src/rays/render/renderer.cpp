@@ -11,6 +11,7 @@
 
 #include "rays/math/sampling.h"
 #include "rays/render/sampler.h"
+#include "rays/render/worker_pool.h"
 
 namespace rays {
 namespace {
@@ -92,7 +93,7 @@ void parallelFor(int count, int threads, const std::function<void(int, int)>& bo
     std::atomic<int> next{0}, done{0};
     std::mutex m;
     std::condition_variable cv;
-    auto worker = [&](int w) {
+    const std::function<void(int)> worker = [&](int w) {
         for (int i = next.fetch_add(1); i < count && !cancelled(); i = next.fetch_add(1)) {
             body(i, w);
             if (done.fetch_add(1) + 1 == count) {
@@ -101,22 +102,25 @@ void parallelFor(int count, int threads, const std::function<void(int, int)>& bo
             }
         }
     };
-    std::vector<std::thread> pool;
-    for (int w = 1; w < n; ++w) pool.emplace_back(worker, w);
+    // Workers run on the process's pool threads (worker_pool.h), or on threads of their own when
+    // the pool is taken. With progress the calling thread only reports it: all n work elsewhere.
+    const int firstElsewhere = progress ? 0 : 1;
+    PoolJob job;
+    std::vector<std::thread> own;
+    if (n > firstElsewhere && !job.begin(firstElsewhere, n - firstElsewhere, worker))
+        for (int w = firstElsewhere; w < n; ++w) own.emplace_back(worker, w);
     if (progress) {
-        std::thread last(worker, 0);
         std::unique_lock<std::mutex> lock(m);
         while (done.load() < count && !cancelled()) {
             progress(double(done.load()) / std::max(1, count));
             cv.wait_for(lock, std::chrono::milliseconds(100));
         }
-        lock.unlock();
-        last.join();
-        progress(1.0);
     } else {
         worker(0);
     }
-    for (std::thread& t : pool) t.join();
+    job.wait();
+    for (std::thread& t : own) t.join();
+    if (progress) progress(1.0);
 }
 
 ViewSetup resolveView(const Scene& scene, const RenderSettings& s) {
