@@ -173,6 +173,50 @@ TEST_P(EdgeMethods, CubeEdgesAreCreasesAndOutline) {
     EXPECT_EQ(outside, 0.0f);
 }
 
+// The stencil decides taps between crease facets from the records' tangent planes.
+TEST(StencilTaps, CreasesNeedNoTapRays) {
+    const Scene scene = sceneFrom(std::string(kCamera) +
+                                  "box { <-1.5, -1.5, -1.5>, <1.5, 1.5, 1.5> rotate <25, 35, 0> pigment { color rgb 1 } }\n");
+    const Bvh bvh(scene.objects);
+    RenderSettings s;
+    s.width = kW;
+    s.height = kH;
+    EdgeSettings e;
+    e.types = kEdgeCrease;
+    TraceStats stats;
+    const LineCoverage lc = drawFeatureLines(scene, bvh, s, e, nullptr, stats);
+    float ink = 0;
+    for (float c : lc.coverage) ink += c;
+    EXPECT_GT(ink, 100.0f);
+    // Besides the pixel centres, rays only for taps next to the outline, where the background is
+    // among the four records (tracing every mixed tap takes about 1400).
+    EXPECT_GE(stats.primaryRays, uint64_t(kW) * kH);
+    EXPECT_LT(stats.primaryRays - uint64_t(kW) * kH, 100u);
+}
+
+// A shadow boundary on the one surface in view is placed on the plane's tangent plane: the taps
+// cast shadow rays only. The occluder is above and behind the camera.
+TEST(StencilTaps, ShadowBoundaryOnOneSurfaceNeedsOnlyShadowRays) {
+    const Scene scene = sceneFrom(
+        "camera { location <0, 20, 0> up <0, 0, -1> right <1.33333, 0, 0> look_at <0, 0, 0> }\n"
+        "light_source { <0, 30, 0> color rgb 1 }\n"
+        "plane { <0, 1, 0>, 0 pigment { color rgb 1 } finish { diffuse 1 } }\n"
+        "sphere { <0, 25, 0>, 1 pigment { color rgb 1 } }\n");
+    const Bvh bvh(scene.objects);
+    RenderSettings s;
+    s.width = kW;
+    s.height = kH;
+    EdgeSettings e;
+    e.types = kEdgeShadow;
+    TraceStats stats;
+    const LineCoverage lc = drawFeatureLines(scene, bvh, s, e, nullptr, stats);
+    EXPECT_EQ(stats.primaryRays, uint64_t(kW) * kH);
+    EXPECT_GT(stats.shadowRays, uint64_t(kW) * kH);
+    // The shadow of the sphere: a circle of radius 30·tan(asin(1/5)).
+    const double r = 30 * std::tan(std::asin(0.2));
+    expectGood(score(lc, truthPixels(scene.cameras[0], circle({0, 0, 0}, {r, 0, 0}, {0, 0, r}))), "shadow circle");
+}
+
 TEST_P(EdgeMethods, SphereOutlineSeenInAMirror) {
     // The camera looks at a mirror; the sphere is behind the camera and visible only reflected,
     // as a virtual sphere at z = −8 seen from 13 units away.

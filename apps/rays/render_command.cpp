@@ -5,10 +5,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <iostream>
 
 #include "rays/accel/bvh.h"
+#include "rays/accel/huge_pages.h"
 #include "rays/error.h"
 #include "rays/image/image.h"
 #include "rays/io/image_io.h"
@@ -165,6 +167,30 @@ void checkImageSize(int width, int height) {
                     " is too large (at most 65536 per side and 268435456 pixels)");
 }
 
+namespace {
+
+// Starts making the memory of the big per-pixel buffers present on a background thread while the
+// scene is parsed (one core is idle then): the render image and, when the command line asks for
+// lines, the line records and coverage. Capped so that a render the budget check will refuse
+// never gets that far. Errors here only mean no warm memory.
+void prewarmBuffers(const RenderJob& job) {
+    if (std::getenv("RAYS_NO_PREWARM")) return;
+    const RenderSettings& s = job.settings;
+    uint64_t perPixel = sizeof(Vec3);
+    // Line records, coverage and the three candidate masks.
+    if (!job.edges.types.empty() && job.edges.types != "none") perPixel += sizeof(EdgeRecord) + sizeof(float) + 3;
+    const double want = double(s.width) * double(s.height) * double(perPixel) + 4096.0 * 8;  // plus alignment slack per buffer
+    double cap = 256.0 * 1024 * 1024;
+    try {
+        cap = std::min(cap, double(memoryLimit()) / 4);
+    } catch (const Error&) {
+        return;  // a bad RAYS_MEMORY_LIMIT is reported by the budget check
+    }
+    tribvh::hugePrewarm(size_t(std::min(want, cap)));
+}
+
+}  // namespace
+
 Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation) {
     ParseOptions opt;
     opt.rotation = rotation;
@@ -180,6 +206,7 @@ int runRender(const RenderJob& job) {
     checkImageOutput(job.outputPath, "output", job);
     if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
 
+    prewarmBuffers(job);
     auto t0 = Clock::now();
     const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation);
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
@@ -197,6 +224,12 @@ int runRender(const RenderJob& job) {
     checkRenderBudget(s.width, s.height, resolveView(scene, s).samples, buffers);
     stopIfInterrupted(job, &scene, nullptr);
 
+    // The render records what each pixel centre saw for the lines when it can (centred samples);
+    // the surface ids those records need are computed while the BVH is built.
+    const bool reuse = edges.enabled() && !edges.linesOnly && renderRecordsAreCentred(scene, s);
+    std::future<SurfaceIds> surfaceIds;
+    if (reuse) surfaceIds = std::async(std::launch::async, [&scene] { return computeSurfaceIds(scene); });
+
     t0 = Clock::now();
     const Bvh bvh(scene.objects);
     const double buildMs = msSince(t0);
@@ -205,11 +238,10 @@ int runRender(const RenderJob& job) {
     t0 = Clock::now();
     TraceStats stats;
     ProgressBar bar(!job.quiet && isatty(STDERR_FILENO));
-    const bool reuse = edges.enabled() && !edges.linesOnly && renderRecordsAreCentred(scene, s);
     std::unique_ptr<LineRecords> records;
     RecordFn onRecord;
     if (reuse) {
-        records = std::make_unique<LineRecords>(scene, s.width, s.height);
+        records = std::make_unique<LineRecords>(surfaceIds.get(), s.width, s.height);
         onRecord = [&](int x, int y, const PathInfo& info) { records->store(x, y, info); };
     }
     ImageF img = edges.linesOnly ? ImageF(s.width, s.height)

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 
 #include "rays/npr/edge_classify.h"
 #include "rays/npr/stencil.h"
 #include "rays/npr/surfaces.h"
+#include "rays/npr/tap_models.h"
 
 namespace rays {
 namespace {
@@ -56,37 +58,59 @@ void imageLines(LineCoverage& lc, const LineRecords::RecordVector& rec, const Ed
         }
 }
 
-// Pixels within `reach` of a neighbour pair that differs: the only places where stencil rays can
-// find an edge. Creases and depth jumps are sharp, so adjacent pixel centres already show the
-// full normal angle or depth step; the thresholds need no relaxing.
-std::vector<uint8_t> candidates(const LineRecords::RecordVector& rec, int W, int H, const EdgeSettings& e, int reach,
-                                int threads) {
+// Pixels whose stencil window (the records within `reach`) holds both pixels of a neighbour pair
+// that differs: the only places where stencil taps can find an edge. Creases and depth jumps are
+// sharp, so adjacent pixel centres already show the full normal angle or depth step; the
+// thresholds need no relaxing.
+using Mask = std::vector<uint8_t, tribvh::HugePageAllocator<uint8_t>>;  // warm memory when prewarmed
+Mask candidates(const LineRecords::RecordVector& rec, int W, int H, const EdgeSettings& e, int reach, int threads) {
     const EdgeThresholds th = thresholdsFor(e);
-    std::vector<uint8_t> diff(rec.size(), 0), tmp(rec.size(), 0), out(rec.size(), 0);
-    parallelFor((H + kRowBlock - 1) / kRowBlock, threads, [&](int block, int) {
-        for (int y = block * kRowBlock; y < std::min(H, (block + 1) * kRowBlock); ++y)
-            for (int x = 0; x < W; ++x) {
-                const EdgeRecord& p = rec[size_t(y) * W + x];
-                if ((x + 1 < W && (classifyPair(p, rec[size_t(y) * W + x + 1], th) & e.types)) ||
-                    (y + 1 < H && (classifyPair(p, rec[size_t(y + 1) * W + x], th) & e.types)))
-                    diff[size_t(y) * W + x] = 1;
-            }
-    });
-    // Separable box dilation by reach around both pixels of each differing pair: along rows, then
-    // each output row gathers the rows within reach (above: reach + 1, for the pair's lower pixel).
+    constexpr uint8_t kRight = 1, kDown = 2;  // the pair with the right / lower neighbour differs
+    Mask diff(rec.size(), 0), tmp(rec.size(), 0), out(rec.size(), 0);
     const int blocks = (H + kRowBlock - 1) / kRowBlock;
     parallelFor(blocks, threads, [&](int block, int) {
         for (int y = block * kRowBlock; y < std::min(H, (block + 1) * kRowBlock); ++y)
-            for (int x = 0; x < W; ++x)
-                if (diff[size_t(y) * W + x])
-                    for (int k = std::max(0, x - reach); k <= std::min(W - 1, x + reach + 1); ++k) tmp[size_t(y) * W + k] = 1;
+            for (int x = 0; x < W; ++x) {
+                const EdgeRecord& p = rec[size_t(y) * W + x];
+                uint8_t bits = 0;
+                if (x + 1 < W && (classifyPair(p, rec[size_t(y) * W + x + 1], th) & e.types)) bits |= kRight;
+                if (y + 1 < H && (classifyPair(p, rec[size_t(y + 1) * W + x], th) & e.types)) bits |= kDown;
+                diff[size_t(y) * W + x] = bits;
+            }
+    });
+    // Separable dilation. A window centred at column c holds columns c - reach .. c + reach: both
+    // pixels of the pair (x, x + 1) when x + 1 - reach <= c <= x + reach, the pixel x of a
+    // vertical pair when x - reach <= c <= x + reach. Rows likewise.
+    parallelFor(blocks, threads, [&](int block, int) {
+        for (int y = block * kRowBlock; y < std::min(H, (block + 1) * kRowBlock); ++y) {
+            const uint8_t* d = &diff[size_t(y) * W];
+            uint8_t* t = &tmp[size_t(y) * W];
+            for (int x = 0; x < W; ++x) {
+                if (d[x] & kRight)
+                    for (int k = std::max(0, x + 1 - reach); k <= std::min(W - 1, x + reach); ++k) t[k] |= kRight;
+                if (d[x] & kDown)
+                    for (int k = std::max(0, x - reach); k <= std::min(W - 1, x + reach); ++k) t[k] |= kDown;
+            }
+        }
     });
     parallelFor(blocks, threads, [&](int block, int) {
         for (int y = block * kRowBlock; y < std::min(H, (block + 1) * kRowBlock); ++y) {
             uint8_t* o = &out[size_t(y) * W];
-            for (int k = std::max(0, y - reach - 1); k <= std::min(H - 1, y + reach); ++k) {
+            // Row pairs (k, k + 1) with k + 1 - reach <= y <= k + reach; single rows within reach.
+            // Bits kept as they are (any non-zero value marks a candidate), eight bytes at a time.
+            for (int k = std::max(0, y - reach); k <= std::min(H - 1, y + reach); ++k) {
                 const uint8_t* t = &tmp[size_t(k) * W];
-                for (int x = 0; x < W; ++x) o[x] |= t[x];
+                const uint8_t want = k <= y + reach - 1 ? (kRight | kDown) : kRight;
+                const uint64_t want8 = want * 0x0101010101010101ull;
+                int x = 0;
+                for (; x + 8 <= W; x += 8) {
+                    uint64_t a, b;
+                    std::memcpy(&a, o + x, 8);
+                    std::memcpy(&b, t + x, 8);
+                    a |= b & want8;
+                    std::memcpy(o + x, &a, 8);
+                }
+                for (; x < W; ++x) o[x] |= t[x] & want;
             }
         }
     });
@@ -95,8 +119,10 @@ std::vector<uint8_t> candidates(const LineRecords::RecordVector& rec, int W, int
 
 }  // namespace
 
-LineRecords::LineRecords(const Scene& scene, int w, int h)
-    : ids(computeSurfaceIds(scene)), width(w), height(h), rec(size_t(w) * size_t(h)) {}
+LineRecords::LineRecords(const Scene& scene, int w, int h) : LineRecords(computeSurfaceIds(scene), w, h) {}
+
+LineRecords::LineRecords(SurfaceIds surfaceIds, int w, int h)
+    : ids(std::move(surfaceIds)), width(w), height(h), rec(size_t(w) * size_t(h)) {}
 
 bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s) {
     const Camera& cam = scene.cameras.at(size_t(s.cameraIndex));
@@ -130,7 +156,7 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
         const double radius = stencilRadius(e.width);
         const std::vector<StencilOffset> stencil = makeStencil(radius);
         const int n = int(stencil.size());
-        const std::vector<uint8_t> cand = candidates(rec, s.width, s.height, e, int(std::ceil(radius)), s.threads);
+        const Mask cand = candidates(rec, s.width, s.height, e, int(std::ceil(radius)), s.threads);
         const EdgeThresholds th = thresholdsFor(e);
         const bool shadows = e.types & kEdgeShadow, secondary = e.types & kEdgeReflection;
         // Stencil positions lie within R pixels of the centre, so their four surrounding pixel
@@ -157,16 +183,21 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
         }
         parallelFor((s.height + kRowBlock - 1) / kRowBlock, s.threads, [&](int block, int w) {
             PathInfo other;
-            std::vector<uint8_t> near(size_t(side) * side);  // edge types between the centre and the record at (dx, dy)
+            // Between the centre and the record at (dx, dy): the edge types drawn, and all types.
+            std::vector<uint8_t> near(size_t(side) * side), full(size_t(side) * side);
+            std::vector<const EdgeRecord*> cell(size_t(side) * side);  // the record at (dx, dy)
             for (int y = block * kRowBlock; y < std::min(s.height, (block + 1) * kRowBlock); ++y)
                 for (int x = 0; x < s.width; ++x) {
                     if (!cand[size_t(y) * s.width + x]) continue;
                     const EdgeRecord& centre = rec[size_t(y) * s.width + x];
                     for (int dy = -reach; dy <= reach; ++dy) {
                         const EdgeRecord* row = &rec[size_t(std::clamp(y + dy, 0, s.height - 1)) * s.width];
-                        for (int dx = -reach; dx <= reach; ++dx)
-                            near[size_t(dy + reach) * side + dx + reach] =
-                                uint8_t(classifyPair(centre, row[std::clamp(x + dx, 0, s.width - 1)], th) & e.types);
+                        for (int dx = -reach; dx <= reach; ++dx) {
+                            const size_t k = size_t(dy + reach) * side + dx + reach;
+                            cell[k] = &row[std::clamp(x + dx, 0, s.width - 1)];
+                            full[k] = uint8_t(classifyPair(centre, *cell[k], th));
+                            near[k] = full[k] & uint8_t(e.types);
+                        }
                     }
                     int m = 0;
                     for (const Tap& tap : taps) {
@@ -190,6 +221,36 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
                         }
                         const StencilOffset o{tap.dx, tap.dy};
                         const Ray r = cam.rayThrough(x + 0.5 + o.dx, s.height - 1 - y + 0.5 + o.dy, s.width, s.height);
+                        const uint8_t fullAny = full[size_t(tap.cell[0])] | full[size_t(tap.cell[1])] |
+                                                full[size_t(tap.cell[2])] | full[size_t(tap.cell[3])];
+                        if (fullAny == any && (any == kEdgeCrease || (any == kEdgeShadow && shadows))) {
+                            // One surface around the tap, two facets or one lit differently:
+                            // decide it from the records' tangent planes (tap_models.h) when
+                            // they are conclusive.
+                            const uint8_t v4[4] = {a, b, c, d};
+                            int same = -1, other = -1;  // the heaviest cell of each kind
+                            for (int q = 0; q < 4; ++q) {
+                                int& best = v4[q] ? other : same;
+                                if (best < 0 || tap.w[q] > tap.w[best]) best = q;
+                            }
+                            const EdgeRecord& near0 = *cell[size_t(tap.cell[same])];
+                            const EdgeRecord& near1 = *cell[size_t(tap.cell[other])];
+                            if (any == kEdgeCrease) {
+                                const int sideSeen = creaseSide(r, near0, near1);
+                                if (sideSeen >= 0) {
+                                    m += sideSeen;
+                                    continue;
+                                }
+                            } else {
+                                const EdgeRecord& plane = tap.w[same] >= tap.w[other] ? near0 : near1;
+                                const double t = tangentPlaneT(r, plane);
+                                if (t > 0) {
+                                    const Vec3 n{plane.n[0], plane.n[1], plane.n[2]};
+                                    if (tracer.blockedLightsAt(r.at(t), n, ctx[size_t(w)]) != centre.blocked) ++m;
+                                    continue;
+                                }
+                            }
+                        }
                         // Shadow rays only where the shadow count changes nearby and nothing else
                         // already separates the two samples.
                         tracer.probe(r, false, secondary, ctx[size_t(w)], other);

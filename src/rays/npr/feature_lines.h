@@ -16,7 +16,7 @@ namespace rays {
 /// Line coverage in [0, 1] per pixel, top row first.
 struct LineCoverage {
     int width = 0, height = 0;
-    std::vector<float> coverage;
+    std::vector<float, tribvh::HugePageAllocator<float>> coverage;  ///< big: huge pages, warm memory
     float at(int x, int y) const { return coverage[size_t(y) * size_t(width) + size_t(x)]; }
 };
 
@@ -31,6 +31,8 @@ struct LineRecords {
     using RecordVector = std::vector<EdgeRecord, tribvh::HugePageAllocator<EdgeRecord>>;  // no zero fill
     RecordVector rec;  ///< top row first; every entry is written by store()
     LineRecords(const Scene& scene, int w, int h);
+    /// With the scene's surface ids already computed (computeSurfaceIds).
+    LineRecords(SurfaceIds surfaceIds, int w, int h);
     void store(int x, int y, const PathInfo& info) { rec[size_t(y) * size_t(width) + size_t(x)] = toEdgeRecord(info, ids); }
 };
 
