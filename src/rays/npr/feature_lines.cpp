@@ -167,7 +167,7 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
         // indices into the window, and its bilinear weights.
         struct Tap {
             int cell[4];
-            double w[4];
+            float w[4];
             double dx, dy;
         };
         std::vector<Tap> taps;
@@ -177,34 +177,39 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
             const double fx = px - 0.5 - ix, fy = py - 0.5 - iy;
             auto at = [&](int dx, int dy) { return (dy + reach) * side + dx + reach; };
             taps.push_back({{at(ix, iy), at(ix + 1, iy), at(ix, iy + 1), at(ix + 1, iy + 1)},
-                            {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy},
+                            {float((1 - fx) * (1 - fy)), float(fx * (1 - fy)), float((1 - fx) * fy), float(fx * fy)},
                             o.dx,
                             o.dy});
         }
         parallelFor((s.height + kRowBlock - 1) / kRowBlock, s.threads, [&](int block, int w) {
             PathInfo other;
-            // Between the centre and the record at (dx, dy): the edge types drawn, and all types.
-            std::vector<uint8_t> near(size_t(side) * side), full(size_t(side) * side);
-            std::vector<const EdgeRecord*> cell(size_t(side) * side);  // the record at (dx, dy)
+            // Between the centre and the record at window cell k: all edge types.
+            std::vector<uint8_t> full(size_t(side) * side);
+            const uint8_t types = uint8_t(e.types);
             for (int y = block * kRowBlock; y < std::min(s.height, (block + 1) * kRowBlock); ++y)
                 for (int x = 0; x < s.width; ++x) {
                     if (!cand[size_t(y) * s.width + x]) continue;
                     const EdgeRecord& centre = rec[size_t(y) * s.width + x];
-                    for (int dy = -reach; dy <= reach; ++dy) {
-                        const EdgeRecord* row = &rec[size_t(std::clamp(y + dy, 0, s.height - 1)) * s.width];
-                        for (int dx = -reach; dx <= reach; ++dx) {
-                            const size_t k = size_t(dy + reach) * side + dx + reach;
-                            cell[k] = &row[std::clamp(x + dx, 0, s.width - 1)];
-                            full[k] = uint8_t(classifyPair(centre, *cell[k], th));
-                            near[k] = full[k] & uint8_t(e.types);
-                        }
+                    // The record at window cell k (clamped to the image).
+                    auto cell = [&](int k) -> const EdgeRecord& {
+                        const int cy = std::clamp(y + k / side - reach, 0, s.height - 1);
+                        const int cx = std::clamp(x + k % side - reach, 0, s.width - 1);
+                        return rec[size_t(cy) * s.width + size_t(cx)];
+                    };
+                    if (x >= reach && x < s.width - reach && y >= reach && y < s.height - reach) {
+                        const EdgeRecord* corner = &rec[size_t(y - reach) * s.width + size_t(x - reach)];
+                        uint8_t* f = full.data();
+                        for (int dy = 0; dy < side; ++dy, corner += s.width)
+                            for (int dx = 0; dx < side; ++dx) *f++ = uint8_t(classifyPair(centre, corner[dx], th));
+                    } else {
+                        for (int k = 0; k < side * side; ++k) full[size_t(k)] = uint8_t(classifyPair(centre, cell(k), th));
                     }
                     int m = 0;
                     for (const Tap& tap : taps) {
                         // Reuse primary hits: when the four pixel centres around the stencil
                         // position agree, the stencil ray would see the same; cast it otherwise.
-                        const uint8_t a = near[size_t(tap.cell[0])], b = near[size_t(tap.cell[1])];
-                        const uint8_t c = near[size_t(tap.cell[2])], d = near[size_t(tap.cell[3])];
+                        const uint8_t a = full[size_t(tap.cell[0])] & types, b = full[size_t(tap.cell[1])] & types;
+                        const uint8_t c = full[size_t(tap.cell[2])] & types, d = full[size_t(tap.cell[3])] & types;
                         const uint8_t any = a | b | c | d, all = a & b & c & d;
                         if (any == 0) continue;
                         if (all != 0 && any == all) {
@@ -213,9 +218,9 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
                         }
                         // Mixed cell: the edge runs between its centres. Far from the midway
                         // contour of the bilinear indicator the answer is clear; cast only near it.
-                        const double v = tap.w[0] * (a != 0) + tap.w[1] * (b != 0) + tap.w[2] * (c != 0) + tap.w[3] * (d != 0);
-                        if (v <= 0.25) continue;
-                        if (v >= 0.75) {
+                        const float v = (a ? tap.w[0] : 0.0f) + (b ? tap.w[1] : 0.0f) + (c ? tap.w[2] : 0.0f) + (d ? tap.w[3] : 0.0f);
+                        if (v <= 0.25f) continue;
+                        if (v >= 0.75f) {
                             ++m;
                             continue;
                         }
@@ -233,8 +238,8 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
                                 int& best = v4[q] ? other : same;
                                 if (best < 0 || tap.w[q] > tap.w[best]) best = q;
                             }
-                            const EdgeRecord& near0 = *cell[size_t(tap.cell[same])];
-                            const EdgeRecord& near1 = *cell[size_t(tap.cell[other])];
+                            const EdgeRecord& near0 = cell(tap.cell[same]);
+                            const EdgeRecord& near1 = cell(tap.cell[other]);
                             if (any == kEdgeCrease) {
                                 const int sideSeen = creaseSide(r, near0, near1);
                                 if (sideSeen >= 0) {
