@@ -18,7 +18,7 @@ stages=("$@")
 # Tests with several worker threads: renders (tiles), feature lines, edge-guided AA, filters,
 # the parallel BVH build, the worker pool and the warm memory region, thread-count determinism and
 # Ctrl-C handling.
-TSAN_TESTS='^(Distribution\.|Edges/EdgeMethods\.|StencilTaps\.|WorkerPool\.|HugePages\.|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt)'
+TSAN_TESTS='^(Distribution\.|Edges/EdgeMethods\.|StencilTaps\.|StencilPass\.|WorkerPool\.|HugePages\.|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt)'
 
 # The CLI re-executes itself to turn on huge pages; not needed here (and it doubles process starts).
 export RAYS_NO_HUGEPAGES=1

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <functional>
+#include <mutex>
+#include <thread>
 #include <numbers>
 #include <set>
 #include <string>
@@ -12,6 +14,8 @@
 #include "rays/io/scene_parser.h"
 #include "rays/npr/feature_lines.h"
 #include "rays/npr/stencil.h"
+#include "rays/npr/stencil_pass.h"
+#include "rays/render/renderer.h"
 
 using namespace rays;
 
@@ -215,6 +219,63 @@ TEST(StencilTaps, ShadowBoundaryOnOneSurfaceNeedsOnlyShadowRays) {
     // The shadow of the sphere: a circle of radius 30·tan(asin(1/5)).
     const double r = 30 * std::tan(std::asin(0.2));
     expectGood(score(lc, truthPixels(scene.cameras[0], circle({0, 0, 0}, {r, 0, 0}, {0, 0, r}))), "shadow circle");
+}
+
+// Bands drawn while rows arrive (in any order, from several threads, as render()'s onRows reports
+// them) give exactly the coverage of drawing every band at the end.
+TEST(StencilPass, BandsDrawnAsRowsArriveMatchDrawingAtTheEnd) {
+    const Scene scene = sceneFrom(std::string(kCamera) +
+                                  "light_source { <5, 8, 10> color rgb 1 }\n"
+                                  "plane { <0, 1, 0>, -2 pigment { color rgb 1 } }\n"
+                                  "box { <-1.5, -1.5, -1.5>, <1.5, 1.5, 1.5> rotate <25, 35, 0> pigment { color rgb 1 } }\n"
+                                  "sphere { <2, 1, 1>, 1 pigment { color rgb <1, 0, 0> } }\n");
+    const Bvh bvh(scene.objects);
+    RenderSettings s;
+    s.width = kW;
+    s.height = kH;
+    s.threads = 3;
+    EdgeSettings e;
+    e.types = kEdgeAll;
+    LineRecords records(scene, kW, kH);
+    TraceStats stats;
+    render(scene, bvh, s, stats, {}, nullptr, [&](int x, int y, const PathInfo& info) { records.store(x, y, info); });
+
+    TraceStats atEnd, streamed, duringRender;
+    const LineCoverage reference = StencilPass(scene, bvh, s, e, records).finish(atEnd);
+    float ink = 0;
+    for (float c : reference.coverage) ink += c;
+    ASSERT_GT(ink, 100.0f);
+
+    // Rows reported in 7-row pieces, bottom up, by three threads taking pieces in turn.
+    StencilPass pass(scene, bvh, s, e, records);
+    std::vector<std::thread> threads;
+    for (int w = 0; w < 3; ++w)
+        threads.emplace_back([&, w] {
+            for (int piece = w; piece * 7 < kH; piece += 3) {
+                const int y1 = kH - piece * 7;
+                pass.rowsDone(std::max(0, y1 - 7), y1, w);
+            }
+        });
+    for (std::thread& t : threads) t.join();
+    const LineCoverage fromRows = pass.finish(streamed);
+    EXPECT_EQ(fromRows.coverage, reference.coverage);
+
+    // And through render()'s onRows, with the render's own threads.
+    LineRecords again(scene, kW, kH);
+    StencilPass during(scene, bvh, s, e, again);
+    int calls = 0;
+    std::mutex m;
+    render(scene, bvh, s, stats, {}, nullptr, [&](int x, int y, const PathInfo& info) { again.store(x, y, info); },
+           [&](int y0, int y1, int w) {
+               {
+                   std::lock_guard<std::mutex> lock(m);
+                   ++calls;
+               }
+               during.rowsDone(y0, y1, w);
+           });
+    EXPECT_EQ(calls, (kH + 15) / 16);  // once per row of 16-pixel tiles
+    EXPECT_EQ(during.finish(duringRender).coverage, reference.coverage);
+    EXPECT_EQ(duringRender.primaryRays, atEnd.primaryRays);
 }
 
 TEST_P(EdgeMethods, SphereOutlineSeenInAMirror) {

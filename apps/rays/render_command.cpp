@@ -18,6 +18,7 @@
 #include "rays/io/obj_loader.h"
 #include "rays/image/filter.h"
 #include "rays/npr/feature_lines.h"
+#include "rays/npr/stencil_pass.h"
 #include "rays/render/renderer.h"
 #include "interrupt.h"
 #include "render_budget.h"
@@ -239,13 +240,20 @@ int runRender(const RenderJob& job) {
     TraceStats stats;
     ProgressBar bar(!job.quiet && isatty(STDERR_FILENO));
     std::unique_ptr<LineRecords> records;
+    std::unique_ptr<StencilPass> stencil;
     RecordFn onRecord;
+    RowsFn onRows;
     if (reuse) {
         records = std::make_unique<LineRecords>(surfaceIds.get(), s.width, s.height);
         onRecord = [&](int x, int y, const PathInfo& info) { records->store(x, y, info); };
+        if (edges.method == EdgeMethod::Stencil) {
+            // Stencil lines drawn by the render's threads, band by band, as rows finish.
+            stencil = std::make_unique<StencilPass>(scene, bvh, s, edges, *records);
+            onRows = [&](int y0, int y1, int worker) { stencil->rowsDone(y0, y1, worker); };
+        }
     }
     ImageF img = edges.linesOnly ? ImageF(s.width, s.height)
-                                 : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord);
+                                 : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord, onRows);
     stopIfInterrupted(job, &scene, &img);
     if (!job.post.empty()) img = applyFilters(img, job.post, BorderMode::Clamp, s.threads);
     const double renderMs = msSince(t0);
@@ -253,7 +261,7 @@ int runRender(const RenderJob& job) {
     LineCoverage lines;
     if (edges.enabled() || edges.linesOnly) {
         t0 = Clock::now();
-        lines = drawFeatureLines(scene, bvh, s, edges, records.get(), stats);
+        lines = stencil ? stencil->finish(stats) : drawFeatureLines(scene, bvh, s, edges, records.get(), stats);
         stopIfInterrupted(job, &scene, &img);
         compositeLines(img, lines, edges, s.threads);
         linesMs = msSince(t0);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <numeric>
 #include <thread>
@@ -176,7 +177,8 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
 }
 
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
-              const ProgressFn& progress, std::vector<uint8_t>* edgePixels, const RecordFn& onRecord) {
+              const ProgressFn& progress, std::vector<uint8_t>* edgePixels, const RecordFn& onRecord,
+              const RowsFn& onRows) {
     ImageF img = ImageF::uninitialized(s.width, s.height);  // every pixel is written below
     const ViewSetup view = resolveView(scene, s);
     const Tracer tracer(scene, bvh, s);
@@ -188,6 +190,12 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     // not zero-filled up front: the render threads are the first to touch it).
     std::vector<uint8_t> tileDone(size_t(tileCount), 0);
     bool firstPass = true;
+    // Tiles still to finish per row of tiles (for onRows).
+    std::unique_ptr<std::atomic<int>[]> rowTilesLeft;
+    if (onRows && !s.aaEdges) {
+        rowTilesLeft = std::make_unique<std::atomic<int>[]>(size_t(tilesY));
+        for (int r = 0; r < tilesY; ++r) rowTilesLeft[size_t(r)].store(tilesX, std::memory_order_relaxed);
+    }
     auto forTiles = [&](const std::function<void(int x, int y, TraceContext&)>& pixel, const ProgressFn& prog) {
         parallelFor(tileCount, s.threads, [&](int t, int w) {
             const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
@@ -195,6 +203,9 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) pixel(x, y, perThread[size_t(w)]);
             if (firstPass) tileDone[size_t(t)] = 1;
+            // The last tile of its row: the other tiles' pixels are visible here (acq_rel).
+            if (rowTilesLeft && rowTilesLeft[size_t(t / tilesX)].fetch_sub(1, std::memory_order_acq_rel) == 1)
+                onRows(y0, y1, w);
         }, prog);
         if (firstPass && cancelled())
             for (int t = 0; t < tileCount; ++t) {
