@@ -178,9 +178,9 @@ void prewarmBuffers(const RenderJob& job) {
     if (std::getenv("RAYS_NO_PREWARM")) return;
     const RenderSettings& s = job.settings;
     uint64_t perPixel = sizeof(Vec3);
-    // Line records, coverage and the three candidate masks.
-    if (!job.edges.types.empty() && job.edges.types != "none") perPixel += sizeof(EdgeRecord) + sizeof(float) + 3;
-    const double want = double(s.width) * double(s.height) * double(perPixel) + 4096.0 * 8;  // plus alignment slack per buffer
+    // Line records and coverage.
+    if (!job.edges.types.empty() && job.edges.types != "none") perPixel += sizeof(EdgeRecord) + sizeof(float);
+    const double want = double(s.width) * double(s.height) * double(perPixel) + 4096.0 * 8;  // + alignment slack
     double cap = 256.0 * 1024 * 1024;
     try {
         cap = std::min(cap, double(memoryLimit()) / 4);
