@@ -155,12 +155,13 @@ struct StencilPass::Impl {
                 for (; x < W; ++x) o[x] |= t[x] & want;
             }
             for (int x = 0; x < W; ++x)
-                if (o[x]) lc.coverage[size_t(y) * W + x] = float(stencilStrength(taps_m(x, y, sc, ctx[size_t(worker)]), n));
+                if (o[x])
+                    lc.coverage[size_t(y) * W + x] = float(stencilStrength(differingTaps(x, y, sc, ctx[size_t(worker)]), n));
         }
     }
 
-    // m: how many of the n stencil taps around pixel (x, y) see an enabled edge type against it.
-    int taps_m(int x, int y, Scratch& sc, TraceContext& tc) {
+    // How many of the n stencil taps around pixel (x, y) see an enabled edge type against it (m).
+    int differingTaps(int x, int y, Scratch& sc, TraceContext& tc) {
         const LineRecords::RecordVector& rec = records.rec;
         const SurfaceIds& ids = records.ids;
         const EdgeRecord& centre = rec[size_t(y) * s.width + x];
