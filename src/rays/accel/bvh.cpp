@@ -116,6 +116,8 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
             }
         }
     }
+    // A sphere hit's normal is computed once, for the sphere that is nearest in the end.
+    const ObjectBvh::ExactSphere* bestSphere = nullptr;
     auto exact = [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float& tBest) {
         if (sphere.radius >= 0) {  // the same test as intersect(), on compact data
             const Vec3 c{sphere.centre[0], sphere.centre[1], sphere.centre[2]};
@@ -123,18 +125,23 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
             if (!sphereHitT(c, sphere.radius, ray, tMin, best.t, t)) return false;
             best.t = t;
             best.object = int(id);
-            best.normal = (ray.at(t) - c) / sphere.radius;
-            best.geomNormal = best.normal;
             best.hasUV = false;
+            bestSphere = &sphere;
             tBest = upperT(t);
             return false;
         }
         if (!intersect(objects[id], ray, tMin, best.t, sh)) return false;
         take(best, id, sh);
+        bestSphere = nullptr;
         tBest = upperT(best.t);
         return false;
     };
     objects_.traverse<false>(fr.org, fr.dir, lowerT(tMin), upperT(best.t), exact);
+    if (bestSphere) {  // as hitSphere in object.cpp computes it
+        const Vec3 c{bestSphere->centre[0], bestSphere->centre[1], bestSphere->centre[2]};
+        best.normal = (ray.at(best.t) - c) / bestSphere->radius;
+        best.geomNormal = best.normal;
+    }
     return best;
 }
 

@@ -7,19 +7,6 @@
 
 namespace rays {
 
-/// Chooses the nearest of two sorted roots inside (tMin, tMax).
-inline bool pickRoot(double t0, double t1, double tMin, double tMax, double& t) {
-    if (t0 > tMin && t0 < tMax) {
-        t = t0;
-        return true;
-    }
-    if (t1 > tMin && t1 < tMax) {
-        t = t1;
-        return true;
-    }
-    return false;
-}
-
 /// Nearest t in (tMin, tMax) where r meets the sphere (centre, radius); false when none.
 inline bool sphereHitT(const Vec3& centre, double radius, const Ray& r, double tMin, double tMax, double& t) {
     const Vec3 oc = r.origin - centre;
@@ -29,7 +16,18 @@ inline bool sphereHitT(const Vec3& centre, double radius, const Ray& r, double t
     const double disc = b * b - a * c;
     if (disc < 0) return false;
     const double sq = std::sqrt(disc);
-    return pickRoot((-b - sq) / a, (-b + sq) / a, tMin, tMax, t);
+    // The nearer root first; the farther one is computed only when the nearer is out of range.
+    const double t0 = (-b - sq) / a;
+    if (t0 > tMin && t0 < tMax) {
+        t = t0;
+        return true;
+    }
+    const double t1 = (-b + sq) / a;
+    if (t1 > tMin && t1 < tMax) {
+        t = t1;
+        return true;
+    }
+    return false;
 }
 
 }  // namespace rays
