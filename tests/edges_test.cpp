@@ -29,8 +29,9 @@ Scene sceneFrom(const std::string& text) {
     return parseScene(text, "t.pov", opt);
 }
 
+// The lines of the given types; stats (optional) receives the rays they cast.
 LineCoverage lines(const Scene& scene, uint32_t types, EdgeMethod method, double width = 1.5, int threads = 0,
-                   int w = kW, int h = kH) {
+                   int w = kW, int h = kH, TraceStats* stats = nullptr) {
     const Bvh bvh(scene.objects);
     RenderSettings s;
     s.width = w;
@@ -40,8 +41,8 @@ LineCoverage lines(const Scene& scene, uint32_t types, EdgeMethod method, double
     e.types = types;
     e.method = method;
     e.width = width;
-    TraceStats stats;
-    return drawFeatureLines(scene, bvh, s, e, nullptr, stats);
+    TraceStats local;
+    return drawFeatureLines(scene, bvh, s, e, nullptr, stats ? *stats : local);
 }
 
 // Image position (x right, y DOWN, in pixels) of world point p: solves
@@ -181,14 +182,8 @@ TEST_P(EdgeMethods, CubeEdgesAreCreasesAndOutline) {
 TEST(StencilTaps, CreasesNeedNoTapRays) {
     const Scene scene = sceneFrom(std::string(kCamera) +
                                   "box { <-1.5, -1.5, -1.5>, <1.5, 1.5, 1.5> rotate <25, 35, 0> pigment { color rgb 1 } }\n");
-    const Bvh bvh(scene.objects);
-    RenderSettings s;
-    s.width = kW;
-    s.height = kH;
-    EdgeSettings e;
-    e.types = kEdgeCrease;
     TraceStats stats;
-    const LineCoverage lc = drawFeatureLines(scene, bvh, s, e, nullptr, stats);
+    const LineCoverage lc = lines(scene, kEdgeCrease, EdgeMethod::Stencil, 1.5, 0, kW, kH, &stats);
     float ink = 0;
     for (float c : lc.coverage) ink += c;
     EXPECT_GT(ink, 100.0f);
@@ -206,14 +201,8 @@ TEST(StencilTaps, ShadowBoundaryOnOneSurfaceNeedsOnlyShadowRays) {
         "light_source { <0, 30, 0> color rgb 1 }\n"
         "plane { <0, 1, 0>, 0 pigment { color rgb 1 } finish { diffuse 1 } }\n"
         "sphere { <0, 25, 0>, 1 pigment { color rgb 1 } }\n");
-    const Bvh bvh(scene.objects);
-    RenderSettings s;
-    s.width = kW;
-    s.height = kH;
-    EdgeSettings e;
-    e.types = kEdgeShadow;
     TraceStats stats;
-    const LineCoverage lc = drawFeatureLines(scene, bvh, s, e, nullptr, stats);
+    const LineCoverage lc = lines(scene, kEdgeShadow, EdgeMethod::Stencil, 1.5, 0, kW, kH, &stats);
     EXPECT_EQ(stats.primaryRays, uint64_t(kW) * kH);
     EXPECT_GT(stats.shadowRays, uint64_t(kW) * kH);
     // The shadow of the sphere: a circle of radius 30·tan(asin(1/5)).

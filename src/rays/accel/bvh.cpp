@@ -20,6 +20,8 @@ TriRay floatRay(const Ray& r) {
     return {{float(r.origin.x), float(r.origin.y), float(r.origin.z)}, {float(r.dir.x), float(r.dir.y), float(r.dir.z)}};
 }
 
+Vec3 centreOf(const ObjectBvh::ExactSphere& s) { return {s.centre[0], s.centre[1], s.centre[2]}; }
+
 // best ← the object hit sh of object id.
 void take(Hit& best, uint32_t id, const ShapeHit& sh) {
     best.t = sh.t;
@@ -120,9 +122,8 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
     const ObjectBvh::ExactSphere* bestSphere = nullptr;
     auto exact = [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float& tBest) {
         if (sphere.radius >= 0) {  // the same test as intersect(), on compact data
-            const Vec3 c{sphere.centre[0], sphere.centre[1], sphere.centre[2]};
             double t;
-            if (!sphereHitT(c, sphere.radius, ray, tMin, best.t, t)) return false;
+            if (!sphereHitT(centreOf(sphere), sphere.radius, ray, tMin, best.t, t)) return false;
             best.t = t;
             best.object = int(id);
             best.hasUV = false;
@@ -137,9 +138,8 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
         return false;
     };
     objects_.traverse<false>(fr.org, fr.dir, lowerT(tMin), upperT(best.t), exact);
-    if (bestSphere) {  // as hitSphere in object.cpp computes it
-        const Vec3 c{bestSphere->centre[0], bestSphere->centre[1], bestSphere->centre[2]};
-        best.normal = (ray.at(best.t) - c) / bestSphere->radius;
+    if (bestSphere) {
+        best.normal = sphereNormal(centreOf(*bestSphere), bestSphere->radius, ray, best.t);
         best.geomNormal = best.normal;
     }
     return best;
@@ -159,7 +159,7 @@ int Bvh::anyBlocker(const std::vector<Object>& objects, const Ray& ray, double t
     auto exact = [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float&) {
         double t;
         if (sphere.radius >= 0
-                ? !sphereHitT(Vec3{sphere.centre[0], sphere.centre[1], sphere.centre[2]}, sphere.radius, ray, tMin, tMax, t)
+                ? !sphereHitT(centreOf(sphere), sphere.radius, ray, tMin, tMax, t)
                 : !occludes(objects[id], ray, tMin, tMax))
             return false;
         blocker = int(id);

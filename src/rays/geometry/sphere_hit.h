@@ -1,5 +1,5 @@
 // The ray-sphere test shared by Object (object.cpp) and the BVH's compact sphere path (bvh.cpp):
-// one formula, one operation order, so both give bit-identical distances.
+// one formula, one operation order, so both give bit-identical distances and normals.
 #pragma once
 #include <cmath>
 
@@ -28,6 +28,11 @@ inline bool sphereHitT(const Vec3& centre, double radius, const Ray& r, double t
         return true;
     }
     return false;
+}
+
+/// Outward unit normal of the sphere (centre, radius) where r meets it at t.
+inline Vec3 sphereNormal(const Vec3& centre, double radius, const Ray& r, double t) {
+    return (r.at(t) - centre) / radius;
 }
 
 }  // namespace rays

@@ -24,7 +24,7 @@ namespace {
 // Sphere (p1, r1): the object-space sphere, or the world-space one for similarity transforms.
 bool hitSphere(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     if (!sphereHitT(o.p1, o.r1, r, tMin, tMax, h.t)) return false;
-    h.normal = (r.at(h.t) - o.p1) / o.r1;
+    h.normal = sphereNormal(o.p1, o.r1, r, h.t);
     return true;
 }
 
