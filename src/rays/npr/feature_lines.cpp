@@ -72,14 +72,7 @@ bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s) {
 
 LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,
                               const LineRecords* centre, TraceStats& stats) {
-    auto blank = [&] {
-        LineCoverage lc;
-        lc.width = s.width;
-        lc.height = s.height;
-        lc.coverage.assign(size_t(s.width) * size_t(s.height), 0.0f);
-        return lc;
-    };
-    if (!e.enabled()) return blank();
+    if (!e.enabled()) return LineCoverage::empty(s.width, s.height);
     std::unique_ptr<LineRecords> probed;
     if (!centre) {
         const Tracer tracer(scene, bvh, s);
@@ -90,7 +83,7 @@ LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSe
         centre = probed.get();
     }
     if (e.method == EdgeMethod::Image) {
-        LineCoverage lc = blank();
+        LineCoverage lc = LineCoverage::empty(s.width, s.height);
         imageLines(lc, centre->rec, e);
         return lc;
     }

@@ -18,6 +18,14 @@ struct LineCoverage {
     int width = 0, height = 0;
     std::vector<float, tribvh::HugePageAllocator<float>> coverage;  ///< big: huge pages, warm memory
     float at(int x, int y) const { return coverage[size_t(y) * size_t(width) + size_t(x)]; }
+    /// No line anywhere.
+    static LineCoverage empty(int w, int h) {
+        LineCoverage lc;
+        lc.width = w;
+        lc.height = h;
+        lc.coverage.assign(size_t(w) * size_t(h), 0.0f);
+        return lc;
+    }
 };
 
 /// True when the records render() collects can serve as pixel-centre records for the lines.

@@ -86,9 +86,7 @@ struct StencilPass::Impl {
         bandTaken = std::make_unique<std::atomic<uint8_t>[]>(size_t(bands));
         for (int y = 0; y < s.height; ++y) rowDone[size_t(y)].store(0, std::memory_order_relaxed);
         for (int b = 0; b < bands; ++b) bandTaken[size_t(b)].store(0, std::memory_order_relaxed);
-        lc.width = s.width;
-        lc.height = s.height;
-        lc.coverage.assign(size_t(s.width) * size_t(s.height), 0.0f);
+        lc = LineCoverage::empty(s.width, s.height);
     }
 
     // The rows band b reads: its own and `reach` around them, plus one below for vertical pairs.
