@@ -20,11 +20,12 @@ stages=("$@")
 # Ctrl-C handling.
 TSAN_TESTS='^(Distribution\.|Edges/EdgeMethods\.|StencilTaps\.|StencilPass\.|WorkerPool\.|HugePages\.|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt)'
 
-# The CLI re-executes itself to turn on huge pages; not needed here (and it doubles process starts).
+# Under the sanitizers malloc is the sanitizer's own allocator: the heap's huge-page advice
+# (apps/rays/huge_pages.cpp) would only cost each run of `rays` a 256 MiB allocation.
 export RAYS_NO_HUGEPAGES=1
 
 configure() {  # DIR FLAGS
-  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=Sanitize -DRAYS_NATIVE=OFF -DRAYS_WERROR=OFF \
+  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=Sanitize -DRAYS_NATIVE=OFF -DRAYS_WERROR=OFF -DRAYS_STATIC_RUNTIME=OFF \
     -DCMAKE_CXX_FLAGS="$2 -O1 -g -fno-omit-frame-pointer" \
     -DCMAKE_EXE_LINKER_FLAGS="$2" >/dev/null
 }

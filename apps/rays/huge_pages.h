@@ -1,14 +1,20 @@
 // Transparent huge pages for the heap. Page faults are a large share of a render's time on the
-// virtual machines Rays is measured on (a 2.5 MB scene touches ~100 MB of fresh memory); glibc's
-// malloc can ask for huge pages, but only through a tunable read at process start. So the
-// program re-executes itself once with GLIBC_TUNABLES=glibc.malloc.hugetlb=1 added.
+// virtual machines Rays is measured on (a 2.5 MB scene touches ~100 MB of fresh memory). glibc's
+// own switch for this (the glibc.malloc.hugetlb tunable) is read only at process start, and
+// re-executing the program to set it costs a second process start; instead the program grows the
+// main heap once, advises the kernel to back that range with huge pages (MADV_HUGEPAGE), and
+// hands it back to malloc, which keeps it (no trimming) and serves later allocations from it.
 #pragma once
+
+#include <cstddef>
 
 namespace rays::cli {
 
-/// Keeps large freed blocks in the heap for reuse, then re-executes the program with the
-/// huge-page malloc tunable unless it is already set (or RAYS_NO_HUGEPAGES is set). Returns only
-/// when no re-execution happened.
-void enableHugePages(char** argv);
+/// Virtual heap range advised for huge pages at start; allocations beyond it get normal pages.
+inline constexpr std::size_t kHugeHeapBytes = std::size_t(256) << 20;
+
+/// Keeps large freed blocks in the heap for reuse and, unless RAYS_NO_HUGEPAGES is set, prepares
+/// kHugeHeapBytes of heap advised for huge pages. Costs no physical memory until pages are used.
+void enableHugePages();
 
 }  // namespace rays::cli

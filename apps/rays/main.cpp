@@ -215,7 +215,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    cli::enableHugePages(argv);
+    cli::enableHugePages();
     try {
         return run(argc, argv);
     } catch (const cli::Interrupted& e) {
