@@ -14,8 +14,9 @@ namespace {
 constexpr int kRowBlock = 8;  // rows per parallel work item
 
 // Probes the centre ray of every pixel.
-void probeCentres(const Tracer& tracer, const Camera& cam, const RenderSettings& s, const EdgeSettings& e,
+void probeCentres(const Tracer& tracer, const Camera& camera, const RenderSettings& s, const EdgeSettings& e,
                   std::vector<TraceContext>& ctx, LineRecords& out) {
+    const CameraRays cam(camera);
     const bool shadows = e.types & kEdgeShadow, secondary = e.types & kEdgeReflection;
     parallelFor((s.height + kRowBlock - 1) / kRowBlock, s.threads, [&](int block, int w) {
         PathInfo info;

@@ -39,7 +39,7 @@ struct StencilPass::Impl {
     const EdgeSettings& e;
     const LineRecords& records;
     const Tracer tracer;
-    const Camera& cam;
+    const CameraRays cam;
     const EdgeThresholds th;
     const bool shadows, secondary;
     int n = 0, reach = 0, side = 0, bandRows = 0, bands = 0;
@@ -55,7 +55,7 @@ struct StencilPass::Impl {
           e(edges),
           records(recs),
           tracer(scene, bvh, settings),
-          cam(scene.cameras.at(size_t(settings.cameraIndex))),
+          cam(CameraRays(scene.cameras.at(size_t(settings.cameraIndex)))),
           th(thresholdsFor(edges)),
           shadows(edges.types & kEdgeShadow),
           secondary(edges.types & kEdgeReflection) {

@@ -127,6 +127,7 @@ void parallelFor(int count, int threads, const std::function<void(int, int)>& bo
 ViewSetup resolveView(const Scene& scene, const RenderSettings& s) {
     ViewSetup v;
     v.camera = scene.cameras.at(size_t(s.cameraIndex));
+    v.rays = CameraRays(v.camera);
     v.aperture = s.aperture >= 0 ? s.aperture : v.camera.aperture;
     v.focalDistance = s.focalDistance > 0 ? s.focalDistance : v.camera.focalDistance();
     if (v.focalDistance <= 0) v.focalDistance = length(v.camera.lookAt - v.camera.location);
@@ -155,11 +156,11 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
         // Map [0,1)² onto the filter support around the pixel centre.
         const double dx = (2 * a - 1) * radius, dy = (2 * b - 1) * radius;
         const double w = filterWeight(s.filter, dx, dy);
-        Ray ray = cam.rayThrough(i + 0.5 + dx, j + 0.5 + dy, s.width, s.height);
+        Ray ray = view.rays.rayThrough(i + 0.5 + dx, j + 0.5 + dy, s.width, s.height);
         if (view.aperture > 0) {
             // Thin lens: start on a disc of radius `aperture` around the eye (camera plane), aim
             // at the point where the pinhole ray meets the focal plane.
-            const Vec3 fwd = cam.forward();
+            const Vec3 fwd = view.rays.forward;
             const Vec3 focus = ray.at(view.focalDistance / dot(ray.dir, fwd));
             double la, lb;
             samplePoint(AaMode::Stratified, int((int64_t(n) * stride) % count), count, ctx.rng, la, lb);

@@ -18,6 +18,7 @@ using ProgressFn = std::function<void(double fraction)>;
 /// Camera and sampling parameters resolved once per render (CLI overrides applied).
 struct ViewSetup {
     Camera camera;
+    CameraRays rays{Camera{}};  ///< camera's ray generator (resolveView sets both)
     double aperture = 0;       ///< lens radius; 0 = pinhole
     double focalDistance = 1;  ///< along the view direction
     int samples = 1;           ///< samples per pixel (anti-aliasing and lens together)

@@ -20,17 +20,28 @@ struct Camera {
     /// Unit view direction l = normalize(look_at − location).
     Vec3 forward() const { return normalize(lookAt - location); }
 
-    /// Ray through image-plane coordinates (u, v) in [−½, ½]², v up:
-    /// direction = normalize(u·right + v·up + l).
-    Ray rayAt(double u, double v) const {
-        return Ray{location, normalize(u * right + v * up + forward())};
-    }
-
     /// Ray through the centre of sub-pixel position (px, py) in pixel units, py counted up from the
     /// bottom row: u = px/W − ½, v = py/H − ½.
+    Ray rayThrough(double px, double py, int width, int height) const;
+};
+
+/// A camera ready to generate many rays: the view direction is computed once (rayThrough of a
+/// Camera computes it per ray). Rays are bit-identical to Camera::rayThrough's.
+struct CameraRays {
+    Vec3 location, right, up, forward;
+
+    explicit CameraRays(const Camera& c) : location(c.location), right(c.right), up(c.up), forward(c.forward()) {}
+
+    /// Ray through image-plane coordinates (u, v) in [−½, ½]², v up, for the sub-pixel position
+    /// (px, py): u = px/W − ½, v = py/H − ½; direction = normalize(u·right + v·up + forward).
     Ray rayThrough(double px, double py, int width, int height) const {
-        return rayAt(px / width - 0.5, py / height - 0.5);
+        const double u = px / width - 0.5, v = py / height - 0.5;
+        return Ray{location, normalize(u * right + v * up + forward)};
     }
 };
+
+inline Ray Camera::rayThrough(double px, double py, int width, int height) const {
+    return CameraRays(*this).rayThrough(px, py, width, height);
+}
 
 }  // namespace rays
