@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Rays needs to build and test, only when some are missing.
 set -euo pipefail
-packages=(cmake g++ make pkg-config libspng-dev libturbojpeg0-dev libstb-dev libtinyobjloader-dev
+packages=(cmake g++ make pkg-config libspng-dev zlib1g-dev libturbojpeg0-dev libstb-dev libtinyobjloader-dev
           libcli11-dev libgtest-dev)
 if [ "${RAYS_BENCH_DEPS:-0}" = 1 ]; then
   packages+=(libembree-dev libbenchmark-dev libopencv-dev povray hyperfine bc)

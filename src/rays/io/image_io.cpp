@@ -15,6 +15,7 @@
 
 #include <spng.h>
 #include <turbojpeg.h>
+#include <zlib.h>
 
 #include "rays/error.h"
 #include "rays/io/image_guard.h"
@@ -109,39 +110,66 @@ NoAlpha dropAlpha(const Image8& img) {
 // ---- PNG (libspng) ----
 //
 // Speed matters more than size (renders are written often, e.g. progressive output): zlib level 1, the
-// UP filter only, and the zlib strategy picked per image. Z_RLE (distance-1 matches only) is ~2x faster
-// than the default match search on anything noisy, but ~1.8x slower on perfectly clean images, where
-// Z_FILTERED finds long matches. A cheap roughness estimate (mean |left difference| on every 8th row:
-// 0.1-0.35 for clean gradients, >= 0.5 once there is sampling noise of +-1) chooses between them.
+// UP filter only, and the zlib strategy picked per image. Z_RLE (distance-1 matches only) is ~1.5-2x
+// faster than the match search of Z_FILTERED on most images, rendered scenes included (flat
+// backgrounds filter to runs of zeros, shading to noise), at about the same size; but on clean
+// synthetic images whose rows repeat with a period above one byte (an RGB gradient) Z_FILTERED is
+// both faster and ~20x smaller. So both are tried on a sample, two blocks of 4 consecutive rows
+// (UP-filtered as the encoder will), and Z_RLE is used unless Z_FILTERED's sample is much smaller.
 // Measured (Release -O2, best of 30; zlib 1.2.13, libspng 0.7.3; 2-vCPU AMD EPYC VM), time and size:
-//                                    spng defaults     SUB+Z_RLE        UP+Z_FILTERED    chosen
-//   640x480 RGB smooth gradient      10.6 ms   2 KB    4.1 ms  114 KB   2.3 ms    6 KB   UP+Z_FILTERED
-//   640x480 RGB gradient, +-2 noise  (not run)         7.6 ms  324 KB  10.0 ms  406 KB   UP+Z_RLE 7.7 ms
-//   640x480 RGB gradient, +-6 noise  61 ms   471 KB   10.2 ms  492 KB  15.4 ms  563 KB   UP+Z_RLE 10.2 ms
-//   4096x4096 RGB uniform noise      2.1-2.3 s 48 MB   0.6-0.8 s 48 MB  1.3-1.7 s 48 MB  UP+Z_RLE 0.6-0.7 s
+//                                    spng defaults     SUB+Z_RLE        UP+Z_FILTERED    UP+Z_RLE
+//   640x480 RGB smooth gradient      10.6 ms   2 KB    4.1 ms  114 KB   2.3 ms    6 KB
+//   640x480 RGB gradient, +-6 noise  61 ms   471 KB   10.2 ms  492 KB  15.4 ms  563 KB
+//   4096x4096 RGB uniform noise      2.1-2.3 s 48 MB   0.6-0.8 s 48 MB  1.3-1.7 s 48 MB
+//   gnarly.pov 640x480 render (best of 15)                              8.8 ms  295 KB   6.1 ms  309 KB
+//   balls2.pov 640x480 render (best of 15)                             10.2 ms  380 KB   6.8 ms  382 KB
 // (Trying several filters per row, NONE+SUB or ALL, costs 1.5-4x more for little gain at level 1.)
-// Through encodeImage("png", ...) with this code (best of 30 / of 3 for 4096^2, same machine):
-//   640x480 smooth gradient 2.4 ms (6.8 KB); shaded gradient 3.5 ms (74 KB); gradient +-6 noise 9.6 ms
-//   (503 KB); 4096x4096 noise 610-650 ms (48 MB, incompressible). JPEG q90 4:4:4 for comparison: 0.8 ms
-//   for the 640x480 gradient, 240 ms for the 4096x4096 noise.
+// JPEG q90 4:4:4 for comparison: 0.8 ms for the 640x480 gradient, 240 ms for the 4096x4096 noise.
 constexpr int kPngLevel = 1;
 constexpr int kPngFilters = SPNG_FILTER_CHOICE_UP;
-constexpr int kZFiltered = 1, kZRle = 3;  // zlib strategy values (Z_FILTERED, Z_RLE)
-constexpr double kRoughnessForRle = 0.5;
+constexpr int kSampleRows = 4;          // rows per sample block
+constexpr double kFilteredGain = 0.8;   // Z_FILTERED when its sample is below this fraction of Z_RLE's
 
-/// Mean absolute difference between horizontally adjacent samples of every 8th row.
-double roughness(const Image8& img) {
-    const int c = img.channels;
-    const size_t rowBytes = size_t(img.width) * size_t(c);
-    uint64_t sum = 0, n = 0;
-    for (int y = 0; y < img.height; y += 8) {
-        const uint8_t* r = img.row(y);
-        for (size_t i = size_t(c); i < rowBytes; ++i)
-            sum += uint64_t(std::abs(int(int8_t(uint8_t(r[i] - r[i - size_t(c)])))));
-        n += rowBytes - size_t(c);
-    }
-    return n ? double(sum) / double(n) : 0.0;
+// Compressed size of data with zlib level kPngLevel and the given strategy (0 when zlib fails). The
+// window only needs to reach back a row or two: a smaller one is cheaper to set up.
+size_t deflatedSize(const std::vector<uint8_t>& data, size_t rowBytes, int strategy) {
+    int windowBits = 9;
+    while (windowBits < 15 && (size_t(1) << windowBits) < 2 * rowBytes) ++windowBits;
+    z_stream zs{};
+    if (deflateInit2(&zs, kPngLevel, Z_DEFLATED, windowBits, 8, strategy) != Z_OK) return 0;
+    std::vector<uint8_t> out(deflateBound(&zs, uLong(data.size())));
+    zs.next_in = const_cast<Bytef*>(data.data());
+    zs.avail_in = uInt(data.size());
+    zs.next_out = out.data();
+    zs.avail_out = uInt(out.size());
+    const int rc = deflate(&zs, Z_FINISH);
+    const size_t size = rc == Z_STREAM_END ? size_t(zs.total_out) : 0;
+    deflateEnd(&zs);
+    return size;
 }
+
+}  // namespace
+
+int pngZlibStrategy(const Image8& img) {
+    const size_t rowBytes = size_t(img.width) * size_t(img.channels);
+    std::vector<uint8_t> sample;
+    auto addBlock = [&](int y0) {  // UP-filtered rows y0 .. y0 + kSampleRows - 1, each after its row above
+        for (int y = std::max(y0, 1); y < std::min(y0 + kSampleRows, img.height); ++y) {
+            const uint8_t* r = img.row(y);
+            const uint8_t* above = img.row(y - 1);
+            const size_t at = sample.size();
+            sample.resize(at + rowBytes);
+            for (size_t i = 0; i < rowBytes; ++i) sample[at + i] = uint8_t(r[i] - above[i]);
+        }
+    };
+    sample.reserve(2 * kSampleRows * rowBytes);
+    addBlock(img.height / 3);
+    addBlock(2 * img.height / 3);
+    const size_t rle = deflatedSize(sample, rowBytes, Z_RLE), filtered = deflatedSize(sample, rowBytes, Z_FILTERED);
+    return double(filtered) < kFilteredGain * double(rle) ? Z_FILTERED : Z_RLE;
+}
+
+namespace {
 
 int spngWrite(spng_ctx*, void* user, void* src, size_t length) {
     auto* out = static_cast<std::vector<uint8_t>*>(user);
@@ -168,8 +196,7 @@ std::vector<uint8_t> encodePng(const Image8& img) {
     if (!err) err = spng_set_ihdr(ctx.get(), &ihdr);
     if (!err) err = spng_set_option(ctx.get(), SPNG_IMG_COMPRESSION_LEVEL, kPngLevel);
     if (!err) err = spng_set_option(ctx.get(), SPNG_FILTER_CHOICE, kPngFilters);
-    const int strategy = roughness(img) >= kRoughnessForRle ? kZRle : kZFiltered;
-    if (!err) err = spng_set_option(ctx.get(), SPNG_IMG_COMPRESSION_STRATEGY, strategy);
+    if (!err) err = spng_set_option(ctx.get(), SPNG_IMG_COMPRESSION_STRATEGY, pngZlibStrategy(img));
     if (!err)
         err = spng_encode_image(ctx.get(), img.pixels.data(), img.pixels.size(), SPNG_FMT_PNG,
                                 SPNG_ENCODE_FINALIZE);

@@ -22,6 +22,10 @@ void writeImage(const std::string& path, const Image8& img, int jpegQuality = 90
 /// Throws rays::Error "error: ..." for an unknown extension, an invalid image or an encoder failure.
 std::vector<uint8_t> encodeImage(const std::string& extension, const Image8& img, int jpegQuality = 90);
 
+/// The zlib strategy (Z_RLE or Z_FILTERED) the PNG encoder uses for img: Z_RLE unless Z_FILTERED
+/// compresses a sample of the image's rows much better (clean synthetic images). Exposed for tests.
+int pngZlibStrategy(const Image8& img);
+
 /// Reads PNG, JPEG, BMP, TGA or binary PPM/PGM, keeping the file's channel count (1..4; 16-bit files are
 /// reduced to 8 bits). Throws rays::Error "PATH: error: cannot read image: <reason>".
 Image8 readImage(const std::string& path);
