@@ -260,6 +260,55 @@ TEST(Bvh, SphereRejectTestNeverLosesAHit) {
     EXPECT_GT(grazing, 9000);
 }
 
+// occludes() and the BVH's closest hit test spheres and world-space triangles without computing
+// normals until the final hit; both must agree with intersect() exactly: the same verdict for
+// every interval, the same t and the same normals (flat and smooth triangles, spheres).
+TEST(Bvh, NormalsForTheFinalHitOnlyMatchIntersect) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    auto point = [&] { return Vec3{u(rng), u(rng), u(rng)}; };
+    std::vector<Object> objects;
+    for (int i = 0; i < 40; ++i) {  // fewer than 64 triangles: they go into the object BVH
+        Object t = makeObject(ShapeType::Triangle, 3.0 * point(), 3.0 * point(), 3.0 * point(), 0, 0);
+        if (i % 2) {
+            t.smooth = true;
+            t.n0 = normalize(point() + Vec3{0, 0, 2});
+            t.n1 = normalize(point() + Vec3{0, 0, 2});
+            t.n2 = normalize(point() + Vec3{0, 0, 2});
+        }
+        objects.push_back(t);
+    }
+    for (int i = 0; i < 40; ++i) objects.push_back(sphere(3.0 * point(), 0.1 + 0.4 * (u(rng) + 1)));
+    const Bvh bvh(objects);
+    int hits = 0, blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray{5.0 * point(), normalize(point())};
+        const double tMax = i % 2 ? kInfinity : 4 * (u(rng) + 1);
+        for (const Object& o : objects) {
+            ShapeHit h;
+            const bool hit = intersect(o, ray, 1e-9, tMax, h);
+            ASSERT_EQ(occludes(o, ray, 1e-9, tMax), hit) << "ray " << i;
+            blocked += hit;
+        }
+        const Hit brute = bruteForceClosest(objects, ray, 1e-9);
+        const Hit fast = bvh.closest(objects, ray, 1e-9, kInfinity);
+        ASSERT_EQ(fast.object, brute.object) << "ray " << i;
+        if (!brute.valid()) continue;
+        ++hits;
+        ShapeHit h;
+        ASSERT_TRUE(intersect(objects[size_t(brute.object)], ray, 1e-9, kInfinity, h));
+        EXPECT_EQ(fast.t, h.t);
+        EXPECT_EQ(fast.normal.x, h.normal.x);
+        EXPECT_EQ(fast.normal.y, h.normal.y);
+        EXPECT_EQ(fast.normal.z, h.normal.z);
+        EXPECT_EQ(fast.geomNormal.x, h.geomNormal.x);
+        EXPECT_EQ(fast.geomNormal.y, h.geomNormal.y);
+        EXPECT_EQ(fast.geomNormal.z, h.geomNormal.z);
+    }
+    EXPECT_GT(hits, 4000);
+    EXPECT_GT(blocked, 5000);
+}
+
 TEST(Bvh, EmptyAndCoincidentCentroids) {
     std::vector<Object> none;
     const Bvh empty(none);

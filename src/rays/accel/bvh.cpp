@@ -118,22 +118,41 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
             }
         }
     }
-    // A sphere hit's normal is computed once, for the sphere that is nearest in the end.
+    // Sphere and world-space triangle hits get their normals once, for the object that is nearest
+    // in the end (the same tests and formulas as intersect()).
     const ObjectBvh::ExactSphere* bestSphere = nullptr;
+    const Object* bestTriangle = nullptr;
+    double triangleU = 0, triangleV = 0;
+    auto found = [&](uint32_t id, double t, float& tBest) {
+        best.t = t;
+        best.object = int(id);
+        best.hasUV = false;
+        tBest = upperT(t);
+    };
     auto exact = [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float& tBest) {
-        if (sphere.radius >= 0) {  // the same test as intersect(), on compact data
-            double t;
+        double t;
+        if (sphere.radius >= 0) {  // on the slot's compact copy of the sphere
             if (!sphereHitT(centreOf(sphere), sphere.radius, ray, tMin, best.t, t)) return false;
-            best.t = t;
-            best.object = int(id);
-            best.hasUV = false;
+            found(id, t, tBest);
             bestSphere = &sphere;
-            tBest = upperT(t);
+            bestTriangle = nullptr;
             return false;
         }
-        if (!intersect(objects[id], ray, tMin, best.t, sh)) return false;
+        const Object& o = objects[id];
+        if (o.type == ShapeType::Triangle && !usesLocalSpace(o)) {
+            double u, v;
+            if (!triangleHitT(o, ray, tMin, best.t, t, u, v)) return false;
+            found(id, t, tBest);
+            bestSphere = nullptr;
+            bestTriangle = &o;
+            triangleU = u;
+            triangleV = v;
+            return false;
+        }
+        if (!intersect(o, ray, tMin, best.t, sh)) return false;
         take(best, id, sh);
         bestSphere = nullptr;
+        bestTriangle = nullptr;
         tBest = upperT(best.t);
         return false;
     };
@@ -141,6 +160,8 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
     if (bestSphere) {
         best.normal = sphereNormal(centreOf(*bestSphere), bestSphere->radius, ray, best.t);
         best.geomNormal = best.normal;
+    } else if (bestTriangle) {
+        triangleNormals(*bestTriangle, triangleU, triangleV, best.geomNormal, best.normal);
     }
     return best;
 }

@@ -52,28 +52,41 @@ bool hitPlane(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
 }
 
 // Möller–Trumbore (1997).
-bool hitTriangle(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+}  // namespace
+
+bool triangleHitT(const Object& o, const Ray& r, double tMin, double tMax, double& t, double& u, double& v) {
     const Vec3 e1 = o.p1 - o.p0, e2 = o.p2 - o.p0;
     const Vec3 pv = cross(r.dir, e2);
     const double det = dot(e1, pv);
     if (det == 0) return false;
     const double inv = 1.0 / det;
     const Vec3 tv = r.origin - o.p0;
-    const double u = dot(tv, pv) * inv;
+    u = dot(tv, pv) * inv;
     if (u < 0 || u > 1) return false;
     const Vec3 qv = cross(tv, e1);
-    const double v = dot(r.dir, qv) * inv;
+    v = dot(r.dir, qv) * inv;
     if (v < 0 || u + v > 1) return false;
-    const double t = dot(e2, qv) * inv;
-    if (!(t > tMin && t < tMax)) return false;
-    h.t = t;
-    h.geomNormal = normalize(cross(e1, e2));
+    t = dot(e2, qv) * inv;
+    return t > tMin && t < tMax;
+}
+
+void triangleNormals(const Object& o, double u, double v, Vec3& geomNormal, Vec3& normal) {
+    geomNormal = normalize(cross(o.p1 - o.p0, o.p2 - o.p0));
     if (o.smooth) {
-        Vec3 n = normalize((1 - u - v) * o.n0 + u * o.n1 + v * o.n2);
-        h.normal = dot(n, h.geomNormal) < 0 ? -n : n;
+        const Vec3 n = normalize((1 - u - v) * o.n0 + u * o.n1 + v * o.n2);
+        normal = dot(n, geomNormal) < 0 ? -n : n;
     } else {
-        h.normal = h.geomNormal;
+        normal = geomNormal;
     }
+}
+
+namespace {
+
+bool hitTriangle(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    double t, u, v;
+    if (!triangleHitT(o, r, tMin, tMax, t, u, v)) return false;
+    h.t = t;
+    triangleNormals(o, u, v, h.geomNormal, h.normal);
     return true;
 }
 
@@ -294,6 +307,11 @@ bool occludes(const Object& o, const Ray& worldRay, double tMin, double tMax) {
     if (o.type == ShapeType::Mesh) {
         if (!usesLocalSpace(o)) return occludesMesh(*o.mesh, worldRay, tMin, tMax);
         return occludesMesh(*o.mesh, Ray{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)}, tMin, tMax);
+    }
+    if (!usesLocalSpace(o)) {  // the common shapes without the normals a hit would compute
+        double t, u, v;
+        if (o.type == ShapeType::Sphere) return sphereHitT(o.p1, o.r1, worldRay, tMin, tMax, t);
+        if (o.type == ShapeType::Triangle) return triangleHitT(o, worldRay, tMin, tMax, t, u, v);
     }
     ShapeHit h;
     if (!usesLocalSpace(o)) return hitLocal(o, worldRay, tMin, tMax, h);

@@ -60,6 +60,13 @@ struct ShapeHit {
     Vec3 dpdu;
 };
 
+/// Möller–Trumbore test of a Triangle object in the ray's space: t in (tMin, tMax) and the
+/// barycentrics (u, v) of the hit, no normals. triangleNormals gives them for a hit (u, v); the
+/// two together are hitTriangle, so callers that need normals only for their final hit (the BVH,
+/// occlusion tests) get the same numbers.
+bool triangleHitT(const Object& o, const Ray& r, double tMin, double tMax, double& t, double& u, double& v);
+void triangleNormals(const Object& o, double u, double v, Vec3& geomNormal, Vec3& normal);
+
 /// Nearest hit of the world ray with t in (tMin, tMax); returns false when none.
 bool intersect(const Object& o, const Ray& worldRay, double tMin, double tMax, ShapeHit& hit);
 
