@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "rays/render/renderer.h"
-#include "rays/render/worker_pool.h"
+#include "rays/util/worker_pool.h"
 
 using namespace rays;
 

@@ -12,7 +12,7 @@
 
 #include "rays/math/sampling.h"
 #include "rays/render/sampler.h"
-#include "rays/render/worker_pool.h"
+#include "rays/util/worker_pool.h"
 
 namespace rays {
 namespace {
@@ -103,24 +103,17 @@ void parallelFor(int count, int threads, const std::function<void(int, int)>& bo
             }
         }
     };
-    // Workers run on the process's pool threads (worker_pool.h), or on threads of their own when
-    // the pool is taken. With progress the calling thread only reports it: all n work elsewhere.
+    // Workers run on the process's pool threads (worker_pool.h). With progress the calling thread
+    // only reports it: all n work elsewhere.
     const int firstElsewhere = progress ? 0 : 1;
-    PoolJob job;
-    std::vector<std::thread> own;
-    if (n > firstElsewhere && !job.begin(firstElsewhere, n - firstElsewhere, worker))
-        for (int w = firstElsewhere; w < n; ++w) own.emplace_back(worker, w);
-    if (progress) {
+    runAlongside(firstElsewhere, n - firstElsewhere, worker, [&] {
+        if (!progress) return worker(0);
         std::unique_lock<std::mutex> lock(m);
         while (done.load() < count && !cancelled()) {
             progress(double(done.load()) / std::max(1, count));
             cv.wait_for(lock, std::chrono::milliseconds(100));
         }
-    } else {
-        worker(0);
-    }
-    job.wait();
-    for (std::thread& t : own) t.join();
+    });
     if (progress) progress(1.0);
 }
 

@@ -1,4 +1,4 @@
-#include "rays/render/worker_pool.h"
+#include "rays/util/worker_pool.h"
 
 #include <condition_variable>
 #include <cstdint>
@@ -87,6 +87,22 @@ void PoolJob::wait() {
     pool().wait();
     holding_ = false;
     pool().owner.unlock();
+}
+
+void runAlongside(int first, int count, const std::function<void(int)>& work,
+                  const std::function<void()>& alongside) {
+    PoolJob job;
+    std::vector<std::thread> own;
+    struct JoinOwn {  // also when alongside() throws: a joinable std::thread must not be destroyed
+        std::vector<std::thread>& threads;
+        ~JoinOwn() {
+            for (std::thread& t : threads) t.join();
+        }
+    } joinOwn{own};
+    if (count > 0 && !job.begin(first, count, work))
+        for (int w = first; w < first + count; ++w) own.emplace_back(work, w);
+    alongside();
+    job.wait();
 }
 
 }  // namespace rays
