@@ -4,13 +4,12 @@
 #   cmake -S . -B build-bench -DRAYS_BUILD_BENCH=ON && cmake --build build-bench --target bench_traverse
 #   ./build-bench/bench/bench_traverse            (about a minute; --quick for a smoke run)
 find_package(embree 3 REQUIRED)
-find_package(tinyobjloader REQUIRED)
 find_package(Threads REQUIRED)
 
 add_executable(bench_traverse ${CMAKE_CURRENT_LIST_DIR}/traverse.cpp)
 target_compile_options(bench_traverse PRIVATE ${RAYS_WARNINGS})
 target_include_directories(bench_traverse PRIVATE ${CMAKE_CURRENT_LIST_DIR}/../tests)  # support/icosphere.h
-target_link_libraries(bench_traverse PRIVATE rays_core embree tinyobjloader::tinyobjloader Threads::Threads)
+target_link_libraries(bench_traverse PRIVATE rays_core embree Threads::Threads)  # tinyobjloader: compiled into rays_core
 # Models and scenes live in shared/, beside the source tree.
 get_filename_component(RAYS_BENCH_SHARED_DIR "${CMAKE_CURRENT_LIST_DIR}/../../shared" ABSOLUTE)
 target_compile_definitions(bench_traverse PRIVATE RAYS_SHARED_DIR="${RAYS_BENCH_SHARED_DIR}")

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include "rays/accel/huge_pages.h"
+
 namespace rays::cli {
 
 void enableHugePages() {
@@ -17,7 +19,7 @@ void enableHugePages() {
     if (std::getenv("RAYS_NO_HUGEPAGES") != nullptr) return;
     void* block = std::malloc(kHugeHeapBytes);
     if (block == nullptr) return;
-    constexpr std::uintptr_t kHuge = std::uintptr_t(2) << 20;
+    constexpr std::uintptr_t kHuge = tribvh::kHugePage;
     const auto start = reinterpret_cast<std::uintptr_t>(block);
     const std::uintptr_t begin = (start + kHuge - 1) & ~(kHuge - 1);
     const std::uintptr_t end = (start + kHugeHeapBytes) & ~(kHuge - 1);

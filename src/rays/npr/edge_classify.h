@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "rays/math/vec3.h"
 #include "rays/npr/edge_settings.h"
 #include "rays/npr/surfaces.h"
 #include "rays/render/tracer.h"
@@ -31,6 +32,9 @@ struct EdgeRecord {
     float t;           ///< primary hit distance
     float p[3];        ///< primary hit point
     float n[3];        ///< primary facing normal
+
+    Vec3 point() const { return {p[0], p[1], p[2]}; }
+    Vec3 normal() const { return {n[0], n[1], n[2]}; }
 };
 
 /// Compacts a probe()/render record.

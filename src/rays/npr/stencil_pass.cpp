@@ -223,8 +223,7 @@ struct StencilPass::Impl {
                     const EdgeRecord& plane = tap.w[same] >= tap.w[other] ? near0 : near1;
                     const double t = tangentPlaneT(r, plane);
                     if (t > 0) {
-                        const Vec3 nrm{plane.n[0], plane.n[1], plane.n[2]};
-                        if (tracer.blockedLightsAt(r.at(t), nrm, tc) != centre.blocked) ++m;
+                        if (tracer.blockedLightsAt(r.at(t), plane.normal(), tc) != centre.blocked) ++m;
                         continue;
                     }
                 }

@@ -15,10 +15,10 @@ namespace rays {
 /// Distance along r to the tangent plane of record e, or a negative value when r grazes the
 /// plane (|cos| below 0.05) or meets it behind its origin.
 inline double tangentPlaneT(const Ray& r, const EdgeRecord& e) {
-    const Vec3 n{e.n[0], e.n[1], e.n[2]};
+    const Vec3 n = e.normal();
     const double cosine = dot(r.dir, n);
     if (std::fabs(cosine) < 0.05 * length(r.dir)) return -1;
-    return dot(Vec3{e.p[0], e.p[1], e.p[2]} - r.origin, n) / cosine;
+    return dot(e.point() - r.origin, n) / cosine;
 }
 
 /// Which of two facets meeting at a crease the ray r sees: 0 for the facet of record a, 1 for
@@ -28,7 +28,7 @@ inline double tangentPlaneT(const Ray& r, const EdgeRecord& e) {
 inline int creaseSide(const Ray& r, const EdgeRecord& a, const EdgeRecord& b) {
     const double ta = tangentPlaneT(r, a), tb = tangentPlaneT(r, b);
     if (ta <= 0 || tb <= 0) return -1;
-    const Vec3 na{a.n[0], a.n[1], a.n[2]};
+    const Vec3 na = a.normal();
     const Vec3 ab{b.p[0] - a.p[0], b.p[1] - a.p[1], b.p[2] - a.p[2]};
     const double side = dot(ab, na);
     if (std::fabs(side) <= 1e-3 * length(ab)) return -1;
