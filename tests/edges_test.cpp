@@ -58,7 +58,13 @@ bool project(const Camera& c, Vec3 p, double& x, double& y) {
 
 using PixelSet = std::set<std::pair<int, int>>;
 
-// Pixels containing visible samples of a curve. visible(p) decides visibility.
+// Sum of the coverage over the image.
+float totalInk(const LineCoverage& lc) {
+    float ink = 0;
+    for (float c : lc.coverage) ink += c;
+    return ink;
+}
+
 // The circle centre + cos(2πu)·a + sin(2πu)·b, u in [0, 1), as a curve for truthPixels.
 std::function<Vec3(double)> circle(Vec3 centre, Vec3 a, Vec3 b) {
     return [=](double u) {
@@ -67,6 +73,7 @@ std::function<Vec3(double)> circle(Vec3 centre, Vec3 a, Vec3 b) {
     };
 }
 
+// Pixels containing visible samples of a curve. visible(p) decides visibility.
 PixelSet truthPixels(const Camera& cam, const std::function<Vec3(double)>& curve,
                      const std::function<bool(Vec3)>& visible = {}) {
     PixelSet out;
@@ -184,9 +191,7 @@ TEST(StencilTaps, CreasesNeedNoTapRays) {
                                   "box { <-1.5, -1.5, -1.5>, <1.5, 1.5, 1.5> rotate <25, 35, 0> pigment { color rgb 1 } }\n");
     TraceStats stats;
     const LineCoverage lc = lines(scene, kEdgeCrease, EdgeMethod::Stencil, 1.5, 0, kW, kH, &stats);
-    float ink = 0;
-    for (float c : lc.coverage) ink += c;
-    EXPECT_GT(ink, 100.0f);
+    EXPECT_GT(totalInk(lc), 100.0f);
     // Besides the pixel centres, rays only for taps next to the outline, where the background is
     // among the four records (tracing every mixed tap takes about 1400).
     EXPECT_GE(stats.primaryRays, uint64_t(kW) * kH);
@@ -231,9 +236,7 @@ TEST(StencilPass, BandsDrawnAsRowsArriveMatchDrawingAtTheEnd) {
 
     TraceStats atEnd, streamed, duringRender;
     const LineCoverage reference = StencilPass(scene, bvh, s, e, records).finish(atEnd);
-    float ink = 0;
-    for (float c : reference.coverage) ink += c;
-    ASSERT_GT(ink, 100.0f);
+    ASSERT_GT(totalInk(reference), 100.0f);
 
     // Rows reported in 7-row pieces, bottom up, by three threads taking pieces in turn.
     StencilPass pass(scene, bvh, s, e, records);
