@@ -70,6 +70,7 @@ Bvh::Bvh(const std::vector<Object>& objects) {
     size_t plainTriangles = 0;
     for (const Object& o : objects) plainTriangles += o.type == ShapeType::Triangle && !o.localSpace;
     const bool triangleBvh = plainTriangles >= kTriangleBvhMin;
+    boundedOf_.assign(objects.size(), -1);
     for (uint32_t i = 0; i < objects.size(); ++i) {
         const Object& o = objects[i];
         if (triangleBvh && o.type == ShapeType::Triangle && !o.localSpace) {
@@ -85,109 +86,246 @@ Bvh::Bvh(const std::vector<Object>& objects) {
             unbounded_.push_back(i);
             continue;
         }
+        boundedOf_[i] = int32_t(bounded_.size());
         prims.push_back(objectPrim(o, b, i));
+        const ObjectBvh::Prim& p = prims.back();
+        bounded_.push_back({p.isSphere ? ObjectBvh::ExactSphere{{p.center[0], p.center[1], p.center[2]}, p.sphereRadius}
+                                       : ObjectBvh::ExactSphere{{0, 0, 0}, -1},
+                            i, -1});
+        const Vec3 n = cross(o.p1 - o.p0, o.p2 - o.p0);
+        if (o.type == ShapeType::Triangle && !usesLocalSpace(o) && length(n) > 0) {
+            // The vertices' own offsets differ by rounding: take the middle one (reachesPlane
+            // and the buffer's growth leave room for the rest).
+            const Vec3 u = normalize(n);
+            const double d0 = dot(u, o.p0), d1 = dot(u, o.p1), d2 = dot(u, o.p2);
+            bounded_.back().plane = int32_t(planes_.size());
+            planes_.push_back({u, std::max(std::min(d0, d1), std::min(std::max(d0, d1), d2))});
+        }
     }
     if (!triObject_.empty())
         triangles_.build(positions.data(), positions.size() / 3, indices.data(), triObject_.size());
     objects_.build(prims);
 }
 
-Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
+namespace {
+
+// The exact closest-hit tests of the objects in the object BVH, shared by its walk and the origin
+// buffer's: spheres and world-space triangles get their normals once, for the object that is
+// nearest in the end (the same tests and formulas as intersect()).
+class NearestBounded {
+public:
+    NearestBounded(const std::vector<Object>& objects, const Ray& ray, double tMin, Hit& best)
+        : objects_(objects), ray_(ray), tMin_(tMin), best_(best) {}
+
+    /// Tests object id (sphere: its compact copy when it is a world-space sphere, radius < 0
+    /// otherwise); true when it is the new nearest hit.
+    bool test(uint32_t id, const ObjectBvh::ExactSphere& sphere) {
+        double t;
+        if (sphere.radius >= 0) {
+            if (!sphereHitT(centreOf(sphere), sphere.radius, ray_, tMin_, best_.t, t)) return false;
+            found(id, t);
+            sphere_ = &sphere;
+            return true;
+        }
+        const Object& o = objects_[id];
+        if (o.type == ShapeType::Triangle && !usesLocalSpace(o)) {
+            double u, v;
+            if (!triangleHitT(o, ray_, tMin_, best_.t, t, u, v)) return false;
+            found(id, t);
+            triangle_ = &o;
+            u_ = u;
+            v_ = v;
+            return true;
+        }
+        ShapeHit sh;
+        if (!intersect(o, ray_, tMin_, best_.t, sh)) return false;
+        take(best_, id, sh);
+        sphere_ = nullptr;
+        triangle_ = nullptr;
+        return true;
+    }
+
+    /// The normals of the nearest hit when a test above found it.
+    void finish() {
+        if (sphere_) {
+            best_.normal = sphereNormal(centreOf(*sphere_), sphere_->radius, ray_, best_.t);
+            best_.geomNormal = best_.normal;
+        } else if (triangle_) {
+            triangleNormals(*triangle_, u_, v_, best_.geomNormal, best_.normal);
+        }
+    }
+
+private:
+    void found(uint32_t id, double t) {
+        best_.t = t;
+        best_.object = int(id);
+        best_.hasUV = false;
+        sphere_ = nullptr;
+        triangle_ = nullptr;
+    }
+
+    const std::vector<Object>& objects_;
+    const Ray& ray_;
+    double tMin_;
+    Hit& best_;
+    const ObjectBvh::ExactSphere* sphere_ = nullptr;
+    const Object* triangle_ = nullptr;
+    double u_ = 0, v_ = 0;
+};
+
+// The exact any-hit test of an object of the object BVH.
+bool blocks(const std::vector<Object>& objects, uint32_t id, const ObjectBvh::ExactSphere& sphere, const Ray& ray,
+            double tMin, double tMax) {
+    double t;
+    return sphere.radius >= 0 ? sphereHitT(centreOf(sphere), sphere.radius, ray, tMin, tMax, t)
+                              : occludes(objects[id], ray, tMin, tMax);
+}
+
+// A distance bound of the buffer against a ray's reach, with room for the rounding of the reach.
+constexpr double kReachSlack = 1 + 1e-9;
+
+}  // namespace
+
+Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
     Hit best;
     best.t = tMax;
     ShapeHit sh;
     for (uint32_t id : unbounded_)
         if (intersect(objects[id], ray, tMin, best.t, sh)) take(best, id, sh);
-    const TriRay fr = floatRay(ray);
-    if (!triangles_.empty()) {
-        TriHit th;
-        if (triangles_.intersect(fr, float(tMin), upperT(best.t), th)) {
-            // Refine in double precision on the triangle found (exact t and normal for the
-            // course's printouts); fall back to the float hit at a grazing edge.
-            const uint32_t id = triObject_[th.prim];
-            if (intersect(objects[id], ray, tMin, kInfinity, sh) && sh.t < best.t) {
-                take(best, id, sh);
-            } else if (double(th.t) < best.t && double(th.t) > tMin) {
-                const Object& o = objects[id];
-                best.t = th.t;
-                best.object = int(id);
-                best.hasUV = false;
-                best.geomNormal = normalize(cross(o.p1 - o.p0, o.p2 - o.p0));
-                best.normal = o.smooth ? normalize((1 - th.u - th.v) * o.n0 + th.u * o.n1 + th.v * o.n2) : best.geomNormal;
-                if (dot(best.normal, best.geomNormal) < 0) best.normal = -best.normal;
-            }
+    if (triangles_.empty()) return best;
+    TriHit th;
+    if (triangles_.intersect(floatRay(ray), float(tMin), upperT(best.t), th)) {
+        // Refine in double precision on the triangle found (exact t and normal for the course's
+        // printouts); fall back to the float hit at a grazing edge.
+        const uint32_t id = triObject_[th.prim];
+        if (intersect(objects[id], ray, tMin, kInfinity, sh) && sh.t < best.t) {
+            take(best, id, sh);
+        } else if (double(th.t) < best.t && double(th.t) > tMin) {
+            const Object& o = objects[id];
+            best.t = th.t;
+            best.object = int(id);
+            best.hasUV = false;
+            best.geomNormal = normalize(cross(o.p1 - o.p0, o.p2 - o.p0));
+            best.normal = o.smooth ? normalize((1 - th.u - th.v) * o.n0 + th.u * o.n1 + th.v * o.n2) : best.geomNormal;
+            if (dot(best.normal, best.geomNormal) < 0) best.normal = -best.normal;
         }
-    }
-    // Sphere and world-space triangle hits get their normals once, for the object that is nearest
-    // in the end (the same tests and formulas as intersect()).
-    const ObjectBvh::ExactSphere* bestSphere = nullptr;
-    const Object* bestTriangle = nullptr;
-    double triangleU = 0, triangleV = 0;
-    auto found = [&](uint32_t id, double t, float& tBest) {
-        best.t = t;
-        best.object = int(id);
-        best.hasUV = false;
-        tBest = upperT(t);
-    };
-    auto exact = [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float& tBest) {
-        double t;
-        if (sphere.radius >= 0) {  // on the slot's compact copy of the sphere
-            if (!sphereHitT(centreOf(sphere), sphere.radius, ray, tMin, best.t, t)) return false;
-            found(id, t, tBest);
-            bestSphere = &sphere;
-            bestTriangle = nullptr;
-            return false;
-        }
-        const Object& o = objects[id];
-        if (o.type == ShapeType::Triangle && !usesLocalSpace(o)) {
-            double u, v;
-            if (!triangleHitT(o, ray, tMin, best.t, t, u, v)) return false;
-            found(id, t, tBest);
-            bestSphere = nullptr;
-            bestTriangle = &o;
-            triangleU = u;
-            triangleV = v;
-            return false;
-        }
-        if (!intersect(o, ray, tMin, best.t, sh)) return false;
-        take(best, id, sh);
-        bestSphere = nullptr;
-        bestTriangle = nullptr;
-        tBest = upperT(best.t);
-        return false;
-    };
-    objects_.traverse<false>(fr.org, fr.dir, lowerT(tMin), upperT(best.t), exact);
-    if (bestSphere) {
-        best.normal = sphereNormal(centreOf(*bestSphere), bestSphere->radius, ray, best.t);
-        best.geomNormal = best.normal;
-    } else if (bestTriangle) {
-        triangleNormals(*bestTriangle, triangleU, triangleV, best.geomNormal, best.normal);
     }
     return best;
 }
 
-int Bvh::anyBlocker(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
+Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
+    Hit best = closestUnbounded(objects, ray, tMin, tMax);
+    NearestBounded nearest(objects, ray, tMin, best);
+    const TriRay fr = floatRay(ray);
+    objects_.traverse<false>(fr.org, fr.dir, lowerT(tMin), upperT(best.t),
+                             [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float& tBest) {
+                                 if (nearest.test(id, sphere)) tBest = upperT(best.t);
+                                 return false;
+                             });
+    nearest.finish();
+    return best;
+}
+
+
+Hit Bvh::closestFrom(const OriginBuffer::Cells& cells, const std::vector<Object>& objects, const Ray& ray,
+                     double tMin, double tMax) const {
+    if (!cells.valid) return closest(objects, ray, tMin, tMax);
+    Hit best = closestUnbounded(objects, ray, tMin, tMax);
+    NearestBounded nearest(objects, ray, tMin, best);
+    // A hit at t lies t |dir| from the origin: entries farther than that cannot be nearer.
+    const double len = length(ray.dir) * kReachSlack;
+    double reach = best.t * len;
+    for (const OriginBuffer::Span& span : {cells.fine, cells.coarse})
+        for (const OriginBuffer::Entry* e = span.first; e != span.last && double(e->minDist) <= reach; ++e) {
+            const Bounded& b = bounded_[e->id];
+            if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, best.t, 0.0)) continue;
+            if (nearest.test(b.id, b.sphere)) reach = best.t * len;
+        }
+    nearest.finish();
+    return best;
+}
+
+int Bvh::blockerUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
     for (uint32_t id : unbounded_)
         if (occludes(objects[id], ray, tMin, tMax)) return int(id);
-    const TriRay fr = floatRay(ray);
     if (!triangles_.empty()) {
         // Float origins are rounded by up to half an ulp of their largest coordinate: widen the
         // interval's end by that much so that a blocker right at tMax is still found.
         const double slack = 1e-6 * (std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)}) + 1.0);
-        if (triangles_.occluded(fr, float(tMin), upperT(tMax + slack))) return kSomeTriangle;
+        if (triangles_.occluded(floatRay(ray), float(tMin), upperT(tMax + slack))) return kSomeTriangle;
     }
-    int blocker = kNoBlocker;
-    auto exact = [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float&) {
-        double t;
-        if (sphere.radius >= 0
-                ? !sphereHitT(centreOf(sphere), sphere.radius, ray, tMin, tMax, t)
-                : !occludes(objects[id], ray, tMin, tMax))
-            return false;
-        blocker = int(id);
-        return true;
-    };
-    objects_.traverse<true>(fr.org, fr.dir, lowerT(tMin), upperT(tMax), exact);
+    return kNoBlocker;
+}
+
+int Bvh::anyBlocker(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
+    int blocker = blockerUnbounded(objects, ray, tMin, tMax);
+    if (blocker != kNoBlocker) return blocker;
+    const TriRay fr = floatRay(ray);
+    objects_.traverse<true>(fr.org, fr.dir, lowerT(tMin), upperT(tMax),
+                            [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float&) {
+                                if (!blocks(objects, id, sphere, ray, tMin, tMax)) return false;
+                                blocker = int(id);
+                                return true;
+                            });
     return blocker;
+}
+
+int Bvh::anyBlockerFrom(const OriginBuffer::Cells& cells, const std::vector<Object>& objects, const Ray& ray,
+                        double tMin, double tMax, double reachIn) const {
+    if (!cells.valid) return anyBlocker(objects, ray, tMin, tMax);
+    const int blocker = blockerUnbounded(objects, ray, tMin, tMax);
+    if (blocker != kNoBlocker) return blocker;
+    // The ray stays within the dilation of the segment, whose points are at most |toPoint| away.
+    const double reach = reachIn * kReachSlack;
+    for (const OriginBuffer::Span& span : {cells.fine, cells.coarse})
+        for (const OriginBuffer::Entry* e = span.first; e != span.last && double(e->minDist) <= reach; ++e) {
+            const Bounded& b = bounded_[e->id];
+            if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, tMax, 0.0)) continue;
+            if (blocks(objects, b.id, b.sphere, ray, tMin, tMax)) return int(b.id);
+        }
+    return kNoBlocker;
+}
+
+bool Bvh::occludesObject(const std::vector<Object>& objects, uint32_t id, const Ray& ray, double tMin,
+                         double tMax) const {
+    const int32_t k = id < boundedOf_.size() ? boundedOf_[id] : -1;
+    if (k < 0) return occludes(objects[id], ray, tMin, tMax);
+    return blocks(objects, id, bounded_[size_t(k)].sphere, ray, tMin, tMax);
+}
+
+bool Bvh::reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd, double slack) const {
+    const double h0 = dot(p.normal, a) - p.offset;
+    const double nd = dot(p.normal, d);
+    const double h1 = nd == 0 ? h0 : h0 + tEnd * nd;  // tEnd may be infinite
+    // Room for the rounding of the offsets (of the vertices and of these sums).
+    const double g = slack + 1e-9 * (std::fabs(p.offset) + std::fabs(h0) + std::fabs(dot(p.normal, a)) + 1e-300) +
+                     1e-9 * std::fabs(tEnd * nd);
+    return !((h0 > g && h1 > g) || (h0 < -g && h1 < -g));
+}
+
+std::vector<OriginBuffer::Bound> Bvh::originBounds(const std::vector<Object>& objects) const {
+    std::vector<OriginBuffer::Bound> out(bounded_.size());
+    for (size_t k = 0; k < bounded_.size(); ++k) {
+        const Object& o = objects[bounded_[k].id];
+        OriginBuffer::Bound& b = out[k];
+        b.id = uint32_t(k);
+        if (bounded_[k].sphere.radius >= 0) {
+            b.isSphere = true;
+            b.centre = centreOf(bounded_[k].sphere);
+            b.radius = bounded_[k].sphere.radius;
+            continue;
+        }
+        const Bounds box = worldBounds(o);
+        b.lo = box.lo;
+        b.hi = box.hi;
+        if (bounded_[k].plane >= 0) {
+            const Plane& p = planes_[size_t(bounded_[k].plane)];
+            b.flat = true;
+            b.normal = p.normal;
+            b.offset = p.offset;
+        }
+    }
+    return out;
 }
 
 int Bvh::depth() const { return std::max(objects_.depth(), triangles_.stats().depth); }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rays/accel/object_bvh.h"
+#include "rays/accel/origin_buffer.h"
 #include "rays/accel/triangle_bvh.h"
 #include "rays/geometry/ray.h"
 #include "rays/scene/object.h"
@@ -43,6 +44,26 @@ public:
     /// first blocker.
     int anyBlocker(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
 
+    /// occludes(objects[id], ...) on the BVH's compact copy of the object when it has one (world
+    /// spheres): the same test without loading the object.
+    bool occludesObject(const std::vector<Object>& objects, uint32_t id, const Ray& ray, double tMin, double tMax) const;
+
+    /// Bounds of the objects in the object BVH, for an OriginBuffer over them (its entry ids are
+    /// positions in this list).
+    std::vector<OriginBuffer::Bound> originBounds(const std::vector<Object>& objects) const;
+    size_t boundedCount() const { return bounded_.size(); }
+    /// closest() for a ray that starts at the origin of an OriginBuffer built over originBounds()
+    /// with no dilation; cells: the buffer's cells of ray.dir. The object BVH's objects come from
+    /// the cells' lists. Same result.
+    Hit closestFrom(const OriginBuffer::Cells& cells, const std::vector<Object>& objects, const Ray& ray, double tMin,
+                    double tMax) const;
+    /// anyBlocker() for a ray that runs, from tMin to tMax, within the dilation of an OriginBuffer
+    /// built over originBounds() of the segment from its origin to origin + toPoint (a shadow
+    /// ray from a point near a surface towards a point light at the origin); cells: the buffer's
+    /// cells of toPoint, reach: |toPoint|. Same result.
+    int anyBlockerFrom(const OriginBuffer::Cells& cells, const std::vector<Object>& objects, const Ray& ray,
+                       double tMin, double tMax, double reach) const;
+
     /// 8-wide nodes of the object BVH and of the triangle BVH.
     size_t nodeCount() const { return objects_.nodeCount() + triangles_.stats().nodes; }
     size_t triangleCount() const { return triObject_.size(); }
@@ -50,10 +71,35 @@ public:
     int depth() const;
 
 private:
+    /// An object of the object BVH: its index and, for world-space spheres, the sphere; for
+    /// world-space triangles the index of their plane in planes_ (else -1).
+    struct Bounded {
+        ObjectBvh::ExactSphere sphere;
+        uint32_t id;
+        int32_t plane;
+    };
+    /// dot(normal, x) = offset for every point x of a flat object (normal unit length), up to rounding.
+    struct Plane {
+        Vec3 normal;
+        double offset;
+    };
+    /// False when the segment from a to a + t·d, t in [0, tEnd], stays farther than slack from
+    /// the plane (on one side): no flat object in it can meet a ray that runs within slack of
+    /// the segment.
+    bool reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd, double slack) const;
+    /// Nearest hit among the planes and the triangle BVH (the part of closest() that does not
+    /// depend on how the other objects are found).
+    Hit closestUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
+    /// A blocker among the planes and the triangle BVH, or kNoBlocker.
+    int blockerUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
+
     ObjectBvh objects_;                ///< bounded objects other than untransformed triangles
     std::vector<uint32_t> unbounded_;  ///< planes: always tested
     TriangleBvh triangles_;            ///< untransformed triangle objects
     std::vector<uint32_t> triObject_;  ///< triangle index in triangles_ → object index
+    std::vector<Bounded> bounded_;     ///< the objects in objects_, in scene order
+    std::vector<Plane> planes_;        ///< of the world-space triangles among them
+    std::vector<int32_t> boundedOf_;   ///< object index → index in bounded_, or -1
 };
 
 }  // namespace rays

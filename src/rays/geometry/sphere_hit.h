@@ -13,6 +13,9 @@ inline bool sphereHitT(const Vec3& centre, double radius, const Ray& r, double t
     const double a = dot(r.dir, r.dir);
     const double b = dot(oc, r.dir);
     const double c = dot(oc, oc) - radius * radius;
+    // Starting outside and moving away: both roots are <= 0 (also as computed: b² - a c rounds to
+    // at most fl(b²), whose square root is |b|), so nothing in (tMin, tMax) when tMin >= 0.
+    if (c > 0 && b > 0 && tMin >= 0) return false;
     const double disc = b * b - a * c;
     if (disc < 0) return false;
     const double sq = std::sqrt(disc);

@@ -175,7 +175,11 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
               const RowsFn& onRows) {
     ImageF img = ImageF::uninitialized(s.width, s.height);  // every pixel is written below
     const ViewSetup view = resolveView(scene, s);
-    const Tracer tracer(scene, bvh, s);
+    // Primary rays start at the eye unless a lens spreads them (the edge pass is a pinhole).
+    const bool pinholeRays = view.aperture <= 0 || s.aaEdges;
+    const SharedOrigins origins =
+        Tracer::buildSharedOrigins(scene, bvh, pinholeRays ? &view.rays.location : nullptr, s.threads);
+    const Tracer tracer(scene, bvh, s, &origins);
     const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
     const int tileCount = tilesX * tilesY;
     std::vector<TraceContext> perThread(size_t(resolveThreads(s.threads)));

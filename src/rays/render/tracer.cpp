@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rays/image/parallel.h"
 #include "rays/math/sampling.h"
 #include "rays/render/shading.h"
 #include "rays/render/texturing.h"
@@ -9,7 +10,7 @@
 namespace rays {
 namespace {
 
-constexpr double kSurfaceOffset = 0.001;  // new rays start this far along their direction
+constexpr double kSurfaceOffset = Tracer::kSurfaceOffset;
 constexpr double kTMin = 1e-6;            // hits closer than this are ignored
 
 // Refraction of unit d through unit normal n facing d's origin side (dot(d, n) < 0) with
@@ -62,27 +63,67 @@ SecondaryWeights secondaryWeights(const Material& m, Vec3 dir, Vec3 N, bool ente
 
 }  // namespace
 
-Hit Tracer::firstHit(const Ray& ray) const { return bvh_.closest(scene_.objects, ray, kTMin, kInfinity); }
+// Below this many objects in the object BVH, building origin buffers costs more than they save.
+constexpr size_t kSharedOriginsMin = 256;
+
+SharedOrigins Tracer::buildSharedOrigins(const Scene& scene, const Bvh& bvh, const Vec3* eye, int threads) {
+    SharedOrigins out;
+    if (bvh.boundedCount() < kSharedOriginsMin) return out;
+    const std::vector<OriginBuffer::Bound> bounds = bvh.originBounds(scene.objects);
+    out.lights.resize(scene.lights.size());
+    struct Job {
+        OriginBuffer* buffer;
+        Vec3 origin;
+        double dilation;
+    };
+    std::vector<Job> jobs;
+    if (eye) jobs.push_back({&out.eye, *eye, 0.0});
+    // Shadow rays leave P + kSurfaceOffset N (N unit): within kSurfaceOffset of the segment from
+    // the light to P, with room for the rounding of N.
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+        if (!scene.lights[i].parallel && !scene.lights[i].area)
+            jobs.push_back({&out.lights[i], scene.lights[i].position, kSurfaceOffset * 1.01});
+    parallelFor(int(jobs.size()), threads, [&](int j) {
+        const Job& job = jobs[size_t(j)];
+        job.buffer->build(bounds, job.origin, job.dilation);
+    });
+    return out;
+}
+
+Hit Tracer::firstHit(const Ray& ray) const {
+    if (origins_ && !origins_->eye.empty() && ray.origin == origins_->eye.origin())
+        return bvh_.closestFrom(origins_->eye.cells(ray.dir), scene_.objects, ray, kTMin, kInfinity);
+    return bvh_.closest(scene_.objects, ray, kTMin, kInfinity);
+}
 
 Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log, PathInfo* info) const {
     ++ctx.stats.primaryRays;
     return trace(ray, Frame{}, ctx, log, info).color;
 }
 
-bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface) const {
+bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
+                      const Vec3* fromLight) const {
     ++ctx.stats.shadowRays;
+    // The light's buffer cells first: their loads overlap the tests below.
+    OriginBuffer::Cells cells;
+    if (fromLight && origins_ && light < origins_->lights.size()) {
+        cells = origins_->lights[light].cells(*fromLight);
+        __builtin_prefetch(cells.fine.first);
+    }
     const bool cached = light < size_t(TraceContext::kCachedLights);
     // Any-hit: testing a likely blocker first changes the cost, never the answer.
     if (intoSurface && ctx.surfaceObject >= 0 &&
-        occludes(scene_.objects[size_t(ctx.surfaceObject)], shadow, kTMin, tMax)) {
+        bvh_.occludesObject(scene_.objects, uint32_t(ctx.surfaceObject), shadow, kTMin, tMax)) {
         if (cached) ctx.lastBlocker[light] = ctx.surfaceObject;
         return true;
     }
     if (cached && ctx.lastBlocker[light] >= 0 &&
-        occludes(scene_.objects[size_t(ctx.lastBlocker[light])], shadow, kTMin, tMax))
+        bvh_.occludesObject(scene_.objects, uint32_t(ctx.lastBlocker[light]), shadow, kTMin, tMax))
         return true;
-    if (!cached) return bvh_.any(scene_.objects, shadow, kTMin, tMax);
-    const int blocker = bvh_.anyBlocker(scene_.objects, shadow, kTMin, tMax);
+    const int blocker = cells.valid
+                            ? bvh_.anyBlockerFrom(cells, scene_.objects, shadow, kTMin, tMax, length(*fromLight))
+                            : bvh_.anyBlocker(scene_.objects, shadow, kTMin, tMax);
+    if (!cached) return blocker != Bvh::kNoBlocker;
     if (blocker >= 0) ctx.lastBlocker[light] = blocker;
     return blocker != Bvh::kNoBlocker;
 }
@@ -118,7 +159,8 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         const double dist = length(toLight);
         if (dist == 0) return 1.0;
         const Vec3 L = toLight / dist;
-        if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0)) return 0.0;
+        const Vec3 fromLight = -toLight;
+        if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0, &fromLight)) return 0.0;
         addSample(L, light.color);
         return 1.0;
     }
@@ -195,7 +237,10 @@ int Tracer::blockedLightsAt(Vec3 P, Vec3 N, TraceContext& ctx) const {
         const Vec3 toLight = L.parallel ? -L.direction : L.position - P;
         const double dist = length(toLight);
         if (dist == 0) continue;
-        if (shadowed(Ray{origin, toLight / dist}, L.parallel ? kInfinity : dist - kSurfaceOffset, li, ctx)) ++blocked;
+        const Vec3 fromLight = -toLight;
+        if (shadowed(Ray{origin, toLight / dist}, L.parallel ? kInfinity : dist - kSurfaceOffset, li, ctx, false,
+                     L.parallel ? nullptr : &fromLight))
+            ++blocked;
     }
     return blocked;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rays/accel/bvh.h"
+#include "rays/accel/origin_buffer.h"
 #include "rays/render/sampler.h"
 #include "rays/render/settings.h"
 #include "rays/scene/scene.h"
@@ -85,10 +86,25 @@ struct alignas(64) TraceContext {
     TraceContext() { std::fill(std::begin(lastBlocker), std::end(lastBlocker), -1); }
 };
 
+/// Origin buffers (accel/origin_buffer.h) for the rays of a render that share an origin: the
+/// primary rays of a pinhole camera and the shadow rays towards point lights. Optional: without
+/// them the tracer walks the BVH for every ray, with the same results.
+struct SharedOrigins {
+    OriginBuffer eye;                  ///< empty when not built
+    std::vector<OriginBuffer> lights;  ///< per scene light; empty for area and parallel lights
+};
+
 class Tracer {
 public:
-    Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings)
-        : scene_(scene), bvh_(bvh), settings_(settings) {}
+    /// Rays leave a surface this far along their direction (shadow rays: along the normal).
+    static constexpr double kSurfaceOffset = 0.001;
+
+    Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
+        : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins) {}
+
+    /// Buffers for the scene's point lights and, when eye is given, for primary rays from it;
+    /// none for scenes with few objects, where the BVH alone is as fast. threads: for the build.
+    static SharedOrigins buildSharedOrigins(const Scene& scene, const Bvh& bvh, const Vec3* eye, int threads);
 
     /// Colour seen along a primary ray. When log is non-null the ray tree is appended to it in
     /// depth-first order (each node before its children); when info is non-null it receives the
@@ -135,11 +151,16 @@ private:
     Vec3 gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
     /// intoSurface: the ray leaves towards the inside of the surface being shaded, which then
     /// most likely blocks it (tested first).
-    bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface = false) const;
+    /// fromLight: for a point light, the vector from the light to the shaded point (the shadow ray
+    /// leaves that point offset by kSurfaceOffset along its unit normal); lets the light's origin
+    /// buffer answer.
+    bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface = false,
+                  const Vec3* fromLight = nullptr) const;
 
     const Scene& scene_;
     const Bvh& bvh_;
     const RenderSettings& settings_;
+    const SharedOrigins* origins_;
 };
 
 }  // namespace rays
