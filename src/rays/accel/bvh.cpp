@@ -92,8 +92,8 @@ Bvh::Bvh(const std::vector<Object>& objects) {
         bounded_.push_back({p.isSphere ? ObjectBvh::ExactSphere{{p.center[0], p.center[1], p.center[2]}, p.sphereRadius}
                                        : ObjectBvh::ExactSphere{{0, 0, 0}, -1},
                             i, -1});
-        const Vec3 n = cross(o.p1 - o.p0, o.p2 - o.p0);
-        if (o.type == ShapeType::Triangle && !usesLocalSpace(o) && length(n) > 0) {
+        const Vec3 n = o.type == ShapeType::Triangle && !usesLocalSpace(o) ? cross(o.p1 - o.p0, o.p2 - o.p0) : Vec3{};
+        if (length(n) > 0) {  // a world-space triangle: its plane
             // The vertices' own offsets differ by rounding: take the middle one (reachesPlane
             // and the buffer's growth leave room for the rest).
             const Vec3 u = normalize(n);
@@ -225,7 +225,6 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
     nearest.finish();
     return best;
 }
-
 
 Hit Bvh::closestFrom(const OriginBuffer::Cells& cells, const std::vector<Object>& objects, const Ray& ray,
                      double tMin, double tMax) const {
