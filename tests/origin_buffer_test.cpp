@@ -3,6 +3,8 @@
 // BVH's answers (they only choose which exact tests run), for every kind of
 // bounded object, origins inside or touching objects, and big flat objects; and
 // they must actually be selective.
+#include "rays/accel/origin_buffer.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <string>
 
 #include "rays/accel/bvh.h"
-#include "rays/accel/origin_buffer.h"
 #include "rays/io/scene_parser.h"
 #include "rays/render/renderer.h"
 #include "rays/render/tracer.h"
@@ -20,181 +21,160 @@ using namespace rays;
 
 namespace {
 
-Object makeObject(ShapeType type, Vec3 p0, Vec3 p1, Vec3 p2, double r0,
-                  double r1, const Transform &m = Transform{}) {
-  Object o;
-  o.type = type;
-  o.p0 = p0;
-  o.p1 = p1;
-  o.p2 = p2;
-  o.r0 = r0;
-  o.r1 = r1;
-  prepareObject(o, m);
-  return o;
+Object makeObject(ShapeType type, Vec3 p0, Vec3 p1, Vec3 p2, double r0, double r1, const Transform& m = Transform{}) {
+    Object o;
+    o.type = type;
+    o.p0 = p0;
+    o.p1 = p1;
+    o.p2 = p2;
+    o.r0 = r0;
+    o.r1 = r1;
+    prepareObject(o, m);
+    return o;
 }
 
-Object sphere(Vec3 c, double r, const Transform &m = Transform{}) {
-  return makeObject(ShapeType::Sphere, c, {}, {}, r, 0, m);
+Object sphere(Vec3 c, double r, const Transform& m = Transform{}) {
+    return makeObject(ShapeType::Sphere, c, {}, {}, r, 0, m);
 }
 
 // Every kind of bounded object, some of them big or flat, around the origin; a
 // plane too. With manyTriangles the triangles go to the BVH's triangle tree (64
 // or more), else into the buffers.
-std::vector<Object> mixedScene(std::mt19937 &rng, bool manyTriangles) {
-  std::uniform_real_distribution<double> u(-6, 6), r(0.02, 0.8), ang(0, 360);
-  std::vector<Object> objects;
-  for (int i = 0; i < 900; ++i) {
-    const Vec3 c{u(rng), u(rng), u(rng)};
-    switch (i % 6) {
-    case 0:
-    case 1:
-      objects.push_back(sphere(c, r(rng)));
-      break;
-    case 2:
-      if (!manyTriangles && i % 36 != 2) {
-        objects.push_back(sphere(c, r(rng)));
-        break;
-      }
-      objects.push_back(makeObject(ShapeType::Triangle, c,
-                                   c + Vec3{r(rng), 0, 0},
-                                   c + Vec3{0, r(rng), r(rng)}, 0, 0));
-      break;
-    case 3:
-      objects.push_back(
-          makeObject(ShapeType::Box, c, c + Vec3{r(rng), r(rng), r(rng)}, {}, 0,
-                     0, Transform::rotateCourse({ang(rng), ang(rng), 0})));
-      break;
-    case 4:
-      objects.push_back(makeObject(ShapeType::Cone, c,
-                                   c + Vec3{0, r(rng), r(rng)}, {}, r(rng), 0));
-      break;
-    default: // an ellipsoid (tested in its own space) and a rotated, scaled-up
-             // sphere
-      objects.push_back(sphere({0, 0, 0}, 1,
-                               Transform::translate(c) *
-                                   Transform::scale({r(rng), 0.3, 0.7})));
+std::vector<Object> mixedScene(std::mt19937& rng, bool manyTriangles) {
+    std::uniform_real_distribution<double> u(-6, 6), r(0.02, 0.8), ang(0, 360);
+    std::vector<Object> objects;
+    for (int i = 0; i < 900; ++i) {
+        const Vec3 c{u(rng), u(rng), u(rng)};
+        switch (i % 6) {
+            case 0:
+            case 1:
+                objects.push_back(sphere(c, r(rng)));
+                break;
+            case 2:
+                if (!manyTriangles && i % 36 != 2) {
+                    objects.push_back(sphere(c, r(rng)));
+                    break;
+                }
+                objects.push_back(
+                    makeObject(ShapeType::Triangle, c, c + Vec3{r(rng), 0, 0}, c + Vec3{0, r(rng), r(rng)}, 0, 0));
+                break;
+            case 3:
+                objects.push_back(makeObject(ShapeType::Box, c, c + Vec3{r(rng), r(rng), r(rng)}, {}, 0, 0,
+                                             Transform::rotateCourse({ang(rng), ang(rng), 0})));
+                break;
+            case 4:
+                objects.push_back(makeObject(ShapeType::Cone, c, c + Vec3{0, r(rng), r(rng)}, {}, r(rng), 0));
+                break;
+            default:  // an ellipsoid (tested in its own space) and a rotated, scaled-up
+                      // sphere
+                objects.push_back(sphere({0, 0, 0}, 1, Transform::translate(c) * Transform::scale({r(rng), 0.3, 0.7})));
+        }
     }
-  }
-  // Big ones: a floor of two triangles under everything, a sphere the size of
-  // the scene's half.
-  objects.push_back(makeObject(ShapeType::Triangle, {-40, -7, -40},
-                               {40, -7, -40}, {40, -7, 40}, 0, 0));
-  objects.push_back(makeObject(ShapeType::Triangle, {-40, -7, -40},
-                               {40, -7, 40}, {-40, -7, 40}, 0, 0));
-  objects.push_back(sphere({9, 2, -3}, 4));
-  // Things just below the floor: a ray that meets the floor first often meets
-  // them right after.
-  std::uniform_real_distribution<double> near(-3, 3);
-  for (int i = 0; i < 60; ++i)
-    objects.push_back(sphere({near(rng), -7.27, near(rng)}, 0.25));
-  objects.push_back(
-      makeObject(ShapeType::Plane, normalize(Vec3{0.1, 1, 0}), {}, {}, -30, 0));
-  return objects;
+    // Big ones: a floor of two triangles under everything, a sphere the size of
+    // the scene's half.
+    objects.push_back(makeObject(ShapeType::Triangle, {-40, -7, -40}, {40, -7, -40}, {40, -7, 40}, 0, 0));
+    objects.push_back(makeObject(ShapeType::Triangle, {-40, -7, -40}, {40, -7, 40}, {-40, -7, 40}, 0, 0));
+    objects.push_back(sphere({9, 2, -3}, 4));
+    // Things just below the floor: a ray that meets the floor first often meets
+    // them right after.
+    std::uniform_real_distribution<double> near(-3, 3);
+    for (int i = 0; i < 60; ++i) objects.push_back(sphere({near(rng), -7.27, near(rng)}, 0.25));
+    objects.push_back(makeObject(ShapeType::Plane, normalize(Vec3{0.1, 1, 0}), {}, {}, -30, 0));
+    return objects;
 }
 
-OriginBuffer buffer(const Bvh &bvh, const std::vector<Object> &objects,
-                    Vec3 origin, double dilation) {
-  OriginBuffer b;
-  b.build(bvh.originBounds(objects), origin, dilation);
-  return b;
+OriginBuffer buffer(const Bvh& bvh, const std::vector<Object>& objects, Vec3 origin, double dilation) {
+    OriginBuffer b;
+    b.build(bvh.originBounds(objects), origin, dilation);
+    return b;
 }
 
-Vec3 randomDirection(std::mt19937 &rng) {
-  std::normal_distribution<double> n;
-  for (;;) {
-    const Vec3 d{n(rng), n(rng), n(rng)};
-    if (length(d) > 1e-3)
-      return normalize(d);
-  }
+Vec3 randomDirection(std::mt19937& rng) {
+    std::normal_distribution<double> n;
+    for (;;) {
+        const Vec3 d{n(rng), n(rng), n(rng)};
+        if (length(d) > 1e-3) return normalize(d);
+    }
 }
 
-} // namespace
+}  // namespace
 
 // Primary rays: the nearest hit from the eye's lists is the BVH's, bit for bit,
 // from eyes outside everything, inside a sphere, near a box, just above the
 // floor (with things below it).
 TEST(OriginBuffer, RaysFromTheEyeFindTheBvhsNearestHit) {
-  std::mt19937 rng(11);
-  int hits = 0;
-  for (const bool manyTriangles : {false, true}) {
-    const std::vector<Object> objects = mixedScene(rng, manyTriangles);
-    const Bvh bvh(objects);
-    for (const Vec3 eye : {Vec3{0, 0, 20}, Vec3{9, 2, -3}, Vec3{0.5, 0.3, -0.2},
-                           Vec3{-15, 15, 15}, Vec3{1, -6.6, 2}}) {
-      const OriginBuffer eyeBuffer = buffer(bvh, objects, eye, 0.0);
-      ASSERT_FALSE(eyeBuffer.empty());
-      for (int i = 0; i < 6000; ++i) {
-        Vec3 dir = randomDirection(rng);
-        if (i % 50 == 0)
-          dir = normalize(Vec3{1, 1, double(i % 3) - 1}); // along cube edges
-        const Ray ray{eye, dir};
-        const Hit ref = bvh.closest(objects, ray, 1e-6, kInfinity);
-        const Hit got = bvh.closestFrom(eyeBuffer.cells(dir), objects, ray,
-                                        1e-6, kInfinity);
-        ASSERT_EQ(got.valid(), ref.valid()) << "ray " << i;
-        if (!ref.valid())
-          continue;
-        ++hits;
-        ASSERT_EQ(got.t, ref.t) << "ray " << i;
-        if (got.object != ref.object)
-          continue; // two objects at exactly the same distance
-        EXPECT_EQ(got.normal.x, ref.normal.x);
-        EXPECT_EQ(got.normal.y, ref.normal.y);
-        EXPECT_EQ(got.normal.z, ref.normal.z);
-        EXPECT_EQ(got.geomNormal.z, ref.geomNormal.z);
-      }
+    std::mt19937 rng(11);
+    int hits = 0;
+    for (const bool manyTriangles : {false, true}) {
+        const std::vector<Object> objects = mixedScene(rng, manyTriangles);
+        const Bvh bvh(objects);
+        for (const Vec3 eye :
+             {Vec3{0, 0, 20}, Vec3{9, 2, -3}, Vec3{0.5, 0.3, -0.2}, Vec3{-15, 15, 15}, Vec3{1, -6.6, 2}}) {
+            const OriginBuffer eyeBuffer = buffer(bvh, objects, eye, 0.0);
+            ASSERT_FALSE(eyeBuffer.empty());
+            for (int i = 0; i < 6000; ++i) {
+                Vec3 dir = randomDirection(rng);
+                if (i % 50 == 0) dir = normalize(Vec3{1, 1, double(i % 3) - 1});  // along cube edges
+                const Ray ray{eye, dir};
+                const Hit ref = bvh.closest(objects, ray, 1e-6, kInfinity);
+                const Hit got = bvh.closestFrom(eyeBuffer.cells(dir), objects, ray, 1e-6, kInfinity);
+                ASSERT_EQ(got.valid(), ref.valid()) << "ray " << i;
+                if (!ref.valid()) continue;
+                ++hits;
+                ASSERT_EQ(got.t, ref.t) << "ray " << i;
+                if (got.object != ref.object) continue;  // two objects at exactly the same distance
+                EXPECT_EQ(got.normal.x, ref.normal.x);
+                EXPECT_EQ(got.normal.y, ref.normal.y);
+                EXPECT_EQ(got.normal.z, ref.normal.z);
+                EXPECT_EQ(got.geomNormal.z, ref.geomNormal.z);
+            }
+        }
     }
-  }
-  EXPECT_GT(hits, 20000);
+    EXPECT_GT(hits, 20000);
 }
 
 // Shadow rays as the tracer casts them: from P + 0.001 N towards a point light.
 // The light's lists (grown by that offset) must find a blocker exactly when the
 // BVH does, for lights outside, inside an object and right next to one.
 TEST(OriginBuffer, ShadowRaysToAPointLightFindTheBvhsBlockers) {
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-8, 8);
-  const double offset = Tracer::kSurfaceOffset;
-  int blocked = 0, lit = 0;
-  for (const bool manyTriangles : {false, true}) {
-    const std::vector<Object> objects = mixedScene(rng, manyTriangles);
-    const Bvh bvh(objects);
-    for (const Vec3 light : {Vec3{3, 12, 5}, Vec3{9, 2, -1},
-                             Vec3{0.2, -0.1, 0.3}, Vec3{-30, 4, 2}}) {
-      const OriginBuffer lightBuffer =
-          buffer(bvh, objects, light, offset * 1.01);
-      for (int i = 0; i < 6000; ++i) {
-        // A shading point: where a random ray meets the scene, its normal
-        // facing that ray.
-        const Ray probe{{u(rng), u(rng), u(rng)}, randomDirection(rng)};
-        const Hit h = bvh.closest(objects, probe, 1e-6, kInfinity);
-        if (!h.valid())
-          continue;
-        const Vec3 P = probe.at(h.t);
-        const Vec3 N = dot(probe.dir, h.geomNormal) < 0 ? h.normal : -h.normal;
-        const Vec3 toLight = light - P;
-        const double dist = length(toLight);
-        const Ray shadow{P + offset * N, toLight / dist};
-        const bool ref = bvh.anyBlocker(objects, shadow, 1e-6, dist - offset) !=
-                         Bvh::kNoBlocker;
-        const bool got =
-            bvh.anyBlockerFrom(lightBuffer.cells(P - light), objects, shadow,
-                               1e-6, dist - offset, dist) != Bvh::kNoBlocker;
-        ASSERT_EQ(got, ref) << "point " << i;
-        ++(ref ? blocked : lit);
-      }
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-8, 8);
+    const double offset = Tracer::kSurfaceOffset;
+    int blocked = 0, lit = 0;
+    for (const bool manyTriangles : {false, true}) {
+        const std::vector<Object> objects = mixedScene(rng, manyTriangles);
+        const Bvh bvh(objects);
+        for (const Vec3 light : {Vec3{3, 12, 5}, Vec3{9, 2, -1}, Vec3{0.2, -0.1, 0.3}, Vec3{-30, 4, 2}}) {
+            const OriginBuffer lightBuffer = buffer(bvh, objects, light, offset * 1.01);
+            for (int i = 0; i < 6000; ++i) {
+                // A shading point: where a random ray meets the scene, its normal
+                // facing that ray.
+                const Ray probe{{u(rng), u(rng), u(rng)}, randomDirection(rng)};
+                const Hit h = bvh.closest(objects, probe, 1e-6, kInfinity);
+                if (!h.valid()) continue;
+                const Vec3 P = probe.at(h.t);
+                const Vec3 N = dot(probe.dir, h.geomNormal) < 0 ? h.normal : -h.normal;
+                const Vec3 toLight = light - P;
+                const double dist = length(toLight);
+                const Ray shadow{P + offset * N, toLight / dist};
+                const bool ref = bvh.anyBlocker(objects, shadow, 1e-6, dist - offset) != Bvh::kNoBlocker;
+                const bool got = bvh.anyBlockerFrom(lightBuffer.cells(P - light), objects, shadow, 1e-6, dist - offset,
+                                                    dist) != Bvh::kNoBlocker;
+                ASSERT_EQ(got, ref) << "point " << i;
+                ++(ref ? blocked : lit);
+            }
+        }
     }
-  }
-  EXPECT_GT(blocked, 4000);
-  EXPECT_GT(lit, 4000);
+    EXPECT_GT(blocked, 4000);
+    EXPECT_GT(lit, 4000);
 }
 
 // A shadow ray leaves P offset along the normal: it may meet an object that the segment from the
 // light to P itself passes by. Here the segment runs 0.0005 above a unit sphere and the ray,
 // starting 0.001 below P, goes through it; the light's lists are grown by the offset for that.
 TEST(OriginBuffer, ShadowRaysOffsetFromTheSurfaceStayCovered) {
-    const std::vector<Object> objects = {sphere({0, 0, 0}, 1),
-                                         makeObject(ShapeType::Triangle, {5, 1.0005, -1}, {6, 1.0005, 1}, {4, 1.0005, 1}, 0, 0)};
+    const std::vector<Object> objects = {
+        sphere({0, 0, 0}, 1), makeObject(ShapeType::Triangle, {5, 1.0005, -1}, {6, 1.0005, 1}, {4, 1.0005, 1}, 0, 0)};
     const Bvh bvh(objects);
     const Vec3 light{-5, 1.0005, 0}, P{5, 1.0005, 0}, N{0, -1, 0};
     const double offset = Tracer::kSurfaceOffset, dist = length(P - light);
@@ -207,41 +187,37 @@ TEST(OriginBuffer, ShadowRaysOffsetFromTheSurfaceStayCovered) {
 // The lists are selective: from outside a lattice of 8,000 small spheres a
 // direction's lists hold a few dozen objects at most, not thousands.
 TEST(OriginBuffer, ListsHoldOnlyTheObjectsNearTheDirection) {
-  std::vector<Object> objects;
-  for (int x = 0; x < 20; ++x)
-    for (int y = 0; y < 20; ++y)
-      for (int z = 0; z < 20; ++z)
-        objects.push_back(sphere({x - 9.5, y - 9.5, z - 9.5}, 0.2));
-  const Bvh bvh(objects);
-  const OriginBuffer b = buffer(bvh, objects, {3, 40, 7}, 0.0);
-  std::mt19937 rng(3);
-  size_t total = 0, most = 0;
-  const int n = 2000;
-  for (int i = 0; i < n; ++i) {
-    const Vec3 target{double(rng() % 20) - 9.5, double(rng() % 20) - 9.5,
-                      double(rng() % 20) - 9.5};
-    const OriginBuffer::Cells c = b.cells(target - Vec3{3, 40, 7});
-    ASSERT_TRUE(c.valid);
-    const size_t listed = size_t(c.fine.last - c.fine.first) +
-                          size_t(c.coarse.last - c.coarse.first);
-    EXPECT_GT(listed, 0u); // the target sphere itself
-    total += listed;
-    most = std::max(most, listed);
-  }
-  EXPECT_LT(double(total) / n, 40.0);
-  EXPECT_LT(most, 200u);
-  // Sorted by distance: the first entry of a list is never farther than the
-  // last.
-  const OriginBuffer::Cells c = b.cells(Vec3{-3, -40, -7});
-  for (const OriginBuffer::Entry *e = c.fine.first; e + 1 < c.fine.last; ++e)
-    EXPECT_LE(e->minDist, e[1].minDist);
-  EXPECT_FALSE(b.cells(Vec3{0, 0, 0}).valid);
+    std::vector<Object> objects;
+    for (int x = 0; x < 20; ++x)
+        for (int y = 0; y < 20; ++y)
+            for (int z = 0; z < 20; ++z) objects.push_back(sphere({x - 9.5, y - 9.5, z - 9.5}, 0.2));
+    const Bvh bvh(objects);
+    const OriginBuffer b = buffer(bvh, objects, {3, 40, 7}, 0.0);
+    std::mt19937 rng(3);
+    size_t total = 0, most = 0;
+    const int n = 2000;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 target{double(rng() % 20) - 9.5, double(rng() % 20) - 9.5, double(rng() % 20) - 9.5};
+        const OriginBuffer::Cells c = b.cells(target - Vec3{3, 40, 7});
+        ASSERT_TRUE(c.valid);
+        const size_t listed = size_t(c.fine.last - c.fine.first) + size_t(c.coarse.last - c.coarse.first);
+        EXPECT_GT(listed, 0u);  // the target sphere itself
+        total += listed;
+        most = std::max(most, listed);
+    }
+    EXPECT_LT(double(total) / n, 40.0);
+    EXPECT_LT(most, 200u);
+    // Sorted by distance: the first entry of a list is never farther than the
+    // last.
+    const OriginBuffer::Cells c = b.cells(Vec3{-3, -40, -7});
+    for (const OriginBuffer::Entry* e = c.fine.first; e + 1 < c.fine.last; ++e) EXPECT_LE(e->minDist, e[1].minDist);
+    EXPECT_FALSE(b.cells(Vec3{0, 0, 0}).valid);
 }
 
 // Whole renders: with the buffers (built for scenes of 256 objects or more)
 // every pixel is the one the tracer computes with the BVH alone.
 TEST(OriginBuffer, RendersMatchTheBvhAlone) {
-  std::string text = R"(
+    std::string text = R"(
 camera { location <1.5, 2.5, -7> up <0, 1, 0> right <1.33333, 0, 0> look_at <0, 0.5, 0> }
 light_source { <4, 6, -3> color rgb <1, 1, 1> }
 light_source { <-3, 2, -4> color rgb <0.5, 0.5, 0.6> }
@@ -250,37 +226,34 @@ triangle { <-20, -1, -20>, <20, -1, -20>, <20, -1, 20> pigment { color rgb 0.8 }
 triangle { <-20, -1, -20>, <20, -1, 20>, <-20, -1, 20> pigment { color rgb 0.8 } finish { ambient 0.2 diffuse 0.7 reflection 0.2 } }
 box { <-0.5, -1, -0.5>, <0.5, 0, 0.5> rotate <0, 20, 0> translate <2, 0, 1> pigment { color rgb <0.2, 0.7, 0.3> } finish { diffuse 0.7 reflection 0.3 } }
 )";
-  std::mt19937 rng(9);
-  std::uniform_real_distribution<double> u(-3, 3), r(0.05, 0.35);
-  for (int i = 0; i < 400; ++i)
-    text += "sphere { <" + std::to_string(u(rng)) + ", " +
-            std::to_string(u(rng) * 0.5 + 0.8) + ", " + std::to_string(u(rng)) +
-            ">, " + std::to_string(r(rng)) +
-            " pigment { color rgb <0.9, 0.6, 0.4> } finish { ambient 0.1 "
-            "diffuse 0.6 specular 0.4 roughness 0.1 "
-            "reflection 0.4 } }\n";
-  const Scene scene = parseScene(text, "t.pov", ParseOptions{});
-  const Bvh bvh(scene.objects);
-  RenderSettings s;
-  s.width = 96;
-  s.height = 72;
-  s.threads = 2;
-  TraceStats stats;
-  const ImageF img = render(scene, bvh, s, stats);
-  const SharedOrigins built =
-      Tracer::buildSharedOrigins(scene, bvh, &scene.cameras[0].location, 1);
-  ASSERT_FALSE(built.eye.empty());
-  ASSERT_EQ(built.lights.size(), 3u);
-  const Tracer bvhOnly(scene, bvh, s);
-  const ViewSetup view = resolveView(scene, s);
-  TraceContext ctx;
-  for (int y = 0; y < s.height; ++y)
-    for (int x = 0; x < s.width; ++x) {
-      const Vec3 ref =
-          renderPixel(bvhOnly, view, s, x, s.height - 1 - y, ctx, nullptr);
-      const Vec3 got = img.at(x, y);
-      ASSERT_EQ(got.x, ref.x) << x << "," << y;
-      ASSERT_EQ(got.y, ref.y) << x << "," << y;
-      ASSERT_EQ(got.z, ref.z) << x << "," << y;
-    }
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-3, 3), r(0.05, 0.35);
+    for (int i = 0; i < 400; ++i)
+        text += "sphere { <" + std::to_string(u(rng)) + ", " + std::to_string(u(rng) * 0.5 + 0.8) + ", " +
+                std::to_string(u(rng)) + ">, " + std::to_string(r(rng)) +
+                " pigment { color rgb <0.9, 0.6, 0.4> } finish { ambient 0.1 "
+                "diffuse 0.6 specular 0.4 roughness 0.1 "
+                "reflection 0.4 } }\n";
+    const Scene scene = parseScene(text, "t.pov", ParseOptions{});
+    const Bvh bvh(scene.objects);
+    RenderSettings s;
+    s.width = 96;
+    s.height = 72;
+    s.threads = 2;
+    TraceStats stats;
+    const ImageF img = render(scene, bvh, s, stats);
+    const SharedOrigins built = Tracer::buildSharedOrigins(scene, bvh, &scene.cameras[0].location, 1);
+    ASSERT_FALSE(built.eye.empty());
+    ASSERT_EQ(built.lights.size(), 3u);
+    const Tracer bvhOnly(scene, bvh, s);
+    const ViewSetup view = resolveView(scene, s);
+    TraceContext ctx;
+    for (int y = 0; y < s.height; ++y)
+        for (int x = 0; x < s.width; ++x) {
+            const Vec3 ref = renderPixel(bvhOnly, view, s, x, s.height - 1 - y, ctx, nullptr);
+            const Vec3 got = img.at(x, y);
+            ASSERT_EQ(got.x, ref.x) << x << "," << y;
+            ASSERT_EQ(got.y, ref.y) << x << "," << y;
+            ASSERT_EQ(got.z, ref.z) << x << "," << y;
+        }
 }
