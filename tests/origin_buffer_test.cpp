@@ -242,7 +242,7 @@ box { <-0.5, -1, -0.5>, <0.5, 0, 0.5> rotate <0, 20, 0> translate <2, 0, 1> pigm
     s.threads = 2;
     TraceStats stats;
     const ImageF img = render(scene, bvh, s, stats);
-    const SharedOrigins built = Tracer::buildSharedOrigins(scene, bvh, &scene.cameras[0].location, 1);
+    const SharedOrigins built = Tracer::buildSharedOrigins(scene, bvh, &scene.cameras[0].location, 96 * 72, 1);
     ASSERT_FALSE(built.eye.empty());
     ASSERT_EQ(built.lights.size(), 3u);
     const Tracer bvhOnly(scene, bvh, s);
@@ -256,4 +256,48 @@ box { <-0.5, -1, -0.5>, <0.5, 0, 0.5> rotate <0, 20, 0> translate <2, 0, 1> pigm
             ASSERT_EQ(got.y, ref.y) << x << "," << y;
             ASSERT_EQ(got.z, ref.z) << x << "," << y;
         }
+}
+
+// Which buffers a render gets: none for few objects or for more objects than a quarter of the
+// image's samples (the build would cost more than the queries save), and no more than fit in the
+// memory budget, point lights first; never for area or parallel lights.
+TEST(OriginBuffer, RendersGetTheBuffersThatPay) {
+    std::string text = R"(
+camera { location <0, 0, -8> look_at <0, 0, 0> }
+light_source { <4, 6, -3> color rgb 1 }
+light_source { <-4, 6, -3> color rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 2, 2 }
+light_source { <0, 6, -3> color rgb 1 parallel point_at <0, 0, 0> }
+light_source { <4, -6, -3> color rgb 1 }
+light_source { <-4, -6, -3> color rgb 1 }
+)";
+    for (int i = 0; i < 300; ++i)
+        text += "sphere { <" + std::to_string(i % 10) + ", " + std::to_string(i / 10 % 10) + ", " + std::to_string(i / 100) +
+                ">, 0.3 }\n";
+    const Scene scene = parseScene(text, "t.pov", ParseOptions{});
+    ASSERT_EQ(scene.lights.size(), 5u);
+    const Bvh bvh(scene.objects);
+    const Vec3 eye = scene.cameras[0].location;
+    auto built = [](const SharedOrigins& o) {
+        std::string s = o.eye.empty() ? "-" : "e";
+        for (const OriginBuffer& b : o.lights) s += b.empty() ? "-" : "L";
+        return s;
+    };
+    EXPECT_EQ(built(Tracer::buildSharedOrigins(scene, bvh, &eye, 640 * 480, 1)), "eL--LL");
+    EXPECT_EQ(built(Tracer::buildSharedOrigins(scene, bvh, nullptr, 640 * 480, 1)), "-L--LL");
+    // 300 objects, 1,000 samples: not worth it.
+    const SharedOrigins few = Tracer::buildSharedOrigins(scene, bvh, &eye, 1000, 1);
+    EXPECT_EQ(built(few), "-");
+    // Room for two buffers: the first two point lights.
+    EXPECT_EQ(built(Tracer::buildSharedOrigins(scene, bvh, &eye, 640 * 480, 1,
+                                               2.5 * Tracer::kSharedOriginsBytesPerObject * 300)),
+              "-L--L-");
+    // Fewer than 256 objects: the BVH alone.
+    const Scene small = parseScene(R"(
+camera { location <0, 0, -8> look_at <0, 0, 0> }
+light_source { <4, 6, -3> color rgb 1 }
+sphere { <0, 0, 0>, 1 }
+)",
+                                   "s.pov", ParseOptions{});
+    const Bvh smallBvh(small.objects);
+    EXPECT_EQ(built(Tracer::buildSharedOrigins(small, smallBvh, &eye, 640 * 480, 1)), "-");
 }

@@ -178,7 +178,8 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     // Primary rays start at the eye unless a lens spreads them (the edge pass is a pinhole).
     const bool pinholeRays = view.aperture <= 0 || s.aaEdges;
     const SharedOrigins origins =
-        Tracer::buildSharedOrigins(scene, bvh, pinholeRays ? &view.rays.location : nullptr, s.threads);
+        Tracer::buildSharedOrigins(scene, bvh, pinholeRays ? &view.rays.location : nullptr,
+                                   double(s.width) * double(s.height) * double(view.samples), s.threads);
     const Tracer tracer(scene, bvh, s, &origins);
     const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
     const int tileCount = tilesX * tilesY;

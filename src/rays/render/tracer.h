@@ -102,9 +102,17 @@ public:
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins) {}
 
-    /// Buffers for the scene's point lights and, when eye is given, for primary rays from it;
-    /// none for scenes with few objects, where the BVH alone is as fast. threads: for the build.
-    static SharedOrigins buildSharedOrigins(const Scene& scene, const Bvh& bvh, const Vec3* eye, int threads);
+    /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
+    /// primarySamples: the render's camera samples (each buffer is queried about that often).
+    /// None for scenes with few objects, where the BVH alone is as fast, or with more objects than
+    /// a quarter of the samples, where the build would cost more than it saves; at most as many
+    /// buffers as fit in memoryBudget bytes (lights first, in scene order). threads: for the build.
+    static SharedOrigins buildSharedOrigins(const Scene& scene, const Bvh& bvh, const Vec3* eye, double primarySamples,
+                                            int threads, double memoryBudget = kSharedOriginsBytes);
+    /// Memory the buffers of one render may take, estimated at kSharedOriginsBytesPerObject per
+    /// object and buffer (balls2.pov: 27 for a light's buffer, 86 for the eye's).
+    static constexpr double kSharedOriginsBytes = 64.0 * 1024 * 1024;
+    static constexpr double kSharedOriginsBytesPerObject = 64.0;
 
     /// Colour seen along a primary ray. When log is non-null the ray tree is appended to it in
     /// depth-first order (each node before its children); when info is non-null it receives the
