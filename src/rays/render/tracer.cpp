@@ -85,7 +85,9 @@ SharedOrigins Tracer::buildSharedOrigins(const Scene& scene, const Bvh& bvh, con
     for (size_t i = 0; i < scene.lights.size() && jobs.size() < room; ++i)
         if (!scene.lights[i].parallel && !scene.lights[i].area)
             jobs.push_back({&out.lights[i], scene.lights[i].position, kSurfaceOffset * 1.01});
-    if (eye && jobs.size() < room) jobs.push_back({&out.eye, *eye, 0.0});
+    // The eye's buffer is the biggest (its lists cover the whole view): built first, the others
+    // share the remaining threads.
+    if (eye && jobs.size() < room) jobs.insert(jobs.begin(), {&out.eye, *eye, 0.0});
     if (jobs.empty()) return out;
     const std::vector<OriginBuffer::Bound> bounds = bvh.originBounds(scene.objects);
     parallelFor(int(jobs.size()), threads, [&](int j) {
