@@ -1,12 +1,14 @@
 // parallelFor: a tiny fork-join loop over independent work items (rows, bands of rows, tiles) on
-// std::threads. Header-only and generic: nothing in it is specific to image filtering.
+// the process's worker pool (util/worker_pool.h). Generic: nothing in it is specific to images.
 #pragma once
 #include <algorithm>
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <functional>
 #include <thread>
-#include <vector>
+
+#include "rays/util/worker_pool.h"
 
 namespace rays {
 
@@ -50,15 +52,8 @@ void parallelFor(int count, int threads, Body&& body) {
             }
         }
     };
-    std::vector<std::thread> pool;
-    pool.reserve(size_t(workers - 1));
-    try {
-        for (int t = 1; t < workers; ++t) pool.emplace_back(work);
-    } catch (...) {
-        // Could not start a thread: the ones we have (and this one) still finish the loop.
-    }
-    work();
-    for (std::thread& th : pool) th.join();
+    const std::function<void(int)> worker = [&](int) { work(); };
+    runAlongside(1, workers - 1, worker, work);
     if (error) std::rethrow_exception(error);
 }
 

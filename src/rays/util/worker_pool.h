@@ -1,7 +1,7 @@
 // Worker threads kept for the whole process: starting a thread costs 0.2-1 ms on the virtual
 // machines Rays runs on (stack mapping, first faults, scheduling), and a render with feature
-// lines runs half a dozen parallel loops. parallelFor (renderer.h) and the BVH builder's TaskPool
-// (accel/task_pool.h) run their workers here through runAlongside.
+// lines runs half a dozen parallel loops. Both parallelFor loops (render/renderer.h, image/parallel.h)
+// and the BVH builder's TaskPool (accel/task_pool.h) run their workers here through runAlongside.
 #pragma once
 #include <functional>
 
