@@ -88,10 +88,7 @@ Bvh::Bvh(const std::vector<Object>& objects) {
         }
         boundedOf_[i] = int32_t(bounded_.size());
         prims.push_back(objectPrim(o, b, i));
-        const ObjectBvh::Prim& p = prims.back();
-        bounded_.push_back({p.isSphere ? ObjectBvh::ExactSphere{{p.center[0], p.center[1], p.center[2]}, p.sphereRadius}
-                                       : ObjectBvh::ExactSphere{{0, 0, 0}, -1},
-                            i, -1});
+        bounded_.push_back({ObjectBvh::exactSphere(prims.back()), i, -1});
         const Vec3 n = o.type == ShapeType::Triangle && !usesLocalSpace(o) ? cross(o.p1 - o.p0, o.p2 - o.p0) : Vec3{};
         if (length(n) > 0) {  // a world-space triangle: its plane
             // The vertices' own offsets differ by rounding: take the middle one (reachesPlane
@@ -237,7 +234,7 @@ Hit Bvh::closestFrom(const OriginBuffer::Cells& cells, const std::vector<Object>
     for (const OriginBuffer::Span& span : {cells.fine, cells.coarse})
         for (const OriginBuffer::Entry* e = span.first; e != span.last && double(e->minDist) <= reach; ++e) {
             const Bounded& b = bounded_[e->id];
-            if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, best.t, 0.0)) continue;
+            if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, best.t)) continue;
             if (nearest.test(b.id, b.sphere)) reach = best.t * len;
         }
     nearest.finish();
@@ -279,7 +276,7 @@ int Bvh::anyBlockerFrom(const OriginBuffer::Cells& cells, const std::vector<Obje
     for (const OriginBuffer::Span& span : {cells.fine, cells.coarse})
         for (const OriginBuffer::Entry* e = span.first; e != span.last && double(e->minDist) <= reach; ++e) {
             const Bounded& b = bounded_[e->id];
-            if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, tMax, 0.0)) continue;
+            if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, tMax)) continue;
             if (blocks(objects, b.id, b.sphere, ray, tMin, tMax)) return int(b.id);
         }
     return kNoBlocker;
@@ -292,12 +289,12 @@ bool Bvh::occludesObject(const std::vector<Object>& objects, uint32_t id, const 
     return blocks(objects, id, bounded_[size_t(k)].sphere, ray, tMin, tMax);
 }
 
-bool Bvh::reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd, double slack) const {
+bool Bvh::reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd) {
     const double h0 = dot(p.normal, a) - p.offset;
     const double nd = dot(p.normal, d);
     const double h1 = nd == 0 ? h0 : h0 + tEnd * nd;  // tEnd may be infinite
     // Room for the rounding of the offsets (of the vertices and of these sums).
-    const double g = slack + 1e-9 * (std::fabs(p.offset) + std::fabs(h0) + std::fabs(dot(p.normal, a)) + 1e-300) +
+    const double g = 1e-9 * (std::fabs(p.offset) + std::fabs(h0) + std::fabs(dot(p.normal, a)) + 1e-300) +
                      1e-9 * std::fabs(tEnd * nd);
     return !((h0 > g && h1 > g) || (h0 < -g && h1 < -g));
 }

@@ -83,10 +83,9 @@ private:
         Vec3 normal;
         double offset;
     };
-    /// False when the segment from a to a + t·d, t in [0, tEnd], stays farther than slack from
-    /// the plane (on one side): no flat object in it can meet a ray that runs within slack of
-    /// the segment.
-    bool reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd, double slack) const;
+    /// False when the ray a + t·d, t in [0, tEnd], stays on one side of the plane (beyond the
+    /// rounding of its offset): no flat object in the plane can meet it.
+    static bool reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd);
     /// Nearest hit among the planes and the triangle BVH (the part of closest() that does not
     /// depend on how the other objects are found).
     Hit closestUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;

@@ -76,9 +76,7 @@ void ObjectBvh::build(const std::vector<Prim>& prims) {
                 const Prim& p = prims[refs[job.firstRef + k + lane].id];
                 sphereSlot(p, b, int(lane));
                 b.id[lane] = p.id;
-                if (p.isSphere)
-                    spheres_[size_t(job.firstBlock + k / kBlockSize) * kBlockSize + lane] =
-                        ExactSphere{{p.center[0], p.center[1], p.center[2]}, p.sphereRadius};
+                spheres_[size_t(job.firstBlock + k / kBlockSize) * kBlockSize + lane] = exactSphere(p);
             }
         }
     }

@@ -46,6 +46,11 @@ public:
         double centre[3];
         double radius;
     };
+    /// The prim's sphere when it is a world-space sphere, else radius -1.
+    static ExactSphere exactSphere(const Prim& p) {
+        return p.isSphere ? ExactSphere{{p.center[0], p.center[1], p.center[2]}, p.sphereRadius}
+                          : ExactSphere{{0, 0, 0}, -1};
+    }
 
     /// Builds over prims (boxes must be non-empty and finite). Replaces any previous content.
     void build(const std::vector<Prim>& prims);

@@ -200,11 +200,11 @@ void emitFace(const OriginBuffer::Bound& b, const Shape& sh, Vec3 origin, double
 
 }  // namespace
 
-void OriginBuffer::build(const std::vector<Bound>& bounds, Vec3 origin, double dilation, int fineResolution) {
+void OriginBuffer::build(const std::vector<Bound>& bounds, Vec3 origin, double dilation) {
     origin_ = origin;
     dilation_ = dilation;
     Level* levels[2] = {&fine_, &coarse_};
-    fine_.n = fineResolution;
+    fine_.n = kFineResolution;
     coarse_.n = kCoarseResolution;
     // Pass 1: where each bound projects, in which level, and the window of each face of each level.
     struct FaceJob {

@@ -50,13 +50,13 @@ public:
         const Entry* last = nullptr;
     };
 
-    static constexpr int kFineResolution = 256;  ///< cells per face edge (default)
+    static constexpr int kFineResolution = 256;  ///< cells per face edge
     static constexpr int kCoarseResolution = 8;
     /// Objects covering more fine cells than this are listed in the coarse cells.
     static constexpr size_t kMaxFineCells = 1024;
 
     /// Builds the lists for rays from origin over bounds (replaces any previous content).
-    void build(const std::vector<Bound>& bounds, Vec3 origin, double dilation, int fineResolution = kFineResolution);
+    void build(const std::vector<Bound>& bounds, Vec3 origin, double dilation);
     bool empty() const { return !built_; }
     Vec3 origin() const { return origin_; }
     double dilation() const { return dilation_; }
@@ -67,7 +67,6 @@ public:
     };
     /// The cells of direction dir (any length).
     Cells cells(Vec3 dir) const;
-    size_t entryCount() const { return fine_.entries.size() + coarse_.entries.size(); }
 
 private:
     /// The part of a face whose cells list something: cells [i0, i0 + w) x [j0, j0 + h), numbered

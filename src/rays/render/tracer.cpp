@@ -109,12 +109,12 @@ Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRe
 }
 
 bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
-                      const Vec3* fromLight) const {
+                      const FromLight* fromLight) const {
     ++ctx.stats.shadowRays;
     // The light's buffer cells first: their loads overlap the tests below.
     OriginBuffer::Cells cells;
     if (fromLight && origins_ && light < origins_->lights.size()) {
-        cells = origins_->lights[light].cells(*fromLight);
+        cells = origins_->lights[light].cells(fromLight->toPoint);
         __builtin_prefetch(cells.fine.first);
     }
     const bool cached = light < size_t(TraceContext::kCachedLights);
@@ -128,7 +128,7 @@ bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext
         bvh_.occludesObject(scene_.objects, uint32_t(ctx.lastBlocker[light]), shadow, kTMin, tMax))
         return true;
     const int blocker = cells.valid
-                            ? bvh_.anyBlockerFrom(cells, scene_.objects, shadow, kTMin, tMax, length(*fromLight))
+                            ? bvh_.anyBlockerFrom(cells, scene_.objects, shadow, kTMin, tMax, fromLight->dist)
                             : bvh_.anyBlocker(scene_.objects, shadow, kTMin, tMax);
     if (!cached) return blocker != Bvh::kNoBlocker;
     if (blocker >= 0) ctx.lastBlocker[light] = blocker;
@@ -166,7 +166,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         const double dist = length(toLight);
         if (dist == 0) return 1.0;
         const Vec3 L = toLight / dist;
-        const Vec3 fromLight = -toLight;
+        const FromLight fromLight{-toLight, dist};
         if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0, &fromLight)) return 0.0;
         addSample(L, light.color);
         return 1.0;
@@ -244,9 +244,9 @@ int Tracer::blockedLightsAt(Vec3 P, Vec3 N, TraceContext& ctx) const {
         const Vec3 toLight = L.parallel ? -L.direction : L.position - P;
         const double dist = length(toLight);
         if (dist == 0) continue;
-        const Vec3 fromLight = -toLight;
+        const FromLight fromLight{-toLight, dist};
         if (shadowed(Ray{origin, toLight / dist}, L.parallel ? kInfinity : dist - kSurfaceOffset, li, ctx, false,
-                     L.parallel ? nullptr : &fromLight))
+                     L.parallel || L.area ? nullptr : &fromLight))
             ++blocked;
     }
     return blocked;

@@ -159,11 +159,15 @@ private:
     Vec3 gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
     /// intoSurface: the ray leaves towards the inside of the surface being shaded, which then
     /// most likely blocks it (tested first).
-    /// fromLight: for a point light, the vector from the light to the shaded point (the shadow ray
-    /// leaves that point offset by kSurfaceOffset along its unit normal); lets the light's origin
-    /// buffer answer.
+    /// For a point light: the vector from the light to the shaded point and its length (the shadow
+    /// ray leaves that point offset by kSurfaceOffset along its unit normal).
+    struct FromLight {
+        Vec3 toPoint;
+        double dist;
+    };
+    /// fromLight (point lights) lets the light's origin buffer answer.
     bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface = false,
-                  const Vec3* fromLight = nullptr) const;
+                  const FromLight* fromLight = nullptr) const;
 
     const Scene& scene_;
     const Bvh& bvh_;
