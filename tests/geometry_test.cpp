@@ -5,27 +5,13 @@
 
 #include "rays/accel/bvh.h"
 #include "rays/scene/object.h"
+#include "support/objects.h"
 
 using namespace rays;
+using rays::test::makeObject;
+using rays::test::sphere;
 
 namespace {
-
-Object makeObject(ShapeType type, Vec3 p0, Vec3 p1, Vec3 p2, double r0, double r1,
-                  const Transform& m = Transform{}) {
-    Object o;
-    o.type = type;
-    o.p0 = p0;
-    o.p1 = p1;
-    o.p2 = p2;
-    o.r0 = r0;
-    o.r1 = r1;
-    prepareObject(o, m);
-    return o;
-}
-
-Object sphere(Vec3 c, double r, const Transform& m = Transform{}) {
-    return makeObject(ShapeType::Sphere, c, {}, {}, r, 0, m);
-}
 
 void expectVec(Vec3 a, Vec3 b, double eps = 1e-9) {
     EXPECT_NEAR(a.x, b.x, eps);
