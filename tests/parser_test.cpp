@@ -1,10 +1,15 @@
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "rays/error.h"
 #include "rays/io/scene_parser.h"
+#include "support/process.h"
 
 using namespace rays;
 
@@ -153,4 +158,32 @@ TEST(Parser, MissingFileIsAnErrorNamingThePath) {
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/scene.pov: error: cannot open scene file");
     }
+}
+
+// A regular file is mapped, anything else (a pipe: `rays render <(generate-scene)`) is read as a
+// stream; both give the same scene.
+TEST(Parser, LoadsFilesAndPipesAlike) {
+    test::TempDir dir;
+    ASSERT_FALSE(dir.path().empty());
+    const std::string text = std::string(kCamera) + "sphere { <1,2,3>, 0.5 pigment { color rgb <1,0,0> } }\n";
+    const std::string file = (dir.path() / "scene.pov").string();
+    std::ofstream(file) << text;
+    const Scene fromFile = loadScene(file);
+    ASSERT_EQ(fromFile.objects.size(), 1u);
+    EXPECT_EQ(fromFile.objects[0].p0.z, 3.0);
+
+    const std::string fifo = (dir.path() / "pipe.pov").string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::thread writer([&] { std::ofstream(fifo) << text; });
+    Scene fromPipe;
+    try {
+        fromPipe = loadScene(fifo);
+    } catch (...) {
+        writer.join();
+        throw;
+    }
+    writer.join();
+    ASSERT_EQ(fromPipe.objects.size(), 1u);
+    EXPECT_EQ(fromPipe.objects[0].p0.z, 3.0);
+    EXPECT_EQ(fromPipe.objects[0].line, fromFile.objects[0].line);
 }

@@ -1,5 +1,6 @@
 #include "rays/io/lexer.h"
 
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cstdio>
@@ -8,10 +9,24 @@
 namespace rays {
 namespace {
 
-// ASCII only (scene files are ASCII; std::isalpha would consult the locale on every character).
-bool isIdentStart(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool isIdentChar(char c) { return isIdentStart(c) || (c >= '0' && c <= '9'); }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+// Character classes, ASCII only (scene files are ASCII; std::isalpha would consult the locale on
+// every character). One table lookup per character instead of a chain of comparisons.
+enum : uint8_t { kIdentStart = 1, kDigit = 2, kSpace = 4, kSymbol = 8 };
+constexpr std::array<uint8_t, 256> makeClasses() {
+    std::array<uint8_t, 256> c{};
+    for (int ch = 'a'; ch <= 'z'; ++ch) c[size_t(ch)] = kIdentStart;
+    for (int ch = 'A'; ch <= 'Z'; ++ch) c[size_t(ch)] = kIdentStart;
+    c['_'] = kIdentStart;
+    for (int ch = '0'; ch <= '9'; ++ch) c[size_t(ch)] = kDigit;
+    for (char ch : {' ', '\n', '\t', '\r', '\f', '\v'}) c[size_t(uint8_t(ch))] = kSpace;
+    for (char ch : std::string_view("{}<>,-+*/()[]=#;")) c[size_t(uint8_t(ch))] = kSymbol;
+    return c;
+}
+constexpr std::array<uint8_t, 256> kClasses = makeClasses();
+
+uint8_t classOf(char c) { return kClasses[static_cast<unsigned char>(c)]; }
+bool isIdentChar(char c) { return classOf(c) & (kIdentStart | kDigit); }
+bool isDigit(char c) { return classOf(c) & kDigit; }
 
 std::string printable(char c) {
     if (std::isprint(static_cast<unsigned char>(c))) return std::string(1, c);
@@ -22,57 +37,55 @@ std::string printable(char c) {
 
 }  // namespace
 
-Token Lexer::next() {
+// Identifiers, numbers and symbols never contain a newline: only whitespace, comments and strings
+// move to the next line, so the column is the distance from the line's start.
+void Lexer::next(Token& t) {
     skipSpaceAndComments();
-    Token t;
+    t.kind = TokenKind::End;
+    t.text = {};
+    t.number = 0;
     t.line = line_;
-    t.col = col_;
-    if (i_ >= s_.size()) return t;
+    t.col = col();
+    if (i_ >= s_.size()) return;
     const char c = s_[i_];
-    if (isIdentStart(c)) {
+    const uint8_t cls = classOf(c);
+    if (cls & kIdentStart) {
         const size_t b = i_;
-        while (i_ < s_.size() && isIdentChar(s_[i_])) advance();
+        while (++i_ < s_.size() && isIdentChar(s_[i_])) {
+        }
         t.kind = TokenKind::Identifier;
         t.text = s_.substr(b, i_ - b);
-    } else if (isDigit(c) || (c == '.' && i_ + 1 < s_.size() && isDigit(s_[i_ + 1]))) {
+    } else if ((cls & kDigit) || (c == '.' && i_ + 1 < s_.size() && isDigit(s_[i_ + 1]))) {
         lexNumber(t);
     } else if (c == '"') {
         lexString(t);
-    } else if (c != '\0' && std::strchr("{}<>,-+*/()[]=#;", c) != nullptr) {  // strchr finds the NUL too
+    } else if (cls & kSymbol) {
         t.kind = TokenKind::Symbol;
         t.text = s_.substr(i_, 1);
-        advance();
+        ++i_;
     } else {
         fail(locOf(t), std::string("unexpected character '") + printable(c) + "'");
     }
-    return t;
-}
-
-void Lexer::advance() {
-    if (s_[i_] == '\n') {
-        ++line_;
-        col_ = 1;
-    } else {
-        ++col_;
-    }
-    ++i_;
 }
 
 void Lexer::skipSpaceAndComments() {
     while (i_ < s_.size()) {
         const char c = s_[i_];
-        if (c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-            advance();
+        if (c == '\n') {
+            newline();
+        } else if (classOf(c) & kSpace) {
+            ++i_;
         } else if (c == '/' && i_ + 1 < s_.size() && s_[i_ + 1] == '/') {
-            while (i_ < s_.size() && s_[i_] != '\n') advance();
+            while (i_ < s_.size() && s_[i_] != '\n') ++i_;
         } else if (c == '/' && i_ + 1 < s_.size() && s_[i_ + 1] == '*') {
-            const SourceLoc start{file_, line_, col_};
-            advance();
-            advance();
-            while (i_ + 1 < s_.size() && !(s_[i_] == '*' && s_[i_ + 1] == '/')) advance();
+            const SourceLoc start{file_, line_, col()};
+            i_ += 2;
+            while (i_ + 1 < s_.size() && !(s_[i_] == '*' && s_[i_ + 1] == '/')) {
+                if (s_[i_] == '\n') newline();
+                else ++i_;
+            }
             if (i_ + 1 >= s_.size()) fail(start, "unterminated /* comment");
-            advance();
-            advance();
+            i_ += 2;
         } else {
             return;
         }
@@ -82,24 +95,25 @@ void Lexer::skipSpaceAndComments() {
 // Digits [. digits] [e[+-]digits]; a second '.' or a letter glued on is malformed.
 void Lexer::lexNumber(Token& t) {
     const size_t b = i_;
-    while (i_ < s_.size() && isDigit(s_[i_])) advance();
-    if (i_ < s_.size() && s_[i_] == '.') {
-        advance();
-        while (i_ < s_.size() && isDigit(s_[i_])) advance();
+    const size_t n = s_.size();
+    while (i_ < n && isDigit(s_[i_])) ++i_;
+    if (i_ < n && s_[i_] == '.') {
+        ++i_;
+        while (i_ < n && isDigit(s_[i_])) ++i_;
     }
-    if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
+    if (i_ < n && (s_[i_] == 'e' || s_[i_] == 'E')) {
         size_t j = i_ + 1;
-        if (j < s_.size() && (s_[j] == '+' || s_[j] == '-')) ++j;
-        if (j < s_.size() && isDigit(s_[j])) {
-            while (i_ < j) advance();
-            while (i_ < s_.size() && isDigit(s_[i_])) advance();
+        if (j < n && (s_[j] == '+' || s_[j] == '-')) ++j;
+        if (j < n && isDigit(s_[j])) {
+            i_ = j;
+            while (i_ < n && isDigit(s_[i_])) ++i_;
         } else {
             fail(locOf(t), "malformed number '" + std::string(s_.substr(b, j - b)) + "'");
         }
     }
-    if (i_ < s_.size() && (s_[i_] == '.' || isIdentChar(s_[i_]))) {
+    if (i_ < n && (s_[i_] == '.' || isIdentChar(s_[i_]))) {
         size_t e = i_;
-        while (e < s_.size() && (s_[e] == '.' || isIdentChar(s_[e]))) ++e;
+        while (e < n && (s_[e] == '.' || isIdentChar(s_[e]))) ++e;
         fail(locOf(t), "malformed number '" + std::string(s_.substr(b, e - b)) + "'");
     }
     t.kind = TokenKind::Number;
@@ -119,13 +133,13 @@ void Lexer::lexNumber(Token& t) {
 }
 
 void Lexer::lexString(Token& t) {
-    advance();  // opening quote
+    ++i_;  // opening quote
     const size_t b = i_;
-    while (i_ < s_.size() && s_[i_] != '"' && s_[i_] != '\n') advance();
+    while (i_ < s_.size() && s_[i_] != '"' && s_[i_] != '\n') ++i_;
     if (i_ >= s_.size() || s_[i_] != '"') fail(locOf(t), "unterminated string");
     t.kind = TokenKind::String;
     t.text = s_.substr(b, i_ - b);
-    advance();
+    ++i_;
 }
 
 std::string describe(const Token& t) {

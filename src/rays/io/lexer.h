@@ -25,21 +25,33 @@ public:
     /// The next token; `//` and `/* */` comments and whitespace are skipped. Returns End forever at
     /// the end. Throws Error for malformed numbers, unterminated comments or strings and characters
     /// that are not part of the language.
-    Token next();
+    Token next() {
+        Token t;
+        next(t);
+        return t;
+    }
+    /// The same, written over t (the parser's current token: no copy through the stack).
+    void next(Token& t);
 
     const std::string& fileName() const { return file_; }
     SourceLoc locOf(const Token& t) const { return SourceLoc{file_, t.line, t.col}; }
 
 private:
-    void advance();
     void skipSpaceAndComments();
     void lexNumber(Token& t);
     void lexString(Token& t);
+    /// Steps over the newline at i_ (the caller has checked it is one).
+    void newline() {
+        ++line_;
+        lineStart_ = ++i_;
+    }
+    int col() const { return int(i_ - lineStart_) + 1; }
 
     std::string_view s_;
     std::string file_;
     size_t i_ = 0;
-    int line_ = 1, col_ = 1;
+    size_t lineStart_ = 0;  ///< index of the first character of the current line
+    int line_ = 1;
 };
 
 /// Human-readable description of a token for error messages, e.g. "'{'" or "number 3.5".

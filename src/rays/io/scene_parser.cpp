@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 
+#include "rays/io/file_text.h"
 #include "rays/io/lexer.h"
 #include "rays/io/mesh_blocks.h"
 #include "rays/io/mesh_from_obj.h"
@@ -21,7 +22,7 @@ using namespace scenetext;
 
 class Parser : TokenReader {
 public:
-    Parser(const std::string& text, const std::string& file, const ParseOptions& opt) : TokenReader(text, file, opt) {
+    Parser(std::string_view text, const std::string& file, const ParseOptions& opt) : TokenReader(text, file, opt) {
         scene_.fileName = file;
         // Course files spend 150-250 bytes per object; reserving for 64 avoids every reallocation
         // (untouched capacity costs address space only).
@@ -746,12 +747,10 @@ Scene parseScene(const std::string& text, const std::string& fileName, const Par
 Scene loadScene(const std::string& path, const ParseOptions& options) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) failFile(path, "is a directory, not a scene file");
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) failFile(path, "cannot open scene file");
-    std::string text(size_t(in.tellg()), '\0');
-    in.seekg(0);
-    if (!in.read(text.data(), std::streamsize(text.size()))) failFile(path, "cannot read scene file");
-    return parseScene(text, path, options);
+    const FileText file(path);
+    if (file.status() == FileText::Status::CannotOpen) failFile(path, "cannot open scene file");
+    if (file.status() == FileText::Status::CannotRead) failFile(path, "cannot read scene file");
+    return Parser(file.text(), path, options).run();
 }
 
 }  // namespace rays

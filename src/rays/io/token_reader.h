@@ -33,7 +33,7 @@ public:
 
     // ---- tokens ----------------------------------------------------------------------------
     const Token& token() const { return tok_; }
-    void advance() { tok_ = lex_.next(); }
+    void advance() { lex_.next(tok_); }
     SourceLoc loc(const Token& t) const { return lex_.locOf(t); }
     SourceLoc loc() const { return loc(tok_); }
     bool isSymbol(char c) const { return tok_.kind == TokenKind::Symbol && tok_.text[0] == c; }
