@@ -391,6 +391,26 @@ TEST(CliOutputFormat, EachExtensionWritesItsFormat) {
         << joinNames(listDir(tmp.path()));
 }
 
+// A PNG is compressed by the render's threads while rows finish (PngStream); the pixels must be
+// those of the finished image, as another format writes it afterwards.
+TEST(CliOutputFormat, PngCompressedDuringTheRenderHasTheFinishedPixels) {
+    TempDir tmp("rays-cli-");
+    ASSERT_FALSE(tmp.path().empty());
+    writeFile(tmp.path() / "scene.pov", kGlassScene);
+    for (const std::string name : {"out.png", "out.ppm"}) {
+        const std::vector<std::string> args = {"render", "scene.pov", "200", "150", "--threads", "3", "-q", "-o", name};
+        const ProcessResult r = runRays(tmp.path(), args);
+        ASSERT_TRUE(r.ok()) << describeRun(args, r);
+    }
+    const RgbImage png = loadPngRgb((tmp.path() / "out.png").string());
+    const RgbImage ppm = loadPngRgb((tmp.path() / "out.ppm").string());
+    ASSERT_TRUE(png.ok()) << png.error;
+    ASSERT_TRUE(ppm.ok()) << ppm.error;
+    EXPECT_EQ(png.width, 200);
+    EXPECT_EQ(png.height, 150);
+    EXPECT_TRUE(png.pixels == ppm.pixels) << "the PNG's pixels differ from the PPM's";
+}
+
 TEST(CliOutputFormat, UnknownExtensionFails) {
     TempDir tmp("rays-cli-");
     ASSERT_FALSE(tmp.path().empty());

@@ -258,7 +258,7 @@ TEST(StencilPass, BandsDrawnAsRowsArriveMatchDrawingAtTheEnd) {
     int calls = 0;
     std::mutex m;
     render(scene, bvh, s, stats, {}, nullptr, [&](int x, int y, const PathInfo& info) { again.store(x, y, info); },
-           [&](int y0, int y1, int w) {
+           [&](const ImageF&, int y0, int y1, int w) {
                {
                    std::lock_guard<std::mutex> lock(m);
                    ++calls;

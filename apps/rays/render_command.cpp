@@ -14,6 +14,7 @@
 #include "rays/error.h"
 #include "rays/image/image.h"
 #include "rays/io/image_io.h"
+#include "rays/io/png_stream.h"
 #include "rays/io/mesh_from_obj.h"
 #include "rays/io/obj_loader.h"
 #include "rays/image/filter.h"
@@ -104,6 +105,15 @@ void checkImageOutput(const std::string& path, const char* what, const RenderJob
     checkOutputDirectory(path);
     checkOutputIsNotInput(path, job.scenePath);
     checkOutputIsNotInput(path, job.objPath);
+}
+
+// The streamed PNG's bytes; a failure is named after the file, as writeImage names it.
+std::vector<uint8_t> finishPng(PngStream& png, const std::string& path) {
+    try {
+        return png.finish();
+    } catch (const Error& e) {
+        throw Error(path + ": " + e.what());
+    }
 }
 
 class ProgressBar {
@@ -249,8 +259,15 @@ int runRender(const RenderJob& job) {
         if (edges.method == EdgeMethod::Stencil) {
             // Stencil lines drawn by the render's threads, band by band, as rows finish.
             stencil = std::make_unique<StencilPass>(scene, bvh, s, edges, *records);
-            onRows = [&](int y0, int y1, int worker) { stencil->rowsDone(y0, y1, worker); };
+            onRows = [&](const ImageF&, int y0, int y1, int worker) { stencil->rowsDone(y0, y1, worker); };
         }
+    }
+    // A PNG of the render as it stands is compressed by the render's threads as rows finish.
+    std::unique_ptr<PngStream> png;
+    if (!onRows && isPngPath(job.outputPath) && !edges.enabled() && !edges.linesOnly && job.post.empty() &&
+        !s.aaEdges) {
+        png = std::make_unique<PngStream>(s.width, s.height);
+        onRows = [&](const ImageF& rows, int y0, int y1, int) { png->rowsDone(rows, y0, y1); };
     }
     ImageF img = edges.linesOnly ? ImageF(s.width, s.height)
                                  : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord, onRows);
@@ -273,7 +290,10 @@ int runRender(const RenderJob& job) {
         CriticalSection writing;
         stopIfInterrupted(job, &scene, &img);
         if (!job.edges.maskPath.empty()) writeImage(job.edges.maskPath, coverageImage(lines), job.jpegQuality);
-        writeImage(job.outputPath, toImage8(img), job.jpegQuality);
+        if (png)
+            writeFileAtomically(job.outputPath, finishPng(*png, job.outputPath));
+        else
+            writeImage(job.outputPath, toImage8(img), job.jpegQuality);
     }
     const double writeMs = msSince(t0);
 

@@ -171,6 +171,8 @@ int pngZlibStrategy(const Image8& img) {
     return double(filtered) < kFilteredGain * double(rle) ? Z_FILTERED : Z_RLE;
 }
 
+int pngStrategyLastRow(int height) { return std::min(2 * height / 3 + kSampleRows, height) - 1; }
+
 namespace {
 
 int spngWrite(spng_ctx*, void* user, void* src, size_t length) {
@@ -180,30 +182,71 @@ int spngWrite(spng_ctx*, void* user, void* src, size_t length) {
     return 0;
 }
 
-std::vector<uint8_t> encodePng(const Image8& img) {
-    std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> ctx(spng_ctx_new(SPNG_CTX_ENCODER), spng_ctx_free);
-    if (!ctx) throw EncodeFailure{"PNG encoder: out of memory"};
-    std::vector<uint8_t> out;
-    out.reserve(img.pixels.size() / 4 + 1024);
+}  // namespace
 
+// One spng context in progressive mode writing to `out`; rows are handed over one at a time.
+struct PngRowEncoder::Impl {
+    std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> ctx{spng_ctx_new(SPNG_CTX_ENCODER), spng_ctx_free};
+    std::vector<uint8_t> out;
+    size_t rowBytes = 0;
+    int rowsLeft = 0;
+};
+
+PngRowEncoder::PngRowEncoder(int width, int height, int channels, int zlibStrategy) : impl_(std::make_unique<Impl>()) {
+    auto fail = [](const std::string& why) { throw Error("error: PNG encoder: " + why); };
+    if (width <= 0 || height <= 0 || channels < 1 || channels > 4) fail("invalid image");
+    if (!impl_->ctx) fail("out of memory");
     static const uint8_t colorTypes[4] = {SPNG_COLOR_TYPE_GRAYSCALE, SPNG_COLOR_TYPE_GRAYSCALE_ALPHA,
                                           SPNG_COLOR_TYPE_TRUECOLOR, SPNG_COLOR_TYPE_TRUECOLOR_ALPHA};
     spng_ihdr ihdr{};
-    ihdr.width = uint32_t(img.width);
-    ihdr.height = uint32_t(img.height);
+    ihdr.width = uint32_t(width);
+    ihdr.height = uint32_t(height);
     ihdr.bit_depth = 8;
-    ihdr.color_type = colorTypes[img.channels - 1];
+    ihdr.color_type = colorTypes[channels - 1];
+    impl_->rowBytes = size_t(width) * size_t(channels);
+    impl_->rowsLeft = height;
+    impl_->out.reserve(impl_->rowBytes * size_t(height) / 4 + 1024);
+    spng_ctx* ctx = impl_->ctx.get();
+    int err = spng_set_png_stream(ctx, spngWrite, &impl_->out);
+    if (!err) err = spng_set_ihdr(ctx, &ihdr);
+    if (!err) err = spng_set_option(ctx, SPNG_IMG_COMPRESSION_LEVEL, kPngLevel);
+    if (!err) err = spng_set_option(ctx, SPNG_FILTER_CHOICE, kPngFilters);
+    if (!err) err = spng_set_option(ctx, SPNG_IMG_COMPRESSION_STRATEGY, zlibStrategy);
+    if (!err) err = spng_encode_image(ctx, nullptr, 0, SPNG_FMT_PNG, SPNG_ENCODE_PROGRESSIVE | SPNG_ENCODE_FINALIZE);
+    if (err) fail(spng_strerror(err));
+}
 
-    int err = spng_set_png_stream(ctx.get(), spngWrite, &out);
-    if (!err) err = spng_set_ihdr(ctx.get(), &ihdr);
-    if (!err) err = spng_set_option(ctx.get(), SPNG_IMG_COMPRESSION_LEVEL, kPngLevel);
-    if (!err) err = spng_set_option(ctx.get(), SPNG_FILTER_CHOICE, kPngFilters);
-    if (!err) err = spng_set_option(ctx.get(), SPNG_IMG_COMPRESSION_STRATEGY, pngZlibStrategy(img));
-    if (!err)
-        err = spng_encode_image(ctx.get(), img.pixels.data(), img.pixels.size(), SPNG_FMT_PNG,
-                                SPNG_ENCODE_FINALIZE);
-    if (err) throw EncodeFailure{std::string("PNG encoder: ") + spng_strerror(err)};
-    return out;
+PngRowEncoder::~PngRowEncoder() = default;
+
+void PngRowEncoder::row(const uint8_t* pixels) {
+    if (impl_->rowsLeft <= 0) throw Error("error: PNG encoder: more rows than the image has");
+    const int err = spng_encode_row(impl_->ctx.get(), pixels, impl_->rowBytes);
+    --impl_->rowsLeft;
+    // The last row ends the image (SPNG_EOI) and, with SPNG_ENCODE_FINALIZE, writes IEND.
+    if (err && !(err == SPNG_EOI && impl_->rowsLeft == 0))
+        throw Error(std::string("error: PNG encoder: ") + spng_strerror(err));
+}
+
+std::vector<uint8_t> PngRowEncoder::finish() {
+    if (impl_->rowsLeft != 0)
+        throw Error("error: PNG encoder: " + std::to_string(impl_->rowsLeft) + " rows were never given");
+    return std::move(impl_->out);
+}
+
+namespace {
+
+std::vector<uint8_t> encodePng(const Image8& img) {
+    if (img.pixels.size() != size_t(img.width) * size_t(img.height) * size_t(img.channels))
+        throw EncodeFailure{"invalid image buffer"};
+    try {
+        PngRowEncoder enc(img.width, img.height, img.channels, pngZlibStrategy(img));
+        for (int y = 0; y < img.height; ++y) enc.row(img.row(y));
+        return enc.finish();
+    } catch (const Error& e) {
+        std::string why = e.what();  // "error: PNG encoder: ..."; the caller adds its own prefix
+        if (why.rfind("error: ", 0) == 0) why.erase(0, 7);
+        throw EncodeFailure{why};
+    }
 }
 
 // ---- JPEG (TurboJPEG) ----
@@ -310,6 +353,10 @@ bool isSupportedImageExtension(const std::string& path) {
     return formatOf(extensionOf(path)) != Format::Unknown;
 }
 
+bool isPngPath(const std::string& path) {
+    return isSupportedImageExtension(path) && formatOf(extensionOf(path)) == Format::Png;
+}
+
 std::vector<uint8_t> encodeImage(const std::string& extension, const Image8& img, int jpegQuality) {
     const std::string ext = extensionOf(extension);
     const Format f = formatOf(ext);
@@ -334,7 +381,10 @@ void writeImage(const std::string& path, const Image8& img, int jpegQuality) {
     } catch (const EncodeFailure& e) {
         failFile(path, e.msg);
     }
+    writeFileAtomically(path, data);
+}
 
+void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& data) {
     const std::string tmp =
         path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(tempCounter.fetch_add(1));
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0666);

@@ -2,6 +2,7 @@
 // read PNG, JPEG, BMP, TGA and PPM/PGM. Failures throw rays::Error ("PATH: error: ...").
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,8 @@ namespace rays {
 
 /// True when path ends in a supported output extension (.png .jpg .jpeg .ppm .tga .bmp, case-insensitive).
 bool isSupportedImageExtension(const std::string& path);
+/// True when path ends in .png (case-insensitive).
+bool isPngPath(const std::string& path);
 
 /// Writes img (1..4 channels, top row first) to path, format by extension. Atomic: the data goes to a
 /// temporary file in the same directory (path + ".tmp.<pid>.<counter>") which is renamed over path only
@@ -23,8 +26,34 @@ void writeImage(const std::string& path, const Image8& img, int jpegQuality = 90
 std::vector<uint8_t> encodeImage(const std::string& extension, const Image8& img, int jpegQuality = 90);
 
 /// The zlib strategy (Z_RLE or Z_FILTERED) the PNG encoder uses for img: Z_RLE unless Z_FILTERED
-/// compresses a sample of the image's rows much better (clean synthetic images). Exposed for tests.
+/// compresses a sample of the image's rows much better (clean synthetic images). Reads only rows
+/// up to pngStrategyLastRow(img.height), so a caller can pick it before the rest of the image exists.
 int pngZlibStrategy(const Image8& img);
+int pngStrategyLastRow(int height);
+
+/// Writes data to path atomically, as writeImage does (temporary file in the same directory, renamed
+/// over path when complete; on failure removed, and rays::Error "PATH: error: ..." thrown).
+void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& data);
+
+/// PNG encoding row by row, top row first, into memory: the bytes encodeImage("png", img) gives when
+/// constructed with pngZlibStrategy(img) and handed img's rows in order. Lets a caller compress rows
+/// while the rest of the image is still being made. Errors throw rays::Error ("error: PNG encoder: ...").
+class PngRowEncoder {
+public:
+    PngRowEncoder(int width, int height, int channels, int zlibStrategy);
+    ~PngRowEncoder();
+    PngRowEncoder(const PngRowEncoder&) = delete;
+    PngRowEncoder& operator=(const PngRowEncoder&) = delete;
+
+    /// The next row: width * channels bytes.
+    void row(const uint8_t* pixels);
+    /// The PNG file's bytes; every row must have been given.
+    std::vector<uint8_t> finish();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 /// Reads PNG, JPEG, BMP, TGA or binary PPM/PGM, keeping the file's channel count (1..4; 16-bit files are
 /// reduced to 8 bits). Throws rays::Error "PATH: error: cannot read image: <reason>".

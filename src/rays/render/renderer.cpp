@@ -204,7 +204,7 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
             if (firstPass) tileDone[size_t(t)] = 1;
             // The last tile of its row: the other tiles' pixels are visible here (acq_rel).
             if (rowTilesLeft && rowTilesLeft[size_t(t / tilesX)].fetch_sub(1, std::memory_order_acq_rel) == 1)
-                onRows(y0, y1, w);
+                onRows(img, y0, y1, w);
         }, prog);
         if (firstPass && cancelled())
             for (int t = 0; t < tileCount; ++t) {

@@ -39,11 +39,12 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
 /// onRecord (optional) is called, from worker threads, with each pixel's first-sample PathInfo
 /// (x right, y down from the top row); calls for different pixels may run concurrently.
 /// onRows (optional, single-pass renders only: not with aaEdges) is called from the worker that
-/// finishes the last tile of a row of tiles, with that worker's index, once every pixel of image
-/// rows [y0, y1) (top row first) has been rendered and recorded: work that needs finished rows
-/// (the feature lines) can start on the render's own threads while the render goes on.
+/// finishes the last tile of a row of tiles, with that worker's index and the image being made,
+/// once every pixel of image rows [y0, y1) (top row first) has been rendered and recorded: work
+/// that needs finished rows (the feature lines, the PNG encoder) can start on the render's own
+/// threads while the render goes on. It may read those rows of the image, nothing else.
 using RecordFn = std::function<void(int x, int y, const PathInfo& info)>;
-using RowsFn = std::function<void(int y0, int y1, int worker)>;
+using RowsFn = std::function<void(const ImageF& img, int y0, int y1, int worker)>;
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, TraceStats& stats,
               const ProgressFn& progress = {}, std::vector<uint8_t>* edgePixels = nullptr,
               const RecordFn& onRecord = {}, const RowsFn& onRows = {});
