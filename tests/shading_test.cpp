@@ -149,3 +149,36 @@ TEST(Tracer, RecursionDepthLimitsTheTree) {
         EXPECT_EQ(int(log.size()), depth + 1);
     }
 }
+
+TEST(Tracer, NoShadowRayTowardsALightTheSurfaceFacesAwayFrom) {
+    // A light far to the right: the sphere's left half faces away from it.
+    auto scene = [](const std::string& finish) {
+        return sceneFrom("light_source {<100, 0, 0> color rgb <1,1,1>}\n"
+                         "sphere { <0,0,0>, 3 pigment { color rgb <1,1,1> } finish { ambient 0.1 diffuse 0.8 " +
+                         finish + " } }\n");
+    };
+    const Ray left{{-2, 0, 14}, {0, 0, -1}}, right{{2, 0, 14}, {0, 0, -1}};
+    RenderSettings rs;
+    auto shadowRays = [&](const Scene& s, const Ray& ray, PathInfo* info, Vec3* color = nullptr) {
+        const Bvh bvh(s.objects);
+        TraceContext ctx;
+        const Vec3 c = Tracer(s, bvh, rs).tracePrimary(ray, ctx, nullptr, info);
+        if (color) *color = c;
+        return ctx.stats.shadowRays;
+    };
+    const Scene diffuseOnly = scene("");
+    Vec3 c;
+    // Lit side: traced. Far side: no light can come from there, nothing to trace.
+    EXPECT_EQ(shadowRays(diffuseOnly, right, nullptr), 1u);
+    EXPECT_EQ(shadowRays(diffuseOnly, left, nullptr, &c), 0u);
+    EXPECT_NEAR(c.x, 0.1, 1e-12);  // ambient only
+    // The feature lines' records count blocked lights: then the ray is traced, and it is blocked.
+    PathInfo info;
+    EXPECT_EQ(shadowRays(diffuseOnly, left, &info), 1u);
+    EXPECT_EQ(info.blockedLights, 1);
+    // Blinn-Phong's specular lobe is not gated by N·L: with a specular term the ray is traced.
+    EXPECT_EQ(shadowRays(scene("specular 0.5 roughness 0.1"), left, nullptr), 1u);
+    // Cook-Torrance gives nothing for N·L ≤ 0, specular or not.
+    rs.shading = ShadingModel::CookTorrance;
+    EXPECT_EQ(shadowRays(scene("specular 0.5 roughness 0.1"), left, nullptr), 0u);
+}

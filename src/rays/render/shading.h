@@ -28,6 +28,13 @@ LightTerms lambert(const Material& m, Vec3 N, Vec3 L, Vec3 lightColor);
 /// Oren-Nayar rough diffuse (roughness σ = material.sigma in degrees); equals Lambert at σ = 0.
 LightTerms orenNayar(const Material& m, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor);
 
+/// True when the model gives nothing at all from a light with N·L ≤ 0, whether the light is
+/// visible or not (every model but Blinn-Phong with a specular term): its shadow ray can be skipped.
+inline bool darkFacingAway(const Material& m, ShadingModel model) {
+    return model == ShadingModel::CookTorrance || model == ShadingModel::OrenNayar ||
+           model == ShadingModel::Lambert || m.specular == 0;
+}
+
 /// Schlick's approximation with F0 = ((ior − 1)/(ior + 1))², cosTheta = |N·V|.
 double schlickFresnel(double ior, double cosTheta);
 

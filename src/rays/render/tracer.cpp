@@ -142,7 +142,7 @@ ShadingModel Tracer::modelFor(const Material& m) const {
 }
 
 double Tracer::shadeLight(const Light& light, size_t index, const Material& m, ShadingModel model, Vec3 P, Vec3 N,
-                          Vec3 V, TraceContext& ctx, Vec3& diffuse, Vec3& specular) const {
+                          Vec3 V, TraceContext& ctx, Vec3& diffuse, Vec3& specular, bool skipFacingAway) const {
     const Vec3 origin = P + kSurfaceOffset * N;
     auto addSample = [&](Vec3 L, Vec3 color) {
         LightTerms t;
@@ -157,6 +157,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
     };
     if (light.parallel) {
         const Vec3 L = -light.direction;
+        if (skipFacingAway && dot(L, N) <= 0) return 0.0;
         if (shadowed(Ray{origin, L}, kInfinity, index, ctx, dot(L, N) < 0)) return 0.0;
         addSample(L, light.color);
         return 1.0;
@@ -166,6 +167,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         const double dist = length(toLight);
         if (dist == 0) return 1.0;
         const Vec3 L = toLight / dist;
+        if (skipFacingAway && dot(L, N) <= 0) return 0.0;
         const FromLight fromLight{-toLight, dist};
         if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0, &fromLight)) return 0.0;
         addSample(L, light.color);
@@ -200,6 +202,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         const Vec3 toLight = pos - P;
         const double dist = length(toLight);
         L = dist > 0 ? toLight / dist : N;
+        if (dist > 0 && skipFacingAway && dot(L, N) <= 0) return false;
         return dist == 0 || !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0);
     };
     // adaptive: when the four corners agree, their verdict holds for the whole light.
@@ -279,10 +282,13 @@ void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followS
 }
 
 int Tracer::localShading(const Material& m, ShadingModel model, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx,
-                         Vec3& diffuse, Vec3& specular) const {
+                         Vec3& diffuse, Vec3& specular, bool countBlocked) const {
+    // Such a light adds nothing lit or not; only the count could tell the difference.
+    const bool skipFacingAway = !countBlocked && darkFacingAway(m, model);
     int blocked = 0;
     for (size_t li = 0; li < scene_.lights.size(); ++li)
-        if (shadeLight(scene_.lights[li], li, m, model, P, N, V, ctx, diffuse, specular) < 0.5) ++blocked;
+        if (shadeLight(scene_.lights[li], li, m, model, P, N, V, ctx, diffuse, specular, skipFacingAway) < 0.5)
+            ++blocked;
     return blocked;
 }
 
@@ -369,7 +375,8 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     int blocked = 0;
     if (wLocal > 0 || info) {
         ctx.surfaceObject = hit.object;
-        blocked = localShading(m, model, P, N, V, ctx, diffuse, specular);
+        const bool countBlocked = info && f.kind == TraceRecord::Kind::Primary;
+        blocked = localShading(m, model, P, N, V, ctx, diffuse, specular, countBlocked);
         ctx.surfaceObject = -1;
         if (settings_.gi && f.giLevel < settings_.giBounces)
             ambient = m.diffuse * m.color * gatherIndirect(P, N, f, ctx);

@@ -147,12 +147,15 @@ private:
                  PathInfo* info) const;
     /// The shading model for a material: the render's flat/normals modes win, then the object's own.
     ShadingModel modelFor(const Material& m) const;
-    /// Direct light at P; returns the number of lights counted as blocked.
+    /// Direct light at P; returns the number of lights counted as blocked. Without countBlocked
+    /// the count is not wanted (only the shading), and lights behind the surface (N·L ≤ 0) whose
+    /// light the model ignores anyway get no shadow ray (and count as blocked).
     int localShading(const Material& m, ShadingModel model, Vec3 P, Vec3 N, Vec3 V, TraceContext& ctx,
-                     Vec3& diffuse, Vec3& specular) const;
-    /// Visible fraction and shading of one light (all its samples) at P.
+                     Vec3& diffuse, Vec3& specular, bool countBlocked) const;
+    /// Visible fraction and shading of one light (all its samples) at P. skipFacingAway: samples
+    /// with N·L ≤ 0 count as blocked without a shadow ray.
     double shadeLight(const Light& light, size_t index, const Material& m, ShadingModel model, Vec3 P, Vec3 N,
-                      Vec3 V, TraceContext& ctx, Vec3& diffuse, Vec3& specular) const;
+                      Vec3 V, TraceContext& ctx, Vec3& diffuse, Vec3& specular, bool skipFacingAway) const;
     void probeRec(const Ray& ray, int depth, bool countShadows, bool followSecondary, TraceContext& ctx,
                   PathInfo& out) const;
     /// Cosine-weighted average of the light arriving at P (global illumination).
