@@ -5,11 +5,11 @@
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 #define RAYS_HAVE_POSIX_FILES 1
 #endif
 
@@ -20,28 +20,21 @@ FileText::FileText(const std::string& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return;  // CannotOpen
     struct stat st {};
-    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-        int flags = MAP_PRIVATE;
-#ifdef MAP_POPULATE
-        flags |= MAP_POPULATE;  // page tables filled in one call instead of a fault per page
-#endif
-        void* p = ::mmap(nullptr, size_t(st.st_size), PROT_READ, flags, fd, 0);
-        if (p != MAP_FAILED) {
-            mapped_ = static_cast<const char*>(p);
-            mappedSize_ = size_t(st.st_size);
-            ::close(fd);
-            status_ = Status::Ok;
-            return;
-        }
-    }
-    // Not mappable (empty, a pipe, a device): read from the descriptor already open, so that a
-    // named pipe is not opened twice.
+    // A regular file's length sizes the buffer; anything else grows it as it arrives.
+    size_t capacity = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 ? size_t(st.st_size) : 0;
+    capacity = capacity > 0 ? capacity + 1 : size_t(1) << 16;  // +1: the end of the file is seen in one read
+    data_.reset(new char[capacity]);
     status_ = Status::Ok;
-    char buf[1 << 16];
     for (;;) {
-        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (size_ == capacity) {
+            std::unique_ptr<char[]> bigger(new char[2 * capacity]);
+            std::memcpy(bigger.get(), data_.get(), size_);
+            data_ = std::move(bigger);
+            capacity *= 2;
+        }
+        const ssize_t n = ::read(fd, data_.get() + size_, capacity - size_);
         if (n > 0) {
-            read_.append(buf, size_t(n));
+            size_ += size_t(n);
         } else if (n == 0) {
             break;
         } else if (errno != EINTR) {
@@ -51,19 +44,20 @@ FileText::FileText(const std::string& path) {
     }
     ::close(fd);
 }
-
-FileText::~FileText() {
-    if (mapped_) ::munmap(const_cast<char*>(mapped_), mappedSize_);
-}
 #else
 FileText::FileText(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return;  // CannotOpen
-    read_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    status_ = in.bad() ? Status::CannotRead : Status::Ok;
+    const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) {
+        status_ = Status::CannotRead;
+        return;
+    }
+    data_.reset(new char[all.size() + 1]);
+    all.copy(data_.get(), all.size());
+    size_ = all.size();
+    status_ = Status::Ok;
 }
-
-FileText::~FileText() = default;
 #endif
 
 }  // namespace rays

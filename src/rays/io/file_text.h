@@ -1,9 +1,11 @@
-// FileText: the whole contents of a file, opened once. A regular file is mapped read-only (POSIX
-// mmap) instead of copied: a 2 MB scene read into a string costs some hundred page faults, slow on
-// virtual machines, before parsing starts. Anything else (a pipe such as `<(make-scene)`, or a
-// system without mmap) is read into memory.
+// FileText: the whole contents of a file, opened once and read into memory. The buffer is sized
+// from the file's length and left uninitialised before the read (a zero-filled std::string would
+// touch every page twice); a file whose length is unknown (a pipe such as `<(make-scene)`) is read
+// in chunks from the same descriptor. Copying instead of mapping the file keeps a file truncated
+// by another program mid-read an ordinary short read, not a SIGBUS.
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -14,19 +16,15 @@ public:
     enum class Status { Ok, CannotOpen, CannotRead };
 
     explicit FileText(const std::string& path);
-    ~FileText();
-    FileText(const FileText&) = delete;
-    FileText& operator=(const FileText&) = delete;
 
     Status status() const { return status_; }
     /// The contents (valid while this object lives) when status() is Ok.
-    std::string_view text() const { return mapped_ ? std::string_view(mapped_, mappedSize_) : std::string_view(read_); }
+    std::string_view text() const { return {data_.get(), size_}; }
 
 private:
     Status status_ = Status::CannotOpen;
-    const char* mapped_ = nullptr;
-    size_t mappedSize_ = 0;
-    std::string read_;
+    std::unique_ptr<char[]> data_;
+    size_t size_ = 0;
 };
 
 }  // namespace rays
