@@ -264,8 +264,7 @@ int runRender(const RenderJob& job) {
     }
     // A PNG of the render as it stands is compressed by the render's threads as rows finish.
     std::unique_ptr<PngStream> png;
-    if (!onRows && isPngPath(job.outputPath) && !edges.enabled() && !edges.linesOnly && job.post.empty() &&
-        !s.aaEdges) {
+    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges) {
         png = std::make_unique<PngStream>(s.width, s.height);
         onRows = [&](const ImageF& rows, int y0, int y1, int) { png->rowsDone(rows, y0, y1); };
     }

@@ -4,12 +4,16 @@ namespace rays {
 
 Image8 toImage8(const ImageF& img) {
     Image8 out(img.width, img.height, 3);
-    for (size_t i = 0; i < img.pixels.size(); ++i) {
-        out.pixels[3 * i + 0] = toByte(img.pixels[i].x);
-        out.pixels[3 * i + 1] = toByte(img.pixels[i].y);
-        out.pixels[3 * i + 2] = toByte(img.pixels[i].z);
-    }
+    toBytes(img.pixels.data(), img.pixels.size(), out.pixels.data());
     return out;
+}
+
+void toBytes(const Vec3* pixels, size_t count, uint8_t* rgb) {
+    for (size_t i = 0; i < count; ++i) {
+        rgb[3 * i + 0] = toByte(pixels[i].x);
+        rgb[3 * i + 1] = toByte(pixels[i].y);
+        rgb[3 * i + 2] = toByte(pixels[i].z);
+    }
 }
 
 }  // namespace rays

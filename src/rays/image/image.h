@@ -72,5 +72,7 @@ inline uint8_t toByte(double c) {
 
 /// Quantises a float image to 8-bit RGB with toByte.
 Image8 toImage8(const ImageF& img);
+/// Quantises count pixels to RGB bytes (3·count of them) with toByte.
+void toBytes(const Vec3* pixels, size_t count, uint8_t* rgb);
 
 }  // namespace rays

@@ -182,6 +182,8 @@ int spngWrite(spng_ctx*, void* user, void* src, size_t length) {
     return 0;
 }
 
+[[noreturn]] void pngEncoderFailed(const std::string& why) { throw Error("error: PNG encoder: " + why); }
+
 }  // namespace
 
 // One spng context in progressive mode writing to `out`; rows are handed over one at a time.
@@ -193,9 +195,8 @@ struct PngRowEncoder::Impl {
 };
 
 PngRowEncoder::PngRowEncoder(int width, int height, int channels, int zlibStrategy) : impl_(std::make_unique<Impl>()) {
-    auto fail = [](const std::string& why) { throw Error("error: PNG encoder: " + why); };
-    if (width <= 0 || height <= 0 || channels < 1 || channels > 4) fail("invalid image");
-    if (!impl_->ctx) fail("out of memory");
+    if (width <= 0 || height <= 0 || channels < 1 || channels > 4) pngEncoderFailed("invalid image");
+    if (!impl_->ctx) pngEncoderFailed("out of memory");
     static const uint8_t colorTypes[4] = {SPNG_COLOR_TYPE_GRAYSCALE, SPNG_COLOR_TYPE_GRAYSCALE_ALPHA,
                                           SPNG_COLOR_TYPE_TRUECOLOR, SPNG_COLOR_TYPE_TRUECOLOR_ALPHA};
     spng_ihdr ihdr{};
@@ -213,23 +214,23 @@ PngRowEncoder::PngRowEncoder(int width, int height, int channels, int zlibStrate
     if (!err) err = spng_set_option(ctx, SPNG_FILTER_CHOICE, kPngFilters);
     if (!err) err = spng_set_option(ctx, SPNG_IMG_COMPRESSION_STRATEGY, zlibStrategy);
     if (!err) err = spng_encode_image(ctx, nullptr, 0, SPNG_FMT_PNG, SPNG_ENCODE_PROGRESSIVE | SPNG_ENCODE_FINALIZE);
-    if (err) fail(spng_strerror(err));
+    if (err) pngEncoderFailed(spng_strerror(err));
 }
 
 PngRowEncoder::~PngRowEncoder() = default;
 
 void PngRowEncoder::row(const uint8_t* pixels) {
-    if (impl_->rowsLeft <= 0) throw Error("error: PNG encoder: more rows than the image has");
+    if (impl_->rowsLeft <= 0) pngEncoderFailed("more rows than the image has");
     const int err = spng_encode_row(impl_->ctx.get(), pixels, impl_->rowBytes);
     --impl_->rowsLeft;
     // The last row ends the image (SPNG_EOI) and, with SPNG_ENCODE_FINALIZE, writes IEND.
     if (err && !(err == SPNG_EOI && impl_->rowsLeft == 0))
-        throw Error(std::string("error: PNG encoder: ") + spng_strerror(err));
+        pngEncoderFailed(spng_strerror(err));
 }
 
 std::vector<uint8_t> PngRowEncoder::finish() {
     if (impl_->rowsLeft != 0)
-        throw Error("error: PNG encoder: " + std::to_string(impl_->rowsLeft) + " rows were never given");
+        pngEncoderFailed(std::to_string(impl_->rowsLeft) + " rows were never given");
     return std::move(impl_->out);
 }
 

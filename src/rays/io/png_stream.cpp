@@ -7,15 +7,8 @@ namespace rays {
 PngStream::PngStream(int width, int height) : bytes_(width, height, 3), rowReady_(size_t(height), 0) {}
 
 void PngStream::rowsDone(const ImageF& img, int y0, int y1) {
-    for (int y = y0; y < y1; ++y) {
-        const Vec3* in = &img.pixels[size_t(y) * size_t(img.width)];
-        uint8_t* out = bytes_.row(y);
-        for (int x = 0; x < img.width; ++x) {
-            out[3 * x + 0] = toByte(in[x].x);
-            out[3 * x + 1] = toByte(in[x].y);
-            out[3 * x + 2] = toByte(in[x].z);
-        }
-    }
+    const size_t width = size_t(img.width);
+    toBytes(img.pixels.data() + size_t(y0) * width, size_t(y1 - y0) * width, bytes_.row(y0));
     std::unique_lock<std::mutex> lock(mutex_);
     for (int y = y0; y < y1; ++y) rowReady_[size_t(y)] = 1;
     while (readyPrefix_ < bytes_.height && rowReady_[size_t(readyPrefix_)]) ++readyPrefix_;
@@ -50,8 +43,8 @@ void PngStream::encodeReadyRows(std::unique_lock<std::mutex>& lock) {
 }
 
 std::vector<uint8_t> PngStream::finish() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    if (!error_ && !encoding_) encodeReadyRows(lock);  // rows reported but not compressed (none normally)
+    // The thread that reported the last rows has compressed them.
+    std::lock_guard<std::mutex> lock(mutex_);
     if (error_) std::rethrow_exception(error_);
     if (encoded_ != bytes_.height)
         throw Error("error: PNG encoder: " + std::to_string(bytes_.height - encoded_) + " rows were never given");

@@ -157,8 +157,9 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
     };
     if (light.parallel) {
         const Vec3 L = -light.direction;
-        if (skipFacingAway && dot(L, N) <= 0) return 0.0;
-        if (shadowed(Ray{origin, L}, kInfinity, index, ctx, dot(L, N) < 0)) return 0.0;
+        const double nl = dot(L, N);
+        if (skipFacingAway && nl <= 0) return 0.0;
+        if (shadowed(Ray{origin, L}, kInfinity, index, ctx, nl < 0)) return 0.0;
         addSample(L, light.color);
         return 1.0;
     }
@@ -167,9 +168,10 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         const double dist = length(toLight);
         if (dist == 0) return 1.0;
         const Vec3 L = toLight / dist;
-        if (skipFacingAway && dot(L, N) <= 0) return 0.0;
+        const double nl = dot(L, N);
+        if (skipFacingAway && nl <= 0) return 0.0;
         const FromLight fromLight{-toLight, dist};
-        if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0, &fromLight)) return 0.0;
+        if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, nl < 0, &fromLight)) return 0.0;
         addSample(L, light.color);
         return 1.0;
     }
