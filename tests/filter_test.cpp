@@ -17,6 +17,7 @@
 #include "rays/image/filter.h"
 #include "rays/image/kernels.h"
 #include "rays/image/parallel.h"
+#include "support/error_text.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
@@ -90,12 +91,7 @@ PlanarImage run(const std::string& spec, const PlanarImage& src, BorderMode mode
 }
 
 std::string errorOf(const std::string& spec) {
-    try {
-        parseKernelSpec(spec);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "(no error)";
+    return rays::test::errorText([&] { parseKernelSpec(spec); });
 }
 
 std::string writeText(const fs::path& dir, const std::string& name, const std::string& text) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rays/error.h"
+#include "support/error_text.h"
 
 using namespace rays;
 
@@ -27,12 +28,7 @@ std::vector<Seen> lex(const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-    try {
-        lex(text);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "no error";
+    return rays::test::errorText([&] { lex(text); });
 }
 
 TEST(Lexer, PositionsAcrossCommentsTabsAndLineEnds) {

@@ -8,6 +8,7 @@
 #include "rays/io/image_io.h"
 #include "rays/io/scene_parser.h"
 #include "rays/render/renderer.h"
+#include "support/error_text.h"
 #include "support/process.h"
 
 using namespace rays;
@@ -23,12 +24,7 @@ Scene parse(const std::string& text, const std::string& file = "t.pov") {
 }
 
 std::string errorOf(const std::string& text) {
-    try {
-        parse(text);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "(no error)";
+    return rays::test::errorText([&] { parse(text); });
 }
 
 ImageF flatRender(const Scene& scene, int w, int h) {

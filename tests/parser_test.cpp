@@ -9,6 +9,7 @@
 
 #include "rays/error.h"
 #include "rays/io/scene_parser.h"
+#include "support/error_text.h"
 #include "support/process.h"
 
 using namespace rays;
@@ -27,14 +28,11 @@ Scene parse(const std::string& body, std::vector<std::string>* warnings = nullpt
 
 // Message of the Error thrown while parsing text (which must fail).
 std::string errorOf(const std::string& text) {
-    try {
+    return rays::test::errorText([&] {
         ParseOptions opt;
         opt.warn = [](const std::string&) {};
         parseScene(text, "t.pov", opt);
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "(no error)";
+    });
 }
 
 }  // namespace
