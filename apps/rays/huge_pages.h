@@ -14,7 +14,8 @@ namespace rays::cli {
 inline constexpr std::size_t kHugeHeapBytes = std::size_t(256) << 20;
 
 /// Keeps large freed blocks in the heap for reuse and, unless RAYS_NO_HUGEPAGES is set, prepares
-/// kHugeHeapBytes of heap advised for huge pages. Costs no physical memory until pages are used.
+/// kHugeHeapBytes of heap advised for huge pages, starting on a 2 MiB boundary, which every
+/// thread allocates from (one malloc arena). Costs no physical memory until pages are used.
 void enableHugePages();
 
 }  // namespace rays::cli
