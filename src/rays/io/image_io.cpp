@@ -355,7 +355,7 @@ bool isSupportedImageExtension(const std::string& path) {
 }
 
 bool isPngPath(const std::string& path) {
-    return isSupportedImageExtension(path) && formatOf(extensionOf(path)) == Format::Png;
+    return formatOf(extensionOf(path)) == Format::Png;
 }
 
 std::vector<uint8_t> encodeImage(const std::string& extension, const Image8& img, int jpegQuality) {

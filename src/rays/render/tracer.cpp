@@ -203,9 +203,14 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
     auto visible = [&](Vec3 pos, Vec3& L) {
         const Vec3 toLight = pos - P;
         const double dist = length(toLight);
-        L = dist > 0 ? toLight / dist : N;
-        if (dist > 0 && skipFacingAway && dot(L, N) <= 0) return false;
-        return dist == 0 || !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, dot(L, N) < 0);
+        if (dist == 0) {
+            L = N;
+            return true;
+        }
+        L = toLight / dist;
+        const double nl = dot(L, N);
+        if (skipFacingAway && nl <= 0) return false;
+        return !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, nl < 0);
     };
     // adaptive: when the four corners agree, their verdict holds for the whole light.
     int cornerVerdict = -1;  // −1 undecided, 0 all blocked, 1 all visible
