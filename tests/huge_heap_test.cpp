@@ -52,4 +52,25 @@ TEST(HugeHeap, LargeMallocsAfterTheHeapIsPreparedAreAdvisedForHugePages) {
     EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
 }
 
+// The heap's first stretch below a 2 MiB boundary can never be a huge page; the preparation parks
+// it in a block of its own, so that the next blocks (the scene file's text is the first big one)
+// start inside the advised range. The compiler must not elide that never-read block.
+TEST(HugeHeap, FirstBlockAfterTheHeapIsPreparedIsAdvisedFromItsStart) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "the sanitizers' allocators do not use the program break";
+#else
+    if (std::getenv("RAYS_NO_HUGEPAGES") != nullptr) GTEST_SKIP() << "RAYS_NO_HUGEPAGES is set";
+    if (!thpAvailable()) GTEST_SKIP() << "no transparent huge pages on this machine";
+    rays::cli::enableHugePages();
+    // Larger than any free chunk a test binary leaves behind: it comes from the top of the heap.
+    void* block = std::malloc(size_t(1) << 20);
+    ASSERT_NE(block, nullptr);
+    // Its chunk header sits just below the boundary; the rest of it lies above.
+    const std::string flags = vmFlagsAt(static_cast<char*>(block) + 4096);
+    std::free(block);
+    ASSERT_FALSE(flags.empty()) << "no mapping found for the block";
+    EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
+#endif
+}
+
 }  // namespace

@@ -10,6 +10,11 @@
 #include "rays/accel/huge_pages.h"
 
 namespace rays::cli {
+namespace {
+// The parked block. Volatile: a block whose pointer is never read again may be elided by the
+// compiler (GCC removes such a malloc), and the parking would silently not happen.
+void* volatile gParkedHeap = nullptr;
+}  // namespace
 
 void enableHugePages() {
     // Large blocks come from the heap and stay there when freed, so a later buffer of the
@@ -30,10 +35,7 @@ void enableHugePages() {
     const auto brk = reinterpret_cast<std::uintptr_t>(sbrk(0));
     const std::uintptr_t top = brk - mallinfo2().keepcost;
     const std::uintptr_t headroom = ((top + kHuge - 1) & ~(kHuge - 1)) - top;
-    if (brk != std::uintptr_t(-1) && headroom > 4096) {
-        static void* parked = std::malloc(headroom - 64);
-        (void)parked;
-    }
+    if (brk != std::uintptr_t(-1) && headroom > 4096) gParkedHeap = std::malloc(headroom - 64);
     void* block = std::malloc(kHugeHeapBytes);
     if (block == nullptr) return;
     const auto start = reinterpret_cast<std::uintptr_t>(block);
