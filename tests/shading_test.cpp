@@ -182,3 +182,36 @@ TEST(Tracer, NoShadowRayTowardsALightTheSurfaceFacesAwayFrom) {
     rs.shading = ShadingModel::CookTorrance;
     EXPECT_EQ(shadowRays(scene("specular 0.5 roughness 0.1"), left, nullptr), 0u);
 }
+
+// The shortcut before normalising the light direction: whenever it says "facing away", the
+// normalised dot product the shading uses is not positive either (same images), and it does say
+// so for directions clearly behind the surface, at any distance.
+TEST(Shading, ClearlyFacingAwayAgreesWithTheNormalisedTest) {
+    uint64_t state = 12345;
+    auto uniform = [&] {  // xorshift64*, in [-1, 1)
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        return double((state * 0x2545F4914F6CDD1DULL) >> 11) * 0x1p-52 - 1.0;
+    };
+    int shortcuts = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const Vec3 N = normalize(Vec3{uniform(), uniform(), uniform()});
+        Vec3 toLight = std::ldexp(1.0, int(uniform() * 40)) * Vec3{uniform(), uniform(), uniform()};
+        if (i % 2) toLight = toLight - dot(toLight, N) * N + 1e-14 * uniform() * length(toLight) * N;  // grazing
+        if (length(toLight) == 0) continue;
+        const double nl = dot(toLight / length(toLight), N);
+        if (clearlyFacingAway(toLight, N)) {
+            ++shortcuts;
+            EXPECT_LE(nl, 0.0) << i;
+        } else {
+            EXPECT_GT(nl, -1e-9) << i;  // only near-zero or positive cases are left to the full test
+        }
+    }
+    EXPECT_GT(shortcuts, 40000);
+    EXPECT_TRUE(clearlyFacingAway({0, 0, -1e-3}, {0, 0, 1}));
+    EXPECT_TRUE(clearlyFacingAway({1e6, 3e6, -1}, {0, 0, 1}));
+    EXPECT_FALSE(clearlyFacingAway({1, 0, 0}, {0, 0, 1}));   // exactly grazing
+    EXPECT_FALSE(clearlyFacingAway({0, 0, 0}, {0, 0, 1}));   // light at the point
+    EXPECT_FALSE(clearlyFacingAway({0, 0, 1e-3}, {0, 0, 1}));
+}

@@ -1,5 +1,7 @@
 // Local reflection models evaluated for one light: the course's Blinn-Phong and Cook-Torrance.
 #pragma once
+#include <cmath>
+
 #include "rays/math/vec3.h"
 #include "rays/scene/material.h"
 
@@ -33,6 +35,16 @@ LightTerms orenNayar(const Material& m, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor)
 inline bool darkFacingAway(const Material& m, ShadingModel model) {
     return model == ShadingModel::CookTorrance || model == ShadingModel::OrenNayar ||
            model == ShadingModel::Lambert || m.specular == 0;
+}
+
+/// True when dot(toLight / |toLight|, N) is certainly below zero, decided without the square root
+/// and division that normalise toLight: dot(toLight, N) is negative by far more than the rounding
+/// of either dot product (~1e-16 of the sum of the products' sizes), so both have the same sign.
+/// Near zero it answers false and the normalised test decides, as before.
+inline bool clearlyFacingAway(Vec3 toLight, Vec3 N) {
+    const double d = dot(toLight, N);
+    const double size = std::fabs(toLight.x * N.x) + std::fabs(toLight.y * N.y) + std::fabs(toLight.z * N.z);
+    return d < -1e-12 * size;
 }
 
 /// Schlick's approximation with F0 = ((ior − 1)/(ior + 1))², cosTheta = |N·V|.

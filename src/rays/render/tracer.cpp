@@ -165,6 +165,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
     }
     if (!light.area) {
         const Vec3 toLight = light.position - P;
+        if (skipFacingAway && clearlyFacingAway(toLight, N)) return 0.0;  // no sqrt, no division
         const double dist = length(toLight);
         if (dist == 0) return 1.0;
         const Vec3 L = toLight / dist;
