@@ -70,3 +70,25 @@ TEST(HugePages, AllocationFromSeveralThreadsWhilePopulating) {
     GTEST_SKIP() << "warm memory needs Linux";
 #endif
 }
+
+// A region sized for planned buffers (the render image) keeps them room: smaller requests that
+// come first (a BVH's arrays) get only the rest, and the planned buffer is still carved from it.
+TEST(HugePages, PlannedBuffersKeepTheirRoom) {
+#if defined(__linux__)
+    const size_t planned = (size_t(7) << 20) + (size_t(1) << 19);  // 7.5 MiB: the region is 8 MiB
+    ASSERT_TRUE(hugePrewarm(planned, planned));
+    void* a = hugeAlloc(size_t(256) << 10, 64);  // fits in the 0.5 MiB the plan leaves
+    EXPECT_EQ(hugeWarmUsed(), size_t(256) << 10);
+    void* b = hugeAlloc(size_t(384) << 10, 64);  // would eat into the plan: fresh memory
+    EXPECT_EQ(hugeWarmUsed(), size_t(256) << 10);
+    auto* image = static_cast<uint8_t*>(hugeAlloc(planned, 64));
+    EXPECT_EQ(hugeWarmUsed(), (size_t(256) << 10) + planned);
+    image[planned - 1] = 1;
+    // The plan is served: later requests take whatever is left.
+    hugeFree(image, planned, 64);
+    hugeFree(b, size_t(384) << 10, 64);
+    hugeFree(a, size_t(256) << 10, 64);
+#else
+    GTEST_SKIP() << "warm memory needs Linux";
+#endif
+}

@@ -188,16 +188,23 @@ void prewarmBuffers(const RenderJob& job) {
     if (std::getenv("RAYS_NO_PREWARM")) return;
     const RenderSettings& s = job.settings;
     uint64_t perPixel = sizeof(Vec3);
+    uint64_t smallestPerPixel = sizeof(Vec3);
     // Line records and coverage.
-    if (!job.edges.types.empty() && job.edges.types != "none") perPixel += sizeof(EdgeRecord) + sizeof(float);
-    const double want = double(s.width) * double(s.height) * double(perPixel) + 4096.0 * 8;  // + alignment slack
+    if (!job.edges.types.empty() && job.edges.types != "none") {
+        perPixel += sizeof(EdgeRecord) + sizeof(float);
+        smallestPerPixel = sizeof(float);
+    }
+    const double pixels = double(s.width) * double(s.height);
+    const double want = pixels * double(perPixel) + 4096.0 * 8;  // + alignment slack
     double cap = 256.0 * 1024 * 1024;
     try {
         cap = std::min(cap, double(memoryLimit()) / 4);
     } catch (const Error&) {
         return;  // a bad RAYS_MEMORY_LIMIT is reported by the budget check
     }
-    tribvh::hugePrewarm(size_t(std::min(want, cap)));
+    // Kept for these buffers: the BVH's arrays, allocated before them, would otherwise take the
+    // front of the region and leave the image to fresh memory.
+    tribvh::hugePrewarm(size_t(std::min(want, cap)), size_t(std::min(pixels * double(smallestPerPixel), cap)));
 }
 
 }  // namespace

@@ -28,6 +28,8 @@ struct WarmRegion {
     size_t size = 0;
     size_t used = 0;
     bool claimed = false;
+    size_t plannedMin = 0;   ///< requests of at least this size are the ones the region was sized for
+    size_t plannedLeft = 0;  ///< bytes kept for them until they come
 
     bool contains(const void* p) const {
         const char* b = base.load(std::memory_order_acquire);
@@ -41,8 +43,12 @@ struct WarmRegion {
         std::lock_guard<std::mutex> g(lock);
         const size_t a = align < 64 ? 64 : align;
         const size_t start = (used + a - 1) & ~(a - 1);
-        if (start > size || size - start < bytes) return nullptr;
+        const bool planned = bytes >= plannedMin;
+        // Other requests take only what the planned buffers leave.
+        const size_t room = planned ? size : (size > plannedLeft ? size - plannedLeft : 0);
+        if (start > room || room - start < bytes) return nullptr;
         used = start + bytes;
+        if (planned) plannedLeft -= bytes < plannedLeft ? bytes : plannedLeft;
         return base.load(std::memory_order_relaxed) + start;
     }
 };
@@ -72,7 +78,7 @@ size_t hugeFootprint(size_t bytes) {
     return bytes >= kHugeThreshold ? (bytes + kHugePage - 1) / kHugePage * kHugePage : bytes;
 }
 
-bool hugePrewarm(size_t bytes) {
+bool hugePrewarm(size_t bytes, size_t plannedMin) {
     if (!kCanPrewarm || bytes == 0) return false;
     WarmRegion& w = warm();
     std::lock_guard<std::mutex> g(w.lock);
@@ -88,6 +94,8 @@ bool hugePrewarm(size_t bytes) {
     madvise(base, size, MADV_HUGEPAGE);
 #endif
     w.size = size;
+    w.plannedMin = plannedMin;
+    w.plannedLeft = plannedMin > 0 ? bytes : 0;
     w.base.store(base, std::memory_order_release);
     try {
         std::thread(populate, base, size).detach();

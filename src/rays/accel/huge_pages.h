@@ -33,7 +33,10 @@ constexpr size_t kWarmMin = size_t(256) << 10;
 /// whether or not the thread has reached them yet (a page it has not reached is faulted by its
 /// first user as usual). Carved blocks are not reused after hugeFree. Once per process: a second
 /// call does nothing. Returns false when nothing was reserved (mmap failed, or already called).
-bool hugePrewarm(size_t bytes);
+/// plannedMin > 0: the region is for the caller's planned buffers, each at least plannedMin bytes
+/// and `bytes` in all; smaller requests that come first (a BVH's arrays, say) get only what those
+/// buffers leave of the region and do not crowd them out of it.
+bool hugePrewarm(size_t bytes, size_t plannedMin = 0);
 /// Bytes of the warm region handed out so far (0 without hugePrewarm).
 size_t hugeWarmUsed();
 
