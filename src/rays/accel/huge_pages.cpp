@@ -1,5 +1,6 @@
 #include "rays/accel/huge_pages.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
@@ -45,10 +46,10 @@ struct WarmRegion {
         const size_t start = (used + a - 1) & ~(a - 1);
         const bool planned = bytes >= plannedMin;
         // Other requests take only what the planned buffers leave.
-        const size_t room = planned ? size : (size > plannedLeft ? size - plannedLeft : 0);
+        const size_t room = planned ? size : size - plannedLeft;  // plannedLeft <= size always
         if (start > room || room - start < bytes) return nullptr;
         used = start + bytes;
-        if (planned) plannedLeft -= bytes < plannedLeft ? bytes : plannedLeft;
+        if (planned) plannedLeft -= std::min(bytes, plannedLeft);
         return base.load(std::memory_order_relaxed) + start;
     }
 };
