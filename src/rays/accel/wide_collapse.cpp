@@ -1,5 +1,6 @@
 #include "rays/accel/wide_collapse.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -12,8 +13,71 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 void Collapser::run() {
     nodes_.clear();
     nodes_.reserve(bin_.nodes.size() / 4 + 1);
+    cost_ = HugeArray<Slots>(bin_.nodes.size());  // written for inner nodes only, before any read
+    if (!bin_.nodes[bin_.root].leaf()) costs(bin_.root);
     nodes_.emplace_back();
     fill(0, bin_.root);
+    cost_.reset();
+}
+
+namespace {
+constexpr Collapser::Slots kLeafSlots{};  // a leaf takes one slot and makes no node
+}
+
+const Collapser::Slots& Collapser::slots(uint32_t n) const { return bin_.nodes[n].leaf() ? kLeafSlots : cost_[n]; }
+
+// cost_[n][k - 1]: the least total surface area of the wide nodes made from n's subtree when n
+// may fill at most k slots of its parent (k = 1: n becomes a wide node of its own). A ray enters
+// a wide node about as often as its box's area says, so this is the expected number of node
+// visits up to a constant. Leaves count nothing: each leaf is the child of some wide node
+// whatever the collapse.
+void Collapser::costs(uint32_t n) {
+    const BinaryNode& bn = bin_.nodes[n];
+    for (uint32_t c : {bn.first, bn.first + 1})
+        if (!bin_.nodes[c].leaf()) costs(c);
+    const Slots& l = slots(bn.first);
+    const Slots& r = slots(bn.first + 1);
+    float shared[kWidth];  // [j - 1]: the two subtrees in at most j slots together
+    for (int j = 2; j <= kWidth; ++j) {
+        float best = kInf;
+        for (int a = 1; a < j; ++a) best = std::min(best, l[a - 1] + r[j - a - 1]);
+        shared[j - 1] = best;
+    }
+    Slots& s = cost_[n];
+    s[0] = bn.halfArea() + shared[kWidth - 1];
+    for (int k = 2; k <= kWidth; ++k) s[k - 1] = std::min(s[k - 2], shared[k - 1]);
+}
+
+// The least cost of n's two subtrees sharing j >= 2 slots; leftSlots receives the left one's.
+float Collapser::split(uint32_t n, int j, int& leftSlots) const {
+    const BinaryNode& bn = bin_.nodes[n];
+    const Slots& l = slots(bn.first);
+    const Slots& r = slots(bn.first + 1);
+    float best = kInf;
+    for (int a = 1; a < j; ++a) {
+        const float c = l[a - 1] + r[j - a - 1];
+        if (c < best) {
+            best = c;
+            leftSlots = a;
+        }
+    }
+    return best;
+}
+
+// Appends the binary nodes that become children of a wide node when binary node n may fill at
+// most k of its slots: n itself (a leaf, or an inner node that becomes a wide node), or the
+// children its two subtrees give in the split that costs least.
+void Collapser::gather(uint32_t n, int k, uint32_t* kids, int& count) const {
+    if (!bin_.nodes[n].leaf())
+        while (k > 1 && cost_[n][k - 2] <= cost_[n][k - 1]) --k;  // fewer slots cost no more
+    if (bin_.nodes[n].leaf() || k == 1) {
+        kids[count++] = n;
+        return;
+    }
+    int a = 1;
+    split(n, k, a);
+    gather(bin_.nodes[n].first, a, kids, count);
+    gather(bin_.nodes[n].first + 1, k - a, kids, count);
 }
 
 // Fills nodes_[w] from binary node b (the root may itself be a leaf).
@@ -23,26 +87,11 @@ void Collapser::fill(uint32_t w, uint32_t b) {
     const BinaryNode& bn = bin_.nodes[b];
     if (bn.leaf()) {
         kids[k++] = b;
-    } else {
-        kids[k++] = bn.first;
-        kids[k++] = bn.first + 1;
-    }
-    while (k < kWidth) {
-        int best = -1;
-        float bestArea = -1.0f;
-        for (int i = 0; i < k; ++i) {
-            const BinaryNode& c = bin_.nodes[kids[i]];
-            if (c.leaf()) continue;
-            const float a = c.halfArea();
-            if (a > bestArea) {
-                bestArea = a;
-                best = i;
-            }
-        }
-        if (best < 0) break;
-        const uint32_t c = kids[best];
-        kids[best] = bin_.nodes[c].first;
-        kids[k++] = bin_.nodes[c].first + 1;
+    } else {  // the split of b's subtrees over the eight slots that costs least
+        int a = 1;
+        split(b, kWidth, a);
+        gather(bn.first, a, kids, k);
+        gather(bn.first + 1, kWidth - a, kids, k);
     }
     // Allocate inner children contiguously, then set boxes and references.
     uint32_t refs[kWidth];

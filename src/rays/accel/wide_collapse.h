@@ -2,6 +2,7 @@
 // triangle BVH and the object BVH: both store leaves as consecutive blocks of kBlockSize primitives.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -12,12 +13,15 @@
 
 namespace rays::tribvh {
 
-/// Collapses a binary BVH into 8-wide nodes: starting from a node's two children, the child with
-/// the largest surface area is repeatedly replaced by its own children until there are eight
-/// (or only leaves). Sibling nodes are stored contiguously; leaves get consecutive blocks in
-/// depth-first order.
+/// Collapses a binary BVH into 8-wide nodes, choosing which binary nodes become wide nodes so
+/// that the total surface area of the wide nodes is least (each wide node holding at most eight
+/// children): a dynamic programme over the binary tree, bottom up, of the least cost of each
+/// subtree when it may fill 1..8 slots of its parent (the SAH-optimal collapse of Ylitie, Karras
+/// and Laine 2017, without leaf merging: the leaves stay those of the binary tree). Sibling nodes
+/// are stored contiguously; leaves get consecutive blocks in depth-first order.
 class Collapser {
 public:
+    using Slots = std::array<float, kWidth>;
     struct LeafJob {
         uint32_t firstBlock, firstRef, count;
     };
@@ -32,10 +36,15 @@ public:
 
 private:
     void fill(uint32_t w, uint32_t b);
+    void costs(uint32_t n);
+    const Slots& slots(uint32_t n) const;
+    float split(uint32_t n, int j, int& leftSlots) const;
+    void gather(uint32_t n, int k, uint32_t* kids, int& count) const;
 
     const BinaryBvh& bin_;
     NodeVector& nodes_;
     uint32_t leafBlockCap_;
+    HugeArray<Slots> cost_;  ///< per inner binary node: least cost of its subtree in at most 1..8 slots
 };
 
 /// The result of buildWideTree besides the nodes: where each leaf's primitives go and the bounds.
