@@ -231,8 +231,8 @@ Hit Bvh::closestFrom(const OriginBuffer::Cells& cells, const std::vector<Object>
     // A hit at t lies t |dir| from the origin: entries farther than that cannot be nearer.
     const double len = length(ray.dir) * kReachSlack;
     double reach = best.t * len;
-    for (const OriginBuffer::Span& span : {cells.fine, cells.coarse})
-        for (const OriginBuffer::Entry* e = span.first; e != span.last && double(e->minDist) <= reach; ++e) {
+    for (const OriginBuffer::Span* span : {&cells.fine, &cells.coarse})  // pointers: a copied Span stalled on its load
+        for (const OriginBuffer::Entry* e = span->first; e != span->last && double(e->minDist) <= reach; ++e) {
             const Bounded& b = bounded_[e->id];
             if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, best.t)) continue;
             if (nearest.test(b.id, b.sphere)) reach = best.t * len;
@@ -273,8 +273,8 @@ int Bvh::anyBlockerFrom(const OriginBuffer::Cells& cells, const std::vector<Obje
     if (blocker != kNoBlocker) return blocker;
     // The ray stays within the dilation of the segment, whose points are at most |toPoint| away.
     const double reach = reachIn * kReachSlack;
-    for (const OriginBuffer::Span& span : {cells.fine, cells.coarse})
-        for (const OriginBuffer::Entry* e = span.first; e != span.last && double(e->minDist) <= reach; ++e) {
+    for (const OriginBuffer::Span* span : {&cells.fine, &cells.coarse})  // pointers: a copied Span stalled on its load
+        for (const OriginBuffer::Entry* e = span->first; e != span->last && double(e->minDist) <= reach; ++e) {
             const Bounded& b = bounded_[e->id];
             if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, tMax)) continue;
             if (blocks(objects, b.id, b.sphere, ray, tMin, tMax)) return int(b.id);

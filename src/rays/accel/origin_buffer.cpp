@@ -283,7 +283,7 @@ void OriginBuffer::build(const std::vector<Bound>& bounds, Vec3 origin, double d
     built_ = true;
 }
 
-OriginBuffer::Cells OriginBuffer::cells(Vec3 d) const {
+OriginBuffer::Cells OriginBuffer::cells(const Vec3& d) const {
     Cells c;
     if (!built_) return c;
     const double ax = std::fabs(d.x), ay = std::fabs(d.y), az = std::fabs(d.z);

@@ -66,7 +66,7 @@ public:
         bool valid = false;  ///< false for a zero or non-finite direction, or an empty buffer
     };
     /// The cells of direction dir (any length).
-    Cells cells(Vec3 dir) const;
+    Cells cells(const Vec3& dir) const;
 
 private:
     /// The part of a face whose cells list something: cells [i0, i0 + w) x [j0, j0 + h), numbered

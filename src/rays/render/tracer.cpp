@@ -1,6 +1,7 @@
 #include "rays/render/tracer.h"
 
 #include <cmath>
+#include <optional>
 
 #include "rays/image/parallel.h"
 #include "rays/math/sampling.h"
@@ -343,13 +344,13 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     const bool entering = dot(ray.dir, hit.geomNormal) < 0;
     Vec3 N = entering ? hit.normal : -hit.normal;  // faces the viewer
     // Image maps change the pigment, normal and bump maps the shading normal.
-    Material mapped;
+    std::optional<Material> mapped;  // constructed only for mapped objects (a Material is ~200 bytes)
     const Material* mp = &o.material;
     if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0) {
-        mapped = o.material;
+        mapped.emplace(o.material);
         const SurfaceUV uv{hit.hasUV, hit.u, hit.v, hit.dpdu};
-        applyMaps(scene_, o, P, uv, mapped.color, N);
-        mp = &mapped;
+        applyMaps(scene_, o, P, uv, mapped->color, N);
+        mp = &*mapped;
     }
     const Material& m = *mp;
     const ShadingModel model = modelFor(m);
