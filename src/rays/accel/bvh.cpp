@@ -223,6 +223,15 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
     return best;
 }
 
+template <class Visit>
+void Bvh::walkCells(const OriginBuffer::Cells& cells, const double& reach, Visit&& visit) const {
+    // Through pointers: a copied Span was read back over the two stores that wrote it, and the
+    // load waited for them (the top stall of this walk on two threads).
+    for (const OriginBuffer::Span* span : {&cells.fine, &cells.coarse})
+        for (const OriginBuffer::Entry* e = span->first; e != span->last && double(e->minDist) <= reach; ++e)
+            if (visit(bounded_[e->id])) return;
+}
+
 Hit Bvh::closestFrom(const OriginBuffer::Cells& cells, const std::vector<Object>& objects, const Ray& ray,
                      double tMin, double tMax) const {
     if (!cells.valid) return closest(objects, ray, tMin, tMax);
@@ -231,12 +240,11 @@ Hit Bvh::closestFrom(const OriginBuffer::Cells& cells, const std::vector<Object>
     // A hit at t lies t |dir| from the origin: entries farther than that cannot be nearer.
     const double len = length(ray.dir) * kReachSlack;
     double reach = best.t * len;
-    for (const OriginBuffer::Span* span : {&cells.fine, &cells.coarse})  // pointers: a copied Span stalled on its load
-        for (const OriginBuffer::Entry* e = span->first; e != span->last && double(e->minDist) <= reach; ++e) {
-            const Bounded& b = bounded_[e->id];
-            if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, best.t)) continue;
-            if (nearest.test(b.id, b.sphere)) reach = best.t * len;
-        }
+    walkCells(cells, reach, [&](const Bounded& b) {
+        if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, best.t)) return false;
+        if (nearest.test(b.id, b.sphere)) reach = best.t * len;
+        return false;
+    });
     nearest.finish();
     return best;
 }
@@ -269,17 +277,17 @@ int Bvh::anyBlocker(const std::vector<Object>& objects, const Ray& ray, double t
 int Bvh::anyBlockerFrom(const OriginBuffer::Cells& cells, const std::vector<Object>& objects, const Ray& ray,
                         double tMin, double tMax, double reachIn) const {
     if (!cells.valid) return anyBlocker(objects, ray, tMin, tMax);
-    const int blocker = blockerUnbounded(objects, ray, tMin, tMax);
+    int blocker = blockerUnbounded(objects, ray, tMin, tMax);
     if (blocker != kNoBlocker) return blocker;
     // The ray stays within the dilation of the segment, whose points are at most |toPoint| away.
     const double reach = reachIn * kReachSlack;
-    for (const OriginBuffer::Span* span : {&cells.fine, &cells.coarse})  // pointers: a copied Span stalled on its load
-        for (const OriginBuffer::Entry* e = span->first; e != span->last && double(e->minDist) <= reach; ++e) {
-            const Bounded& b = bounded_[e->id];
-            if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, tMax)) continue;
-            if (blocks(objects, b.id, b.sphere, ray, tMin, tMax)) return int(b.id);
-        }
-    return kNoBlocker;
+    walkCells(cells, reach, [&](const Bounded& b) {
+        if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, tMax)) return false;
+        if (!blocks(objects, b.id, b.sphere, ray, tMin, tMax)) return false;
+        blocker = int(b.id);
+        return true;
+    });
+    return blocker;
 }
 
 bool Bvh::occludesObject(const std::vector<Object>& objects, uint32_t id, const Ray& ray, double tMin,

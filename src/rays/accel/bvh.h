@@ -91,6 +91,11 @@ private:
     Hit closestUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
     /// A blocker among the planes and the triangle BVH, or kNoBlocker.
     int blockerUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
+    /// Calls visit(bounded object) for the entries of the fine, then the coarse list of cells, in
+    /// order, while their minDist is at most reach (read again after each call, which may lower
+    /// it), until visit returns true. Defined in bvh.cpp.
+    template <class Visit>
+    void walkCells(const OriginBuffer::Cells& cells, const double& reach, Visit&& visit) const;
 
     ObjectBvh objects_;                ///< bounded objects other than untransformed triangles
     std::vector<uint32_t> unbounded_;  ///< planes: always tested

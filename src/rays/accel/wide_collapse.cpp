@@ -35,17 +35,10 @@ void Collapser::costs(uint32_t n) {
     const BinaryNode& bn = bin_.nodes[n];
     for (uint32_t c : {bn.first, bn.first + 1})
         if (!bin_.nodes[c].leaf()) costs(c);
-    const Slots& l = slots(bn.first);
-    const Slots& r = slots(bn.first + 1);
-    float shared[kWidth];  // [j - 1]: the two subtrees in at most j slots together
-    for (int j = 2; j <= kWidth; ++j) {
-        float best = kInf;
-        for (int a = 1; a < j; ++a) best = std::min(best, l[a - 1] + r[j - a - 1]);
-        shared[j - 1] = best;
-    }
+    int unused;
     Slots& s = cost_[n];
-    s[0] = bn.halfArea() + shared[kWidth - 1];
-    for (int k = 2; k <= kWidth; ++k) s[k - 1] = std::min(s[k - 2], shared[k - 1]);
+    s[0] = bn.halfArea() + split(n, kWidth, unused);
+    for (int k = 2; k <= kWidth; ++k) s[k - 1] = std::min(s[k - 2], split(n, k, unused));
 }
 
 // The least cost of n's two subtrees sharing j >= 2 slots; leftSlots receives the left one's.
@@ -68,16 +61,17 @@ float Collapser::split(uint32_t n, int j, int& leftSlots) const {
 // most k of its slots: n itself (a leaf, or an inner node that becomes a wide node), or the
 // children its two subtrees give in the split that costs least.
 void Collapser::gather(uint32_t n, int k, uint32_t* kids, int& count) const {
-    if (!bin_.nodes[n].leaf())
+    const BinaryNode& bn = bin_.nodes[n];
+    if (!bn.leaf())
         while (k > 1 && cost_[n][k - 2] <= cost_[n][k - 1]) --k;  // fewer slots cost no more
-    if (bin_.nodes[n].leaf() || k == 1) {
+    if (bn.leaf() || k == 1) {
         kids[count++] = n;
         return;
     }
     int a = 1;
     split(n, k, a);
-    gather(bin_.nodes[n].first, a, kids, count);
-    gather(bin_.nodes[n].first + 1, k - a, kids, count);
+    gather(bn.first, a, kids, count);
+    gather(bn.first + 1, k - a, kids, count);
 }
 
 // Fills nodes_[w] from binary node b (the root may itself be a leaf).

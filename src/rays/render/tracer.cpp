@@ -156,6 +156,14 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         diffuse += t.diffuse;
         specular += t.specular;
     };
+    // Whether a point of a light at toLight from P (dist = |toLight| > 0) lights P; L receives the
+    // unit direction towards it.
+    auto litFrom = [&](Vec3 toLight, double dist, Vec3& L, const FromLight* fromLight) {
+        L = toLight / dist;
+        const double nl = dot(L, N);
+        if (skipFacingAway && nl <= 0) return false;
+        return !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, nl < 0, fromLight);
+    };
     if (light.parallel) {
         const Vec3 L = -light.direction;
         const double nl = dot(L, N);
@@ -169,11 +177,9 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         if (skipFacingAway && clearlyFacingAway(toLight, N)) return 0.0;  // no sqrt, no division
         const double dist = length(toLight);
         if (dist == 0) return 1.0;
-        const Vec3 L = toLight / dist;
-        const double nl = dot(L, N);
-        if (skipFacingAway && nl <= 0) return 0.0;
         const FromLight fromLight{-toLight, dist};
-        if (shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, nl < 0, &fromLight)) return 0.0;
+        Vec3 L;
+        if (!litFrom(toLight, dist, L, &fromLight)) return 0.0;
         addSample(L, light.color);
         return 1.0;
     }
@@ -209,10 +215,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
             L = N;
             return true;
         }
-        L = toLight / dist;
-        const double nl = dot(L, N);
-        if (skipFacingAway && nl <= 0) return false;
-        return !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, nl < 0);
+        return litFrom(toLight, dist, L, nullptr);
     };
     // adaptive: when the four corners agree, their verdict holds for the whole light.
     int cornerVerdict = -1;  // −1 undecided, 0 all blocked, 1 all visible
