@@ -10,7 +10,8 @@
 // Ray sets: primary (pinhole camera framing the mesh), shadow (primary hits toward a point
 // light) and one-bounce diffuse (cosine-distributed about the geometric normal at primary hits).
 // The shadow rays are also timed in two parts, shd-out (those that leave the surface they start
-// on: what a renderer traces) and shd-in (those that go into it), to show where a difference lies.
+// on: most of what a renderer traces) and shd-in (those that go into it), to show where a
+// difference lies.
 // Every set is traced with one thread and with all threads; the best of N passes is reported.
 // Both libraries' answers are compared: a mismatch is a ray where one hits and the other does
 // not, or where the triangles differ and t differs by more than 1e-4 (relative).
@@ -213,9 +214,9 @@ bool isShadowPart(const std::string& set) { return set == "shd-out" || set == "s
 
 /// Shadow and diffuse rays from the primary hits (`hits`, as found by Embree). The shadow rays
 /// are also split by the side of the hit surface (its normal turned toward the camera) that the
-/// light lies on: shadowOut leave the surface, the only ones a renderer traces when its shading
-/// ignores lights behind a surface (Rays does, for every model without a back-facing term);
-/// shadowIn go into it and end on the mesh's far side unless they pass through a hole.
+/// light lies on: shadowOut leave the surface; shadowIn go into it and end on the mesh's far side
+/// unless they pass through a hole. Rays' renderer traces the latter only for Blinn-Phong with a
+/// specular term: its other shading models ignore a light behind the surface.
 void secondaryRays(const Mesh& m, const RaySet& primary, const std::vector<Result>& hits, RaySet& shadow,
                    RaySet& diffuse, RaySet& shadowOut, RaySet& shadowIn) {
     V3 lo, hi;
