@@ -165,6 +165,7 @@ struct RaySet {
     std::vector<TriRay> rays;
     float tMin = 0, tMax = INFINITY;
     bool shadow = false;  ///< traced with occluded / rtcOccluded1
+    std::vector<uint8_t> leaving;  ///< shadow rays: 1 when the ray leaves the surface it starts on
 };
 
 struct Camera {
@@ -212,13 +213,25 @@ struct Result {
 /// The two parts of the shadow set: timed for information, the targets are on the whole set.
 bool isShadowPart(const std::string& set) { return set == "shd-out" || set == "shd-in"; }
 
-/// Shadow and diffuse rays from the primary hits (`hits`, as found by Embree). The shadow rays
-/// are also split by the side of the hit surface (its normal turned toward the camera) that the
-/// light lies on: shadowOut leave the surface; shadowIn go into it and end on the mesh's far side
-/// unless they pass through a hole. Rays' renderer traces the latter only for Blinn-Phong with a
-/// specular term: its other shading models ignore a light behind the surface.
+/// The shadow rays that leave the surface they start on ("shd-out"), or those that go into it
+/// ("shd-in") and end on the mesh's far side unless they pass through a hole. Rays' renderer
+/// traces the latter only for Blinn-Phong with a specular term: its other shading models ignore
+/// a light behind the surface.
+RaySet shadowPart(const RaySet& shadow, bool leaving) {
+    RaySet part;
+    part.name = leaving ? "shd-out" : "shd-in";
+    part.shadow = true;
+    part.tMin = shadow.tMin;
+    part.tMax = shadow.tMax;
+    for (size_t i = 0; i < shadow.rays.size(); ++i)
+        if (bool(shadow.leaving[i]) == leaving) part.rays.push_back(shadow.rays[i]);
+    return part;
+}
+
+/// Shadow and diffuse rays from the primary hits (`hits`, as found by Embree). Each shadow ray
+/// notes whether the light lies on the side of the hit surface that faces the camera.
 void secondaryRays(const Mesh& m, const RaySet& primary, const std::vector<Result>& hits, RaySet& shadow,
-                   RaySet& diffuse, RaySet& shadowOut, RaySet& shadowIn) {
+                   RaySet& diffuse) {
     V3 lo, hi;
     m.bounds(lo, hi);
     const V3 c = (lo + hi) * 0.5f;
@@ -228,10 +241,6 @@ void secondaryRays(const Mesh& m, const RaySet& primary, const std::vector<Resul
     shadow.shadow = true;
     shadow.tMin = 1e-4f;
     shadow.tMax = 1.0f - 1e-4f;
-    shadowOut = shadow;
-    shadowOut.name = "shd-out";
-    shadowIn = shadow;
-    shadowIn.name = "shd-in";
     diffuse.name = "diffuse";
     diffuse.tMin = 1e-4f * radius;
     std::mt19937 rng(1234);
@@ -247,7 +256,7 @@ void secondaryRays(const Mesh& m, const RaySet& primary, const std::vector<Resul
         if (dot(n, d) > 0) n = n * -1.0f;
         const V3 toLight = light - p;
         shadow.rays.push_back({{p.x, p.y, p.z}, {toLight.x, toLight.y, toLight.z}});
-        (dot(n, toLight) > 0 ? shadowOut : shadowIn).rays.push_back(shadow.rays.back());
+        shadow.leaving.push_back(dot(n, toLight) > 0);
         // Cosine-distributed direction about n.
         const float r1 = u01(rng), r2 = u01(rng);
         const float phi = 6.2831853f * r1, sr = std::sqrt(r2);
@@ -458,11 +467,12 @@ MeshReport runMesh(const Mesh& m, const Options& o, int threads, bool fromAbove,
     std::vector<Result> primaryHits;
     traceEmbree(*es, sets[0], primaryHits, threads);
     if (allSets) {
-        RaySet shadow, diffuse, shadowOut, shadowIn;
-        secondaryRays(m, sets[0], primaryHits, shadow, diffuse, shadowOut, shadowIn);
+        RaySet shadow, diffuse;
+        secondaryRays(m, sets[0], primaryHits, shadow, diffuse);
+        RaySet out = shadowPart(shadow, true), in = shadowPart(shadow, false);
         sets.push_back(std::move(shadow));
-        sets.push_back(std::move(shadowOut));
-        sets.push_back(std::move(shadowIn));
+        sets.push_back(std::move(out));
+        sets.push_back(std::move(in));
         sets.push_back(std::move(diffuse));
     }
     for (const RaySet& s : sets) {
@@ -674,8 +684,8 @@ void runAblation(const Mesh& m, const Options& o) {
         TriHit h;
         if (bvh.intersect(sets[0].rays[i], sets[0].tMin, sets[0].tMax, h)) hits[i] = {h.prim, h.t};
     }
-    RaySet shadow, diffuse, shadowOut, shadowIn;
-    secondaryRays(m, sets[0], hits, shadow, diffuse, shadowOut, shadowIn);
+    RaySet shadow, diffuse;
+    secondaryRays(m, sets[0], hits, shadow, diffuse);
     sets.push_back(std::move(shadow));
     sets.push_back(std::move(diffuse));
 
