@@ -515,7 +515,7 @@ void printReport(const MeshReport& r, int threads) {
                     n / s.embree1, s.embree1 / s.rays1, n / s.raysN, n / s.embreeN, s.embreeN / s.raysN,
                     s.rays1 / s.raysN, s.embree1 / s.embreeN, s.cmp.mismatches, s.cmp.sameTDifferentPrim);
     }
-    if (std::any_of(r.sets.begin(), r.sets.end(), [](const SetTimes& s) { return s.set == "shd-out"; }))
+    if (std::any_of(r.sets.begin(), r.sets.end(), [](const SetTimes& s) { return isShadowPart(s.set); }))
         std::printf("  (shd-out / shd-in: the shadow rays that leave / go into the surface they start on)\n");
 }
 
