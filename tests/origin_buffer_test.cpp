@@ -171,6 +171,69 @@ TEST(OriginBuffer, ShadowRaysOffsetFromTheSurfaceStayCovered) {
     EXPECT_EQ(bvh.anyBlockerFrom(grown.cells(P - light), objects, shadow, 1e-6, dist - offset, dist), 0);
 }
 
+// A floor made of coplanar triangles of both windings (they share one plane, whose answer a walk
+// remembers: Bvh::PlaneMemo), a second, lower floor in another plane, and spheres just above and
+// below both: the lists must still give the BVH's answers, for eyes and lights above, between and
+// below the floors, with rays that cross one floor, both or neither.
+TEST(OriginBuffer, CoplanarFloorTrianglesGiveTheBvhsAnswers) {
+    std::vector<Object> objects;
+    for (int k = 0; k < 4; ++k) {  // four tiles, two of each winding
+        const double x0 = -20 + 20 * (k % 2), z0 = -20 + 20 * (k / 2);
+        const Vec3 a{x0, -1, z0}, b{x0 + 20, -1, z0}, c{x0 + 20, -1, z0 + 20}, d{x0, -1, z0 + 20};
+        if (k % 2) {
+            objects.push_back(makeObject(ShapeType::Triangle, a, b, c, 0, 0));
+            objects.push_back(makeObject(ShapeType::Triangle, a, c, d, 0, 0));
+        } else {
+            objects.push_back(makeObject(ShapeType::Triangle, a, c, b, 0, 0));
+            objects.push_back(makeObject(ShapeType::Triangle, a, d, c, 0, 0));
+        }
+    }
+    objects.push_back(makeObject(ShapeType::Triangle, {-6, -2.5, -6}, {6, -2.5, -6}, {0, -2.5, 6}, 0, 0));
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(-5, 5), r(0.05, 0.4);
+    for (int i = 0; i < 400; ++i) {
+        const double y = i % 4 == 0 ? -1.3 : (i % 4 == 1 ? -2.8 : u(rng) * 0.3 + 0.5);
+        objects.push_back(sphere({u(rng), y, u(rng)}, r(rng)));
+    }
+    const Bvh bvh(objects);
+    int hits = 0, blocked = 0, lit = 0;
+    for (const Vec3 origin : {Vec3{1, 6, -9}, Vec3{0.5, -1.2, 0.2}, Vec3{2, -6, 3}, Vec3{-3, -0.99, 1}}) {
+        const OriginBuffer eye = buffer(bvh, objects, origin, 0.0);
+        const OriginBuffer light = buffer(bvh, objects, origin, Tracer::kSurfaceOffset * 1.01);
+        ASSERT_FALSE(eye.empty());
+        for (int i = 0; i < 4000; ++i) {
+            const Vec3 dir = randomDirection(rng);
+            const Ray ray{origin, dir};
+            const Hit ref = bvh.closest(objects, ray, 1e-6, kInfinity);
+            const Hit got = bvh.closestFrom(eye.cells(dir), objects, ray, 1e-6, kInfinity);
+            ASSERT_EQ(got.valid(), ref.valid()) << "ray " << i;
+            if (ref.valid()) {
+                ++hits;
+                ASSERT_EQ(got.t, ref.t) << "ray " << i;
+            }
+            // A shadow ray from a point of the scene back to the origin as a light.
+            const double y = i % 2 ? u(rng) * 0.8 : -2.7 + 0.05 * u(rng);  // every other one below both floors
+            const Ray probe{{u(rng), y, u(rng)}, randomDirection(rng)};
+            const Hit h = bvh.closest(objects, probe, 1e-6, kInfinity);
+            if (!h.valid()) continue;
+            const Vec3 P = probe.at(h.t);
+            const Vec3 N = dot(probe.dir, h.geomNormal) < 0 ? h.normal : -h.normal;
+            const Vec3 toLight = origin - P;
+            const double dist = length(toLight);
+            const double offset = Tracer::kSurfaceOffset;
+            const Ray shadow{P + offset * N, toLight / dist};
+            const bool refBlocked = bvh.anyBlocker(objects, shadow, 1e-6, dist - offset) != Bvh::kNoBlocker;
+            const bool gotBlocked = bvh.anyBlockerFrom(light.cells(P - origin), objects, shadow, 1e-6, dist - offset,
+                                                       dist) != Bvh::kNoBlocker;
+            ASSERT_EQ(gotBlocked, refBlocked) << "point " << i;
+            ++(refBlocked ? blocked : lit);
+        }
+    }
+    EXPECT_GT(hits, 8000);
+    EXPECT_GT(blocked, 1000);
+    EXPECT_GT(lit, 1000);
+}
+
 // The lists are selective: from outside a lattice of 8,000 small spheres a
 // direction's lists hold a few dozen objects at most, not thousands.
 TEST(OriginBuffer, ListsHoldOnlyTheObjectsNearTheDirection) {

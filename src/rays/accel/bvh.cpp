@@ -59,6 +59,21 @@ bool finiteBounds(const Bounds& b) {
 
 }  // namespace
 
+int32_t Bvh::planeIndex(Vec3 n, const Object& o) {
+    // One orientation per plane (the first non-zero component of the normal positive), so that
+    // coplanar triangles of either winding share an entry.
+    const double lead = n.x != 0 ? n.x : (n.y != 0 ? n.y : n.z);
+    const Vec3 u = normalize(lead < 0 ? -n : n);
+    // The vertices' own offsets differ by rounding: take the middle one (reachesPlane and the
+    // buffer's growth leave room for the rest).
+    const double d0 = dot(u, o.p0), d1 = dot(u, o.p1), d2 = dot(u, o.p2);
+    const Plane p{u, std::max(std::min(d0, d1), std::min(std::max(d0, d1), d2))};
+    for (size_t k = 0; k < planes_.size(); ++k)  // fewer than kTriangleBvhMin flat objects
+        if (planes_[k].normal == p.normal && planes_[k].offset == p.offset) return int32_t(k);
+    planes_.push_back(p);
+    return int32_t(planes_.size() - 1);
+}
+
 // Below this many untransformed triangles, a separate triangle BVH (a second traversal per ray,
 // with its own setup) costs more than testing them as objects.
 constexpr size_t kTriangleBvhMin = 64;
@@ -90,14 +105,8 @@ Bvh::Bvh(const std::vector<Object>& objects) {
         prims.push_back(objectPrim(o, b, i));
         bounded_.push_back({ObjectBvh::exactSphere(prims.back()), i, -1});
         const Vec3 n = o.type == ShapeType::Triangle && !usesLocalSpace(o) ? cross(o.p1 - o.p0, o.p2 - o.p0) : Vec3{};
-        if (length(n) > 0) {  // a world-space triangle: its plane
-            // The vertices' own offsets differ by rounding: take the middle one (reachesPlane
-            // and the buffer's growth leave room for the rest).
-            const Vec3 u = normalize(n);
-            const double d0 = dot(u, o.p0), d1 = dot(u, o.p1), d2 = dot(u, o.p2);
-            bounded_.back().plane = int32_t(planes_.size());
-            planes_.push_back({u, std::max(std::min(d0, d1), std::min(std::max(d0, d1), d2))});
-        }
+        if (length(n) > 0) bounded_.back().plane = planeIndex(n, o);  // a world-space triangle
+
     }
     if (!triObject_.empty())
         triangles_.build(positions.data(), positions.size() / 3, indices.data(), triObject_.size());
@@ -240,8 +249,10 @@ Hit Bvh::closestFrom(const OriginBuffer::Cells& cells, const std::vector<Object>
     // A hit at t lies t |dir| from the origin: entries farther than that cannot be nearer.
     const double len = length(ray.dir) * kReachSlack;
     double reach = best.t * len;
+    PlaneMemo memo;
     walkCells(cells, reach, [&](const Bounded& b) {
-        if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, best.t)) return false;
+        // Valid for the plane's later objects too: the hit only gets nearer.
+        if (b.plane >= 0 && !memo.reaches(*this, b.plane, ray, best.t)) return false;
         if (nearest.test(b.id, b.sphere)) reach = best.t * len;
         return false;
     });
@@ -281,8 +292,9 @@ int Bvh::anyBlockerFrom(const OriginBuffer::Cells& cells, const std::vector<Obje
     if (blocker != kNoBlocker) return blocker;
     // The ray stays within the dilation of the segment, whose points are at most |toPoint| away.
     const double reach = reachIn * kReachSlack;
+    PlaneMemo memo;
     walkCells(cells, reach, [&](const Bounded& b) {
-        if (b.plane >= 0 && !reachesPlane(planes_[size_t(b.plane)], ray.origin, ray.dir, tMax)) return false;
+        if (b.plane >= 0 && !memo.reaches(*this, b.plane, ray, tMax)) return false;
         if (!blocks(objects, b.id, b.sphere, ray, tMin, tMax)) return false;
         blocker = int(b.id);
         return true;

@@ -86,6 +86,23 @@ private:
     /// False when the ray a + t·d, t in [0, tEnd], stays on one side of the plane (beyond the
     /// rounding of its offset): no flat object in the plane can meet it.
     static bool reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd);
+    /// reachesPlane of the last plane asked within one walk of a ray, remembered: coplanar objects
+    /// (a floor made of triangles) share the answer. A walk's end only comes nearer, so a plane
+    /// the ray did not reach stays unreached, and one it reached is at worst tested for nothing.
+    struct PlaneMemo {
+        int32_t plane = -1;
+        bool result = true;
+        bool reaches(const Bvh& bvh, int32_t p, const Ray& ray, double tEnd) {
+            if (p != plane) {
+                plane = p;
+                result = reachesPlane(bvh.planes_[size_t(p)], ray.origin, ray.dir, tEnd);
+            }
+            return result;
+        }
+    };
+    /// Index in planes_ of the plane of a world-space triangle o with normal n (non-zero), shared
+    /// with the earlier triangles of exactly that plane.
+    int32_t planeIndex(Vec3 n, const Object& o);
     /// Nearest hit among the planes and the triangle BVH (the part of closest() that does not
     /// depend on how the other objects are found).
     Hit closestUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
