@@ -209,9 +209,11 @@ void prewarmBuffers(const RenderJob& job) {
 
 }  // namespace
 
-Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation) {
+Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation,
+                       int threads) {
     ParseOptions opt;
     opt.rotation = rotation;
+    opt.threads = threads;
     Scene scene = loadScene(scenePath, opt);
     if (!objPath.empty()) appendObj(scene, objPath);
     return scene;
@@ -226,7 +228,7 @@ int runRender(const RenderJob& job) {
 
     prewarmBuffers(job);
     auto t0 = Clock::now();
-    const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation);
+    const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation, s.threads);
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
                                     std::to_string(scene.cameras.size()) + ")");

@@ -42,8 +42,10 @@ struct RenderJob {
 /// Returns the process exit status (0).
 int runRender(const RenderJob& job);
 
-/// Loads the scene and, when objPath is set, appends its triangles.
-Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation);
+/// Loads the scene (big files on two threads unless threads is 1: ParseOptions::threads) and, when
+/// objPath is set, appends its triangles.
+Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation,
+                       int threads = 0);
 
 /// Throws Error when w×h is not a sensible image size.
 void checkImageSize(int width, int height);

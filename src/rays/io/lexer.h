@@ -19,8 +19,10 @@ struct Token {
 
 class Lexer {
 public:
-    /// text must outlive the lexer and every token it returns.
-    Lexer(std::string_view text, std::string fileName) : s_(text), file_(std::move(fileName)) {}
+    /// text must outlive the lexer and every token it returns. firstLine: the line number of text's
+    /// first line (text cut from a file at a line start).
+    Lexer(std::string_view text, std::string fileName, int firstLine = 1)
+        : s_(text), file_(std::move(fileName)), line_(firstLine) {}
 
     /// The next token; `//` and `/* */` comments and whitespace are skipped. Returns End forever at
     /// the end. Throws Error for malformed numbers, unterminated comments or strings and characters

@@ -1,7 +1,9 @@
 // Reader for the course scene dialect (a POV-Ray subset) producing a Scene.
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "rays/scene/scene.h"
 
@@ -16,6 +18,10 @@ struct ParseOptions {
     RotationOrder rotation = RotationOrder::Course;
     /// Receives each warning line ("FILE:LINE:COL: warning: ..."); default prints to stderr.
     std::function<void(const std::string&)> warn;
+    /// Threads for a big file (256 KiB or more): with 0 (all hardware threads) or 2 and more, it is
+    /// parsed in two pieces at once when it can be cut between two top-level items; the scene,
+    /// warnings and errors are those of parsing it whole.
+    int threads = 0;
 };
 
 /// Parses scene text. fileName is used in messages only. Throws Error "FILE:LINE:COL: error: ..."
@@ -24,5 +30,11 @@ Scene parseScene(const std::string& text, const std::string& fileName, const Par
 
 /// Reads and parses a scene file; a missing or unreadable file is an Error naming the path.
 Scene loadScene(const std::string& path, const ParseOptions& options = {});
+
+/// The scene of text parsed in two pieces on two threads (ParseOptions::threads), or nothing when
+/// the text is below 256 KiB, only one thread is allowed, no cut between two top-level items is
+/// found after its middle, or a piece fails, warns, or holds textures, meshes or an `edges` block;
+/// parseScene and loadScene then read it whole. A scene it returns is the one parseScene would.
+std::optional<Scene> parseInPieces(std::string_view text, const std::string& fileName, const ParseOptions& options);
 
 }  // namespace rays

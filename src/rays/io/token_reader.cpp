@@ -41,8 +41,8 @@ std::string nestedMessage(const Error& e) {
     return m;
 }
 
-TokenReader::TokenReader(std::string_view text, const std::string& file, const ParseOptions& opt)
-    : lex_(text, file), opt_(opt) {
+TokenReader::TokenReader(std::string_view text, const std::string& file, const ParseOptions& opt, int firstLine)
+    : lex_(text, file, firstLine), opt_(opt) {
     advance();
 }
 

@@ -28,8 +28,8 @@ std::string nestedMessage(const Error& e);
 
 class TokenReader {
 public:
-    /// Reads the first token. text must outlive the reader.
-    TokenReader(std::string_view text, const std::string& file, const ParseOptions& opt);
+    /// Reads the first token. text must outlive the reader; firstLine as for Lexer.
+    TokenReader(std::string_view text, const std::string& file, const ParseOptions& opt, int firstLine = 1);
 
     // ---- tokens ----------------------------------------------------------------------------
     const Token& token() const { return tok_; }
