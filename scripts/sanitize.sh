@@ -16,13 +16,9 @@ stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(asan tsan)
 
 # Tests with several worker threads: renders (tiles), feature lines, edge-guided AA, filters,
-# the parallel BVH build, the two-piece parse, the worker pool and the warm memory region,
+# the parallel BVH build, the two-piece parse, the worker pool,
 # thread-count determinism and Ctrl-C handling.
-TSAN_TESTS='^(Distribution\.|ParsePieces\.|Edges/EdgeMethods\.|StencilTaps\.|StencilPass\.|WorkerPool\.|HugePages\.|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt)'
-
-# Under the sanitizers malloc is the sanitizer's own allocator: the heap's huge-page advice
-# (apps/rays/huge_pages.cpp) would only cost each run of `rays` a 256 MiB allocation.
-export RAYS_NO_HUGEPAGES=1
+TSAN_TESTS='^(Distribution\.|ParsePieces\.|Edges/EdgeMethods\.|StencilTaps\.|StencilPass\.|WorkerPool\.|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt)'
 
 configure() {  # DIR FLAGS
   cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=Sanitize -DRAYS_NATIVE=OFF -DRAYS_WERROR=OFF -DRAYS_STATIC_RUNTIME=OFF \

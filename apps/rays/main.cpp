@@ -16,7 +16,7 @@
 #include "rays/error.h"
 #include "rays/render/course_commands.h"
 #include "filter_command.h"
-#include "huge_pages.h"
+#include "heap_setup.h"
 #include "interrupt.h"
 #include "rays/image/filter.h"
 #include "render_command.h"
@@ -215,7 +215,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    cli::enableHugePages();
+    cli::prepareHeap();
     try {
         return run(argc, argv);
     } catch (const cli::Interrupted& e) {

@@ -10,7 +10,6 @@
 #include <iostream>
 
 #include "rays/accel/bvh.h"
-#include "rays/accel/huge_pages.h"
 #include "rays/error.h"
 #include "rays/image/image.h"
 #include "rays/io/image_io.h"
@@ -178,37 +177,6 @@ void checkImageSize(int width, int height) {
                     " is too large (at most 65536 per side and 268435456 pixels)");
 }
 
-namespace {
-
-// Starts making the memory of the big per-pixel buffers present on a background thread while the
-// scene is parsed (one core is idle then): the render image and, when the command line asks for
-// lines, the line records and coverage. Capped so that a render the budget check will refuse
-// never gets that far. Errors here only mean no warm memory.
-void prewarmBuffers(const RenderJob& job) {
-    if (std::getenv("RAYS_NO_PREWARM")) return;
-    const RenderSettings& s = job.settings;
-    uint64_t perPixel = sizeof(Vec3);
-    uint64_t smallestPerPixel = sizeof(Vec3);
-    // Line records and coverage.
-    if (!job.edges.types.empty() && job.edges.types != "none") {
-        perPixel += sizeof(EdgeRecord) + sizeof(float);
-        smallestPerPixel = sizeof(float);
-    }
-    const double pixels = double(s.width) * double(s.height);
-    const double want = pixels * double(perPixel) + 4096.0 * 8;  // + alignment slack
-    double cap = 256.0 * 1024 * 1024;
-    try {
-        cap = std::min(cap, double(memoryLimit()) / 4);
-    } catch (const Error&) {
-        return;  // a bad RAYS_MEMORY_LIMIT is reported by the budget check
-    }
-    // Kept for these buffers: the BVH's arrays, allocated before them, would otherwise take the
-    // front of the region and leave the image to fresh memory.
-    tribvh::hugePrewarm(size_t(std::min(want, cap)), size_t(std::min(pixels * double(smallestPerPixel), cap)));
-}
-
-}  // namespace
-
 Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation,
                        int threads) {
     ParseOptions opt;
@@ -226,7 +194,6 @@ int runRender(const RenderJob& job) {
     checkImageOutput(job.outputPath, "output", job);
     if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
 
-    prewarmBuffers(job);
     auto t0 = Clock::now();
     const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation, s.threads);
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())

@@ -1,14 +1,7 @@
 // Large-buffer allocation for the BVHs, images and line records. Buffers of at least
 // kHugeThreshold bytes are aligned to 2 MiB and marked for transparent huge pages (Linux madvise),
-// which cuts the number of page faults while building (very slow on virtual machines) and TLB
-// misses while traversing. Elsewhere, or below the threshold, it is ordinary aligned allocation.
-//
-// Warm memory: the first write to fresh memory costs a page fault that zeroes the page, and on
-// the virtual machines Rays runs on that costs about 0.4 ms per MiB even with huge pages. A
-// caller that knows early how much it will need (the CLI knows the image size before it parses
-// the scene) calls hugePrewarm: a background thread reserves that much and makes its pages
-// present (MADV_POPULATE_WRITE) while the caller does other work, and later requests of at least
-// kWarmMin bytes are carved from it instead of from fresh memory.
+// which cuts the number of page faults while building and TLB misses while traversing. Elsewhere,
+// or below the threshold, it is ordinary aligned allocation.
 #pragma once
 
 #include <cstddef>
@@ -25,20 +18,6 @@ void* hugeAlloc(size_t bytes, size_t align);
 void hugeFree(void* p, size_t bytes, size_t align) noexcept;
 /// Bytes actually reserved for a request of `bytes`.
 size_t hugeFootprint(size_t bytes);
-
-/// Requests of at least this many bytes may be served from the warm region.
-constexpr size_t kWarmMin = size_t(256) << 10;
-/// Reserves `bytes` of memory (huge pages advised) and populates its pages on a background
-/// thread; hugeAlloc carves later requests of at least kWarmMin bytes from it while it lasts,
-/// whether or not the thread has reached them yet (a page it has not reached is faulted by its
-/// first user as usual). Carved blocks are not reused after hugeFree. Once per process: a second
-/// call does nothing. Returns false when nothing was reserved (mmap failed, or already called).
-/// plannedMin > 0: the region is for the caller's planned buffers, each at least plannedMin bytes
-/// and `bytes` in all; smaller requests that come first (a BVH's arrays, say) get only what those
-/// buffers leave of the region and do not crowd them out of it.
-bool hugePrewarm(size_t bytes, size_t plannedMin = 0);
-/// Bytes of the warm region handed out so far (0 without hugePrewarm).
-size_t hugeWarmUsed();
 
 /// Allocator for std::vector: huge pages for big buffers; resize() default-initialises (no
 /// zero fill) trivially constructible elements.

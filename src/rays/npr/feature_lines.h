@@ -16,7 +16,7 @@ namespace rays {
 /// Line coverage in [0, 1] per pixel, top row first.
 struct LineCoverage {
     int width = 0, height = 0;
-    std::vector<float, tribvh::HugePageAllocator<float>> coverage;  ///< big: huge pages, warm memory
+    std::vector<float, tribvh::HugePageAllocator<float>> coverage;  ///< big: huge pages
     float at(int x, int y) const { return coverage[size_t(y) * size_t(width) + size_t(x)]; }
     /// No line anywhere.
     static LineCoverage empty(int w, int h) {

@@ -1,0 +1,66 @@
+// The CLI's malloc settings (apps/rays/heap_setup.cpp): after prepareHeap, large blocks and the
+// blocks of worker threads come from the main heap (the "[heap]" mapping of /proc/self/maps), where
+// freed memory is kept for reuse. Each test runs in a process of its own (ctest), so nothing has
+// allocated from another arena before.
+#include "../apps/rays/heap_setup.cpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+namespace {
+
+// The name of the mapping that holds `address` ("[heap]", a path, or "" for an anonymous one),
+// or "?" when no mapping does.
+std::string mappingOf(const void* address) {
+    const auto a = reinterpret_cast<std::uintptr_t>(address);
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line)) {
+        std::uintptr_t lo = 0, hi = 0;
+        char dash = 0;
+        std::istringstream fields(line);
+        if (!(fields >> std::hex >> lo >> dash >> hi) || dash != '-' || a < lo || a >= hi) continue;
+        std::string perms, offset, device, inode, name;
+        fields >> perms >> offset >> device >> inode >> name;
+        return name;
+    }
+    return "?";
+}
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define SKIP_UNDER_SANITIZERS() GTEST_SKIP() << "the sanitizers' allocators do not use malloc's heap"
+#else
+#define SKIP_UNDER_SANITIZERS() (void)0
+#endif
+
+// glibc maps blocks of 32 MiB and more apart by default, each freed back to the kernel.
+TEST(HeapSetup, LargeBlocksComeFromTheHeap) {
+    SKIP_UNDER_SANITIZERS();
+    rays::cli::prepareHeap();
+    void* block = std::malloc(size_t(64) << 20);
+    ASSERT_NE(block, nullptr);
+    const std::string name = mappingOf(block);
+    std::free(block);
+    EXPECT_EQ(name, "[heap]");
+}
+
+// A new thread gets an arena of its own by default, mapped apart from the heap.
+TEST(HeapSetup, WorkerThreadsAllocateFromTheHeap) {
+    SKIP_UNDER_SANITIZERS();
+    rays::cli::prepareHeap();
+    std::string name;
+    std::thread([&name] {
+        void* block = std::malloc(4096);
+        name = mappingOf(block);
+        std::free(block);
+    }).join();
+    EXPECT_EQ(name, "[heap]");
+}
+
+}  // namespace
