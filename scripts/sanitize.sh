@@ -16,9 +16,9 @@ stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(asan tsan)
 
 # Tests with several worker threads: renders (tiles), feature lines, edge-guided AA, filters,
-# the parallel BVH build, the two-piece parse, the worker pool,
+# the parallel BVH build and collapse, the two-piece parse, the worker pool,
 # thread-count determinism and Ctrl-C handling.
-TSAN_TESTS='^(Distribution\.|ParsePieces\.|Edges/EdgeMethods\.|StencilTaps\.|StencilPass\.|WorkerPool\.|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt)'
+TSAN_TESTS='^(Distribution\.|ParsePieces\.|Edges/EdgeMethods\.|StencilTaps\.|StencilPass\.|WorkerPool\.|WideCollapse\.TwoThread|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt)'
 
 configure() {  # DIR FLAGS
   cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=Sanitize -DRAYS_NATIVE=OFF -DRAYS_WERROR=OFF -DRAYS_STATIC_RUNTIME=OFF \

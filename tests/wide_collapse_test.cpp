@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <random>
@@ -149,4 +150,25 @@ TEST(WideCollapse, ALeafRootMakesOneNodeWithOneChild) {
     ASSERT_EQ(nodes.size(), 1u);
     EXPECT_EQ(nodes[0].childCount, 1u);
     EXPECT_TRUE(isLeaf(nodes[0].child[0]));
+}
+
+// With a pool of two threads the costs of the subtrees below the top six levels are computed side
+// by side; the nodes and leaf blocks must be those of the one-thread collapse, byte for byte.
+TEST(WideCollapse, TwoThreadCollapseEqualsOneThread) {
+    std::mt19937 rng(2026);
+    for (int leaves : {2, 40, 300, 5000}) {  // from trees shallower than the parallel levels up
+        const BinaryBvh bin = randomTree(leaves, rng);
+        Collapser::NodeVector one, two;
+        Collapser a(bin, one, kMaxLeafBlocks), b(bin, two, kMaxLeafBlocks);
+        a.run();
+        TaskPool pool(2);
+        b.run(&pool);
+        ASSERT_EQ(one.size(), two.size()) << leaves << " leaves";
+        EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(WideNode)), 0) << leaves << " leaves";
+        ASSERT_EQ(a.leaves.size(), b.leaves.size());
+        for (size_t i = 0; i < a.leaves.size(); ++i) {
+            EXPECT_EQ(a.leaves[i].firstBlock, b.leaves[i].firstBlock);
+            EXPECT_EQ(a.leaves[i].firstRef, b.leaves[i].firstRef);
+        }
+    }
 }

@@ -12,6 +12,7 @@ namespace {
 
 constexpr int kMaxBins = 32;
 constexpr uint32_t kChunk = 16384;        ///< granularity of the data-parallel loops
+constexpr uint32_t kMinTask = 1024;       ///< smallest subtree task when building on several threads
 constexpr uint32_t kMaxSahDepth = 56;     ///< deeper ranges are split at the object median
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -415,22 +416,30 @@ void Builder::build() {
         }
     }
 
-    // Upper levels one range at a time, each data-parallel; then subtrees as parallel tasks.
+    // Upper levels a level at a time: ranges of 2 kChunk and more one after the other, each split
+    // data-parallel, smaller ones side by side (one split per thread); ranges below taskSize are
+    // left as subtrees, built as parallel tasks, largest first.
     const int threads = pool_.threads();
-    std::vector<Task> pending{root}, subtrees;
-    const uint32_t taskSize = threads > 1 ? std::max<uint32_t>(kChunk, n / (8 * uint32_t(threads))) : ~0u;
-    while (!pending.empty()) {
-        const Task t = pending.back();
-        pending.pop_back();
-        if (t.size() < taskSize) {
-            subtrees.push_back(t);
-            continue;
+    std::vector<Task> level{root}, subtrees;
+    const uint32_t taskSize = threads > 1 ? std::max<uint32_t>(kMinTask, n / (8 * uint32_t(threads))) : ~0u;
+    while (!level.empty()) {
+        std::vector<Task> next, sideBySide;
+        for (const Task& t : level) {
+            Task l, r;
+            if (t.size() < taskSize)
+                subtrees.push_back(t);
+            else if (t.size() < 2 * kChunk)
+                sideBySide.push_back(t);
+            else if (split(t, l, r, true))
+                next.insert(next.end(), {l, r});
         }
-        Task l, r;
-        if (split(t, l, r, true)) {
-            pending.push_back(r);
-            pending.push_back(l);
-        }
+        std::vector<Task> halves(2 * sideBySide.size());
+        std::vector<uint8_t> halved(sideBySide.size());
+        pool_.run(sideBySide.size(),
+                  [&](size_t i) { halved[i] = split(sideBySide[i], halves[2 * i], halves[2 * i + 1], false); });
+        for (size_t i = 0; i < sideBySide.size(); ++i)
+            if (halved[i]) next.insert(next.end(), {halves[2 * i], halves[2 * i + 1]});
+        level = std::move(next);
     }
     std::stable_sort(subtrees.begin(), subtrees.end(),
                      [](const Task& a, const Task& b) { return a.size() > b.size(); });

@@ -10,11 +10,16 @@ namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 }
 
-void Collapser::run() {
+void Collapser::run(TaskPool* pool) {
     nodes_.clear();
     nodes_.reserve(bin_.nodes.size() / 4 + 1);
     cost_ = HugeArray<Slots>(bin_.nodes.size());  // written for inner nodes only, before any read
-    if (!bin_.nodes[bin_.root].leaf()) costs(bin_.root);
+    if (!bin_.nodes[bin_.root].leaf()) {
+        if (pool && pool->threads() > 1)
+            costsInParallel(*pool);
+        else
+            costs(bin_.root);
+    }
     nodes_.emplace_back();
     fill(0, bin_.root);
     cost_.reset();
@@ -35,10 +40,42 @@ void Collapser::costs(uint32_t n) {
     const BinaryNode& bn = bin_.nodes[n];
     for (uint32_t c : {bn.first, bn.first + 1})
         if (!bin_.nodes[c].leaf()) costs(c);
-    int unused;
+    nodeCosts(n);
+}
+
+// costs(root) with the subtrees below the top levels on the pool's threads: the inner nodes of
+// the first kParallelLevels levels are computed last, children before parents.
+void Collapser::costsInParallel(TaskPool& pool) {
+    constexpr int kParallelLevels = 6;  // up to 64 subtrees
+    std::vector<uint32_t> top{bin_.root}, subtrees;
+    for (size_t i = 0, levelEnd = 1, level = 1; i < top.size(); ++i) {
+        if (i == levelEnd) {
+            levelEnd = top.size();
+            ++level;
+        }
+        const BinaryNode& bn = bin_.nodes[top[i]];
+        for (uint32_t c : {bn.first, bn.first + 1})
+            if (!bin_.nodes[c].leaf()) (level < kParallelLevels ? top : subtrees).push_back(c);
+    }
+    pool.run(subtrees.size(), [&](size_t i) { costs(subtrees[i]); });
+    for (size_t i = top.size(); i-- > 0;) nodeCosts(top[i]);
+}
+
+// cost_[n] from its children's costs.
+void Collapser::nodeCosts(uint32_t n) {
+    const BinaryNode& bn = bin_.nodes[n];
+    const Slots& l = slots(bn.first);
+    const Slots& r = slots(bn.first + 1);
+    // split()'s least costs without its choice of slots: minima without branches (which one of
+    // equal costs wins does not matter here).
+    auto least = [&](int j) {
+        float best = kInf;
+        for (int a = 1; a < j; ++a) best = std::min(best, l[a - 1] + r[j - a - 1]);
+        return best;
+    };
     Slots& s = cost_[n];
-    s[0] = bn.halfArea() + split(n, kWidth, unused);
-    for (int k = 2; k <= kWidth; ++k) s[k - 1] = std::min(s[k - 2], split(n, k, unused));
+    s[0] = bn.halfArea() + least(kWidth);
+    for (int k = 2; k <= kWidth; ++k) s[k - 1] = std::min(s[k - 2], least(k));
 }
 
 // The least cost of n's two subtrees sharing j >= 2 slots; leftSlots receives the left one's.
@@ -125,7 +162,7 @@ WideTree buildWideTree(HugeArray<PrimRef>& refs, TaskPool& pool, Collapser::Node
     settings.maxLeafSize = kBlockSize;
     const BinaryBvh bin = buildBinnedSah(refs, settings, pool);
     Collapser collapse(bin, nodes, kMaxLeafBlocks);
-    collapse.run();
+    collapse.run(&pool);
     nodes.shrink_to_fit();
     WideTree tree;
     tree.leaves = std::move(collapse.leaves);

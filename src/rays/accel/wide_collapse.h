@@ -30,13 +30,17 @@ public:
     Collapser(const BinaryBvh& bin, NodeVector& nodes, uint32_t leafBlockCap)
         : bin_(bin), nodes_(nodes), leafBlockCap_(leafBlockCap) {}
 
-    void run();
+    /// Collapses; with a pool of several threads the costs of the subtrees below the top levels
+    /// are computed side by side (the nodes are the same).
+    void run(TaskPool* pool = nullptr);
     std::vector<LeafJob> leaves;
     uint32_t blockCount = 0;
 
 private:
     void fill(uint32_t w, uint32_t b);
     void costs(uint32_t n);
+    void costsInParallel(TaskPool& pool);
+    void nodeCosts(uint32_t n);
     const Slots& slots(uint32_t n) const;
     float split(uint32_t n, int j, int& leftSlots) const;
     void gather(uint32_t n, int k, uint32_t* kids, int& count) const;
