@@ -120,6 +120,34 @@ TEST(OriginBuffer, RaysFromTheEyeFindTheBvhsNearestHit) {
     EXPECT_GT(hits, 20000);
 }
 
+namespace {
+
+// A shadow ray as the tracer casts it, from P + kSurfaceOffset N (P where probe first meets the
+// scene, N facing the probe) towards a point light, traced by the BVH and by the light's buffer.
+struct ShadowVerdicts {
+    bool shaded = false;  ///< the probe met the scene
+    bool bvh = false, buffer = false;  ///< blocked, by each
+};
+ShadowVerdicts shadowBothWays(const Bvh& bvh, const std::vector<Object>& objects, const OriginBuffer& lightBuffer,
+                              Vec3 light, const Ray& probe) {
+    ShadowVerdicts v;
+    const Hit h = bvh.closest(objects, probe, 1e-6, kInfinity);
+    if (!h.valid()) return v;
+    v.shaded = true;
+    const Vec3 P = probe.at(h.t);
+    const Vec3 N = dot(probe.dir, h.geomNormal) < 0 ? h.normal : -h.normal;
+    const Vec3 toLight = light - P;
+    const double dist = length(toLight);
+    const double offset = Tracer::kSurfaceOffset;
+    const Ray shadow{P + offset * N, toLight / dist};
+    v.bvh = bvh.anyBlocker(objects, shadow, 1e-6, dist - offset) != Bvh::kNoBlocker;
+    v.buffer = bvh.anyBlockerFrom(lightBuffer.cells(P - light), objects, shadow, 1e-6, dist - offset, dist) !=
+               Bvh::kNoBlocker;
+    return v;
+}
+
+}  // namespace
+
 // Shadow rays as the tracer casts them: from P + 0.001 N towards a point light.
 // The light's lists (grown by that offset) must find a blocker exactly when the
 // BVH does, for lights outside, inside an object and right next to one.
@@ -137,18 +165,10 @@ TEST(OriginBuffer, ShadowRaysToAPointLightFindTheBvhsBlockers) {
                 // A shading point: where a random ray meets the scene, its normal
                 // facing that ray.
                 const Ray probe{{u(rng), u(rng), u(rng)}, randomDirection(rng)};
-                const Hit h = bvh.closest(objects, probe, 1e-6, kInfinity);
-                if (!h.valid()) continue;
-                const Vec3 P = probe.at(h.t);
-                const Vec3 N = dot(probe.dir, h.geomNormal) < 0 ? h.normal : -h.normal;
-                const Vec3 toLight = light - P;
-                const double dist = length(toLight);
-                const Ray shadow{P + offset * N, toLight / dist};
-                const bool ref = bvh.anyBlocker(objects, shadow, 1e-6, dist - offset) != Bvh::kNoBlocker;
-                const bool got = bvh.anyBlockerFrom(lightBuffer.cells(P - light), objects, shadow, 1e-6, dist - offset,
-                                                    dist) != Bvh::kNoBlocker;
-                ASSERT_EQ(got, ref) << "point " << i;
-                ++(ref ? blocked : lit);
+                const ShadowVerdicts v = shadowBothWays(bvh, objects, lightBuffer, light, probe);
+                if (!v.shaded) continue;
+                ASSERT_EQ(v.buffer, v.bvh) << "point " << i;
+                ++(v.bvh ? blocked : lit);
             }
         }
     }
@@ -214,19 +234,10 @@ TEST(OriginBuffer, CoplanarFloorTrianglesGiveTheBvhsAnswers) {
             // A shadow ray from a point of the scene back to the origin as a light.
             const double y = i % 2 ? u(rng) * 0.8 : -2.7 + 0.05 * u(rng);  // every other one below both floors
             const Ray probe{{u(rng), y, u(rng)}, randomDirection(rng)};
-            const Hit h = bvh.closest(objects, probe, 1e-6, kInfinity);
-            if (!h.valid()) continue;
-            const Vec3 P = probe.at(h.t);
-            const Vec3 N = dot(probe.dir, h.geomNormal) < 0 ? h.normal : -h.normal;
-            const Vec3 toLight = origin - P;
-            const double dist = length(toLight);
-            const double offset = Tracer::kSurfaceOffset;
-            const Ray shadow{P + offset * N, toLight / dist};
-            const bool refBlocked = bvh.anyBlocker(objects, shadow, 1e-6, dist - offset) != Bvh::kNoBlocker;
-            const bool gotBlocked = bvh.anyBlockerFrom(light.cells(P - origin), objects, shadow, 1e-6, dist - offset,
-                                                       dist) != Bvh::kNoBlocker;
-            ASSERT_EQ(gotBlocked, refBlocked) << "point " << i;
-            ++(refBlocked ? blocked : lit);
+            const ShadowVerdicts v = shadowBothWays(bvh, objects, light, origin, probe);
+            if (!v.shaded) continue;
+            ASSERT_EQ(v.buffer, v.bvh) << "point " << i;
+            ++(v.bvh ? blocked : lit);
         }
     }
     EXPECT_GT(hits, 8000);
