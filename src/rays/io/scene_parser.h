@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "rays/scene/scene.h"
+#include "rays/sdl/options.h"
 
 namespace rays {
 
@@ -22,6 +23,9 @@ struct ParseOptions {
     /// parsed in two pieces at once when it can be cut between two top-level items; the scene,
     /// warnings and errors are those of parsing it whole.
     int threads = 0;
+    /// Include paths, command-line declarations, the animation clock, the image size and the
+    /// dialect (POV-Ray scene language); the course dialect reads none of them.
+    sdl::LanguageOptions language;
 };
 
 /// Parses scene text. fileName is used in messages only. Throws Error "FILE:LINE:COL: error: ..."

@@ -1,0 +1,45 @@
+// What the host tells the scene language before a parse: where include files are found,
+// identifiers declared on the command line, the animation clock, the image size and how
+// warnings and interrupts reach it. Plain values; the language reads them, never changes them.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rays::sdl {
+
+/// A `Declare=NAME=VALUE` INI key or `Declare=` switch: VALUE is a float literal, or a string in
+/// double quotes.
+struct Declare {
+    std::string name;
+    std::string value;
+};
+
+/// POV-Ray's animation identifiers for one frame (POV-Ray 3.7 reference, "Animation Options"):
+/// clock = initialClock + (finalClock − initialClock)·(frame − initialFrame)/(finalFrame − initialFrame).
+struct AnimationClock {
+    double clock = 0;         ///< `clock`
+    double clockDelta = 0;    ///< `clock_delta`: clock difference between two frames (0 for a still)
+    int frameNumber = 0;      ///< `frame_number`
+    int initialFrame = 1, finalFrame = 1;      ///< `initial_frame`, `final_frame`
+    double initialClock = 0, finalClock = 1;   ///< `initial_clock`, `final_clock`
+    bool clockOn = false;     ///< `clock_on`: true when rendering an animation
+};
+
+/// Which rules a scene file follows: the course dialect or POV-Ray 3.7.
+enum class Dialect { Auto, Course, Povray };
+
+struct LanguageOptions {
+    /// Folders searched for `#include` files after the scene's own folder, in order
+    /// (`+L` switches and `Library_Path` INI keys), then `installedIncludeDir`.
+    std::vector<std::string> libraryPaths;
+    /// POV-Ray's include files (Debian's povray-includes); searched last.
+    std::string installedIncludeDir = "/usr/share/povray-3.7/include";
+    std::vector<Declare> declares;
+    AnimationClock animation;
+    int imageWidth = 640, imageHeight = 480;  ///< `image_width`, `image_height`
+    Dialect dialect = Dialect::Auto;
+    bool strict = false;  ///< a feature that is parsed but not rendered yet is an error, not a warning
+};
+
+}  // namespace rays::sdl
