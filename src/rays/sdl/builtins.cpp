@@ -1,0 +1,337 @@
+// Built-in float and vector functions (POV-Ray 3.7 reference, "Float Functions", "Vector
+// Functions"), and calls of user functions and splines.
+#include <cmath>
+#include <ctime>
+
+#include "rays/sdl/frames.h"
+#include "rays/sdl/interpreter.h"
+#include "rays/sdl/pov_random.h"
+#include "rays/sdl/pov_strings.h"
+
+namespace rays::sdl {
+
+namespace {
+
+constexpr double kPi = 3.1415926535897932384626;
+
+// Rotation of p about the x, then y, then z axis by the angles in degrees (standard rotation
+// matrices; measured with POV-Ray 3.7: vrotate(x, 90*y) = <0,0,-1>).
+std::array<double, 3> rotateXYZ(std::array<double, 3> p, const double deg[3]) {
+    for (int axis = 0; axis < 3; ++axis) {
+        const double a = deg[axis] * kPi / 180, c = std::cos(a), s = std::sin(a);
+        const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+        const double pi = p[i], pj = p[j];
+        p[i] = c * pi - s * pj;
+        p[j] = s * pi + c * pj;
+    }
+    return p;
+}
+
+// Rodrigues' rotation of p about the unit axis k by deg degrees, in the sense of rotateXYZ.
+std::array<double, 3> rotateAxis(const std::array<double, 3>& p, std::array<double, 3> k, double deg) {
+    const double len = std::sqrt(k[0] * k[0] + k[1] * k[1] + k[2] * k[2]);
+    for (double& c : k) c /= len;
+    const double a = deg * kPi / 180, c = std::cos(a), s = std::sin(a);
+    const double d = k[0] * p[0] + k[1] * p[1] + k[2] * p[2];
+    const std::array<double, 3> x{k[1] * p[2] - k[2] * p[1], k[2] * p[0] - k[0] * p[2], k[0] * p[1] - k[1] * p[0]};
+    return {p[0] * c + x[0] * s + k[0] * d * (1 - c), p[1] * c + x[1] * s + k[1] * d * (1 - c),
+            p[2] * c + x[2] * s + k[2] * d * (1 - c)};
+}
+
+std::array<double, 3> vec3Of(const Value& v) {
+    if (v.type == VType::Float) return {v.c[0], v.c[0], v.c[0]};
+    return {v.c[0], v.dim > 1 ? v.c[1] : 0.0, v.dim > 2 ? v.c[2] : 0.0};
+}
+
+Value fromVec3(const std::array<double, 3>& p) { return Value::vec3(p[0], p[1], p[2]); }
+
+}  // namespace
+
+bool Interpreter::isBuiltinFunction(Kw k) const {
+    switch (k) {
+        case Kw::abs: case Kw::acos: case Kw::acosh: case Kw::asc: case Kw::asin: case Kw::asinh: case Kw::atan:
+        case Kw::atan2: case Kw::atanh: case Kw::bitwise_and: case Kw::bitwise_or: case Kw::bitwise_xor:
+        case Kw::ceil: case Kw::cos: case Kw::cosh: case Kw::defined: case Kw::degrees: case Kw::dimensions:
+        case Kw::dimension_size: case Kw::div: case Kw::exp: case Kw::file_exists: case Kw::floor:
+        case Kw::inside: case Kw::int_: case Kw::ln: case Kw::log: case Kw::max: case Kw::min: case Kw::mod:
+        case Kw::pow: case Kw::radians: case Kw::rand: case Kw::seed: case Kw::select: case Kw::sin:
+        case Kw::sinh: case Kw::sqrt: case Kw::strcmp: case Kw::strlen: case Kw::tan: case Kw::tanh:
+        case Kw::val: case Kw::vdot: case Kw::vlength: case Kw::min_extent: case Kw::max_extent:
+        case Kw::trace: case Kw::vaxis_rotate: case Kw::vcross: case Kw::vrotate: case Kw::vnormalize:
+        case Kw::vturbulence: case Kw::now:
+            return true;
+        default:
+            return false;
+    }
+}
+
+// The arguments of a call: '(' value {',' value} ')', each a numeric expression or a string.
+std::vector<Value> Interpreter::callArgs(const char* name, size_t minArgs, size_t maxArgs) {
+    expectSym('(', std::string("after ") + name);
+    std::vector<Value> args;
+    if (!isSym(')')) {
+        for (;;) {
+            if (atStringStart()) args.push_back(Value::string(parseString()));
+            else args.push_back(fullExpression());
+            if (!acceptSym(',')) break;
+        }
+    }
+    if (!isSym(')')) errorHere(std::string("expected ',' or ')' in the arguments of ") + name + ", found " + describe());
+    next();
+    if (args.size() < minArgs || args.size() > maxArgs) {
+        const std::string want = minArgs == maxArgs ? std::to_string(minArgs)
+                                 : maxArgs == SIZE_MAX ? std::to_string(minArgs) + " or more"
+                                                       : std::to_string(minArgs) + " to " + std::to_string(maxArgs);
+        errorHere(std::string(name) + " takes " + want + " arguments, " + std::to_string(args.size()) + " given");
+    }
+    return args;
+}
+
+Value Interpreter::builtin(Kw k, const Loc& at) {
+    const std::string name(keywordName(k));
+    next();
+    auto f = [&](const Value& v, int i) { return toFloat(v, at, name + " argument " + std::to_string(i + 1)); };
+    auto str = [&](const Value& v) -> const std::string& {
+        if (v.type != VType::String) error(at, name + " needs a string");
+        return v.str();
+    };
+    auto one = [&](double (*fn)(double)) { return Value::number(fn(f(callArgs(name.c_str(), 1, 1)[0], 0))); };
+    switch (k) {
+        case Kw::abs: return one(std::fabs);
+        case Kw::acos: return one(std::acos);
+        case Kw::acosh: return one(std::acosh);
+        case Kw::asin: return one(std::asin);
+        case Kw::asinh: return one(std::asinh);
+        case Kw::atan: return one(std::atan);
+        case Kw::atanh: return one(std::atanh);
+        case Kw::ceil: return one(std::ceil);
+        case Kw::cos: return one(std::cos);
+        case Kw::cosh: return one(std::cosh);
+        case Kw::exp: return one(std::exp);
+        case Kw::floor: return one(std::floor);
+        case Kw::int_: return one(std::trunc);
+        case Kw::ln: return one(std::log);
+        case Kw::log: return one(std::log10);
+        case Kw::sin: return one(std::sin);
+        case Kw::sinh: return one(std::sinh);
+        case Kw::sqrt: return one(std::sqrt);
+        case Kw::tan: return one(std::tan);
+        case Kw::tanh: return one(std::tanh);
+        case Kw::degrees: return Value::number(f(callArgs("degrees", 1, 1)[0], 0) * 180 / kPi);
+        case Kw::radians: return Value::number(f(callArgs("radians", 1, 1)[0], 0) * kPi / 180);
+        case Kw::atan2: {
+            const auto a = callArgs("atan2", 2, 2);
+            return Value::number(std::atan2(f(a[0], 0), f(a[1], 1)));
+        }
+        case Kw::pow: {
+            const auto a = callArgs("pow", 2, 2);
+            return Value::number(std::pow(f(a[0], 0), f(a[1], 1)));
+        }
+        case Kw::mod: {
+            const auto a = callArgs("mod", 2, 2);
+            return Value::number(std::fmod(f(a[0], 0), f(a[1], 1)));
+        }
+        case Kw::div: {
+            const auto a = callArgs("div", 2, 2);
+            return Value::number(std::trunc(f(a[0], 0) / f(a[1], 1)));
+        }
+        case Kw::max: case Kw::min: {
+            const auto a = callArgs(name.c_str(), 1, SIZE_MAX);
+            double r = f(a[0], 0);
+            for (size_t i = 1; i < a.size(); ++i) r = k == Kw::max ? std::max(r, f(a[i], int(i))) : std::min(r, f(a[i], int(i)));
+            return Value::number(r);
+        }
+        case Kw::bitwise_and: case Kw::bitwise_or: case Kw::bitwise_xor: {
+            const auto a = callArgs(name.c_str(), 2, SIZE_MAX);
+            long long r = (long long)f(a[0], 0);
+            for (size_t i = 1; i < a.size(); ++i) {
+                const long long b = (long long)f(a[i], int(i));
+                r = k == Kw::bitwise_and ? (r & b) : k == Kw::bitwise_or ? (r | b) : (r ^ b);
+            }
+            return Value::number(double(r));
+        }
+        case Kw::select: {
+            const auto a = callArgs("select", 3, 4);
+            const double s = f(a[0], 0);
+            if (a.size() == 3) return s < 0 ? a[1] : a[2];
+            return s < 0 ? a[1] : s == 0 ? a[2] : a[3];
+        }
+        case Kw::seed: return Value::number(random_.seed(f(callArgs("seed", 1, 1)[0], 0)));
+        case Kw::rand: {
+            const Outcome<double> r = random_.rand(f(callArgs("rand", 1, 1)[0], 0));
+            if (!r.ok()) error(at, r.error);
+            return Value::number(r.value);
+        }
+        case Kw::asc: {
+            const std::string& s = str(callArgs("asc", 1, 1)[0]);
+            return Value::number(s.empty() ? 0.0 : double(static_cast<unsigned char>(s[0])));
+        }
+        case Kw::strlen: return Value::number(double(str(callArgs("strlen", 1, 1)[0]).size()));
+        case Kw::strcmp: {
+            const auto a = callArgs("strcmp", 2, 2);
+            const int c = str(a[0]).compare(str(a[1]));
+            return Value::number(c < 0 ? -1.0 : c > 0 ? 1.0 : 0.0);
+        }
+        case Kw::val: return Value::number(povVal(str(callArgs("val", 1, 1)[0])));
+        case Kw::file_exists: return Value::number(findFile(str(callArgs("file_exists", 1, 1)[0])).empty() ? 0.0 : 1.0);
+        case Kw::vdot: {
+            const auto a = callArgs("vdot", 2, 2);
+            const auto p = vec3Of(a[0]), q = vec3Of(a[1]);
+            return Value::number(p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
+        }
+        case Kw::vlength: {
+            const auto p = vec3Of(callArgs("vlength", 1, 1)[0]);
+            return Value::number(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+        }
+        case Kw::vcross: {
+            const auto a = callArgs("vcross", 2, 2);
+            const auto p = vec3Of(a[0]), q = vec3Of(a[1]);
+            return fromVec3({p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]});
+        }
+        case Kw::vnormalize: {
+            const auto p = vec3Of(callArgs("vnormalize", 1, 1)[0]);
+            const double l = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            if (l == 0) error(at, "vnormalize of a zero vector");
+            return fromVec3({p[0] / l, p[1] / l, p[2] / l});
+        }
+        case Kw::vrotate: {
+            const auto a = callArgs("vrotate", 2, 2);
+            const auto r = vec3Of(a[1]);
+            return fromVec3(rotateXYZ(vec3Of(a[0]), r.data()));
+        }
+        case Kw::vaxis_rotate: {
+            const auto a = callArgs("vaxis_rotate", 3, 3);
+            const auto axis = vec3Of(a[1]);
+            if (axis[0] == 0 && axis[1] == 0 && axis[2] == 0) error(at, "vaxis_rotate about a zero axis");
+            return fromVec3(rotateAxis(vec3Of(a[0]), axis, f(a[2], 2)));
+        }
+        case Kw::vturbulence: {
+            callArgs("vturbulence", 4, 4);
+            warning(at, "not rendered yet: vturbulence (gives <0,0,0>)");
+            return Value::vec3(0, 0, 0);
+        }
+        case Kw::now: {
+            // Days since 2000-01-01 00:00:00 UTC (POV-Ray 3.7 reference, "datetime").
+            return Value::number((double(std::time(nullptr)) - 946684800.0) / 86400.0);
+        }
+        case Kw::defined: {
+            expectSym('(', "after defined");
+            const bool d = definedName();
+            expectSym(')', "after the identifier in defined()");
+            return Value::number(d ? 1 : 0);
+        }
+        case Kw::dimensions: case Kw::dimension_size: {
+            expectSym('(', "after " + name);
+            const Binding* b = identBinding();
+            if (!b || b->value.type != VType::Array) errorHere(name + " needs an array identifier, found " + describe());
+            const Value arr = b->value;
+            next();
+            double r = double(arr.arr().sizes.size());
+            if (k == Kw::dimension_size) {
+                expectSym(',', "in dimension_size");
+                const int d = parseInt("the dimension");
+                if (d < 1 || size_t(d) > arr.arr().sizes.size()) error(at, "dimension_size: no dimension " + std::to_string(d));
+                r = arr.arr().sizes[size_t(d - 1)];
+            }
+            expectSym(')', "to close " + name);
+            return Value::number(r);
+        }
+        case Kw::inside: case Kw::trace: case Kw::min_extent: case Kw::max_extent:
+            return geometryQuery(k, at);
+        default:
+            break;
+    }
+    error(at, "'" + name + "' is not a function");
+}
+
+// defined(NAME) / defined(NAME[i]): the '(' is consumed, the name is current.
+bool Interpreter::definedName() {
+    const Token& t = tokNoMacro();
+    if (t.kind != Tk::Name) errorHere("expected an identifier, found " + describe());
+    if (Names::isKeyword(t.id)) {
+        next();
+        return true;
+    }
+    Binding* b = scopes_.find(t.id);
+    next();
+    if (b && b->value.type == VType::Array && isSym('[')) {
+        std::vector<int> idx;
+        return arrayElement(b->value, true, &idx).defined();
+    }
+    return b != nullptr;
+}
+
+// inside(O, V), trace(O, A, B [, N]), min_extent(O), max_extent(O): answered by the host.
+Value Interpreter::geometryQuery(Kw k, const Loc& at) {
+    const std::string name(keywordName(k));
+    expectSym('(', "after " + name);
+    const Binding* ob = identBinding();
+    if (!ob || ob->value.type != VType::Item) errorHere(name + " needs an object identifier, found " + describe());
+    const ItemRef object = ob->value.itemRef();
+    next();
+    auto vec = [&]() {
+        expectSym(',', "in " + name);
+        const auto v = parseVector(3);
+        return std::array<double, 3>{v[0], v[1], v[2]};
+    };
+    if (k == Kw::inside) {
+        const auto p = vec();
+        expectSym(')', "to close inside");
+        const int r = host_.inside(*object, p.data());
+        if (r < 0) {
+            warning(at, "not rendered yet: inside() of this object (gives 0)");
+            return Value::number(0);
+        }
+        return Value::number(r);
+    }
+    if (k == Kw::trace) {
+        const auto origin = vec();
+        const auto dir = vec();
+        uint32_t normalName = UINT32_MAX;
+        if (acceptSym(',')) {
+            const Token& t = tokNoMacro();
+            if (t.kind != Tk::Name || Names::isKeyword(t.id)) errorHere("trace's fourth argument must be an identifier");
+            normalName = t.id;
+            next();
+        }
+        expectSym(')', "to close trace");
+        const ItemHost::TraceResult r = host_.trace(*object, origin.data(), dir.data());
+        if (!r.supported) warning(at, "not rendered yet: trace() of this object (gives <0,0,0>)");
+        if (normalName != UINT32_MAX) {
+            const Value n = r.hit ? Value::vec3(r.normal[0], r.normal[1], r.normal[2]) : Value::vec3(0, 0, 0);
+            scopes_.declare(normalName, n);
+        }
+        return r.hit ? Value::vec3(r.point[0], r.point[1], r.point[2]) : Value::vec3(0, 0, 0);
+    }
+    expectSym(')', "to close " + name);
+    double lo[3]{}, hi[3]{};
+    if (!host_.extent(*object, lo, hi)) {
+        warning(at, "not rendered yet: " + name + "() of this object (gives <0,0,0>)");
+        return Value::vec3(0, 0, 0);
+    }
+    return k == Kw::min_extent ? Value::vec3(lo[0], lo[1], lo[2]) : Value::vec3(hi[0], hi[1], hi[2]);
+}
+
+// SPLINE(t [, type]).
+Value Interpreter::callSpline(const Value& s, const Loc& at) {
+    expectSym('(', "after a spline identifier");
+    const double t = toFloat(fullExpression(), at, "the spline parameter");
+    const Spline& sp = s.spline();
+    Spline::Type type = sp.type;
+    if (acceptSym(',')) {
+        switch (kw()) {
+            case Kw::linear_spline: type = Spline::Type::Linear; break;
+            case Kw::quadratic_spline: type = Spline::Type::Quadratic; break;
+            case Kw::cubic_spline: type = Spline::Type::Cubic; break;
+            case Kw::natural_spline: type = Spline::Type::Natural; break;
+            default: errorHere("expected a spline type, found " + describe());
+        }
+        next();
+    }
+    expectSym(')', "to close the spline call");
+    const std::array<double, 5> p = evaluateSpline(sp, type, t);
+    if (sp.dim == 5) return Value::color(p[0], p[1], p[2], p[3], p[4]);
+    return Value::vector(sp.dim, p.data());
+}
+
+}  // namespace rays::sdl

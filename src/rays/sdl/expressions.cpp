@@ -1,0 +1,497 @@
+// Expressions (POV-Ray 3.7 reference, "Numeric Expressions", "Vector Expressions", "Color
+// Expressions"), evaluated as they are read. Floats, vectors (2–5 components) and colours (5)
+// combine component by component: a float fills every component of the other operand, a
+// shorter vector is padded with zeros, anything combined with a colour is a colour. Relational,
+// logical and conditional operators are allowed only inside parentheses, where POV-Ray allows
+// them (elsewhere '<' and '>' are vector brackets).
+#include <cmath>
+
+#include "rays/sdl/frames.h"
+#include "rays/sdl/interpreter.h"
+
+namespace rays::sdl {
+
+namespace {
+
+constexpr double kEpsilon = 1e-10;
+
+/// The operands as two vectors of the same width (POV-Ray's promotion rules).
+int promote(const Value& a, const Value& b, std::array<double, 5>& x, std::array<double, 5>& y, VType& type) {
+    int dim;
+    if (a.type == VType::Color || b.type == VType::Color) {
+        type = VType::Color;
+        dim = 5;
+    } else if (a.type == VType::Vector || b.type == VType::Vector) {
+        type = VType::Vector;
+        dim = std::max(a.type == VType::Vector ? a.dim : 0, b.type == VType::Vector ? b.dim : 0);
+    } else {
+        type = VType::Float;
+        dim = 1;
+    }
+    auto widen = [dim](const Value& v, std::array<double, 5>& out) {
+        if (v.type == VType::Float) {
+            out.fill(v.c[0]);
+        } else {
+            out = {};
+            for (int i = 0; i < v.dim && i < dim; ++i) out[i] = v.c[i];
+        }
+    };
+    widen(a, x);
+    widen(b, y);
+    return dim;
+}
+
+Value make(VType type, int dim, const std::array<double, 5>& c) {
+    Value v;
+    v.type = type;
+    v.dim = uint8_t(dim);
+    v.c = c;
+    return v;
+}
+
+}  // namespace
+
+Value combine(char op, const Value& a, const Value& b) {
+    std::array<double, 5> x, y, r{};
+    VType type;
+    const int dim = promote(a, b, x, y, type);
+    for (int i = 0; i < dim; ++i) {
+        switch (op) {
+            case '+': r[i] = x[i] + y[i]; break;
+            case '-': r[i] = x[i] - y[i]; break;
+            case '*': r[i] = x[i] * y[i]; break;
+            case '/': r[i] = x[i] / y[i]; break;
+            case '<': r[i] = x[i] < y[i]; break;
+            case '>': r[i] = x[i] > y[i]; break;
+            case kLessEq: r[i] = x[i] <= y[i]; break;
+            case kGreaterEq: r[i] = x[i] >= y[i]; break;
+            case '=': r[i] = std::fabs(x[i] - y[i]) < kEpsilon; break;
+            case kNotEq: r[i] = std::fabs(x[i] - y[i]) >= kEpsilon; break;
+            case '&': r[i] = std::fabs(x[i]) > kEpsilon && std::fabs(y[i]) > kEpsilon; break;
+            case '|': r[i] = std::fabs(x[i]) > kEpsilon || std::fabs(y[i]) > kEpsilon; break;
+        }
+    }
+    return make(type, dim, r);
+}
+
+double Interpreter::toFloat(const Value& v, const Loc& at, std::string_view what) {
+    if (v.type != VType::Float)
+        error(at, std::string(what) + " must be a float, found a " + typeName(v.type));
+    return v.c[0];
+}
+
+bool Interpreter::atNumericStart() {
+    const Token& t = tok();
+    switch (t.kind) {
+        case Tk::Number: return true;
+        case Tk::Symbol: return t.sym == '<' || t.sym == '(' || t.sym == '-' || t.sym == '+' || t.sym == '!';
+        case Tk::Name: {
+            if (!Names::isKeyword(t.id)) {
+                const Binding* b = scopes_.find(t.id);
+                if (!b) return false;
+                switch (b->value.type) {
+                    case VType::Float: case VType::Vector: case VType::Color: case VType::Function: case VType::Spline:
+                        return true;
+                    case VType::Array: {
+                        const VType e = b->value.arr().elemType;
+                        return e == VType::Float || e == VType::Vector || e == VType::Color;
+                    }
+                    default: return false;
+                }
+            }
+            switch (Kw(t.id)) {
+                case Kw::x: case Kw::y: case Kw::z: case Kw::t: case Kw::u: case Kw::v: case Kw::pi:
+                case Kw::true_: case Kw::false_: case Kw::yes: case Kw::no: case Kw::on: case Kw::off:
+                case Kw::clock: case Kw::clock_delta: case Kw::clock_on: case Kw::final_clock: case Kw::final_frame:
+                case Kw::frame_number: case Kw::initial_clock: case Kw::initial_frame: case Kw::image_width:
+                case Kw::image_height: case Kw::version:
+                case Kw::color: case Kw::colour: case Kw::rgb: case Kw::rgbf: case Kw::rgbt: case Kw::rgbft:
+                case Kw::srgb: case Kw::srgbf: case Kw::srgbt: case Kw::srgbft: case Kw::red: case Kw::green:
+                case Kw::blue: case Kw::filter: case Kw::transmit:
+                    return true;
+                default:
+                    return isBuiltinFunction(Kw(t.id));
+            }
+        }
+        default: return false;
+    }
+}
+
+Value Interpreter::parseNumeric(bool colorContext) {
+    NestGuard guard(*this);
+    Value v = additive(colorContext);
+    if (colorContext && v.type == VType::Color) v = colorComponents(std::move(v));
+    return v;
+}
+
+double Interpreter::parseFloat() {
+    const Loc at = loc();
+    const Value v = parseNumeric(false);
+    if (v.type == VType::Float) return v.c[0];
+    error(at, std::string("expected a float, found a ") + typeName(v.type));
+}
+
+int Interpreter::parseInt(std::string_view what) {
+    const Loc at = loc();
+    const double v = parseFloat();
+    if (!(std::fabs(v) < 2147483647.0)) error(at, std::string(what) + " is out of range");
+    return int(v);
+}
+
+std::array<double, 5> Interpreter::parseVector(int dim) {
+    const Loc at = loc();
+    const Value v = parseNumeric(false);
+    std::array<double, 5> r{};
+    if (v.type == VType::Float) {
+        for (int i = 0; i < dim; ++i) r[i] = v.c[0];
+    } else if (v.isNumeric()) {
+        for (int i = 0; i < dim && i < v.dim; ++i) r[i] = v.c[i];
+    } else {
+        error(at, std::string("expected a vector, found a ") + typeName(v.type));
+    }
+    return r;
+}
+
+Value Interpreter::parseColor() {
+    const Loc at = loc();
+    if (isKw(Kw::color) || isKw(Kw::colour)) next();
+    Value v = parseNumeric(true);
+    if (v.type == VType::Color) return v;
+    if (v.type == VType::Float) return Value::color(v.c[0], v.c[0], v.c[0], v.c[0], v.c[0]);
+    if (v.type == VType::Vector) {
+        Value c = Value::color(0, 0, 0);
+        for (int i = 0; i < v.dim; ++i) c.c[i] = v.c[i];
+        return c;
+    }
+    error(at, std::string("expected a colour, found a ") + typeName(v.type));
+}
+
+bool Interpreter::parseOptionalBool() {
+    if (!atNumericStart()) return true;
+    const Loc at = loc();
+    return truth(parseNumeric(false), at);
+}
+
+// FULL_EXPRESSION: LOGICAL [? FULL_EXPRESSION : FULL_EXPRESSION]; both branches are evaluated.
+Value Interpreter::fullExpression() {
+    NestGuard guard(*this);
+    Value c = logical();
+    if (!isSym('?')) return c;
+    const Loc at = loc();
+    next();
+    const bool pick = truth(c, at);
+    Value a = fullExpression();
+    expectSym(':', "in a conditional expression");
+    Value b = fullExpression();
+    return pick ? a : b;
+}
+
+Value Interpreter::logical() {
+    Value a = relational();
+    while (isSym('&') || isSym('|')) {
+        const char op = char(cur_.sym);
+        next();
+        a = combine(op, a, relational());
+    }
+    return a;
+}
+
+Value Interpreter::relational() {
+    if (atStringStart()) {
+        const std::string a = parseString();
+        const Loc at = loc();
+        const Token t = tok();
+        if (t.kind != Tk::Symbol) error(at, "expected a comparison after a string, found " + describe());
+        next();
+        const std::string b = parseString();
+        const int c = a.compare(b);
+        double r = 0;
+        switch (t.sym) {
+            case '<': r = c < 0; break;
+            case '>': r = c > 0; break;
+            case kLessEq: r = c <= 0; break;
+            case kGreaterEq: r = c >= 0; break;
+            case '=': r = c == 0; break;
+            case kNotEq: r = c != 0; break;
+            default: error(at, "expected a comparison after a string, found " + describe());
+        }
+        return Value::number(r);
+    }
+    Value a = additive(false);
+    for (;;) {
+        const Token& t = tok();
+        if (t.kind != Tk::Symbol) return a;
+        const char op = char(t.sym);
+        if (op != '<' && op != '>' && op != '=' && op != kLessEq && op != kGreaterEq && op != kNotEq) return a;
+        next();
+        a = combine(op, a, additive(false));
+    }
+}
+
+Value Interpreter::additive(bool colorCtx) {
+    Value a = term(colorCtx);
+    while (isSym('+') || isSym('-')) {
+        const char op = char(cur_.sym);
+        next();
+        a = combine(op, a, term(colorCtx));
+    }
+    return a;
+}
+
+Value Interpreter::term(bool colorCtx) {
+    Value a = unary(colorCtx);
+    while (isSym('*') || isSym('/')) {
+        const char op = char(cur_.sym);
+        next();
+        a = combine(op, a, unary(colorCtx));
+    }
+    return a;
+}
+
+Value Interpreter::unary(bool colorCtx) {
+    if (isSym('-') || isSym('+') || isSym('!')) {
+        const char op = char(cur_.sym);
+        NestGuard guard(*this);
+        next();
+        Value v = unary(colorCtx);
+        if (!v.isNumeric()) errorHere("a sign or '!' needs a number");
+        for (int i = 0; i < v.dim; ++i) {
+            if (op == '-') v.c[i] = -v.c[i];
+            else if (op == '!') v.c[i] = std::fabs(v.c[i]) > kEpsilon ? 0.0 : 1.0;
+        }
+        return v;
+    }
+    return postfix(factor(colorCtx));
+}
+
+// `.x .y .z .t .u .v .red .green .blue .filter .transmit .gray` after a vector or colour.
+Value Interpreter::postfix(Value v) {
+    while (isSym('.')) {
+        next();
+        const Loc at = loc();
+        const Kw k = kw();
+        int i;
+        switch (k) {
+            case Kw::x: case Kw::u: case Kw::red: i = 0; break;
+            case Kw::y: case Kw::v: case Kw::green: i = 1; break;
+            case Kw::z: case Kw::blue: i = 2; break;
+            case Kw::t: case Kw::filter: i = 3; break;
+            case Kw::transmit: i = 4; break;
+            case Kw::gray: i = 5; break;
+            default: error(at, "expected x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.', found " + describe());
+        }
+        next();
+        if (v.type == VType::Float) error(at, "'.' needs a vector or colour, found a float");
+        if (!v.isNumeric()) error(at, std::string("'.' needs a vector or colour, found a ") + typeName(v.type));
+        // Gray is POV-Ray's grey value of a colour (weights measured with POV-Ray 3.7).
+        const double r = i == 5 ? 0.297 * v.c[0] + 0.589 * v.c[1] + 0.114 * v.c[2] : (i < v.dim ? v.c[i] : 0.0);
+        if (i < 5 && i >= v.dim) error(at, "the vector has only " + std::to_string(v.dim) + " components");
+        v = Value::number(r);
+    }
+    return v;
+}
+
+Value Interpreter::factor(bool colorCtx) {
+    const Token t = tok();
+    const Loc at = curLoc_;
+    switch (t.kind) {
+        case Tk::Number:
+            next();
+            return Value::number(t.number);
+        case Tk::Symbol:
+            if (t.sym == '(') {
+                next();
+                Value v = fullExpression();
+                expectSym(')', "to close '('");
+                return v;
+            }
+            if (t.sym == '<') return vectorLiteral();
+            break;
+        case Tk::Name:
+            if (!Names::isKeyword(t.id)) return identifierValue(colorCtx);
+            switch (Kw(t.id)) {
+                case Kw::x: next(); return Value::vec3(1, 0, 0);
+                case Kw::y: next(); return Value::vec3(0, 1, 0);
+                case Kw::z: next(); return Value::vec3(0, 0, 1);
+                case Kw::t: { next(); const double v4[4] = {0, 0, 0, 1}; return Value::vector(4, v4); }
+                case Kw::u: { next(); const double v2[2] = {1, 0}; return Value::vector(2, v2); }
+                case Kw::v: { next(); const double v2[2] = {0, 1}; return Value::vector(2, v2); }
+                case Kw::pi: next(); return Value::number(3.1415926535897932384626);
+                case Kw::true_: case Kw::yes: case Kw::on: next(); return Value::number(1);
+                case Kw::false_: case Kw::no: case Kw::off: next(); return Value::number(0);
+                case Kw::clock: next(); return Value::number(options_.animation.clock);
+                case Kw::clock_delta: next(); return Value::number(options_.animation.clockDelta);
+                case Kw::clock_on: next(); return Value::number(options_.animation.clockOn ? 1 : 0);
+                case Kw::initial_clock: next(); return Value::number(options_.animation.initialClock);
+                case Kw::final_clock: next(); return Value::number(options_.animation.finalClock);
+                case Kw::initial_frame: next(); return Value::number(options_.animation.initialFrame);
+                case Kw::final_frame: next(); return Value::number(options_.animation.finalFrame);
+                case Kw::frame_number: next(); return Value::number(options_.animation.frameNumber);
+                case Kw::image_width: next(); return Value::number(options_.imageWidth);
+                case Kw::image_height: next(); return Value::number(options_.imageHeight);
+                case Kw::version: next(); return Value::number(version_);
+                case Kw::color: case Kw::colour:
+                    next();
+                    return parseNumeric(true);
+                case Kw::rgb: case Kw::rgbf: case Kw::rgbt: case Kw::rgbft: case Kw::srgb: case Kw::srgbf:
+                case Kw::srgbt: case Kw::srgbft: case Kw::red: case Kw::green: case Kw::blue: case Kw::filter:
+                case Kw::transmit:
+                    return colorKeyword(colorCtx);
+                default:
+                    if (isBuiltinFunction(Kw(t.id))) return builtin(Kw(t.id), at);
+                    break;
+            }
+            break;
+        default:
+            break;
+    }
+    error(at, "expected a numeric expression, found " + describe());
+}
+
+Value Interpreter::vectorLiteral() {
+    const Loc at = loc();
+    next();  // '<'
+    std::array<double, 5> c{};
+    int n = 0;
+    for (;;) {
+        if (n == 5) error(at, "a vector has at most 5 components");
+        const Loc compAt = loc();
+        const Value v = additive(false);
+        if (v.type != VType::Float) error(compAt, std::string("a vector component must be a float, found a ") + typeName(v.type));
+        c[n++] = v.c[0];
+        if (acceptSym(',')) continue;
+        if (isSym('>')) break;
+        errorHere("expected ',' or '>' in a vector, found " + describe());
+    }
+    next();
+    if (n < 2) error(at, "a vector needs at least 2 components");
+    return Value::vector(n, c.data());
+}
+
+Value Interpreter::identifierValue(bool colorCtx) {
+    const Loc at = loc();
+    const uint32_t id = cur_.id;
+    Binding* b = scopes_.find(id);
+    if (!b) error(at, "undeclared identifier '" + std::string(names_.name(id)) + "'");
+    if (b->deprecated) {
+        const std::string msg = b->deprecatedMessage != UINT32_MAX
+                                    ? deprecatedMessages_[b->deprecatedMessage]
+                                    : "identifier " + std::string(names_.name(id)) + " was declared deprecated";
+        if (b->deprecatedOnce) b->deprecated = false;
+        warning(at, msg);
+    }
+    const Value v = b->value;
+    next();
+    switch (v.type) {
+        case VType::Float: case VType::Vector:
+            return v;
+        case VType::Color:
+            return colorCtx ? colorComponents(v) : v;
+        case VType::Array: {
+            if (!isSym('[')) error(at, "array '" + std::string(names_.name(id)) + "' needs an index here");
+            Value e = arrayElement(v, false, nullptr);
+            if (!e.isNumeric())
+                error(at, "element of array '" + std::string(names_.name(id)) + "' is a " + typeName(e.type) + ", not a number");
+            return e;
+        }
+        case VType::Function: return callFunction(v, at);
+        case VType::Spline: return callSpline(v, at);
+        default:
+            error(at, std::string("expected a numeric expression, found ") + typeName(v.type) + " identifier '" +
+                          std::string(names_.name(id)) + "'");
+    }
+}
+
+// `A[i][j]` with the array value given and '[' current: the element (Undefined when unset and
+// forAssign; an error otherwise).
+Value Interpreter::arrayElement(const Value& arr, bool forAssign, std::vector<int>* indexOut) {
+    const ArrayData& a = arr.arr();
+    size_t flat = 0;
+    for (size_t d = 0; d < a.sizes.size(); ++d) {
+        const Loc at = loc();
+        expectSym('[', "for the next array dimension");
+        const double i = toFloat(fullExpression(), at, "an array index");
+        expectSym(']', "after an array index");
+        const int k = int(i);
+        if (k < 0 || k >= a.sizes[d])
+            error(at, "array index " + std::to_string(k) + " is out of range 0.." + std::to_string(a.sizes[d] - 1));
+        flat = flat * size_t(a.sizes[d]) + size_t(k);
+        if (indexOut) indexOut->push_back(k);
+    }
+    const Value& e = a.elems[flat];
+    if (!e.defined() && !forAssign) errorHere("array element is used before it was given a value");
+    return e;
+}
+
+// `rgb E` and its kin, and `red F` ... starting a colour.
+Value Interpreter::colorKeyword(bool colorCtx) {
+    (void)colorCtx;
+    const Kw k = kw();
+    const Loc at = loc();
+    next();
+    if (k == Kw::red || k == Kw::green || k == Kw::blue || k == Kw::filter || k == Kw::transmit) {
+        Value c = Value::color(0, 0, 0);
+        const int i = k == Kw::red ? 0 : k == Kw::green ? 1 : k == Kw::blue ? 2 : k == Kw::filter ? 3 : 4;
+        c.c[i] = toFloat(additive(false), at, keywordName(k));
+        return colorComponents(std::move(c));
+    }
+    const Value v = additive(false);
+    if (!v.isNumeric()) error(at, std::string("expected a colour vector after ") + std::string(keywordName(k)));
+    const bool srgb = k == Kw::srgb || k == Kw::srgbf || k == Kw::srgbt || k == Kw::srgbft;
+    const bool hasF = k == Kw::rgbf || k == Kw::rgbft || k == Kw::srgbf || k == Kw::srgbft;
+    const bool hasT = k == Kw::rgbt || k == Kw::rgbft || k == Kw::srgbt || k == Kw::srgbft;
+    const int want = 3 + hasF + hasT;
+    // A float fills the components the keyword names; a vector gives them in order (measured
+    // with POV-Ray 3.7: `rgb <1,2,3,4>` keeps the 4th as filter, with a warning).
+    std::array<double, 5> in{};
+    if (v.type == VType::Float) {
+        in.fill(v.c[0]);
+    } else {
+        for (int i = 0; i < v.dim; ++i) in[i] = v.c[i];
+        if (v.dim > want && v.type == VType::Vector) warning(at, "suspicious expression after " + std::string(keywordName(k)) + ": more components than it takes");
+    }
+    Value c = Value::color(in[0], in[1], in[2]);
+    if (k == Kw::rgb || k == Kw::srgb) {
+        if (v.type == VType::Vector && v.dim > 3) c.c[3] = in[3];
+        if (v.type == VType::Vector && v.dim > 4) c.c[4] = in[4];
+    } else if (hasF && hasT) {
+        c.c[3] = in[3];
+        c.c[4] = in[4];
+    } else if (hasF) {
+        c.c[3] = in[3];
+    } else if (hasT) {
+        c.c[4] = in[3];
+    }
+    if (srgb) {
+        // sRGB-encoded components decoded to linear, then to the working gamma (assumed_gamma).
+        const double gamma = assumedGamma_ > 0 ? assumedGamma_ : 1.0;
+        for (int i = 0; i < 3; ++i) {
+            const double s = c.c[i];
+            const double a = std::fabs(s);
+            const double lin = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
+            c.c[i] = std::copysign(std::pow(lin, 1.0 / gamma), s);
+        }
+    }
+    return colorComponents(std::move(c));
+}
+
+// `red F green F ...` after a colour: each replaces one component.
+Value Interpreter::colorComponents(Value c) {
+    for (;;) {
+        const Kw k = kw();
+        int i;
+        switch (k) {
+            case Kw::red: i = 0; break;
+            case Kw::green: i = 1; break;
+            case Kw::blue: i = 2; break;
+            case Kw::filter: i = 3; break;
+            case Kw::transmit: i = 4; break;
+            default: return c;
+        }
+        const Loc at = loc();
+        next();
+        c.c[i] = toFloat(additive(false), at, keywordName(k));
+    }
+}
+
+}  // namespace rays::sdl

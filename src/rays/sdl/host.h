@@ -1,0 +1,42 @@
+// The boundary between the scene language and whoever reads scenes with it (as Lua's API is for
+// its host): the language knows which keywords start scene items and asks the host to read
+// them; the host reads them with the interpreter's token and expression calls and gives back an
+// Item; top-level items and `#default` go to the host. Parse-time questions about geometry
+// (trace, inside, min_extent, max_extent) are answered by the host too.
+#pragma once
+#include <string>
+
+#include "rays/sdl/item.h"
+#include "rays/sdl/keywords.h"
+
+namespace rays::sdl {
+
+class Interpreter;
+
+class ItemHost {
+public:
+    virtual ~ItemHost() = default;
+    /// True when keyword k starts a scene item (sphere, union, texture, pigment, camera, ...).
+    virtual bool startsItem(Kw k) const = 0;
+    /// Reads the item whose keyword is the current token; returns it with the token after it current.
+    virtual ItemRef readItem(Interpreter& in) = 0;
+    /// A top-level item of the scene (an object, camera, light, global_settings, fog, ...).
+    virtual void topLevel(Interpreter& in, const ItemRef& item) = 0;
+    /// `#default { ... }`: the item is a texture, pigment, normal or finish.
+    virtual void setDefault(Interpreter& in, const ItemRef& item) = 0;
+
+    /// Parse-time geometry. found = false when the host cannot answer (the caller then warns
+    /// that the feature is not available yet and uses zeros).
+    struct TraceResult {
+        bool supported = false;
+        bool hit = false;
+        double point[3]{}, normal[3]{};
+    };
+    virtual TraceResult trace(const Item& object, const double origin[3], const double dir[3]) = 0;
+    /// inside(): 1 inside, 0 outside, -1 not supported.
+    virtual int inside(const Item& object, const double point[3]) = 0;
+    /// min_extent / max_extent: false when not supported.
+    virtual bool extent(const Item& object, double lo[3], double hi[3]) = 0;
+};
+
+}  // namespace rays::sdl

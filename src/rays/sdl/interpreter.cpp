@@ -1,0 +1,352 @@
+// The interpreter's frames: files opened and lexed once, the token fetch that runs directives and
+// expands macros on the way, macro calls and returns, the top-level loop and messages.
+#include "rays/sdl/interpreter.h"
+
+#include <filesystem>
+#include <sys/stat.h>
+
+#include "rays/error.h"
+#include "rays/io/file_text.h"
+#include "rays/sdl/frames.h"
+#include "rays/sdl/lexer.h"
+
+namespace rays::sdl {
+
+namespace fs = std::filesystem;
+
+Interpreter::Interpreter(const LanguageOptions& options, ItemHost& host, Diagnostics diagnostics, Limits limits)
+    : options_(options), host_(host), diag_(std::move(diagnostics)), limits_(limits) {}
+
+Interpreter::~Interpreter() = default;
+
+Interpreter::NestGuard::NestGuard(Interpreter& in) : in_(in) {
+    if (++in_.nesting_ > in_.limits_.nesting) {
+        --in_.nesting_;
+        in_.errorHere("nesting deeper than " + std::to_string(in_.limits_.nesting) + " levels");
+    }
+}
+
+// ---- files ---------------------------------------------------------------------------------------
+
+namespace {
+bool isRegularFile(const std::string& p) {
+    struct stat st {};
+    return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+bool isDirectory(const std::string& p) {
+    struct stat st {};
+    return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+}  // namespace
+
+const SourceFile& Interpreter::openFile(const std::string& path, const std::string& shownName) {
+    if (auto it = fileByPath_.find(path); it != fileByPath_.end()) return *files_[it->second];
+    if (isDirectory(path)) failFile(shownName, "is a directory, not a scene file");
+    FileText text(path);
+    if (text.status() == FileText::Status::CannotOpen) failFile(shownName, "cannot open file");
+    if (text.status() == FileText::Status::CannotRead) failFile(shownName, "cannot read file");
+    auto f = std::make_unique<SourceFile>();
+    f->id = uint32_t(files_.size());
+    f->path = path;
+    f->shownName = shownName;
+    lexFile(text.text(), *f, names_);
+    fileByPath_.emplace(path, f->id);
+    files_.push_back(std::move(f));
+    return *files_.back();
+}
+
+const SourceFile& Interpreter::textFile(std::string_view text, const std::string& shownName) {
+    auto f = std::make_unique<SourceFile>();
+    f->id = uint32_t(files_.size());
+    f->path = shownName;
+    f->shownName = shownName;
+    lexFile(text, *f, names_);
+    files_.push_back(std::move(f));
+    return *files_.back();
+}
+
+std::string Interpreter::findFile(const std::string& name) const {
+    if (name.empty()) return {};
+    const fs::path p(name);
+    auto tryPath = [](const fs::path& candidate) -> std::string {
+        const std::string s = candidate.string();
+        if (isRegularFile(s)) return s;
+        if (!candidate.has_extension() && isRegularFile(s + ".inc")) return s + ".inc";
+        return {};
+    };
+    if (p.is_absolute()) return tryPath(p);
+    std::vector<std::string> dirs{sceneFolder_};
+    for (const std::string& d : options_.libraryPaths) dirs.push_back(d);
+    if (!options_.installedIncludeDir.empty()) dirs.push_back(options_.installedIncludeDir);
+    for (const std::string& d : dirs)
+        if (std::string found = tryPath(fs::path(d) / p); !found.empty()) return found;
+    return {};
+}
+
+const std::string& Interpreter::fileName(uint32_t fileId) const { return files_[fileId]->shownName; }
+
+// ---- running -------------------------------------------------------------------------------------
+
+void Interpreter::declareGlobal(const std::string& name, Value v) {
+    scopes_.declare(names_.intern(name), std::move(v));
+}
+
+void Interpreter::run(const std::string& path) {
+    const fs::path p(path);
+    sceneFolder_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
+    const SourceFile& f = openFile(path, path);
+    Frame fr;
+    fr.kind = Frame::Main;
+    pushFile(f, std::move(fr));
+    topLevelLoop();
+}
+
+void Interpreter::runText(std::string_view text, const std::string& shownName, const std::string& folder) {
+    sceneFolder_ = folder;
+    const SourceFile& f = textFile(text, shownName);
+    Frame fr;
+    fr.kind = Frame::Main;
+    pushFile(f, std::move(fr));
+    topLevelLoop();
+}
+
+void Interpreter::pushFile(const SourceFile& f, Frame&& frame) {
+    frame.file = &f;
+    frame.pos = 0;
+    if (frame.kind == Frame::Include) {
+        scopes_.pushLevel();
+        frame.ownScope = true;
+    }
+    frames_.push_back(std::move(frame));
+}
+
+void Interpreter::topLevelLoop() {
+    for (;;) {
+        const Token& t = tok();
+        if (t.kind == Tk::End) break;
+        if (t.kind == Tk::Name && Names::isKeyword(t.id) && host_.startsItem(Kw(t.id))) {
+            NestGuard guard(*this);
+            ItemRef item = host_.readItem(*this);
+            host_.topLevel(*this, item);
+            continue;
+        }
+        if (isSym(';')) {  // POV-Ray accepts stray semicolons between items
+            next();
+            continue;
+        }
+        if (isIdentifier() && !identBinding())
+            errorHere("undeclared identifier '" + std::string(names_.name(t.id)) + "'");
+        if (isIdentifier())
+            errorHere("an identifier of type " + std::string(typeName(identBinding()->value.type)) +
+                      " cannot stand alone; use object { " + std::string(names_.name(t.id)) + " } for an object");
+        errorHere("expected a scene item (object, light_source, camera, ...), found " + describe());
+    }
+}
+
+void Interpreter::tick() {
+    if ((++ticks_ & 0xFFFF) == 0) {
+        if (diag_.checkInterrupt) diag_.checkInterrupt();
+        if (ticks_ > limits_.tokens) errorHere("the parse read more than " + std::to_string(limits_.tokens) + " tokens");
+    }
+}
+
+void Interpreter::fetch(bool expandMacros) {
+    for (;;) {
+        tick();
+        Frame& f = frames_.back();
+        const Token& t = f.file->tokens[f.pos];
+        if (t.kind == Tk::End) {
+            if (frames_.size() == 1) {
+                if (!f.ctl.empty()) {
+                    const Ctl& open = f.ctl.back();
+                    error(open.loc, "this directive is never closed by #end (end of file reached)");
+                }
+                cur_ = t;
+                curLoc_ = Loc{f.file->id, t.line, t.col};
+                have_ = true;
+                return;
+            }
+            endOfFrame();
+            continue;
+        }
+        ++f.pos;
+        if (t.kind == Tk::Directive) {
+            directive(t);
+            if (have_) return;  // a directive that looked ahead left the token after it current
+            continue;
+        }
+        if (expandMacros && t.kind == Tk::Name && !Names::isKeyword(t.id)) {
+            const Binding* b = scopes_.find(t.id);
+            if (b && b->value.type == VType::Macro) {
+                const Value m = b->value;
+                invokeMacro(t, m);
+                continue;
+            }
+        }
+        cur_ = t;
+        curLoc_ = Loc{f.file->id, t.line, t.col};
+        have_ = true;
+        return;
+    }
+}
+
+void Interpreter::endOfFrame() {
+    Frame& f = frames_.back();
+    if (!f.ctl.empty()) error(f.ctl.back().loc, "this directive is never closed by #end (end of file reached)");
+    if (f.kind == Frame::Macro) error(f.site, "macro body ended without #end");
+    if (f.ownScope) scopes_.popLevel();
+    frames_.pop_back();
+}
+
+// ---- macros --------------------------------------------------------------------------------------
+
+void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
+    const auto def = std::static_pointer_cast<const MacroDef>(macroValue.ref);
+    const Loc at{frames_.back().file->id, nameTok.line, nameTok.col};
+    const std::string name(names_.name(nameTok.id));
+    if (!isSym('(')) error(at, "macro " + name + " must be called with a parameter list: " + name + "(...)");
+    next();
+    std::vector<Value> args;  // Undefined: an argument left empty
+    std::vector<ByRefArg> byRef;
+    const size_t n = def->params.size();
+    if (!isSym(')')) {
+        for (;;) {
+            if (args.size() >= n)
+                errorHere("macro " + name + " takes " + std::to_string(n) + " parameters, more were given");
+            if (isSym(',') || isSym(')')) {
+                args.emplace_back();
+            } else if (!passByReference(def->params[args.size()], args, byRef)) {
+                args.push_back(parseRValue());
+            }
+            if (isSym(')')) break;
+            if (!isSym(','))
+                errorHere("expected ',' or ')' in the arguments of macro " + name + ", found " + describe());
+            next();
+        }
+    }
+    next();  // ')'
+    while (args.size() < n) args.emplace_back();
+    for (size_t i = 0; i < n; ++i)
+        if (!args[i].defined() && !def->optional[i])
+            error(at, "macro " + name + " takes " + std::to_string(n) + " parameters; '" +
+                          std::string(names_.name(def->params[i])) + "' was not given");
+    uint32_t macroFrames = 0;
+    for (const Frame& f : frames_) macroFrames += f.kind == Frame::Macro;
+    if (macroFrames >= limits_.macroDepth)
+        error(at, "macro calls nested deeper than " + std::to_string(limits_.macroDepth) + " (runaway recursion?)");
+    scopes_.pushLevel();
+    for (size_t i = 0; i < args.size(); ++i)
+        if (args[i].defined()) scopes_.local(def->params[i], std::move(args[i]));
+    Frame fr;
+    fr.kind = Frame::Macro;
+    fr.file = files_[def->file].get();
+    fr.pos = def->bodyStart;
+    fr.site = at;
+    fr.macro = def;
+    fr.byRef = std::move(byRef);
+    fr.ownScope = true;
+    frames_.push_back(std::move(fr));
+}
+
+// A lone identifier is passed by reference (POV-Ray 3.7 reference, "Returning Values Via
+// Parameters"): the macro's changes to the parameter are copied back to it on return.
+bool Interpreter::passByReference(uint32_t param, std::vector<Value>& args, std::vector<ByRefArg>& byRef) {
+    if (!isIdentifier()) return false;
+    const Frame& fr = frames_.back();
+    const Token& after = fr.file->tokens[fr.pos];
+    if (after.kind != Tk::Symbol || (after.sym != ',' && after.sym != ')')) return false;
+    Binding* b = identBinding();
+    if (!b)
+        errorHere("cannot pass the undeclared identifier '" + std::string(names_.name(cur_.id)) +
+                  "' as a macro parameter; declare it first");
+    args.push_back(copyValue(b->value));
+    byRef.push_back(ByRefArg{param, cur_.id, b->serial});
+    next();
+    return true;
+}
+
+void Interpreter::returnFromMacro() {
+    Frame& f = frames_.back();
+    std::vector<std::pair<const ByRefArg*, Value>> back;
+    for (const ByRefArg& r : f.byRef)
+        if (Binding* b = scopes_.find(r.param); b && b->level == scopes_.level()) back.emplace_back(&r, b->value);
+    scopes_.popLevel();
+    for (auto& [r, v] : back)
+        if (Binding* target = scopes_.findSerial(r->target, r->serial)) target->value = std::move(v);
+    frames_.pop_back();
+}
+
+// ---- tokens and messages -------------------------------------------------------------------------
+
+void Interpreter::expectSym(char c, std::string_view context) {
+    if (!isSym(c)) errorHere(std::string("expected '") + c + "' " + std::string(context) + ", found " + describe());
+    next();
+}
+
+void Interpreter::expectKw(Kw k, std::string_view context) {
+    if (!isKw(k))
+        errorHere("expected '" + std::string(keywordName(k)) + "' " + std::string(context) + ", found " + describe());
+    next();
+}
+
+Binding* Interpreter::identBinding() {
+    if (!isIdentifier()) return nullptr;
+    return scopes_.find(cur_.id);
+}
+
+std::string Interpreter::describe() {
+    const Token& t = tok();
+    switch (t.kind) {
+        case Tk::End: return "end of file";
+        case Tk::Number: {
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "number %g", t.number);
+            return buf;
+        }
+        case Tk::String: return "a string";
+        case Tk::Name:
+            if (Names::isKeyword(t.id)) return "'" + std::string(names_.name(t.id)) + "'";
+            if (const Binding* b = scopes_.find(t.id))
+                return std::string(typeName(b->value.type)) + " identifier '" + std::string(names_.name(t.id)) + "'";
+            return "undeclared identifier '" + std::string(names_.name(t.id)) + "'";
+        case Tk::Directive: return "'#" + std::string(names_.name(t.id)) + "'";
+        case Tk::Symbol:
+            switch (t.sym) {
+                case kLessEq: return "'<='";
+                case kGreaterEq: return "'>='";
+                case kNotEq: return "'!='";
+                default: return std::string("'") + char(t.sym) + "'";
+            }
+    }
+    return "?";
+}
+
+std::string Interpreter::where(const Loc& at) const {
+    std::string s = files_.empty() ? std::string("?") : files_[at.file]->shownName;
+    if (at.line > 0) s += ":" + std::to_string(at.line) + ":" + std::to_string(at.col);
+    return s;
+}
+
+std::string Interpreter::context() const {
+    std::string s;
+    for (size_t i = frames_.size(); i-- > 1;) {
+        const Frame& f = frames_[i];
+        s += s.empty() ? " (" : "; ";
+        if (f.kind == Frame::Macro)
+            s += "in macro " + std::string(names_.name(f.macro->name)) + " called at " + where(f.site);
+        else
+            s += "in " + f.file->shownName + " included from " + where(f.site);
+    }
+    return s.empty() ? s : s + ")";
+}
+
+void Interpreter::error(const Loc& at, const std::string& msg) { throw Error(where(at) + ": error: " + msg + context()); }
+
+void Interpreter::warning(const Loc& at, const std::string& msg) {
+    const int seen = ++warnedTimes_[msg];
+    if (seen > 3) return;  // the same warning is shown three times at most
+    const std::string line = where(at) + ": warning: " + msg + (seen == 3 ? " (further ones not shown)" : "");
+    if (diag_.warning) diag_.warning(line);
+}
+
+}  // namespace rays::sdl

@@ -1,0 +1,288 @@
+// The interpreter of POV-Ray's scene language. It reads files as token arrays (lexer.h), runs
+// directives as it meets them (#declare #local #undef #if #ifdef #ifndef #elseif #else #switch
+// #case #range #break #while #for #macro #include #version #default #debug #warning #error
+// #fopen #read #write #fclose), expands macro calls, and evaluates expressions. Scene items are
+// read by the host (host.h) through the calls below; the interpreter knows nothing of rendering.
+//
+// Tokens are fetched lazily, as POV-Ray does: tok() fetches the current token when it has not
+// been fetched yet (running any directive and expanding any macro met on the way), next()
+// consumes it. A reader that has consumed a closing '}' has not looked further, so a
+// `#declare O = sphere {...}` binds O before the directive after it runs.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "rays/sdl/host.h"
+#include "rays/sdl/item.h"
+#include "rays/sdl/names.h"
+#include "rays/sdl/options.h"
+#include "rays/sdl/pov_random.h"
+#include "rays/sdl/scopes.h"
+#include "rays/sdl/source_file.h"
+#include "rays/sdl/token.h"
+#include "rays/sdl/value.h"
+
+namespace rays::sdl {
+
+/// Where messages go: warnings and #debug text (each warning a complete line without '\n'),
+/// and how a long parse learns of Ctrl-C.
+struct Diagnostics {
+    std::function<void(const std::string&)> warning;
+    std::function<void(const std::string&)> debug;  ///< #debug, #render, #statistics text as written
+    std::function<void()> checkInterrupt;            ///< called now and then; throws to stop the parse (Ctrl-C)
+};
+
+/// Limits that keep every parse bounded (docs/scene-language.md, "Limits").
+struct Limits {
+    uint64_t loopIterations = 100'000'000;  ///< #while and #for iterations in one parse
+    uint32_t macroDepth = 10'000;            ///< nested macro calls
+    uint32_t includeDepth = 64;              ///< nested include files
+    uint32_t nesting = 4'000;                ///< nested items, expressions and parentheses
+    uint64_t tokens = uint64_t(1) << 30;     ///< tokens consumed (a runaway recursion ends here)
+};
+
+class Interpreter {
+public:
+    Interpreter(const LanguageOptions& options, ItemHost& host, Diagnostics diagnostics, Limits limits = {});
+    ~Interpreter();
+    Interpreter(const Interpreter&) = delete;
+    Interpreter& operator=(const Interpreter&) = delete;
+
+    /// Parses the scene file at path to its end, giving top-level items to the host. Throws
+    /// Error "FILE:LINE:COL: error: ..." (with the include chain and macro calls) on bad input.
+    void run(const std::string& path);
+    /// Parses scene text held in memory (tests, fuzzing); shownName names it in messages.
+    void runText(std::string_view text, const std::string& shownName, const std::string& folder = ".");
+
+    // ---- tokens -------------------------------------------------------------------------
+    /// The current token (fetched now if it was not yet: directives run, macros expand).
+    const Token& tok() {
+        if (!have_) fetch(true);
+        return cur_;
+    }
+    /// Consumes the current token.
+    void next() {
+        if (!have_) fetch(true);
+        have_ = false;
+    }
+    /// The current token without expanding a macro name (for names being defined or tested).
+    const Token& tokNoMacro() {
+        if (!have_) fetch(false);
+        return cur_;
+    }
+    Loc loc() {
+        tok();
+        return curLoc_;
+    }
+    bool isKw(Kw k) { return tok().kind == Tk::Name && cur_.id == uint32_t(k); }
+    bool isSym(char c) { return tok().kind == Tk::Symbol && cur_.sym == uint8_t(c); }
+    bool isName() { return tok().kind == Tk::Name; }
+    bool isKeyword() { return tok().kind == Tk::Name && Names::isKeyword(cur_.id); }
+    bool isIdentifier() { return tok().kind == Tk::Name && !Names::isKeyword(cur_.id); }
+    Kw kw() { return isKeyword() ? Kw(cur_.id) : Kw::Count; }
+    bool atEnd() { return tok().kind == Tk::End; }
+    bool acceptSym(char c) {
+        if (!isSym(c)) return false;
+        next();
+        return true;
+    }
+    bool acceptKw(Kw k) {
+        if (!isKw(k)) return false;
+        next();
+        return true;
+    }
+    void expectSym(char c, std::string_view context);
+    void expectKw(Kw k, std::string_view context);
+    /// The binding of the current identifier token, or null (undeclared, or not an identifier).
+    Binding* identBinding();
+    /// The current token's spelling for messages: "'sphere'", "'}'", "number 3.5", "end of file".
+    std::string describe();
+    std::string_view spelling(uint32_t nameId) const { return names_.name(nameId); }
+
+    // ---- expressions --------------------------------------------------------------------------
+    /// True when the current token can start a float, vector or colour expression.
+    bool atNumericStart();
+    /// True when the current token can start a string expression.
+    bool atStringStart();
+    /// A float, vector or colour expression (its type as written); colorContext allows colour
+    /// keywords (rgb, red, filter, ...) inside it, as after `color`.
+    Value parseNumeric(bool colorContext = false);
+    double parseFloat();
+    int parseInt(std::string_view what);
+    /// A vector promoted or cut to dim components (a float fills all of them).
+    std::array<double, 5> parseVector(int dim);
+    /// A colour: optional `color`/`colour`, then any colour expression; a float fills all five
+    /// components, a vector leaves filter and transmit 0 (POV-Ray's promotion rules).
+    Value parseColor();
+    std::string parseString();
+    /// `[Bool]` after a flag keyword: true when no float expression follows.
+    bool parseOptionalBool();
+    /// Any value that may follow `=` in #declare: numeric, string, item, array, function, spline.
+    Value parseRValue();
+    /// Reads the `function { ... }` at the current token (`function` keyword current).
+    Value parseFunction();
+    /// Reads `spline { ... }` (keyword current).
+    Value parseSplineBlock();
+
+    // ---- messages -------------------------------------------------------------------------------
+    [[noreturn]] void error(const Loc& at, const std::string& msg);
+    [[noreturn]] void errorHere(const std::string& msg) { error(loc(), msg); }
+    void warning(const Loc& at, const std::string& msg);
+    /// "file:line:col".
+    std::string where(const Loc& at) const;
+    const std::string& fileName(uint32_t fileId) const;
+    /// Folder of the main scene file ('.' when it has none).
+    const std::string& sceneFolder() const { return sceneFolder_; }
+    /// Resolves a file name as #include does (scene folder, library paths, installed includes);
+    /// empty when not found.
+    std::string findFile(const std::string& name) const;
+
+    // ---- state the host reads -----------------------------------------------------------------
+    double version() const { return version_; }
+    bool versionSeen() const { return versionSeen_; }
+    const LanguageOptions& options() const { return options_; }
+    ItemHost& host() { return host_; }
+    Names& names() { return names_; }
+    /// `assumed_gamma` as the host read it from global_settings (needed for srgb colours); 0 unset.
+    void setAssumedGamma(double g) { assumedGamma_ = g; }
+    double assumedGamma() const { return assumedGamma_; }
+    /// Counts a nesting level of the host's readers; throws past Limits::nesting.
+    class NestGuard {
+    public:
+        explicit NestGuard(Interpreter& in);
+        ~NestGuard() { --in_.nesting_; }
+        NestGuard(const NestGuard&) = delete;
+        NestGuard& operator=(const NestGuard&) = delete;
+
+    private:
+        Interpreter& in_;
+    };
+
+    /// Defines identifier `name` at global level (command-line Declare=NAME=VALUE).
+    void declareGlobal(const std::string& name, Value v);
+    Scopes& scopes() { return scopes_; }
+
+private:
+    friend class DirectiveRunner;
+    struct Ctl;
+    struct Frame;
+    /// A macro parameter passed by reference: copied back to the caller's binding on return.
+    struct ByRefArg {
+        uint32_t param = 0;   ///< the macro's parameter name
+        uint32_t target = 0;  ///< the caller's identifier
+        uint32_t serial = 0;  ///< its binding
+    };
+
+    // files and frames (interpreter.cpp)
+    const SourceFile& openFile(const std::string& path, const std::string& shownName);
+    const SourceFile& textFile(std::string_view text, const std::string& shownName);
+    void pushFile(const SourceFile& f, Frame&& frame);
+    void fetch(bool expandMacros);
+    void endOfFrame();
+    void topLevelLoop();
+    std::string context() const;
+    void tick();
+
+    // directives (directives.cpp)
+    void directive(const Token& t);
+    void dirInclude(const Loc& at);
+    void dirDeclare(const Loc& at, bool isLocal);
+    void dirUndef();
+    void dirIf(const Loc& at, uint32_t directivePos);
+    void dirIfdef(const Loc& at, bool wantDefined);
+    void dirElse(const Loc& at, bool isElseif);
+    void dirEnd(const Loc& at);
+    void dirSwitch(const Loc& at);
+    void dirCase(const Loc& at, bool isRange);
+    void dirBreak(const Loc& at);
+    enum class SkipStop;
+    void switchClauses(SkipStop s, const Loc& opener);
+    bool caseMatches(bool isRange);
+    void dirWhile(const Loc& at, uint32_t directivePos);
+    void dirFor(const Loc& at);
+    void dirMacro(const Loc& at);
+    void dirVersion();
+    void dirDefault();
+    void dirMessage(const Loc& at, Kw which);
+    void dirFopen(const Loc& at);
+    void dirFclose();
+    void dirRead(const Loc& at);
+    void dirWrite(const Loc& at);
+    bool condition(const char* directiveName);
+    bool definedTest();
+    void finishDirectiveParen();
+    uint32_t readNewName(const char* what);
+    /// Skips raw tokens of the current frame to the directive that ends the skipped part.
+    enum class SkipStop { Else, Elseif, End, Case, Range };
+    SkipStop skip(bool stopAtElse, bool stopAtCase, const Loc& opener, const char* openerName);
+    void skipPastEnds(int count, const Loc& opener);
+    void invokeMacro(const Token& nameTok, const Value& macro);
+    bool passByReference(uint32_t param, std::vector<Value>& args, std::vector<ByRefArg>& byRef);
+    void returnFromMacro();
+    void assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at);
+    Value readArrayValue(const Loc& at);
+
+    // expressions (expressions.cpp)
+    Value fullExpression();
+    Value logical();
+    Value relational();
+    Value additive(bool colorCtx);
+    Value term(bool colorCtx);
+    Value unary(bool colorCtx);
+    Value factor(bool colorCtx);
+    Value postfix(Value v);
+    Value identifierValue(bool colorCtx);
+    Value colorKeyword(bool colorCtx);
+    Value colorComponents(Value c);
+    Value vectorLiteral();
+    double toFloat(const Value& v, const Loc& at, std::string_view what);
+    bool truth(const Value& v, const Loc& at);
+    Value arrayElement(const Value& arr, bool forAssign, std::vector<int>* indexOut);
+
+    // built-in functions (builtins.cpp)
+    bool isBuiltinFunction(Kw k) const;
+    Value builtin(Kw k, const Loc& at);
+    std::string builtinString(Kw k, const Loc& at);
+    Value callFunction(const Value& f, const Loc& at);
+    Value callSpline(const Value& s, const Loc& at);
+    std::vector<Value> callArgs(const char* name, size_t minArgs, size_t maxArgs);
+    bool definedName();
+    bool peekRawSym(char c);
+    bool peekRawSymAfterName(char c);
+    Value parseArray();
+    void arrayInitializer(ArrayData& a, size_t dim, size_t& flat);
+    std::string stringFunction(Kw k, const Loc& at);
+    Value geometryQuery(Kw k, const Loc& at);
+
+    const LanguageOptions& options_;
+    ItemHost& host_;
+    Diagnostics diag_;
+    Limits limits_;
+    Names names_;
+    Scopes scopes_;
+    std::vector<std::unique_ptr<SourceFile>> files_;
+    std::unordered_map<std::string, uint32_t> fileByPath_;
+    std::vector<Frame> frames_;
+    std::string sceneFolder_ = ".";
+
+    Token cur_;
+    Loc curLoc_;
+    bool have_ = false;
+
+    double version_ = 3.62;
+    bool versionSeen_ = false;
+    double assumedGamma_ = 0;
+    uint32_t nesting_ = 0;
+    uint64_t iterations_ = 0;
+    uint64_t ticks_ = 0;
+    std::vector<std::string> deprecatedMessages_;
+    RandomStreams random_;
+    std::unordered_map<std::string, int> warnedTimes_;
+};
+
+}  // namespace rays::sdl
