@@ -76,17 +76,19 @@ Outcome<PovString> povVstr(int dims, std::span<const double> given, const PovStr
     const int n = std::clamp(dims, 2, 5);
     std::array<double, 5> c{};
     std::copy_n(given.begin(), std::min<size_t>(given.size(), size_t(n)), c.begin());
+    const auto tooLong = [] {
+        return Outcome<PovString>::failure(
+            "vstr: a formatted component would be longer than 767 characters (POV-Ray 3.7 aborts)");
+    };
     PovString out;
     for (int i = 0; i < n; ++i) {
         if (i > 0) out += separator;
         if (minLen == INT_MIN) continue;  // measured: printf refuses the width, components are empty
         const int width = minLen < 0 ? -minLen : minLen;
         // A width or precision this large can only give too long a component.
-        const bool tooLong = width > kVstrMaxComponentLength || precision > kVstrMaxComponentLength - 2;
-        const std::string s = tooLong ? std::string() : printfNumber('f', minLen < 0, width, precision, c[size_t(i)]);
-        if (tooLong || s.size() > size_t(kVstrMaxComponentLength))
-            return Outcome<PovString>::failure(
-                "vstr: a formatted component would be longer than 767 characters (POV-Ray 3.7 aborts)");
+        if (width > kVstrMaxComponentLength || precision > kVstrMaxComponentLength - 2) return tooLong();
+        const std::string s = printfNumber('f', minLen < 0, width, precision, c[size_t(i)]);
+        if (s.size() > size_t(kVstrMaxComponentLength)) return tooLong();
         out += widen(s);
     }
     return {out, {}};
