@@ -6,6 +6,7 @@
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
 #include "rays/sdl/pov_random.h"
+#include "rays/sdl/pov_datetime.h"
 #include "rays/sdl/pov_strings.h"
 
 namespace rays::sdl {
@@ -162,17 +163,13 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
             if (!r.ok()) error(at, r.error);
             return Value::number(r.value);
         }
-        case Kw::asc: {
-            const std::string& s = str(callArgs("asc", 1, 1)[0]);
-            return Value::number(s.empty() ? 0.0 : double(static_cast<unsigned char>(s[0])));
-        }
-        case Kw::strlen: return Value::number(double(str(callArgs("strlen", 1, 1)[0]).size()));
+        case Kw::asc: return Value::number(povAsc(povString(str(callArgs("asc", 1, 1)[0]))));
+        case Kw::strlen: return Value::number(povStrlen(povString(str(callArgs("strlen", 1, 1)[0]))));
         case Kw::strcmp: {
             const auto a = callArgs("strcmp", 2, 2);
-            const int c = str(a[0]).compare(str(a[1]));
-            return Value::number(c < 0 ? -1.0 : c > 0 ? 1.0 : 0.0);
+            return Value::number(povStrcmp(povString(str(a[0])), povString(str(a[1]))));
         }
-        case Kw::val: return Value::number(povVal(str(callArgs("val", 1, 1)[0])));
+        case Kw::val: return Value::number(povVal(povString(str(callArgs("val", 1, 1)[0]))));
         case Kw::file_exists: return Value::number(findFile(str(callArgs("file_exists", 1, 1)[0])).empty() ? 0.0 : 1.0);
         case Kw::vdot: {
             const auto a = callArgs("vdot", 2, 2);
@@ -210,10 +207,7 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
             warning(at, "not rendered yet: vturbulence (gives <0,0,0>)");
             return Value::vec3(0, 0, 0);
         }
-        case Kw::now: {
-            // Days since 2000-01-01 00:00:00 UTC (POV-Ray 3.7 reference, "datetime").
-            return Value::number((double(std::time(nullptr)) - 946684800.0) / 86400.0);
-        }
+        case Kw::now: return Value::number(povNow());
         case Kw::defined: {
             expectSym('(', "after defined");
             const bool d = definedName();

@@ -11,6 +11,7 @@
 #include "rays/io/file_text.h"
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
+#include "rays/sdl/pov_strings.h"
 
 namespace rays::sdl {
 
@@ -209,11 +210,11 @@ void Interpreter::dirWrite(const Loc& at) {
         }
         const Value v = parseNumeric(false);
         if (v.type == VType::Float) {
-            std::fprintf(out, "%g", v.c[0]);
+            const std::string t = povWriteFloat(v.c[0]);
+            std::fwrite(t.data(), 1, t.size(), out);
         } else if (v.isNumeric()) {
-            std::fputc('<', out);
-            for (int i = 0; i < v.dim; ++i) std::fprintf(out, i ? ",%g" : "%g", v.c[i]);
-            std::fputc('>', out);
+            const std::string t = povWriteVector(std::span<const double>(v.c.data(), v.dim));
+            std::fwrite(t.data(), 1, t.size(), out);
         } else {
             error(at, std::string("#write cannot write a ") + typeName(v.type));
         }

@@ -8,6 +8,7 @@
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
 #include "rays/sdl/pov_int.h"
+#include "rays/sdl/pov_datetime.h"
 #include "rays/sdl/pov_strings.h"
 
 namespace rays::sdl {
@@ -72,11 +73,13 @@ std::string Interpreter::parseString() {
     error(at, "expected a string, found " + describe());
 }
 
+// String values are held as bytes (UTF-8 where a scene writes non-ASCII text); the functions
+// below follow POV-Ray's 16-bit string rules (pov_strings.h) and convert at this boundary.
 std::string Interpreter::stringFunction(Kw k, const Loc& at) {
     const std::string name(keywordName(k));
-    auto check = [&](Outcome<std::string> r) {
+    auto check = [&](Outcome<PovString> r) {
         if (!r.ok()) error(at, r.error);
-        return std::move(r.value);
+        return povNarrow(r.value);
     };
     expectSym('(', "after " + name);
     auto comma = [&] { expectSym(',', "between the arguments of " + name); };
@@ -89,7 +92,7 @@ std::string Interpreter::stringFunction(Kw k, const Loc& at) {
             comma();
             const double p = parseFloat();
             close();
-            return check(povStr(v, povInt(l), povInt(p)));
+            return povStr(v, povInt(l), povInt(p));
         }
         case Kw::vstr: {
             const double n = parseFloat();
@@ -98,14 +101,14 @@ std::string Interpreter::stringFunction(Kw k, const Loc& at) {
             const Value v = parseNumeric(false);
             if (!v.isNumeric()) error(vAt, "vstr needs a vector");
             comma();
-            const std::string sep = parseString();
+            const PovString sep = povString(parseString());
             comma();
             const double l = parseFloat();
             comma();
             const double p = parseFloat();
             close();
-            const int dim = v.type == VType::Float ? 1 : v.dim;
-            return check(povVstr(povInt(n), v.c.data(), dim, sep, povInt(l), povInt(p)));
+            const size_t dim = v.type == VType::Float ? 1 : v.dim;
+            return check(povVstr(povInt(n), std::span<const double>(v.c.data(), dim), sep, povInt(l), povInt(p)));
         }
         case Kw::concat: {
             std::string s = parseString();
@@ -120,7 +123,7 @@ std::string Interpreter::stringFunction(Kw k, const Loc& at) {
             return check(povChr(povInt(c)));
         }
         case Kw::substr: {
-            const std::string s = parseString();
+            const PovString s = povString(parseString());
             comma();
             const double p = parseFloat();
             comma();
@@ -129,17 +132,14 @@ std::string Interpreter::stringFunction(Kw k, const Loc& at) {
             return check(povSubstr(s, povInt(p), povInt(l)));
         }
         case Kw::strupr: case Kw::strlwr: {
-            std::string s = parseString();
+            const PovString s = povString(parseString());
             close();
-            for (char& c : s)
-                c = k == Kw::strupr ? char(std::toupper(static_cast<unsigned char>(c)))
-                                    : char(std::tolower(static_cast<unsigned char>(c)));
-            return s;
+            return povNarrow(k == Kw::strupr ? povStrupr(s) : povStrlwr(s));
         }
         case Kw::datetime: {
             const double days = parseFloat();
-            std::string fmt = "%Y-%m-%d %H:%M:%SZ";
-            if (acceptSym(',')) fmt = parseString();
+            PovString fmt = povString(kDatetimeDefaultFormat);
+            if (acceptSym(',')) fmt = povString(parseString());
             close();
             return check(povDatetime(days, fmt));
         }
