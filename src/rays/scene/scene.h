@@ -9,6 +9,7 @@
 #include "rays/scene/light.h"
 #include "rays/scene/mesh.h"
 #include "rays/scene/object.h"
+#include "rays/scene/pov_surface.h"
 #include "rays/scene/texture.h"
 
 namespace rays {
@@ -26,6 +27,9 @@ struct Scene {
     };
     std::vector<TextureTransform> textureTransforms;
     EdgeSettings edges;           ///< feature lines asked for by an `edges { }` block (CLI overrides)
+    /// POV-Ray scenes: surfaces referenced by Material::pov, and the scene-wide settings.
+    std::vector<PovSurface> povSurfaces;
+    PovGlobals pov;
 };
 
 }  // namespace rays

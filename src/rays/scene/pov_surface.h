@@ -1,0 +1,49 @@
+// POV-Ray's surface model for objects of POV-Ray scenes (POV-Ray 3.7 reference, "Finish",
+// "Interior"): finish and interior values, and the colour's transmit, kept apart from the course
+// Material (which stays small for the course's big scenes) and referenced by Material::pov.
+#pragma once
+#include "rays/math/vec3.h"
+
+namespace rays {
+
+struct PovFinish {
+    Vec3 ambient{0.1, 0.1, 0.1};  ///< ambient colour, multiplied by the scene's ambient_light
+    Vec3 emission{0, 0, 0};       ///< emission colour (not multiplied by ambient_light)
+    double diffuse = 0.6;         ///< diffuse amount: C·Lc·diffuse·(N·L)^brilliance
+    double diffuseBack = 0;       ///< diffuse's second value: light from behind the surface
+    double brilliance = 1;
+    double phong = 0, phongSize = 40;       ///< phong·Lc·(R·V)^phong_size
+    double specular = 0, roughness = 0.05;  ///< specular·Lc·(N·H)^(1/roughness)
+    double metallic = 0;                    ///< highlights tinted by the pigment (0..1)
+    Vec3 reflectionMin{0, 0, 0};  ///< reflection seen along the normal (variable reflection)
+    Vec3 reflectionMax{0, 0, 0};  ///< reflection at grazing angles; both equal for plain `reflection C`
+    bool reflectionFresnel = false;
+    double reflectionFalloff = 1, reflectionExponent = 1, reflectionMetallic = 0;
+    bool conserveEnergy = false;
+};
+
+struct PovInterior {
+    double ior = 1;             ///< 1: transparent surfaces let rays through unbent
+    double fadeDistance = 0;    ///< 0: no fading inside
+    double fadePower = 0;
+    Vec3 fadeColor{0, 0, 0};
+};
+
+struct PovSurface {
+    PovFinish finish;
+    PovInterior interior;
+    double transmit = 0;        ///< the pigment's transmit (its filter is Material::filter)
+    bool doubleIlluminate = false;
+};
+
+/// Scene-wide settings of POV-Ray scenes (global_settings, background).
+struct PovGlobals {
+    bool enabled = false;            ///< the scene follows POV-Ray's rules (objects use PovSurface)
+    double assumedGamma = 1.0;       ///< working gamma: output = sRGB(c^assumedGamma)
+    Vec3 ambientLight{1, 1, 1};
+    int maxTraceLevel = 5;
+    double adcBailout = 1.0 / 255.0;
+    Vec3 background{0, 0, 0};
+};
+
+}  // namespace rays
