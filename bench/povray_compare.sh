@@ -78,7 +78,10 @@ if ! command -v povray >/dev/null; then
 fi
 rays=${RAYS:-$repo/build/rays}
 [[ $rays == /* ]] || rays=$(pwd)/$rays
-[ -x "$rays" ] || { echo "povray_compare: no Rays binary at $rays (build first: scripts/build.sh, or set RAYS=...)" >&2; exit 2; }
+if [ ! -x "$rays" ]; then
+  echo "povray_compare: no Rays binary at $rays (build first: scripts/build.sh, or set RAYS=...)" >&2
+  exit 2
+fi
 examples=$(cd "$examples" 2>/dev/null && pwd) || examples=""
 
 # ---- the scenes --------------------------------------------------------------------------------
@@ -214,23 +217,26 @@ export out refdir REFRESH=$refresh WIDTH=$width HEIGHT=$height POV_TIMEOUT=$pov_
   RAYS=$rays INCLUDE=$include
 export -f now_us seconds clean status_of signal_name povray_reference run_scene
 
-# One NUL-separated record per scene: path, name in the results, folder to run from.
+# A scene's name in the results: its path under the examples folder, else other/<absolute path>.
+name_of() { if [ -n "$examples" ] && [[ $1 == "$examples"/* ]]; then echo "${1#"$examples"/}"; else echo "other$1"; fi; }
+
+# One NUL-separated record per scene: path, name, folder to run from (in the copy for examples).
 for s in "${scenes[@]}"; do
-  if [ -n "$examples" ] && [[ $s == "$examples"/* ]]; then
-    rel=${s#"$examples"/}
-    printf '%s\0%s\0%s\0' "$s" "$rel" "$out/work/$(dirname "$rel")"
-  else
-    printf '%s\0%s\0%s\0' "$s" "other${s}" "$(dirname "$s")"
-  fi
+  rel=$(name_of "$s")
+  if [[ $rel == other/* ]]; then dir=$(dirname "$s"); else dir=$out/work/$(dirname "$rel"); fi
+  printf '%s\0%s\0%s\0' "$s" "$rel" "$dir"
 done | xargs -0 -n 3 -P "$jobs" bash -c 'run_scene "$@" || echo "povray_compare: $2 failed" >&2; exit 0' _
 
 # ---- results.tsv -------------------------------------------------------------------------------
 {
-  printf 'scene\trays_status\twarnings\tfirst_error\tnot_rendered\tssim\tpsnr\trays_s\tpovray_s\tpovray_parse_s\tratio\tpovray_status\n'
+  printf 'scene\trays_status\twarnings\tfirst_error\tnot_rendered\tssim\tpsnr\trays_s\tpovray_s'
+  printf '\tpovray_parse_s\tratio\tpovray_status\n'
   for s in "${scenes[@]}"; do
-    if [ -n "$examples" ] && [[ $s == "$examples"/* ]]; then rel=${s#"$examples"/}; else rel=other$s; fi
+    rel=$(name_of "$s")
     row=$out/rows/$(echo "$rel" | tr '/' '%').tsv
-    if [ -f "$row" ]; then cat "$row"; else printf '%s\terror\t0\tthe comparison script failed on this scene\t0\t\t\t\t\t\t\t\n' "$rel"; fi
+    if [ -f "$row" ]; then cat "$row"
+    else printf '%s\terror\t0\tthe comparison script failed on this scene\t0\t\t\t\t\t\t\t\n' "$rel"
+    fi
   done
 } > "$out/results.tsv"
 
