@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(cmake g++ make pkg-config libspng-dev zlib1g-dev libturbojpeg0-dev libstb-dev libtinyobjloader-dev
           libcli11-dev libgtest-dev)
 if [ "${RAYS_BENCH_DEPS:-0}" = 1 ]; then
-  packages+=(libembree-dev libbenchmark-dev libopencv-dev povray hyperfine bc)
+  packages+=(libembree-dev libbenchmark-dev libopencv-dev povray povray-includes povray-examples fonts-povray hyperfine bc)
 fi
 missing=()
 for p in "${packages[@]}"; do

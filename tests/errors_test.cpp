@@ -233,7 +233,7 @@ std::vector<BadInput> catalogue() {
                  "rays: error: The following argument was not expected: --frob (see rays --help)"});
     t.push_back({"unknown-command", {{"scene.pov", kScene}}, {"frobnicate", "scene.pov"}, 2,
                  "rays: error: unknown command 'frobnicate' (commands: render, raycast, sceneinfo, pixelray, firsthit, "
-                 "pixelcolor, printrays, scenes, assets, filter; or the positional form WIDTH HEIGHT INPUT OUTPUT SHADING "
+                 "pixelcolor, printrays, scenes, assets, filter, compare; or the positional form WIDTH HEIGHT INPUT OUTPUT SHADING "
                  "RAYS_PER_PIXEL DEPTH [OBJ])"});
     t.push_back({"positional-shading-9", {{"scene.pov", kScene}}, {"16", "12", "scene.pov", "out.png", "9", "1", "6"}, 2,
                  "rays: error: SHADING_MODEL must be 0 (Blinn-Phong), 1 (Cook-Torrance), 2 (Oren-Nayar), 3 (Lambert), "

@@ -15,6 +15,7 @@
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
 #include "rays/render/course_commands.h"
+#include "compare_command.h"
 #include "filter_command.h"
 #include "heap_setup.h"
 #include "interrupt.h"
@@ -64,20 +65,23 @@ int runPositional(const std::vector<std::string>& a) {
 int run(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "filter")
         return cli::runFilterCommand(std::vector<std::string>(argv + 2, argv + argc));
+    if (argc > 1 && std::string(argv[1]) == "compare")
+        return cli::runCompareCommand(std::vector<std::string>(argv + 2, argv + argc));
     std::vector<std::string> args = cli::normaliseCourseFlags(argc, argv);
     if (!args.empty() && isInteger(args[0])) return runPositional(args);
-    static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes", "assets", "filter"};
+    static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes", "assets", "filter", "compare"};
     if (!args.empty() && args[0][0] != '-' &&
         std::none_of(std::begin(kCommands), std::end(kCommands), [&](const char* c) { return args[0] == c; }))
         throw Error("rays: error: unknown command '" + args[0] +
-                    "' (commands: render, raycast, sceneinfo, pixelray, firsthit, pixelcolor, printrays, scenes, assets, filter; "
+                    "' (commands: render, raycast, sceneinfo, pixelray, firsthit, pixelcolor, printrays, scenes, assets, filter, compare; "
                     "or the positional form WIDTH HEIGHT INPUT OUTPUT SHADING RAYS_PER_PIXEL DEPTH [OBJ])");
 
     CLI::App app{"Rays: a fast ray tracer for POV-Ray-style scenes with feature lines", "rays"};
     app.set_version_flag("--version", std::string("rays ") + RAYS_VERSION);
     app.require_subcommand(1);
     app.footer("Positional form: rays WIDTH HEIGHT INPUT.pov OUTPUT.png SHADING_MODEL RAYS_PER_PIXEL RECURSION_DEPTH [MODEL.obj]\n"
-               "Course flags may be written with one dash: -altbrdf -fresnel -beers -ss=N -sds.");
+               "Course flags may be written with one dash: -altbrdf -fresnel -beers -ss=N -sds.\n"
+               "Image tools (see their --help): rays filter INPUT OUTPUT KERNEL...; rays compare A B [--diff DIFF]\n");
 
     std::string scene;
     int width = -1, height = -1, px = 0, py = 0;  // -1: not given
