@@ -17,6 +17,7 @@
 #include "rays/io/obj_loader.h"
 #include "rays/io/scene_pieces.h"
 #include "rays/io/token_reader.h"
+#include "rays/pov/load_pov.h"
 
 namespace rays {
 namespace {
@@ -788,6 +789,11 @@ Scene loadScene(const std::string& path, const ParseOptions& options) {
     const FileText file(path);
     if (file.status() == FileText::Status::CannotOpen) failFile(path, "cannot open scene file");
     if (file.status() == FileText::Status::CannotRead) failFile(path, "cannot read scene file");
+    const sdl::Dialect dialect = options.language.dialect;
+    if (dialect == sdl::Dialect::Povray || (dialect == sdl::Dialect::Auto && pov::looksLikePovray(file.text()))) {
+        const std::filesystem::path p(path);
+        return pov::parsePovText(file.text(), path, p.has_parent_path() ? p.parent_path().string() : ".", options);
+    }
     return parseText(file.text(), path, options);
 }
 

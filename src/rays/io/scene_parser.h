@@ -19,6 +19,8 @@ struct ParseOptions {
     RotationOrder rotation = RotationOrder::Course;
     /// Receives each warning line ("FILE:LINE:COL: warning: ..."); default prints to stderr.
     std::function<void(const std::string&)> warn;
+    /// Called now and then during a long parse; throws to stop it (Ctrl-C).
+    std::function<void()> checkInterrupt;
     /// Threads for a big file (256 KiB or more): with 0 (all hardware threads) or 2 and more, it is
     /// parsed in two pieces at once when it can be cut between two top-level items; the scene,
     /// warnings and errors are those of parsing it whole.
@@ -28,11 +30,14 @@ struct ParseOptions {
     sdl::LanguageOptions language;
 };
 
-/// Parses scene text. fileName is used in messages only. Throws Error "FILE:LINE:COL: error: ..."
+/// Parses scene text in the course dialect. fileName is used in messages only. Throws Error "FILE:LINE:COL: error: ..."
 /// on any invalid input; valid POV-Ray keywords Rays does not support produce warnings and are skipped.
 Scene parseScene(const std::string& text, const std::string& fileName, const ParseOptions& options = {});
 
-/// Reads and parses a scene file; a missing or unreadable file is an Error naming the path.
+/// Reads and parses a scene file; a missing or unreadable file is an Error naming the path. The
+/// file is read as POV-Ray 3.7 (src/rays/pov) when options.language.dialect says so, or, with
+/// Dialect::Auto, when it holds a '#' directive or global_settings (pov::looksLikePovray);
+/// otherwise as the course dialect.
 Scene loadScene(const std::string& path, const ParseOptions& options = {});
 
 /// The scene of text parsed in two pieces on two threads (ParseOptions::threads), or nothing when

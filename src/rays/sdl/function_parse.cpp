@@ -8,23 +8,30 @@
 namespace rays::sdl {
 
 Value Interpreter::parseFunction() {
-    auto fv = std::make_shared<FunctionValue>();
-    fv->loc = loc();
+    const Loc at = loc();
     next();  // function
+    std::vector<uint32_t> params;
     if (isSym('(')) {
         next();
         for (;;) {
             const Token& t = tokNoMacro();
             if (t.kind != Tk::Name) errorHere("expected a parameter name, found " + describe());
-            fv->params.push_back(t.id);  // x y z u v are keywords and allowed here
+            params.push_back(t.id);  // x y z u v are keywords and allowed here
             next();
             if (acceptSym(',')) continue;
             break;
         }
         expectSym(')', "after the function's parameters");
     } else {
-        fv->params = {uint32_t(Kw::x), uint32_t(Kw::y), uint32_t(Kw::z)};
+        params = {uint32_t(Kw::x), uint32_t(Kw::y), uint32_t(Kw::z)};
     }
+    return parseFunctionBody(std::move(params), at);
+}
+
+Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at) {
+    auto fv = std::make_shared<FunctionValue>();
+    fv->loc = at;
+    fv->params = std::move(params);
     expectSym('{', "to start the function body");
     const Kw k = kw();
     if (k == Kw::pattern || k == Kw::pigment || k == Kw::transform) {

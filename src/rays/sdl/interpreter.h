@@ -126,6 +126,8 @@ public:
     Value parseRValue();
     /// Reads the `function { ... }` at the current token (`function` keyword current).
     Value parseFunction();
+    /// Reads a function body `{ ... }` (the '{' current) with the given parameter names.
+    Value parseFunctionBody(std::vector<uint32_t> params, const Loc& at);
     /// Reads `spline { ... }` (keyword current).
     Value parseSplineBlock();
 

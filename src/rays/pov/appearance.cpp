@@ -1,0 +1,281 @@
+#include "rays/pov/appearance.h"
+
+#include <string>
+
+#include "rays/pov/grammar.h"
+
+namespace rays::pov {
+
+using sdl::VType;
+
+namespace {
+
+bool isPatternKeyword(Kw k) {
+    switch (k) {
+        case Kw::agate: case Kw::aoi: case Kw::average: case Kw::boxed: case Kw::bozo: case Kw::brick:
+        case Kw::bumps: case Kw::cells: case Kw::checker: case Kw::crackle: case Kw::cubic: case Kw::cylindrical:
+        case Kw::density_file: case Kw::dents: case Kw::facets: case Kw::function: case Kw::gradient:
+        case Kw::granite: case Kw::hexagon: case Kw::image_pattern: case Kw::julia: case Kw::leopard:
+        case Kw::magnet: case Kw::mandel: case Kw::marble: case Kw::object: case Kw::onion: case Kw::pavement:
+        case Kw::pigment_pattern: case Kw::planar: case Kw::quilted: case Kw::radial: case Kw::ripples:
+        case Kw::slope: case Kw::spherical: case Kw::spiral1: case Kw::spiral2: case Kw::spotted: case Kw::square:
+        case Kw::tiling: case Kw::triangular: case Kw::waves: case Kw::wood: case Kw::wrinkles: case Kw::image_map:
+            return true;
+        default:
+            return false;
+    }
+}
+
+// The mean colour of a colour map (each entry's colours), for patterns drawn as a flat colour.
+bool mapAverage(const Item& map, Rgbft& out) {
+    Rgbft sum;
+    int n = 0;
+    for (const Entry& e : map.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && mapAverage(v.item(), out)) return true;
+            continue;
+        }
+        if (e.key != kMapEntry) continue;
+        for (size_t i = 1; i < e.args.size(); ++i) {
+            if (e.args[i].type != VType::Color) continue;
+            const Rgbft c = toColor(e.args[i]);
+            sum.rgb += c.rgb;
+            sum.filter += c.filter;
+            sum.transmit += c.transmit;
+            ++n;
+        }
+    }
+    if (n == 0) return false;
+    out.rgb = sum.rgb / double(n);
+    out.filter = sum.filter / n;
+    out.transmit = sum.transmit / n;
+    return true;
+}
+
+}  // namespace
+
+void applyPigment(const Item& p, Rgbft& c, NotRendered& notes) {
+    const char* pattern = nullptr;
+    sdl::Loc patternAt;
+    Rgbft listSum;
+    int listCount = 0;
+    bool fromMap = false;
+    Rgbft mapColor;
+    for (const Entry& e : p.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args) {
+                if (v.type == VType::Item && v.item().kind == Kw::pigment) {
+                    applyPigment(v.item(), c, notes);
+                } else if (v.type == VType::Item && (v.item().kind == Kw::color_map || v.item().kind == Kw::colour_map)) {
+                    fromMap = mapAverage(v.item(), mapColor) || fromMap;
+                } else if (v.isNumeric()) {
+                    const Rgbft col = toColor(v);
+                    if (pattern) {  // a colour list of checker, hexagon, brick, object, ...
+                        listSum.rgb += col.rgb;
+                        listSum.filter += col.filter;
+                        listSum.transmit += col.transmit;
+                        ++listCount;
+                    } else {
+                        c = col;
+                    }
+                }
+            }
+            continue;
+        }
+        if (e.key == kMapEntry) continue;
+        const Kw k = e.kw();
+        if (isPatternKeyword(k)) {
+            pattern = sdl::keywordName(k).data();
+            patternAt = e.loc;
+        } else if (k == Kw::color_map || k == Kw::colour_map) {
+            fromMap = mapAverage(e.args[0].item(), mapColor) || fromMap;
+        } else if (k == Kw::pigment_map) {
+            notes.note("pigment_map", e.loc, "(drawn in one colour)");
+        }
+    }
+    if (!pattern) return;
+    notes.note(std::string("pigment pattern ") + pattern, patternAt, "(drawn in its mean colour)");
+    if (fromMap) {
+        c = mapColor;
+    } else if (listCount > 0) {
+        c.rgb = listSum.rgb / double(listCount);
+        c.filter = listSum.filter / listCount;
+        c.transmit = listSum.transmit / listCount;
+    } else {
+        c = Rgbft{Vec3(0.5), 0, 0};
+    }
+}
+
+void applyFinish(const Item& f, PovFinish& fin, NotRendered& notes) {
+    for (const Entry& e : f.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::finish) applyFinish(v.item(), fin, notes);
+            continue;
+        }
+        const auto arg = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
+        switch (e.kw()) {
+            case Kw::ambient: fin.ambient = toColor(e.args[0]).rgb; break;
+            case Kw::emission: fin.emission = toColor(e.args[0]).rgb; break;
+            case Kw::diffuse:
+                fin.diffuse = arg(1);
+                if (e.args.size() > 2) fin.diffuseBack = arg(2);
+                if (arg(0) != 0) notes.note("diffuse albedo", e.loc, "(taken as the plain amount)");
+                break;
+            case Kw::brilliance: fin.brilliance = arg(0); break;
+            case Kw::phong:
+                fin.phong = arg(1);
+                if (arg(0) != 0) notes.note("phong albedo", e.loc, "(taken as the plain amount)");
+                break;
+            case Kw::phong_size: fin.phongSize = arg(0); break;
+            case Kw::specular:
+                fin.specular = arg(1);
+                if (arg(0) != 0) notes.note("specular albedo", e.loc, "(taken as the plain amount)");
+                break;
+            case Kw::roughness: fin.roughness = arg(0); break;
+            case Kw::metallic: fin.metallic = e.args.empty() ? 1.0 : arg(0); break;
+            case Kw::reflection: {
+                const Value& r = e.args[0];
+                if (r.type != VType::Item) {
+                    fin.reflectionMin = fin.reflectionMax = toColor(r).rgb;
+                    break;
+                }
+                std::vector<const Value*> pos = positionals(r.item());
+                if (pos.size() == 1) fin.reflectionMin = fin.reflectionMax = toColor(*pos[0]).rgb;
+                if (pos.size() >= 2) {
+                    fin.reflectionMin = toColor(*pos[0]).rgb;
+                    fin.reflectionMax = toColor(*pos[1]).rgb;
+                }
+                for (const Entry& re : r.item().entries) {
+                    if (re.positional()) continue;
+                    const double v = re.args.empty() ? 1.0 : toFloat(re.args[0]);
+                    if (re.kw() == Kw::fresnel) fin.reflectionFresnel = v != 0;
+                    if (re.kw() == Kw::falloff) fin.reflectionFalloff = v;
+                    if (re.kw() == Kw::exponent) fin.reflectionExponent = v;
+                    if (re.kw() == Kw::metallic) fin.reflectionMetallic = v;
+                }
+                break;
+            }
+            case Kw::reflection_exponent: fin.reflectionExponent = arg(0); break;
+            case Kw::conserve_energy: fin.conserveEnergy = true; break;
+            case Kw::irid: notes.note("irid", e.loc); break;
+            case Kw::crand: notes.note("crand", e.loc); break;
+            case Kw::subsurface: notes.note("subsurface", e.loc); break;
+            case Kw::fresnel: fin.reflectionFresnel = arg(0) != 0; break;
+            case Kw::refraction: case Kw::ior: case Kw::caustics: case Kw::fade_distance: case Kw::fade_power:
+                notes.note(std::string("finish ") + std::string(sdl::keywordName(e.kw())) + " (POV-Ray 3.0 syntax)", e.loc);
+                break;
+            default: break;
+        }
+    }
+}
+
+void applyInterior(const Item& i, PovInterior& in, NotRendered& notes) {
+    for (const Entry& e : i.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::interior) applyInterior(v.item(), in, notes);
+            continue;
+        }
+        switch (e.kw()) {
+            case Kw::ior: in.ior = toFloat(e.args[0]); break;
+            case Kw::fade_distance: in.fadeDistance = toFloat(e.args[0]); break;
+            case Kw::fade_power: in.fadePower = toFloat(e.args[0]); break;
+            case Kw::fade_color: case Kw::fade_colour: in.fadeColor = toColor(e.args[0]).rgb; break;
+            case Kw::media: notes.note("media", e.loc); break;
+            case Kw::caustics: notes.note("caustics", e.loc); break;
+            case Kw::dispersion: notes.note("dispersion", e.loc); break;
+            default: break;
+        }
+    }
+}
+
+void applyTexture(const Item& t, Appearance& a, NotRendered& notes) {
+    a.set = true;
+    for (const Entry& e : t.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::texture) applyTexture(v.item(), a, notes);
+            continue;
+        }
+        if (e.key == kMapEntry) continue;
+        switch (e.kw()) {
+            case Kw::pigment: applyPigment(e.args[0].item(), a.pigment, notes); break;
+            case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
+            case Kw::normal: notes.note("normal", e.loc, "(surfaces drawn smooth)"); break;
+            case Kw::texture_map: notes.note("texture_map", e.loc, "(drawn with its first texture)");
+                for (const Entry& me : e.args[0].item().entries)
+                    if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item) {
+                        applyTexture(me.args[1].item(), a, notes);
+                        break;
+                    }
+                break;
+            case Kw::material_map: notes.note("material_map", e.loc); break;
+            case Kw::tiles: notes.note("tiles", e.loc); break;
+            default:
+                if (isPatternKeyword(e.kw())) notes.note("texture pattern", e.loc);
+                break;
+        }
+    }
+}
+
+Appearance defaultAppearance(const sdl::ItemRef& defaults, NotRendered& notes) {
+    Appearance a;
+    if (defaults) applyTexture(*defaults, a, notes);
+    a.set = false;
+    return a;
+}
+
+bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallback, NotRendered& notes) {
+    if (e.positional() || e.key == kMapEntry) return false;
+    const Kw k = e.kw();
+    if (k != Kw::texture && k != Kw::pigment && k != Kw::finish && k != Kw::normal && k != Kw::interior &&
+        k != Kw::material && k != Kw::interior_texture)
+        return false;
+    if (k == Kw::interior) {
+        applyInterior(e.args[0].item(), a.interior, notes);
+        a.interiorSet = true;
+        return true;
+    }
+    if (k == Kw::interior_texture) {
+        notes.note("interior_texture", e.loc);
+        return true;
+    }
+    if (!a.set) {
+        const PovInterior keep = a.interior;
+        const bool keepSet = a.interiorSet;
+        a = fallback;
+        a.interior = keep;
+        a.interiorSet = keepSet;
+        a.set = true;
+    }
+    switch (k) {
+        case Kw::texture: {
+            // A second texture on the same object is a layer on top of the first.
+            applyTexture(e.args[0].item(), a, notes);
+            break;
+        }
+        case Kw::pigment: applyPigment(e.args[0].item(), a.pigment, notes); break;
+        case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
+        case Kw::normal: notes.note("normal", e.loc, "(surfaces drawn smooth)"); break;
+        case Kw::material:
+            for (const Entry& me : e.args[0].item().entries) {
+                if (me.positional()) {
+                    for (const Value& v : me.args)
+                        if (v.type == VType::Item && v.item().kind == Kw::material) {
+                            Entry inner = e;
+                            inner.args = {v};
+                            applyAppearanceEntry(inner, a, fallback, notes);
+                        }
+                    continue;
+                }
+                applyAppearanceEntry(me, a, fallback, notes);
+            }
+            break;
+        default: break;
+    }
+    return true;
+}
+
+}  // namespace rays::pov

@@ -1,0 +1,123 @@
+#include "rays/pov/build_mesh.h"
+
+#include "rays/pov/grammar.h"
+
+namespace rays::pov {
+
+using sdl::VType;
+
+namespace {
+
+void pushVec(std::vector<float>& out, Vec3 v) { out.insert(out.end(), {float(v.x), float(v.y), float(v.z)}); }
+
+std::unique_ptr<Mesh> fromTriangles(const Item& m) {
+    auto mesh = std::make_unique<Mesh>();
+    bool anySmooth = false, anyUV = false;
+    for (const Entry& e : m.entries)
+        if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::smooth_triangle) anySmooth = true;
+    for (const Entry& e : m.entries) {
+        if (e.positional() || e.key == kMapEntry) continue;
+        if (e.kw() != Kw::triangle && e.kw() != Kw::smooth_triangle) continue;
+        const Item& t = e.args[0].item();
+        const std::vector<const Value*> p = positionals(t);
+        const bool smooth = e.kw() == Kw::smooth_triangle;
+        if (p.size() < (smooth ? 6u : 3u)) continue;
+        Vec3 v[3], n[3];
+        for (int k = 0; k < 3; ++k) {
+            v[k] = toVec3(*p[size_t(smooth ? 2 * k : k)]);
+            if (smooth) n[k] = toVec3(*p[size_t(2 * k + 1)]);
+        }
+        const Vec3 g = cross(v[1] - v[0], v[2] - v[0]);
+        if (length(g) == 0) continue;
+        const uint32_t base = uint32_t(mesh->positions.size() / 3);
+        for (int k = 0; k < 3; ++k) {
+            pushVec(mesh->positions, v[k]);
+            mesh->indices.push_back(base + uint32_t(k));
+            if (anySmooth) {
+                const Vec3 nn = smooth && length(n[k]) > 0 ? normalize(n[k]) : normalize(g);
+                pushVec(mesh->normals, nn);
+                mesh->normalIndices.push_back(base + uint32_t(k));
+            }
+        }
+        if (const Entry* uv = findEntry(t, Kw::uv_vectors); uv && uv->args.size() == 3) {
+            if (!anyUV) {  // earlier triangles get zero uvs
+                anyUV = true;
+                mesh->uvs.assign(size_t(base) * 2, 0.0f);
+                for (uint32_t i = 0; i < base; ++i) mesh->uvIndices.push_back(i);
+            }
+            for (int k = 0; k < 3; ++k) {
+                mesh->uvs.insert(mesh->uvs.end(), {float(uv->args[size_t(k)].c[0]), float(uv->args[size_t(k)].c[1])});
+                mesh->uvIndices.push_back(base + uint32_t(k));
+            }
+        } else if (anyUV) {
+            for (int k = 0; k < 3; ++k) {
+                mesh->uvs.insert(mesh->uvs.end(), {0.0f, 0.0f});
+                mesh->uvIndices.push_back(base + uint32_t(k));
+            }
+        }
+    }
+    return mesh;
+}
+
+// A mesh2 section `{ count, v1, v2, ... }`: its values after the count.
+std::vector<const Value*> section(const Item& m, Kw k) {
+    const Entry* e = findEntry(m, k);
+    if (!e) return {};
+    std::vector<const Value*> v = positionals(e->args[0].item());
+    if (!v.empty()) v.erase(v.begin());
+    return v;
+}
+
+std::unique_ptr<Mesh> fromMesh2(const Item& m, std::string& problem) {
+    auto mesh = std::make_unique<Mesh>();
+    for (const Value* v : section(m, Kw::vertex_vectors)) pushVec(mesh->positions, toVec3(*v));
+    for (const Value* v : section(m, Kw::normal_vectors)) {
+        const Vec3 n = toVec3(*v);
+        pushVec(mesh->normals, length(n) > 0 ? normalize(n) : Vec3{0, 0, 1});
+    }
+    for (const Value* v : section(m, Kw::uv_vectors)) mesh->uvs.insert(mesh->uvs.end(), {float(v->c[0]), float(v->c[1])});
+    // face_indices: vectors <a, b, c>, each optionally followed by one or three texture indices.
+    auto triples = [](const std::vector<const Value*>& vals) {
+        std::vector<uint32_t> out;
+        for (const Value* v : vals)
+            if (v->type == VType::Vector)
+                for (int k = 0; k < 3; ++k) out.push_back(uint32_t(std::max(0.0, v->c[size_t(k)])));
+        return out;
+    };
+    mesh->indices = triples(section(m, Kw::face_indices));
+    const size_t vertices = mesh->positions.size() / 3;
+    for (uint32_t i : mesh->indices)
+        if (i >= vertices) {
+            problem = "mesh2 face index " + std::to_string(i) + " is out of range (" + std::to_string(vertices) + " vertices)";
+            return nullptr;
+        }
+    if (!mesh->normals.empty()) {
+        mesh->normalIndices = hasEntry(m, Kw::normal_indices) ? triples(section(m, Kw::normal_indices)) : mesh->indices;
+        if (mesh->normalIndices.size() != mesh->indices.size()) mesh->normalIndices.clear(), mesh->normals.clear();
+    }
+    if (!mesh->uvs.empty()) {
+        mesh->uvIndices = hasEntry(m, Kw::uv_indices) ? triples(section(m, Kw::uv_indices)) : mesh->indices;
+        if (mesh->uvIndices.size() != mesh->indices.size()) mesh->uvIndices.clear(), mesh->uvs.clear();
+    }
+    const size_t normals = mesh->normals.size() / 3, uvs = mesh->uvs.size() / 2;
+    for (uint32_t i : mesh->normalIndices)
+        if (i >= normals) {
+            problem = "mesh2 normal index " + std::to_string(i) + " is out of range";
+            return nullptr;
+        }
+    for (uint32_t i : mesh->uvIndices)
+        if (i >= uvs) {
+            problem = "mesh2 uv index " + std::to_string(i) + " is out of range";
+            return nullptr;
+        }
+    return mesh;
+}
+
+}  // namespace
+
+std::unique_ptr<Mesh> meshFromItem(const Item& m, std::string& problem) {
+    problem.clear();
+    return m.kind == Kw::mesh2 ? fromMesh2(m, problem) : fromTriangles(m);
+}
+
+}  // namespace rays::pov

@@ -1,0 +1,222 @@
+// The generic block reader: one loop for every POV-Ray block, driven by its BlockSpec.
+#include "rays/pov/grammar.h"
+
+#include <string>
+
+namespace rays::pov {
+
+using sdl::Entry;
+using sdl::Interpreter;
+using sdl::Item;
+using sdl::Value;
+using sdl::VType;
+
+void BlockSpec::seal() {
+    index.fill(-1);
+    for (size_t i = 0; i < rules.size(); ++i) index[size_t(rules[i].kw)] = int16_t(i);
+}
+
+BlockSpec makeSpec(const char* name, Kw kind, std::initializer_list<const RuleGroup*> groups, bool positionals,
+                   bool children, BlockSpec::Map map, const BlockSpec* mapBody) {
+    BlockSpec s;
+    s.name = name;
+    s.kind = kind;
+    s.positionals = positionals;
+    s.children = children;
+    s.map = map;
+    s.mapBody = mapBody;
+    for (const RuleGroup* g : groups) s.rules.insert(s.rules.end(), g->begin(), g->end());
+    s.seal();
+    return s;
+}
+
+namespace {
+
+bool isItemValue(Interpreter& in) {
+    const sdl::Binding* b = in.identBinding();
+    return b && (b->value.type == VType::Item || b->value.type == VType::Function || b->value.type == VType::Spline);
+}
+
+void readArgs(Interpreter& in, const Rule& r, Entry& e) {
+    switch (r.arg) {
+        case Arg::Flag:
+            return;
+        case Arg::Bool:
+            e.args.push_back(Value::number(in.parseOptionalBool() ? 1 : 0));
+            return;
+        case Arg::Float:
+            e.args.push_back(Value::number(in.parseFloat()));
+            return;
+        case Arg::OptFloat:
+        case Arg::OptExpr:
+            if (in.atNumericStart()) e.args.push_back(in.parseNumeric(false));
+            return;
+        case Arg::Expr:
+            e.args.push_back(in.parseNumeric(false));
+            return;
+        case Arg::List:
+            e.args.push_back(in.parseNumeric(false));
+            while ((r.n == 0 || int(e.args.size()) < r.n) && in.isSym(',')) {
+                in.next();
+                if (!in.atNumericStart()) return;
+                e.args.push_back(in.parseNumeric(false));
+            }
+            return;
+        case Arg::Color:
+            e.args.push_back(in.parseColor());
+            return;
+        case Arg::String:
+            e.args.push_back(Value::string(in.parseString()));
+            return;
+        case Arg::Sub:
+            e.args.push_back(Value::item(readBlockBody(in, *r.sub, r.kw)));
+            return;
+        case Arg::SubOrExpr:
+            if (in.isSym('{')) e.args.push_back(Value::item(readBlockBody(in, *r.sub, r.kw)));
+            else e.args.push_back(in.parseNumeric(true));
+            return;
+        case Arg::Item: {
+            Interpreter::NestGuard guard(in);
+            e.args.push_back(Value::item(in.host().readItem(in)));
+            return;
+        }
+        case Arg::Function:
+            e.args.push_back(in.parseFunction());
+            return;
+        case Arg::Custom:
+            r.custom(in, e);
+            return;
+    }
+}
+
+// `[ v BODY ]` of a colour, pigment, normal, texture, density or slope map.
+void readMapEntry(Interpreter& in, const BlockSpec& spec, Item& item) {
+    Entry e;
+    e.key = kMapEntry;
+    e.loc = in.loc();
+    in.next();  // '['
+    e.args.push_back(Value::number(in.parseFloat()));
+    in.acceptSym(',');
+    switch (spec.map) {
+        case BlockSpec::Map::Colors:
+            // Old style `[a, b color C1 color C2]` has a second value and two colours.
+            if (in.tok().kind == sdl::Tk::Number) {
+                e.args.push_back(Value::number(in.parseFloat()));
+                in.acceptSym(',');
+            }
+            while (!in.isSym(']')) {
+                if (in.atEnd()) in.error(e.loc, "'[' of a map entry is never closed");
+                e.args.push_back(in.parseColor());
+                in.acceptSym(',');
+            }
+            break;
+        case BlockSpec::Map::Slopes:
+            e.args.push_back(in.parseNumeric(false));
+            break;
+        case BlockSpec::Map::Bodies: {
+            auto body = std::make_shared<Item>();
+            body->kind = spec.mapBody->kind;
+            body->loc = in.loc();
+            readBody(in, *body, *spec.mapBody, ']');
+            e.args.push_back(Value::item(std::move(body)));
+            break;
+        }
+        case BlockSpec::Map::None:
+            break;
+    }
+    in.expectSym(']', "to close the map entry");
+    item.entries.push_back(std::move(e));
+}
+
+}  // namespace
+
+sdl::ItemRef readBlockBody(Interpreter& in, const BlockSpec& spec, Kw kind) {
+    auto item = std::make_shared<Item>();
+    item->kind = kind;
+    item->loc = in.loc();
+    in.expectSym('{', std::string("after '") + std::string(sdl::keywordName(kind)) + "'");
+    readBody(in, *item, spec, '}');
+    in.next();
+    return item;
+}
+
+sdl::ItemRef readBlock(Interpreter& in, const BlockSpec& spec) {
+    const Kw kind = in.kw();
+    const sdl::Loc at = in.loc();
+    in.next();
+    auto item = std::make_shared<Item>();
+    item->kind = kind;
+    item->loc = at;
+    in.expectSym('{', std::string("after '") + std::string(sdl::keywordName(kind)) + "'");
+    readBody(in, *item, spec, '}');
+    in.next();
+    return item;
+}
+
+void readBody(Interpreter& in, Item& item, const BlockSpec& spec, char terminator) {
+    const sdl::Loc open = item.loc;
+    for (;;) {
+        if (in.isSym(terminator)) return;
+        if (in.atEnd())
+            in.error(open, std::string("'") + (terminator == ']' ? "[" : "{") + "' of '" +
+                               std::string(sdl::keywordName(item.kind)) + "' is never closed (end of file reached)");
+        if (in.isSym(',') || in.isSym(';')) {
+            in.next();
+            continue;
+        }
+        Entry e;
+        e.loc = in.loc();
+        if (in.isKeyword()) {
+            const Kw k = in.kw();
+            if (const Rule* r = spec.find(k)) {
+                e.key = uint16_t(k);
+                if (r->arg != Arg::Item && r->arg != Arg::Function) in.next();  // those readers take their keyword
+                readArgs(in, *r, e);
+                item.entries.push_back(std::move(e));
+                continue;
+            }
+            if (spec.children && in.host().startsItem(k)) {
+                Interpreter::NestGuard guard(in);
+                e.key = uint16_t(k);
+                e.args.push_back(Value::item(in.host().readItem(in)));
+                item.entries.push_back(std::move(e));
+                continue;
+            }
+            if (spec.positionals && (in.atNumericStart() || in.atStringStart())) {
+                if (in.atStringStart()) e.args.push_back(Value::string(in.parseString()));
+                else e.args.push_back(in.parseNumeric(true));
+                item.entries.push_back(std::move(e));
+                continue;
+            }
+            in.errorHere("'" + std::string(sdl::keywordName(k)) + "' is not allowed in " + spec.name);
+        }
+        if (in.isIdentifier()) {
+            if (!in.identBinding()) in.errorHere("undeclared identifier '" + std::string(in.spelling(in.tok().id)) + "'");
+            if (isItemValue(in) && !in.atNumericStart()) {
+                e.args.push_back(in.identBinding()->value);
+                in.next();
+                item.entries.push_back(std::move(e));
+                continue;
+            }
+            if (spec.positionals) {
+                e.args.push_back(in.parseRValue());
+                item.entries.push_back(std::move(e));
+                continue;
+            }
+            in.errorHere(in.describe() + " is not allowed in " + spec.name);
+        }
+        if (in.isSym('[') && spec.map != BlockSpec::Map::None) {
+            readMapEntry(in, spec, item);
+            continue;
+        }
+        if (spec.positionals && (in.atNumericStart() || in.atStringStart())) {
+            if (in.atStringStart()) e.args.push_back(Value::string(in.parseString()));
+            else e.args.push_back(in.parseNumeric(true));
+            item.entries.push_back(std::move(e));
+            continue;
+        }
+        in.errorHere("unexpected " + in.describe() + " in " + spec.name);
+    }
+}
+
+}  // namespace rays::pov

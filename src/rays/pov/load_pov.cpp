@@ -1,0 +1,79 @@
+#include "rays/pov/load_pov.h"
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "rays/error.h"
+#include "rays/pov/not_rendered.h"
+#include "rays/pov/pov_host.h"
+#include "rays/pov/scene_builder.h"
+#include "rays/sdl/interpreter.h"
+
+namespace rays::pov {
+
+namespace {
+
+void printLine(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
+
+Scene build(const std::function<void(sdl::Interpreter&)>& run, const std::string& shownName, const ParseOptions& options) {
+    ParsedScene parsed;
+    PovHost host(parsed);
+    sdl::Diagnostics d;
+    d.warning = options.warn ? options.warn : std::function<void(const std::string&)>(printLine);
+    d.debug = [](const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); };
+    d.checkInterrupt = options.checkInterrupt;
+    sdl::Interpreter in(options.language, host, d);
+    for (const sdl::Declare& decl : options.language.declares) {
+        if (!decl.value.empty() && decl.value.front() == '"') {
+            std::string v = decl.value.substr(1);
+            if (!v.empty() && v.back() == '"') v.pop_back();
+            in.declareGlobal(decl.name, sdl::Value::string(v));
+        } else {
+            char* end = nullptr;
+            const double v = std::strtod(decl.value.c_str(), &end);
+            if (end == decl.value.c_str() || *end != '\0')
+                throw Error("rays: error: Declare=" + decl.name + "=" + decl.value + ": the value must be a number or a quoted string");
+            in.declareGlobal(decl.name, sdl::Value::number(v));
+        }
+    }
+    run(in);
+    NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);
+    SceneBuilder builder(notes);
+    for (const ParsedScene::Top& top : parsed.items) builder.add(top);
+    return builder.finish(shownName);
+}
+
+}  // namespace
+
+Scene loadPovScene(const std::string& path, const ParseOptions& options) {
+    return build([&](sdl::Interpreter& in) { in.run(path); }, path, options);
+}
+
+Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
+                   const ParseOptions& options) {
+    return build([&](sdl::Interpreter& in) { in.runText(text, shownName, folder); }, shownName, options);
+}
+
+bool looksLikePovray(std::string_view s) {
+    for (size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
+        if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
+            while (i < s.size() && s[i] != '\n') ++i;
+        } else if (c == '/' && i + 1 < s.size() && s[i + 1] == '*') {
+            const size_t e = s.find("*/", i + 2);
+            if (e == std::string_view::npos) return false;
+            i = e + 1;
+        } else if (c == '"') {
+            while (++i < s.size() && s[i] != '"' && s[i] != '\n')
+                if (s[i] == '\\') ++i;
+        } else if (c == '#') {
+            return true;
+        } else if (c == 'g' && s.compare(i, 15, "global_settings") == 0 && (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace rays::pov

@@ -1,0 +1,24 @@
+// Reading a POV-Ray 3.7 scene file into Rays' Scene: the scene language (src/rays/sdl) with the
+// POV-Ray grammar and host (this folder), then the scene builder. Also the rule that decides
+// whether a file is read as POV-Ray or as the course dialect.
+#pragma once
+#include <string>
+#include <string_view>
+
+#include "rays/io/scene_parser.h"
+#include "rays/scene/scene.h"
+
+namespace rays::pov {
+
+/// Parses and builds the POV-Ray scene at path. Warnings (language warnings, "not rendered yet"
+/// notes) go to options.warn (stderr when unset), #debug text to stderr. Throws Error.
+Scene loadPovScene(const std::string& path, const ParseOptions& options);
+/// The same for text held in memory; folder is where its includes are looked up first.
+Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
+                   const ParseOptions& options);
+
+/// True when text is read as POV-Ray 3.7: it holds a `#` directive or `global_settings` outside
+/// comments and strings. The course dialect has neither.
+bool looksLikePovray(std::string_view text);
+
+}  // namespace rays::pov

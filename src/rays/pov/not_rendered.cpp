@@ -1,0 +1,17 @@
+#include "rays/pov/not_rendered.h"
+
+#include "rays/error.h"
+
+namespace rays::pov {
+
+void NotRendered::note(const std::string& what, const sdl::Loc& at, const std::string& detail) {
+    if (!seen_.insert(what).second) return;
+    if (strict_) throw Error(where_(at) + ": error: not rendered yet: " + what + " (--strict)");
+    if (warn_) warn_(where_(at) + ": warning: not rendered yet: " + what + (detail.empty() ? "" : " " + detail));
+}
+
+void NotRendered::warn(const sdl::Loc& at, const std::string& msg) {
+    if (warn_) warn_(where_(at) + ": warning: " + msg);
+}
+
+}  // namespace rays::pov

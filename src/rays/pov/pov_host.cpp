@@ -1,0 +1,45 @@
+#include "rays/pov/pov_host.h"
+
+#include "rays/pov/grammar.h"
+
+namespace rays::pov {
+
+using sdl::Kw;
+
+bool PovHost::startsItem(Kw k) const { return itemSpec(k) != nullptr; }
+
+sdl::ItemRef PovHost::readItem(sdl::Interpreter& in) {
+    const BlockSpec* spec = itemSpec(in.kw());
+    if (!spec) in.errorHere("expected a scene item, found " + in.describe());
+    return readBlock(in, *spec);
+}
+
+void PovHost::topLevel(sdl::Interpreter& in, const sdl::ItemRef& item) {
+    if (item->kind == Kw::global_settings) {
+        // srgb colours read later in the file need the working gamma.
+        for (const sdl::Entry& e : item->entries)
+            if (e.key == uint16_t(Kw::assumed_gamma) && !e.args.empty()) in.setAssumedGamma(e.args[0].c[0]);
+    }
+    out_.items.push_back(ParsedScene::Top{item, defaults_, in.version()});
+}
+
+// Each #default adds to the defaults in force (POV-Ray 3.7 reference, "Default Directive"): the
+// default texture is kept as one texture item whose entries are applied in order.
+void PovHost::setDefault(sdl::Interpreter&, const sdl::ItemRef& item) {
+    auto t = std::make_shared<sdl::Item>();
+    t->kind = Kw::texture;
+    t->loc = item->loc;
+    if (defaults_) t->entries = defaults_->entries;
+    sdl::Entry e;
+    e.key = uint16_t(item->kind);
+    e.loc = item->loc;
+    e.args.push_back(sdl::Value::item(item));
+    t->entries.push_back(std::move(e));
+    defaults_ = std::move(t);
+}
+
+PovHost::TraceResult PovHost::trace(const sdl::Item&, const double*, const double*) { return {}; }
+int PovHost::inside(const sdl::Item&, const double*) { return -1; }
+bool PovHost::extent(const sdl::Item&, double*, double*) { return false; }
+
+}  // namespace rays::pov

@@ -1,0 +1,38 @@
+// The host the scene language reads POV-Ray scenes for: it reads every item with the grammar
+// (grammar.h, specs.h) and collects the scene's top-level items, each with the default texture
+// in force where it appeared (#default), for the builder (scene_builder.h).
+#pragma once
+#include <vector>
+
+#include "rays/sdl/host.h"
+#include "rays/sdl/interpreter.h"
+
+namespace rays::pov {
+
+/// What a POV-Ray scene file holds once parsed: its top-level items in order.
+struct ParsedScene {
+    struct Top {
+        sdl::ItemRef item;
+        sdl::ItemRef defaults;  ///< the #default texture in force (a texture item; null: POV-Ray's own)
+        double version = 3.7;   ///< #version in force
+    };
+    std::vector<Top> items;
+};
+
+class PovHost : public sdl::ItemHost {
+public:
+    explicit PovHost(ParsedScene& out) : out_(out) {}
+    bool startsItem(sdl::Kw k) const override;
+    sdl::ItemRef readItem(sdl::Interpreter& in) override;
+    void topLevel(sdl::Interpreter& in, const sdl::ItemRef& item) override;
+    void setDefault(sdl::Interpreter& in, const sdl::ItemRef& item) override;
+    TraceResult trace(const sdl::Item& object, const double origin[3], const double dir[3]) override;
+    int inside(const sdl::Item& object, const double point[3]) override;
+    bool extent(const sdl::Item& object, double lo[3], double hi[3]) override;
+
+private:
+    ParsedScene& out_;
+    sdl::ItemRef defaults_;
+};
+
+}  // namespace rays::pov

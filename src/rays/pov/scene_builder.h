@@ -1,0 +1,40 @@
+// Turns the items of a parsed POV-Ray scene into Rays' Scene under POV-Ray's rules (the course
+// rules stay with the course reader): POV-Ray's camera (left-handed, direction, angle, sky,
+// look_at), lights, objects with their transformations and textures, CSG unions, default
+// texture, global settings and background. What Rays cannot render yet is noted (not_rendered.h):
+// objects of unrendered kinds are left out, unrendered appearance is approximated.
+#pragma once
+#include "rays/pov/appearance.h"
+#include "rays/pov/not_rendered.h"
+#include "rays/pov/pov_host.h"
+#include "rays/scene/scene.h"
+
+namespace rays::pov {
+
+class SceneBuilder {
+public:
+    explicit SceneBuilder(NotRendered& notes) : notes_(notes) {}
+    /// Adds one top-level item.
+    void add(const ParsedScene::Top& top);
+    /// The scene, with POV-Ray's default camera when the file has none.
+    Scene finish(const std::string& fileName);
+
+private:
+    void addCamera(const Item& camera);
+    void addLight(const Item& light, const Transform& toWorld);
+    void addObject(const Item& object, const Transform& parent, const Appearance* inherited, int depth);
+    void addPrimitive(Kw kind, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
+                      const Appearance& look);
+    void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look);
+    void globalSettings(const Item& g);
+    Material material(const Appearance& look, const sdl::Loc& at);
+
+    NotRendered& notes_;
+    Scene scene_;
+    Appearance fallback_;      ///< the default texture of the item being added
+    double version_ = 3.7;
+    bool gammaSet_ = false;
+    bool backgroundSet_ = false;
+};
+
+}  // namespace rays::pov
