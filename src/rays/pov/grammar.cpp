@@ -89,13 +89,30 @@ void readArgs(Interpreter& in, const Rule& r, Entry& e) {
     }
 }
 
+// `< a, b, c, ... >` with any number of floats (the coefficients of cubic, quartic and poly).
+void readCoefficients(Interpreter& in, Entry& e) {
+    const sdl::Loc at = in.loc();
+    in.next();  // '<'
+    while (!in.isSym('>')) {
+        if (in.atEnd()) in.error(at, "'<' of the coefficients is never closed");
+        if (e.args.size() >= 1024) in.error(at, "more than 1024 coefficients");
+        e.args.push_back(Value::number(in.parseFloat()));
+        in.acceptSym(',');
+    }
+    in.next();
+}
+
 // `[ v BODY ]` of a colour, pigment, normal, texture, density or slope map.
 void readMapEntry(Interpreter& in, const BlockSpec& spec, Item& item) {
     Entry e;
     e.key = kMapEntry;
     e.loc = in.loc();
     in.next();  // '['
-    e.args.push_back(Value::number(in.parseFloat()));
+    // The entry's value; an average pattern's entries may leave their weight out.
+    if (in.atNumericStart() && !(spec.map == BlockSpec::Map::Colors && (in.isKw(Kw::color) || in.isKw(Kw::colour) || in.isKw(Kw::rgb))))
+        e.args.push_back(Value::number(in.parseFloat()));
+    else
+        e.args.push_back(Value());
     in.acceptSym(',');
     switch (spec.map) {
         case BlockSpec::Map::Colors:
@@ -207,6 +224,11 @@ void readBody(Interpreter& in, Item& item, const BlockSpec& spec, char terminato
         }
         if (in.isSym('[') && spec.map != BlockSpec::Map::None) {
             readMapEntry(in, spec, item);
+            continue;
+        }
+        if (spec.coefficients && in.isSym('<')) {
+            readCoefficients(in, e);
+            item.entries.push_back(std::move(e));
             continue;
         }
         if (spec.positionals && (in.atNumericStart() || in.atStringStart())) {

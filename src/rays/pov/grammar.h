@@ -54,6 +54,7 @@ struct BlockSpec {
     Kw kind = Kw::object;      ///< the item kind a map entry's body becomes (pigment_map: pigment)
     bool positionals = false;  ///< bare values (a sphere's centre, a pigment's colour)
     bool children = false;     ///< objects and lights inside (CSG, light_group, clipped_by, ...)
+    bool coefficients = false; ///< `<...>` holds any number of floats (cubic, quartic, poly)
     Map map = Map::None;
     const BlockSpec* mapBody = nullptr;  ///< Bodies: what a `[v BODY]` entry holds
     std::vector<Rule> rules;

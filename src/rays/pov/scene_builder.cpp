@@ -40,8 +40,9 @@ Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
     Kw kind = Kw::object;
     bool baseDone = false;
     for (const Entry& e : item.entries) {
-        if (!baseDone && e.positional() && !e.args.empty() && e.args[0].type == VType::Item &&
-            isObjectKind(e.args[0].item().kind)) {
+        // The base: an object identifier, or an object written inside (`object { union {...} }`).
+        if (!baseDone && (e.positional() || isObjectKind(e.kw())) && !e.args.empty() &&
+            e.args[0].type == VType::Item && isObjectKind(e.args[0].item().kind)) {
             kind = unrollObject(e.args[0].item(), out, depth + 1);
             baseDone = true;
             continue;
@@ -138,7 +139,12 @@ void SceneBuilder::addCamera(const Item& cam) {
                 if (length(at - loc) == 0) throw Error(notes_.where(e.loc) + ": error: look_at is the camera location");
                 const Vec3 d = normalize(at - loc);
                 Vec3 r = cross(sky, d);
-                if (length(r) == 0) throw Error(notes_.where(e.loc) + ": error: the camera looks along its sky vector");
+                if (length(r) < 1e-12 * length(sky)) {
+                    // Looking along the sky vector: keep the right vector, made perpendicular.
+                    r = right - dot(right, d) * d;
+                    if (length(r) == 0) r = std::fabs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
+                    if (handed < 0) r = -r;
+                }
                 r = normalize(r);
                 dir = d * dl;
                 up = normalize(cross(d, r)) * ul;

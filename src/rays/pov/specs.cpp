@@ -75,6 +75,7 @@ const BlockSpec* itemSpec(Kw k) {
         case Kw::interior: return &s.interior;
         case Kw::media: return &s.media;
         case Kw::density: return &s.density;
+        case Kw::pattern: return &s.pattern;
         case Kw::material: return &s.material;
         case Kw::color_map: case Kw::colour_map: return &s.colorMap;
         case Kw::pigment_map: return &s.pigmentMap;

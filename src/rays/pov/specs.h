@@ -8,7 +8,7 @@ namespace rays::pov {
 
 struct Specs {
     // textures (specs_texture.cpp)
-    BlockSpec pigment, normal, finish, texture, interior, media, density, material;
+    BlockSpec pigment, normal, finish, texture, interior, media, density, material, pattern;
     BlockSpec colorMap, pigmentMap, normalMap, slopeMap, textureMap, densityMap;
     BlockSpec pigmentBody, normalBody, textureBody, densityBody;  // map entries' bodies
     BlockSpec warp, imageMap, reflection, irid, subsurfaceFinish, scattering, materialMap, tiles, slope;

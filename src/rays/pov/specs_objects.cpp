@@ -81,6 +81,7 @@ void Specs::buildObjects() {
     cubic = makeSpec("a cubic", Kw::cubic, {&mods}, true);
     quartic = makeSpec("a quartic", Kw::quartic, {&mods}, true);
     poly = makeSpec("a poly", Kw::poly, {&mods}, true);
+    cubic.coefficients = quartic.coefficients = poly.coefficients = true;
     const RuleGroup polynomialRules{custom(Kw::xyz, readPolynomialTerm)};
     polynomial = makeSpec("a polynomial", Kw::polynomial, {&polynomialRules, &mods}, true);
     const RuleGroup juliaRules{flag(Kw::quaternion), flag(Kw::hypercomplex), flag(Kw::sqr), flag(Kw::cube),
@@ -123,7 +124,7 @@ void Specs::buildObjects() {
     smoothTriangle = makeSpec("a smooth_triangle", Kw::smooth_triangle, {&triangleRules, &mods}, true);
 
     csg = makeSpec("a CSG object", Kw::union_, {&mods}, false, true);
-    object = makeSpec("an object", Kw::object, {&mods}, true);
+    object = makeSpec("an object", Kw::object, {&mods}, true, true);
     const RuleGroup groupRules{boolean(Kw::global_lights)};
     lightGroup = makeSpec("a light_group", Kw::light_group, {&groupRules, &mods}, false, true);
 

@@ -70,7 +70,7 @@ void readOptionalList(Interpreter& in, Entry& e) {
 
 // quick_color / quick_colour: a colour.
 RuleGroup patternTypes(const Specs& s) {
-    return {flag(Kw::agate), optExpr(Kw::aoi), flag(Kw::average), flag(Kw::boxed), flag(Kw::bozo), flag(Kw::brick),
+    return {flag(Kw::agate), number(Kw::agate_turb), optExpr(Kw::aoi), flag(Kw::average), flag(Kw::boxed), flag(Kw::bozo), flag(Kw::brick),
             optNumber(Kw::bumps), flag(Kw::cells), flag(Kw::checker), flag(Kw::crackle), flag(Kw::cubic),
             flag(Kw::cylindrical), custom(Kw::density_file, readDensityFile), optNumber(Kw::dents),
             flag(Kw::facets), function(Kw::function), expr(Kw::gradient), flag(Kw::granite), flag(Kw::hexagon),
@@ -95,7 +95,7 @@ RuleGroup patternModifiers(const Specs& s) {
                 optNumber(Kw::poly_wave), sub(Kw::warp, s.warp), item(Kw::color_map), item(Kw::colour_map),
                 item(Kw::pigment_map), item(Kw::normal_map), item(Kw::slope_map), item(Kw::texture_map),
                 item(Kw::density_map), color(Kw::quick_color), color(Kw::quick_colour), number(Kw::accuracy),
-                boolean(Kw::no_bump_scale), number(Kw::bump_size), flag(Kw::uv_mapping)};
+                boolean(Kw::no_bump_scale), number(Kw::bump_size), flag(Kw::uv_mapping), number(Kw::interpolate)};
     g.insert(g.end(), transformRules().begin(), transformRules().end());
     return g;
 }
@@ -106,11 +106,11 @@ void Specs::buildTextures() {
     const RuleGroup types = patternTypes(*this);
     const RuleGroup mods = patternModifiers(*this);
 
-    const RuleGroup pigmentOnly{sub(Kw::image_map, imageMap)};
+    const RuleGroup pigmentOnly{sub(Kw::image_map, imageMap), item(Kw::pigment)};
     pigment = makeSpec("a pigment", Kw::pigment, {&types, &mods, &pigmentOnly}, true);
     pigmentBody = makeSpec("a pigment", Kw::pigment, {&types, &mods, &pigmentOnly}, true);
 
-    const RuleGroup normalOnly{sub(Kw::bump_map, imageMap)};
+    const RuleGroup normalOnly{sub(Kw::bump_map, imageMap), item(Kw::normal)};
     normal = makeSpec("a normal", Kw::normal, {&types, &mods, &normalOnly}, true);
     normalBody = makeSpec("a normal", Kw::normal, {&types, &mods, &normalOnly}, true);
 
@@ -133,7 +133,7 @@ void Specs::buildTextures() {
     subsurfaceFinish = makeSpec("a subsurface block", Kw::subsurface, {&subsurfaceRules}, true);
 
     const RuleGroup textureRules{item(Kw::pigment), item(Kw::normal), item(Kw::finish), sub(Kw::material_map, materialMap),
-                                 sub(Kw::tiles, tiles), sub(Kw::image_map, imageMap)};
+                                 sub(Kw::tiles, tiles), sub(Kw::image_map, imageMap), item(Kw::texture)};
     texture = makeSpec("a texture", Kw::texture, {&textureRules, &types, &mods}, true);
     textureBody = makeSpec("a texture", Kw::texture, {&textureRules, &types, &mods}, true);
     const RuleGroup tilesRules{item(Kw::texture), flag(Kw::tile2)};
@@ -153,7 +153,9 @@ void Specs::buildTextures() {
     media = makeSpec("a media", Kw::media, {&mediaRules, &transformRules()}, true);
     const RuleGroup scatteringRules{number(Kw::eccentricity), number(Kw::extinction)};
     scattering = makeSpec("a scattering block", Kw::scattering, {&scatteringRules}, true);
-    density = makeSpec("a density", Kw::density, {&types, &mods}, true);
+    const RuleGroup densityOnly{item(Kw::density)};
+    density = makeSpec("a density", Kw::density, {&types, &mods, &densityOnly}, true);
+    pattern = makeSpec("a pattern", Kw::pattern, {&types, &mods}, true);
     densityBody = makeSpec("a density", Kw::density, {&types, &mods}, true);
 
     const RuleGroup materialRules{item(Kw::texture), item(Kw::interior), item(Kw::pigment), item(Kw::normal),

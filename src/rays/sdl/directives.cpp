@@ -332,6 +332,7 @@ void Interpreter::dirUndef() {
 }
 
 void Interpreter::dirDeclare(const Loc&, bool isLocal) {
+    const uint32_t level = scopes_.level();  // the value may end inside a macro called here
     bool deprecated = false, once = false;
     uint32_t message = UINT32_MAX;
     if (tokNoMacro().kind == Tk::Name && cur_.id == uint32_t(Kw::deprecated)) {
@@ -360,9 +361,9 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
     const bool numeric = atNumericStart();
     Value v = parseRValue();
     const bool wasNumeric = numeric || v.isNumeric();
-    assignTarget(name, isLocal, std::move(index), std::move(v), nameAt);
+    Binding& bound = assignTarget(name, isLocal, std::move(index), std::move(v), nameAt, level);
     if (deprecated) {
-        Binding* b = scopes_.find(name);
+        Binding* b = &bound;
         b->deprecated = true;
         b->deprecatedOnce = once;
         b->deprecatedMessage = message;
@@ -386,13 +387,10 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
     }
 }
 
-void Interpreter::assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at) {
+Binding& Interpreter::assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at,
+                                   uint32_t level) {
     if (v.type == VType::Array) v = copyValue(v);  // arrays are copied on assignment
-    if (index.empty()) {
-        if (isLocal) scopes_.local(name, std::move(v));
-        else scopes_.declare(name, std::move(v));
-        return;
-    }
+    if (index.empty()) return isLocal ? scopes_.localAt(name, std::move(v), level) : scopes_.declareAt(name, std::move(v), level);
     Binding* b = scopes_.find(name);
     ArrayData& a = b->value.arr();
     size_t flat = 0;
@@ -407,6 +405,7 @@ void Interpreter::assignTarget(uint32_t name, bool isLocal, std::vector<int> ind
         a.elemType = v.type;
     }
     a.elems[flat] = std::move(v);
+    return *b;
 }
 
 // ---- macros defined ------------------------------------------------------------------------------
@@ -473,7 +472,9 @@ void Interpreter::dirVersion() {
     versionSeen_ = true;
 }
 
-void Interpreter::dirDefault() {
+void Interpreter::dirDefault() { dirDefaultBody(); }
+
+void Interpreter::dirDefaultBody() {
     const Loc at = loc();
     expectSym('{', "after #default");
     while (!isSym('}')) {

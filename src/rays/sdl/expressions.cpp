@@ -60,11 +60,11 @@ Value combine(char op, const Value& a, const Value& b) {
             case '+': r[i] = x[i] + y[i]; break;
             case '-': r[i] = x[i] - y[i]; break;
             case '*': r[i] = x[i] * y[i]; break;
-            case '/': r[i] = x[i] / y[i]; break;
+            case '/': r[i] = y[i] == 0 ? HUGE_VAL : x[i] / y[i]; break;  // POV-Ray: x/0 is +inf for every x
             case '<': r[i] = x[i] < y[i]; break;
             case '>': r[i] = x[i] > y[i]; break;
-            case kLessEq: r[i] = x[i] <= y[i]; break;
-            case kGreaterEq: r[i] = x[i] >= y[i]; break;
+            case kLessEq: r[i] = x[i] < y[i] || std::fabs(x[i] - y[i]) < kEpsilon; break;
+            case kGreaterEq: r[i] = x[i] > y[i] || std::fabs(x[i] - y[i]) < kEpsilon; break;
             case '=': r[i] = std::fabs(x[i] - y[i]) < kEpsilon; break;
             case kNotEq: r[i] = std::fabs(x[i] - y[i]) >= kEpsilon; break;
             case '&': r[i] = std::fabs(x[i]) > kEpsilon && std::fabs(y[i]) > kEpsilon; break;
@@ -359,9 +359,10 @@ Value Interpreter::vectorLiteral() {
         const Value v = additive(false);
         if (v.type != VType::Float) error(compAt, std::string("a vector component must be a float, found a ") + typeName(v.type));
         c[n++] = v.c[0];
-        if (acceptSym(',')) continue;
+        // Commas between components are optional and a trailing one is allowed (as in POV-Ray:
+        // `< -1 0 0 >`, `<0.2, 0.1, 0.5,>`).
+        acceptSym(',');
         if (isSym('>')) break;
-        errorHere("expected ',' or '>' in a vector, found " + describe());
     }
     next();
     if (n < 2) error(at, "a vector needs at least 2 components");

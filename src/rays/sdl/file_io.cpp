@@ -172,7 +172,9 @@ void Interpreter::dirWrite(const Loc& at) {
         error(at, "'" + std::string(names_.name(handle)) + "' is not a file opened for writing");
     const Value fileValue = b->value;
     std::FILE* out = fileValue.file().out;
-    while (acceptSym(',')) {
+    for (;;) {  // commas between the items are optional, as in POV-Ray
+        acceptSym(',');
+        if (isSym(')')) break;
         const Kw k = kw();
         int bytes = 0;
         bool isSigned = false, bigEndian = false;

@@ -130,6 +130,11 @@ void Interpreter::topLevelLoop() {
             host_.topLevel(*this, item);
             continue;
         }
+        if (t.kind == Tk::Name && t.id == uint32_t(Kw::default_)) {  // `default { }` without '#' (POV-Ray 2 syntax, still read)
+            next();
+            dirDefaultBody();
+            continue;
+        }
         if (isSym(';')) {  // POV-Ray accepts stray semicolons between items
             next();
             continue;

@@ -210,6 +210,7 @@ private:
     void dirMacro(const Loc& at);
     void dirVersion();
     void dirDefault();
+    void dirDefaultBody();
     void dirMessage(const Loc& at, Kw which);
     void dirFopen(const Loc& at);
     void dirFclose();
@@ -226,7 +227,7 @@ private:
     void invokeMacro(const Token& nameTok, const Value& macro);
     bool passByReference(uint32_t param, std::vector<Value>& args, std::vector<ByRefArg>& byRef);
     void returnFromMacro();
-    void assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at);
+    Binding& assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at, uint32_t level);
     Value readArrayValue(const Loc& at);
 
     // expressions (expressions.cpp)

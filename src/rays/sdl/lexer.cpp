@@ -110,7 +110,10 @@ private:
         }
         if (isDigit(c) || (c == '.' && i_ + 1 < s_.size() && isDigit(s_[i_ + 1]))) return number(t);
         if (c == '"') return string(t);
-        if (c == '#') return directive(t);
+        if (c == '#') {
+            if (directive(t)) return;
+            return lexToken(t);  // a lone '#' is ignored, as POV-Ray does
+        }
         t.kind = Tk::Symbol;
         const char n = i_ + 1 < s_.size() ? s_[i_ + 1] : '\0';
         switch (c) {
@@ -238,12 +241,23 @@ private:
         }
     }
 
-    void directive(Token& t) {
+    // '#' and its word; false for a '#' with no word after it on its line (skipped).
+    bool directive(Token& t) {
         ++i_;  // '#'
         while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
-        if (i_ >= s_.size() || !isIdentStart(s_[i_])) fail(t, "expected a directive name after '#'");
+        if (i_ >= s_.size() || !isIdentStart(s_[i_])) {
+            skipSpace();
+            t.line = uint32_t(line_);
+            t.col = colOf(i_);
+            if (i_ >= s_.size()) {
+                t.kind = Tk::End;
+                return true;
+            }
+            return false;
+        }
         t.kind = Tk::Directive;
         t.id = names_.intern(word());
+        return true;
     }
 
     std::string_view s_;

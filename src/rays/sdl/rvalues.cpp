@@ -119,13 +119,10 @@ void Interpreter::arrayInitializer(ArrayData& a, size_t dim, size_t& flat) {
                 error(vAt, std::string("array elements must all be of one type; this one is a ") + typeName(v.type));
             a.elems[flat++] = std::move(v);
         }
-        if (i + 1 < a.sizes[dim]) {
-            if (!isSym(',')) errorHere("expected ',' between array elements, found " + describe() +
-                                       " (the initialiser has fewer elements than the array size " + std::to_string(a.sizes[dim]) + ")");
-            next();
-        }
+        acceptSym(',');  // commas between elements are optional, as in POV-Ray
+        if (i + 1 < a.sizes[dim] && isSym('}'))
+            errorHere("the array initialiser has fewer elements than the array size " + std::to_string(a.sizes[dim]));
     }
-    acceptSym(',');
     if (!isSym('}'))
         error(at, "the array initialiser has more elements than the array size " + std::to_string(a.sizes[dim]));
     next();

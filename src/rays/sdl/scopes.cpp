@@ -41,13 +41,27 @@ Binding& Scopes::declare(uint32_t name, Value v) {
     return push(name, std::move(v), 0);
 }
 
-Binding& Scopes::local(uint32_t name, Value v) {
-    Binding* b = find(name);
-    if (b && b->level == level()) {
-        b->value = std::move(v);
-        return *b;
-    }
-    return push(name, std::move(v), level());
+Binding& Scopes::declareAt(uint32_t name, Value v, uint32_t lvl) {
+    if (name < stacks_.size())
+        for (auto it = stacks_[name].rbegin(); it != stacks_[name].rend(); ++it)
+            if (it->level <= lvl) {
+                it->value = std::move(v);
+                return *it;
+            }
+    return push(name, std::move(v), 0);
+}
+
+Binding& Scopes::localAt(uint32_t name, Value v, uint32_t lvl) {
+    if (name < stacks_.size())
+        for (auto it = stacks_[name].rbegin(); it != stacks_[name].rend(); ++it) {
+            if (it->level > lvl) continue;
+            if (it->level == lvl) {
+                it->value = std::move(v);
+                return *it;
+            }
+            break;
+        }
+    return push(name, std::move(v), lvl);
 }
 
 bool Scopes::undef(uint32_t name) {

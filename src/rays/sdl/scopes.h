@@ -37,7 +37,11 @@ public:
     /// `#declare name = v`.
     Binding& declare(uint32_t name, Value v);
     /// `#local name = v`.
-    Binding& local(uint32_t name, Value v);
+    Binding& local(uint32_t name, Value v) { return localAt(name, std::move(v), level()); }
+    /// `#declare` / `#local` made while level `lvl` was current (the value may have been computed
+    /// inside a macro called from there, whose level is gone by the time the name is bound).
+    Binding& declareAt(uint32_t name, Value v, uint32_t lvl);
+    Binding& localAt(uint32_t name, Value v, uint32_t lvl);
     /// `#undef name`: false when it was not defined.
     bool undef(uint32_t name);
 
