@@ -249,6 +249,7 @@ struct Recorder {
     std::vector<RenderJob> jobs;
     int interruptAt = -1;  ///< 0-based call that throws Interrupted (-1: none)
     int failAt = -1;       ///< 0-based call that returns 2
+    int signalAfter = -1;  ///< 0-based call that raises SIGINT after writing its file (between two frames)
 
     rays::cli::FrameRenderer renderer() {
         return [this](const RenderJob& job) {
@@ -256,7 +257,11 @@ struct Recorder {
             jobs.push_back(job);
             if (call == interruptAt) throw rays::cli::Interrupted(SIGINT);
             if (call == failAt) return 2;
-            std::ofstream(job.outputPath) << "frame " << job.language.animation.frameNumber;
+            {
+                rays::cli::InterruptScope nested;  // as runRender holds one
+                std::ofstream(job.outputPath) << "frame " << job.language.animation.frameNumber;
+            }
+            if (call == signalAfter) ::raise(SIGINT);
             return 0;
         };
     }
@@ -344,6 +349,32 @@ TEST(AnimationLoop, CtrlCStopsAtTheCurrentFrame) {
                        " not written; 1 frame written before it; run again with --resume to go on"),
               std::string::npos)
         << err;
+}
+
+TEST(AnimationLoop, ACtrlCBetweenTwoFramesStopsBeforeTheNext) {
+    TempDir dir;
+    Recorder rec;
+    rec.signalAfter = 0;
+    testing::internal::CaptureStderr();
+    const int status = rays::cli::runFrames(baseJob(dir.path()), planFrames(frames(1, 3)), false, rec.renderer());
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(status, 130);
+    EXPECT_EQ(rec.jobs.size(), 1u);
+    EXPECT_TRUE(fs::exists(dir.path() / "out1.png"));
+    EXPECT_FALSE(fs::exists(dir.path() / "out2.png"));
+    EXPECT_NE(err.find("interrupted at frame 2 of 3"), std::string::npos) << err;
+}
+
+TEST(AnimationLoop, ANestedInterruptScopeKeepsASignalTheLoopsScopeCaught) {
+    rays::cli::InterruptScope loop;
+    ::raise(SIGINT);  // between two frames
+    EXPECT_TRUE(rays::cli::interrupted());
+    {
+        rays::cli::InterruptScope frame;  // the next frame's runRender
+        EXPECT_TRUE(rays::cli::interrupted());
+    }
+    EXPECT_TRUE(rays::cli::interrupted());
+    EXPECT_THROW(rays::cli::throwIfInterrupted(), rays::cli::Interrupted);
 }
 
 TEST(AnimationLoop, ACtrlCOnAStillIsRethrown) {

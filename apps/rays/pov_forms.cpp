@@ -55,7 +55,11 @@ std::vector<std::string> markPovArguments(const std::vector<std::string>& args, 
     std::vector<std::string> out;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        const bool renderOption = a.rfind("--", 0) == 0 || (!povForm && a.size() >= 2 && a[0] == '-' && !isRenderPovArgument(a));
+        // A short option of render's alone (-q, -o FILE, -W N, -H N, -h) is render's in both forms: a
+        // POV-Ray switch with those letters carries its value (-Q9, -Oout.png, -W640).
+        const bool shortAlone = a.size() == 2 && a[0] == '-' && render.get_option_no_throw(a) != nullptr;
+        const bool renderOption = a.rfind("--", 0) == 0 || shortAlone ||
+                                  (!povForm && a.size() >= 2 && a[0] == '-' && !isRenderPovArgument(a));
         if (renderOption) {
             out.push_back(a);
             if (takesNextArgument(a, render) && i + 1 < args.size()) out.push_back(args[++i]);

@@ -19,9 +19,9 @@ namespace rays::cli {
 bool isPovForm(const std::vector<std::string>& args, const std::vector<std::string>& commands);
 
 /// render's arguments with each POV-Ray one rewritten as "--pov=ARG" (an option of render's that
-/// keeps its place). Long options (--name) and their values are render's. In POV-Ray's form
-/// (povForm) every other argument is POV-Ray's (a single dash starts a POV-Ray switch, as in
-/// povray); in `rays render` a POV-Ray argument is a '+' switch, a '-' switch with an upper-case
+/// keeps its place). Long options (--name), render's short options standing alone (-q, -o FILE,
+/// -W N, -H N, -h) and their values are render's. In POV-Ray's form (povForm) every other argument
+/// is POV-Ray's (a single dash starts a POV-Ray switch, as in povray: -D, -Q9); in `rays render` a POV-Ray argument is a '+' switch, a '-' switch with an upper-case
 /// letter other than W and H (-D, -A, -UA; -W and -H are render's own, with the same meaning),
 /// KEY=VALUE or an INI file, and everything else is render's.
 std::vector<std::string> markPovArguments(const std::vector<std::string>& args, const CLI::App& render, bool povForm);
