@@ -283,6 +283,21 @@ std::vector<BadInput> catalogue() {
     t.push_back({"edge-mask-onto-the-scene", {{"scene.png", kScene}},
                  {"render", "scene.png", "16", "12", "--edges", "all", "--edge-mask", "scene.png", "-o", "out.png"}, 2,
                  "scene.png: error: output would overwrite the input file 'scene.png'"});
+    // POV-Ray's form (docs/cli.md "POV-Ray switches and INI files").
+    t.push_back({"pov-ini-bad-width", {{"scene.pov", kScene}, {"bad.ini", "Input_File_Name=scene.pov\nWidth=abc\n"}},
+                 {"bad.ini", "+Oout.png"}, 2, "rays: error: bad.ini:2: Width must be a positive integer, got 'abc'"});
+    t.push_back({"pov-ini-missing", {{"scene.pov", kScene}}, {"+Iscene.pov", "nosuch.ini", "+Oout.png"}, 2,
+                 "rays: error: cannot open INI file 'nosuch.ini' (named on the command line)"});
+    t.push_back({"pov-switch-bad-value", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+R10", "+Oout.png"}, 2,
+                 "rays: error: +R10: Antialias_Depth must be a whole number from 1 to 9, got '10'"});
+    t.push_back({"pov-unknown-switch", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+Zap", "+Oout.png", "-q"},
+                 0, "rays: warning: +Zap: unknown option '+Zap'"});
+    t.push_back({"pov-partial-image", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+SR0.5", "+Oout.png"}, 2,
+                 "rays: error: rendering part of the image (Start_Row, End_Row, Start_Column, End_Column; +SR +ER +SC +EC) "
+                 "is not supported yet: rows 7-12 and columns 1-16 of 16x12 were asked for"});
+    t.push_back({"pov-subset-no-frame", {{"scene.pov", kScene}},
+                 {"+Iscene.pov", "+W16", "+H12", "+KFF3", "+SF5", "+Oout.png"}, 2,
+                 "rays: error: Subset_Start_Frame selects frame 5, after the final frame 3"});
     return t;
 }
 
