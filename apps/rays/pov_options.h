@@ -14,6 +14,10 @@
 
 namespace rays::cli {
 
+namespace pov {
+struct KeyInfo;  // pov_option_table.h
+}
+
 /// A row or column bound (Start_Row, +SR, …): below 1 a fraction of the image, from 1 on a
 /// 1-based pixel number.
 struct PixelBound {
@@ -46,7 +50,6 @@ struct PovOptions {
     std::vector<sdl::Declare> declares;     ///< Declare=NAME=VALUE, in order
     int threads = -1;          ///< Work_Threads, +WT (0: all cores); -1: not given
     bool continueTrace = false;  ///< Continue_Trace, +C (and render's --resume): keep frames already written
-    bool sceneFromOptions = false;  ///< inputFile was given (by any of the forms above)
 };
 
 /// Reads POV-Ray options into a PovOptions, one argument, setting or INI file at a time.
@@ -74,17 +77,26 @@ public:
     void setJpegQuality(int quality);                       ///< --jpeg-quality
     void renderChoseAntialias();                            ///< --spp, --aa or -ss: Rays' own AA wins until a later POV-Ray AA option
 
-private:
+    /// Where a setting was read, for messages.
     struct Where {
         std::string file;  ///< INI file; empty: the command line
         int line = 0;
         std::string text;  ///< the switch or setting as written (for command-line messages)
     };
+
+private:
+    struct Value;
     void readSwitch(const std::string& sw, const Where& where);
     void set(const std::string& key, const std::string& value, const Where& where);
+    static Value readValue(const pov::KeyInfo& info, const std::string& text, const Where& where);
+    bool setAnimation(const Value& v);
+    bool setAntialias(const Value& v);
+    bool setOutput(const Value& v);
+    void setFileType(const Value& v);
+    void setDeclare(const Value& v);
+    void setOther(const Value& v);
     void readIniText(const std::string& text, const std::string& path, const std::string& section);
     void warnOnce(const std::string& key, const std::string& message, const Where& where);
-    [[noreturn]] void bad(const Where& where, const std::string& message) const;
     std::string resolveScene(const std::string& name, const Where& where) const;
 
     PovOptions& o_;
