@@ -151,8 +151,9 @@ std::vector<BadInput> catalogue() {
                  scene("mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,7> } }\n"),
                  render(), 2, "scene.pov:2:1: error: mesh vertex index 7 is out of range (3 available)"});
     // ---- scene files: referenced files ----
-    t.push_back({"missing-include", {{"scene.pov", "#include \"colors.inc\"\n" + kScene}}, render(), 0,
-                 "scene.pov:1:1: warning: #include is not supported by Rays yet; \"colors.inc\" ignored"});
+    t.push_back({"missing-include", {{"scene.pov", "#include \"nosuch.inc\"\n" + kScene}}, render(), 2,
+                 "scene.pov:1:1: error: cannot find include file \"nosuch.inc\" (searched the scene's folder, the library "
+                 "paths and /usr/share/povray-3.7/include)"});
     t.push_back({"missing-texture", scene("sphere { <0,0,0>, 2 pigment { image_map { png \"nosuch.png\" } } }\n"),
                  render(), 2, "scene.pov:2:47: error: cannot open image file 'nosuch.png'"});
     t.push_back({"texture-not-an-image",
@@ -283,6 +284,21 @@ std::vector<BadInput> catalogue() {
     t.push_back({"edge-mask-onto-the-scene", {{"scene.png", kScene}},
                  {"render", "scene.png", "16", "12", "--edges", "all", "--edge-mask", "scene.png", "-o", "out.png"}, 2,
                  "scene.png: error: output would overwrite the input file 'scene.png'"});
+    // POV-Ray's form (docs/cli.md "POV-Ray switches and INI files").
+    t.push_back({"pov-ini-bad-width", {{"scene.pov", kScene}, {"bad.ini", "Input_File_Name=scene.pov\nWidth=abc\n"}},
+                 {"bad.ini", "+Oout.png"}, 2, "rays: error: bad.ini:2: Width must be a positive integer, got 'abc'"});
+    t.push_back({"pov-ini-missing", {{"scene.pov", kScene}}, {"+Iscene.pov", "nosuch.ini", "+Oout.png"}, 2,
+                 "rays: error: cannot open INI file 'nosuch.ini' (named on the command line)"});
+    t.push_back({"pov-switch-bad-value", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+R10", "+Oout.png"}, 2,
+                 "rays: error: +R10: Antialias_Depth must be a whole number from 1 to 9, got '10'"});
+    t.push_back({"pov-unknown-switch", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+Zap", "+Oout.png", "-q"},
+                 0, "rays: warning: +Zap: unknown option '+Zap'"});
+    t.push_back({"pov-partial-image", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+SR0.5", "+Oout.png"}, 2,
+                 "rays: error: rendering part of the image (Start_Row, End_Row, Start_Column, End_Column; +SR +ER +SC +EC) "
+                 "is not supported yet: rows 7-12 and columns 1-16 of 16x12 were asked for"});
+    t.push_back({"pov-subset-no-frame", {{"scene.pov", kScene}},
+                 {"+Iscene.pov", "+W16", "+H12", "+KFF3", "+SF5", "+Oout.png"}, 2,
+                 "rays: error: Subset_Start_Frame selects frame 5, after the final frame 3"});
     return t;
 }
 

@@ -1,7 +1,8 @@
 // Ctrl-C end to end: start a render that would take far longer than the test, send SIGINT (or
 // SIGTERM) while it renders, and check the exit status (130 / 143), the messages, that the output
 // was neither created nor overwritten, that no temporary file is left, and that --save-partial
-// keeps the tiles rendered so far in OUTPUT.partial.png. See docs/errors.md "Interrupting a render".
+// keeps the tiles rendered so far in OUTPUT.partial.png, and that an animation stops at the frame
+// being rendered. See docs/errors.md "Interrupting a render".
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -153,6 +154,21 @@ TEST(Interrupt, SigtermExits143AndAnExistingOutputIsKept) {
     EXPECT_EQ(r.exitCode, 143) << r.err;
     EXPECT_EQ(readFile(dir.path() / "out.png"), previous);
     EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"out.png", "scene.pov"}));
+}
+
+TEST(Interrupt, AnAnimationStopsAtTheFrameBeingRendered) {
+    TempDir dir, logs;
+    std::ofstream(dir.path() / "scene.pov") << kSlowScene;
+    const std::vector<std::string> args = {"+Iscene.pov", "+W1600", "+H1200", "--spp", "64", "--threads", "2",
+                                           "+KFF3", "+Oout.png"};
+    const SignalledRun r = runAndSignal(dir.path(), logs.path() / "err.txt", args, SIGINT, kDelay);
+    ASSERT_FALSE(r.finishedBeforeSignal) << r.err;
+    EXPECT_EQ(r.exitCode, 130) << r.err;
+    EXPECT_NE(r.err.find("rays: interrupted at frame 1 of 3 (frame_number 1, clock 0): out1.png not written; 0 frames "
+                         "written before it; run again with --resume to go on\n"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"scene.pov"});  // no frame, no temporary
 }
 
 // The signal must arrive once rendering has begun; under the sanitizers start-up is slow, so a

@@ -18,6 +18,7 @@ std::atomic<int> criticalDepth{0};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
 
 struct sigaction previousInt, previousTerm;
+int scopeDepth = 0;  // InterruptScopes alive (main thread only); the outermost one owns the handlers
 
 void say(const char* text) {
     size_t n = 0;
@@ -40,6 +41,7 @@ extern "C" void onSignal(int sig) {
 }  // namespace
 
 InterruptScope::InterruptScope() {
+    if (scopeDepth++ > 0) return;  // nested (a frame inside an animation): the outer scope's state holds
     stopRequested.store(false);
     signalCount.store(0);
     lastSignal.store(0);
@@ -53,6 +55,7 @@ InterruptScope::InterruptScope() {
 }
 
 InterruptScope::~InterruptScope() {
+    if (--scopeDepth > 0) return;
     setCancelFlag(nullptr);
     ::sigaction(SIGINT, &previousInt, nullptr);
     ::sigaction(SIGTERM, &previousTerm, nullptr);

@@ -21,7 +21,9 @@ private:
 };
 
 /// While alive: SIGINT and SIGTERM are caught (and the renderer's cancel flag points at ours);
-/// the previous handlers are restored on destruction. One scope at a time.
+/// the previous handlers are restored on destruction. Scopes nest (the animation loop holds one
+/// around each frame's): only the outermost one installs the handlers and clears the signal state,
+/// so a signal between two frames is still seen. Main thread only.
 class InterruptScope {
 public:
     InterruptScope();

@@ -1,7 +1,8 @@
-// rays: command-line entry point. Three forms:
+// rays: command-line entry point. Four forms:
 //   rays render|raycast|sceneinfo|pixelray|firsthit|pixelcolor|printrays SCENE ... (course form,
-//        plus modern options on render),
-//   rays WIDTH HEIGHT INPUT.pov OUTPUT.png SHADING RAYS_PER_PIXEL DEPTH [MODEL.obj] (positional form).
+//        plus modern options and POV-Ray switches on render),
+//   rays WIDTH HEIGHT INPUT.pov OUTPUT.png SHADING RAYS_PER_PIXEL DEPTH [MODEL.obj] (positional form),
+//   rays +Iscene.pov +W640 +H480 ... | rays scene.ini ... (POV-Ray's form: pov_forms.h).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -15,10 +16,15 @@
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
 #include "rays/render/course_commands.h"
+#include "animation.h"
 #include "compare_command.h"
 #include "filter_command.h"
+#include "frame_plan.h"
 #include "heap_setup.h"
 #include "interrupt.h"
+#include "pov_forms.h"
+#include "pov_options.h"
+#include "pov_settings.h"
 #include "rays/image/filter.h"
 #include "render_command.h"
 #include "render_options.h"
@@ -69,9 +75,10 @@ int run(int argc, char** argv) {
         return cli::runCompareCommand(std::vector<std::string>(argv + 2, argv + argc));
     std::vector<std::string> args = cli::normaliseCourseFlags(argc, argv);
     if (!args.empty() && isInteger(args[0])) return runPositional(args);
-    static const char* kCommands[] = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes", "assets", "filter", "compare"};
-    if (!args.empty() && args[0][0] != '-' &&
-        std::none_of(std::begin(kCommands), std::end(kCommands), [&](const char* c) { return args[0] == c; }))
+    static const std::vector<std::string> kCommands = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes", "assets", "filter", "compare"};
+    const bool povForm = cli::isPovForm(args, kCommands);
+    if (!povForm && !args.empty() && args[0][0] != '-' &&
+        std::none_of(kCommands.begin(), kCommands.end(), [&](const std::string& c) { return args[0] == c; }))
         throw Error("rays: error: unknown command '" + args[0] +
                     "' (commands: render, raycast, sceneinfo, pixelray, firsthit, pixelcolor, printrays, scenes, assets, filter, compare; "
                     "or the positional form WIDTH HEIGHT INPUT OUTPUT SHADING RAYS_PER_PIXEL DEPTH [OBJ])");
@@ -80,6 +87,7 @@ int run(int argc, char** argv) {
     app.set_version_flag("--version", std::string("rays ") + RAYS_VERSION);
     app.require_subcommand(1);
     app.footer("Positional form: rays WIDTH HEIGHT INPUT.pov OUTPUT.png SHADING_MODEL RAYS_PER_PIXEL RECURSION_DEPTH [MODEL.obj]\n"
+               "POV-Ray's form: rays +Iscene.pov +W640 +H480 +A0.3 [+Oout.png] [file.ini[Section]] [KEY=VALUE] (see rays render --help)\n"
                "Course flags may be written with one dash: -altbrdf -fresnel -beers -ss=N -sds.\n"
                "Image tools (see their --help): rays filter INPUT OUTPUT KERNEL...; rays compare A B [--diff DIFF]\n");
 
@@ -93,15 +101,29 @@ int run(int argc, char** argv) {
 
     // render
     CLI::App* render = app.add_subcommand("render", "render a scene to an image (default output.png)");
-    render->add_option("scene", scene, "scene file (.pov); or --scene");
-    render->add_option("width", width, "image width in pixels (or -W)");
-    render->add_option("height", height, "image height in pixels (or -H)");
+    cli::SharedOptions shared;
+    std::vector<std::string> povArgs, libraries;
+    std::string dialect;
+    bool strict = false, resume = false;
+    shared.pov = render->add_option("--pov", povArgs, "")  // POV-Ray arguments, marked by markPovArguments
+                     ->allow_extra_args(false)
+                     ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+                     ->group("");
+    shared.scene = render->add_option("scene", scene, "scene file (.pov); or --scene");
+    shared.width = render->add_option("width", width, "image width in pixels (or -W)");
+    shared.height = render->add_option("height", height, "image height in pixels (or -H)");
     cli::addCourseFlags(render, flags);
-    render->add_option("-o,--output", job.outputPath, "output image: .png .jpg .ppm .tga .bmp (default output.png)");
-    render->add_option("-W,--width", width, "image width in pixels");
-    render->add_option("-H,--height", height, "image height in pixels");
+    shared.output = render->add_option("-o,--output", job.outputPath, "output image: .png .jpg .ppm .tga .bmp (default output.png)");
+    shared.widthFlag = render->add_option("-W,--width", width, "image width in pixels");
+    shared.heightFlag = render->add_option("-H,--height", height, "image height in pixels");
     cli::addModernOptions(render, modern, job.settings);
-    render->add_option("--scene", libraryScene, "render a shipped scene by number or name (see `rays scenes`)");
+    shared.libraryScene = render->add_option("--scene", libraryScene, "render a shipped scene by number or name (see `rays scenes`)");
+    shared.library = render->add_option("--library", libraries, "folder searched for #include files, after the scene's (repeatable; POV-Ray: +LPATH)")
+                         ->allow_extra_args(false);
+    render->add_option("--dialect", dialect, "scene language: auto (default) | course | povray")
+        ->check(CLI::IsMember({"auto", "course", "povray"}));
+    render->add_flag("--strict", strict, "a POV-Ray feature parsed but not rendered yet is an error, not a warning");
+    shared.resume = render->add_flag("--resume", resume, "skip frames (or the image) already written (POV-Ray: +C)");
     std::string post;
     render->add_option("--post", post, "filter kernels applied to the rendered image, e.g. gaussian_blur_3,sharpen (see rays filter)");
     render->add_option("--edges", job.edges.types, "feature lines: silhouette,occlusion,intersection,crease,material,shadow,reflection | all | none");
@@ -112,11 +134,22 @@ int run(int argc, char** argv) {
     render->add_flag("--lines-only", job.edges.linesOnly, "lines on white, no shading");
     render->add_option("--edge-mask", job.edges.maskPath, "also write the line coverage as a greyscale image");
     render->add_option("--obj", obj, "add an OBJ mesh to the scene with a default material");
-    render->add_option("--jpeg-quality", job.jpegQuality, "JPEG quality 1-100 (default 90)")->check(CLI::Range(1, 100));
+    shared.jpegQuality = render->add_option("--jpeg-quality", job.jpegQuality, "JPEG quality 1-100 (default 90)")->check(CLI::Range(1, 100));
     render->add_flag("--povray-rotate", povrayRotate, "apply rotate x, then y, then z as POV-Ray does (course: z first)");
     render->add_flag("-q,--quiet", job.quiet, "no progress bar or summary on stderr");
     render->add_flag("--stats", job.stats, "print counters (rays by kind, BVH size) on stderr");
     render->add_flag("--save-partial", job.savePartial, "on Ctrl-C, save what was rendered as OUTPUT.partial.png");
+    for (const char* name : {"--spp", "--aa", "--ss"}) shared.antialias.push_back(render->get_option(name));
+    shared.threads = render->get_option("--threads");
+    render->footer(
+        "POV-Ray switches and INI files (docs/cli.md), mixed with the options above in any order (a later one wins):\n"
+        "  +Iscene.pov +Oout.png +W640 +H480 +A[0.3] -A +AM2 +R3 +J[0.5] -J +L/path +K0.5 +KFI1 +KFF30 +KI0 +KF1 +KC\n"
+        "  +SF/+EF (frame subset) +STP2 +SR/+ER/+SC/+EC (whole image only) +C (resume) +WT2 +FN +FJ +FP +FT +FB\n"
+        "  accepted and not acted on: +D -D +V +P +Q9 +GA etc. +MB +UA (warns) +FN16 (warns)\n"
+        "  KEY=VALUE (Width=640, Declare=NAME=1, Work_Threads=2), file.ini or file.ini[Section]\n"
+        "In `rays render` a POV-Ray switch starts with '+', or '-' and an upper-case letter (-D, -A); -W and -H are the same\n"
+        "in both. -o wins over +O when it comes later and is used exactly as written.\n"
+        "Animation: +KFF N renders frames 1..N as OUTPUT01.png ...; --resume (+C) skips frames already written.");
 
     // raycast
     CLI::App* raycast = app.add_subcommand("raycast", "render flat object colours (course part 1) to output.png");
@@ -154,6 +187,14 @@ int run(int argc, char** argv) {
     CLI::App* pixelcolor = pixelCommand("pixelcolor", "print the shaded colour of a pixel", true);
     CLI::App* printrays = pixelCommand("printrays", "print the whole ray tree of a pixel", true);
 
+    if (povForm) {
+        args = cli::markPovArguments(args, *render, true);
+        args.insert(args.begin(), "render");
+    } else if (!args.empty() && args[0] == "render") {
+        const std::vector<std::string> rest = cli::markPovArguments({args.begin() + 1, args.end()}, *render, false);
+        args.resize(1);
+        args.insert(args.end(), rest.begin(), rest.end());
+    }
     try {
         std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them reversed
         app.parse(reversed);
@@ -169,28 +210,34 @@ int run(int argc, char** argv) {
             std::printf("%3d  %-20s %s\n", ls.number, ls.name.c_str(), ls.description.c_str());
         return 0;
     }
-    if (!libraryScene.empty()) {
-        // With --scene the positionals are W H: they landed one slot early.
-        if (!scene.empty() && isInteger(scene) && height == -1) {
-            height = width;
-            width = toInt(scene, "width");
-            scene.clear();
-        }
-        if (!scene.empty()) throw Error("rays: error: give a scene file or --scene, not both");
-        scene = cli::findScene(libraryScene);
-    }
-    if (render->parsed() && scene.empty()) throw Error("rays: error: no scene: give a scene file or --scene N");
     if (!post.empty()) job.post = parseKernelList(splitKernelList(post));  // bad kernels fail before rendering
     job.scenePath = scene;
     RenderSettings& s = job.settings;
-    cli::applyOptions(flags, modern, s);
     job.rotation = povrayRotate ? RotationOrder::Povray : RotationOrder::Course;
     job.objPath = obj;
 
-    if (render->parsed() || raycast->parsed()) {
+    if (render->parsed()) {
+        // POV-Ray's options and render's own ones for the same settings, in command-line order.
+        cli::PovOptions pov;
+        cli::PovOptionReader reader(pov, [](const std::string& line) { std::cerr << line << '\n'; });
+        cli::readInOrder(*render, shared, reader);
+        if (pov.inputFile.empty())
+            throw Error(povForm ? "rays: error: no scene: give +Iscene.pov, a .pov file or Input_File_Name in an INI file"
+                                : "rays: error: no scene: give a scene file or --scene N");
+        if (pov.antialias.given) modern.aaEdges = false;  // the POV-Ray threshold decides edge-guided sampling
+        cli::applyOptions(flags, modern, s);
+        cli::applyPovOptions(pov, povForm, job);
+        job.language.dialect = dialect == "course" ? sdl::Dialect::Course
+                               : dialect == "povray" ? sdl::Dialect::Povray
+                                                     : sdl::Dialect::Auto;
+        job.language.strict = strict;
+        return cli::runFrames(job, cli::planFrames(pov.animation), pov.continueTrace, cli::runRender);
+    }
+    cli::applyOptions(flags, modern, s);
+    if (raycast->parsed()) {
         s.width = width == -1 ? 640 : width;
         s.height = height == -1 ? 480 : height;
-        if (raycast->parsed()) s.shading = ShadingModel::Flat;
+        s.shading = ShadingModel::Flat;
         return cli::runRender(job);
     }
 

@@ -178,10 +178,11 @@ void checkImageSize(int width, int height) {
 }
 
 Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation,
-                       int threads) {
+                       int threads, const sdl::LanguageOptions& language) {
     ParseOptions opt;
     opt.rotation = rotation;
     opt.threads = threads;
+    opt.language = language;
     Scene scene = loadScene(scenePath, opt);
     if (!objPath.empty()) appendObj(scene, objPath);
     return scene;
@@ -195,7 +196,10 @@ int runRender(const RenderJob& job) {
     if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
 
     auto t0 = Clock::now();
-    const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation, s.threads);
+    sdl::LanguageOptions language = job.language;
+    language.imageWidth = s.width;
+    language.imageHeight = s.height;
+    const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation, s.threads, language);
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
                                     std::to_string(scene.cameras.size()) + ")");
@@ -272,7 +276,7 @@ int runRender(const RenderJob& job) {
     }
     const double writeMs = msSince(t0);
 
-    if (!job.quiet) {
+    if (!job.quiet && job.summary) {
         const double mrays = renderMs > 0 ? stats.total() / (renderMs * 1000.0) : 0.0;
         const double mraysAll = (renderMs + linesMs) > 0 ? stats.total() / ((renderMs + linesMs) * 1000.0) : 0.0;
         if (edges.enabled())

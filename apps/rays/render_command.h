@@ -36,16 +36,20 @@ struct RenderJob {
     bool quiet = false;   ///< no progress bar, no summary line
     bool stats = false;   ///< extra counters on stderr
     bool savePartial = false;  ///< --save-partial: on Ctrl-C, keep what was rendered as OUTPUT.partial.png
+    bool summary = true;  ///< the "rays: wrote ..." line (an animation prints its own line per frame)
+    /// For the scene language: library paths, declarations, the frame's clock, dialect; the image
+    /// size is filled in from settings when the scene is loaded.
+    sdl::LanguageOptions language;
 };
 
 /// Runs the job; throws Error on bad input and Interrupted (interrupt.h) after Ctrl-C or SIGTERM.
 /// Returns the process exit status (0).
 int runRender(const RenderJob& job);
 
-/// Loads the scene (big files on two threads unless threads is 1: ParseOptions::threads) and, when
-/// objPath is set, appends its triangles.
+/// Loads the scene (big files on two threads unless threads is 1: ParseOptions::threads) with the
+/// scene-language options and, when objPath is set, appends its triangles.
 Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation,
-                       int threads = 0);
+                       int threads = 0, const sdl::LanguageOptions& language = {});
 
 /// Throws Error when w×h is not a sensible image size.
 void checkImageSize(int width, int height);

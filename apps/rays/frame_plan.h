@@ -1,0 +1,48 @@
+// POV-Ray's animation arithmetic (reference 3.2.1 "Animation Options", checked against the
+// installed povray 3.7 binary): which frames an animation renders, each frame's clock identifiers
+// (sdl::AnimationClock) and the numbered output file names. Pure functions of plain values.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "rays/sdl/options.h"
+
+namespace rays::cli {
+
+/// A subset frame bound as POV-Ray writes it (Subset_Start_Frame, +SF): below 1 a fraction of the
+/// animation, from 1 on a frame number.
+struct FrameBound {
+    bool given = false;
+    double value = 0;
+};
+
+/// The animation options as given (Initial_Frame … Frame_Step, Clock).
+struct AnimationOptions {
+    int initialFrame = 1;      ///< Initial_Frame, +KFI
+    int finalFrame = -1;       ///< Final_Frame, +KFF; below 1: no animation loop (a still)
+    double initialClock = 0;   ///< Initial_Clock, +KI
+    double finalClock = 1;     ///< Final_Clock, +KF
+    bool clockGiven = false;   ///< Clock, +K was given (a still's clock; clock_on becomes true)
+    double clock = 0;          ///< Clock, +K
+    bool cyclic = false;       ///< Cyclic_Animation, +KC
+    FrameBound subsetStart;    ///< Subset_Start_Frame, +SF
+    FrameBound subsetEnd;      ///< Subset_End_Frame, +EF
+    int frameStep = 1;         ///< Frame_Step, +STP
+};
+
+/// The frames to render, in order.
+struct FramePlan {
+    std::vector<sdl::AnimationClock> frames;  ///< one entry for a still
+    bool animated = false;  ///< numbered output files (the animation loop)
+    int digits = 0;         ///< digits of the frame number in file names (those of final_frame)
+};
+
+/// The frames POV-Ray 3.7 renders for these options; throws Error ("rays: error: ...") for a subset
+/// that selects no frame.
+FramePlan planFrames(const AnimationOptions& a);
+
+/// The output file of frame `frame`: the number, zero-padded to `digits`, goes before the extension
+/// ("out.png", 7, 2 → "out07.png"; "out.x.png" → "out.x07.png"; "dir/out" → "dir/out07").
+std::string frameFileName(const std::string& output, int frame, int digits);
+
+}  // namespace rays::cli

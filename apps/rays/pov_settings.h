@@ -1,0 +1,47 @@
+// How POV-Ray's options become a Rays render job: image size, anti-aliasing (the closest Rays
+// sampling), threads, JPEG quality, the scene, the output file name (POV-Ray's naming rules) and
+// the scene-language options (library paths, declarations).
+#pragma once
+#include <string>
+
+#include "pov_options.h"
+#include "render_command.h"
+
+namespace rays::cli {
+
+/// Rays' sampling chosen for POV-Ray's anti-aliasing.
+struct AaChoice {
+    AaMode mode = AaMode::Grid;
+    int spp = 1;
+    bool edges = false;  ///< edge-guided: supersample only where object ids or shadows change
+};
+
+/// The Rays sampling closest to POV-Ray's adaptive anti-aliasing (reference 3.2.8.7). POV-Ray
+/// supersamples a pixel whose colour differs from a neighbour's by more than the threshold; Rays'
+/// nearest is --aa-edges (supersample where object ids or shadows differ), which ignores the
+/// threshold's size: threshold 0 supersamples every pixel, 3 or more none, anything between uses
+/// edges. Samples: depth² (method 1) or (depth+1)² (method 2), at least 4; jitter picks stratified
+/// samples, no jitter a regular grid. This is the seam where a true POV-Ray adaptive sampler goes.
+AaChoice mapPovAntialias(const PovAntialias& aa);
+
+/// The extension of Output_File_Type `type` (0: PNG): ".png", ".ppm", ".tga", ".jpg" or ".bmp".
+std::string fileTypeExtension(char type);
+
+/// The image file named by the options. Render's -o is used as written. +O / Output_File_Name
+/// follows POV-Ray: a folder (ending in '/' or existing) gets the scene's name; with an
+/// Output_File_Type the type's extension is added unless the name already ends in it ("out.png"
+/// with +FT is "out.png.tga"); without one a name Rays can write (.png .jpg .jpeg .ppm .tga .bmp)
+/// is kept and any other gets ".png". With no name: POV-Ray's form (povForm) writes the scene's
+/// name with the type's extension in the current folder, `rays render` writes "output" with it.
+std::string povOutputPath(const PovOptions& o, bool povForm);
+
+/// Throws Error when the options ask for part of the image (+SR +ER +SC +EC; rendering a window is
+/// not supported yet); a region covering the whole image is accepted.
+void checkFullImage(const PovOptions& o, int width, int height);
+
+/// Applies the options to job: scene, size (640×480 when not given), anti-aliasing (when a POV-Ray
+/// AA option came after render's own --spp/--aa/-ss; it then also decides --aa-edges), threads, JPEG quality, output path, library
+/// paths and declarations. Throws Error for a partial image.
+void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job);
+
+}  // namespace rays::cli
