@@ -224,9 +224,8 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
                 args.push_back(parseRValue());
             }
             if (isSym(')')) break;
-            if (!isSym(','))
+            if (!acceptSym(',') && atEnd())  // POV-Ray also reads arguments not separated by ','
                 errorHere("expected ',' or ')' in the arguments of macro " + name + ", found " + describe());
-            next();
         }
     }
     next();  // ')'
