@@ -1,0 +1,95 @@
+// A compiled function: code for a register machine (fn/machine.h runs it), its constants, the
+// argument lists of its calls and the functions it calls.
+//
+// Why registers and not a stack: a tree of N operators becomes about N instructions that name
+// their operands (`d = a + b`, `d = a * 2.5` with the constant in the instruction), where a stack
+// machine needs loads and stores around every operator; each instruction costs one dispatch, so
+// fewer, fatter instructions are what makes the interpreter fast. The same register code runs
+// over blocks of points at once (Program::batch): every instruction then loops over kBatch lanes,
+// the dispatch cost is shared and the loops vectorise.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "rays/fn/expr.h"
+
+namespace rays::fn {
+
+struct Ir;
+
+/// Points evaluated together by the batch form (registers hold kBatch lanes each).
+inline constexpr int kBatch = 32;
+
+/// A function supplied by the host (pattern, pigment, transform and spline functions): `inputs`
+/// arguments in, `outputs` values (1..5) out. `fn` must be safe to call from many threads at once.
+struct HostFunction {
+    using Fn = void (*)(const void* data, const double* in, double* out);
+    Fn fn = nullptr;
+    const void* data = nullptr;
+    int inputs = 3;
+    int outputs = 1;
+};
+
+/// Machine opcodes. Fields: d destination, a/b/c operand registers, k an immediate constant,
+/// aux a jump target, a callee or an internal number; `list` an offset into Program::lists.
+enum class Code : uint16_t {
+    Ret,      ///< return r[a]
+    Mov,      ///< d = a
+    Const,    ///< d = k
+    // d = f(a)
+    Neg, Not, Abs, Acos, Acosh, Asin, Asinh, Atan, Atanh, Ceil, Cos, Cosh, Exp, Floor, Sin, Sinh,
+    Sqrt, Tan, Tanh, Int, Ln, Log, Sqr,
+    // d = a op b
+    Add, Sub, Mul, Div, Lt, Le, Gt, Ge, Eq, Ne, And, Or, Atan2, Mod, Pow, IntDiv, Max, Min,
+    // d = a op k, k op a
+    AddK, SubK, KSub, MulK, DivK, KDiv, MaxK, KMax, MinK, KMin, PowK,
+    // fused: d = a*b + c, d = a*b - c (rounded twice, as the separate ops)
+    MulAdd, MulSub,
+    Select3,  ///< d = a < 0 ? b : c
+    Select4,  ///< d = a < 0 ? b : a == 0 ? c : r[aux]
+    Cond,     ///< d = a != 0 ? b : c
+    Jump,     ///< go to aux
+    JumpIfZero,     ///< if a == 0 go to aux
+    JumpIfNotNeg,   ///< if !(a < 0) go to aux
+    JumpIfNotZero,  ///< if !(a == 0) go to aux
+    JumpIfNotLe,    ///< if !(a <= b) go to aux (the sum/prod loop test)
+    Call,     ///< d = callee aux (a compiled function) of the c arguments listed at `list`
+    Host,     ///< d = member b of host function aux of the c arguments listed at `list`
+    Internal, ///< d = internal function aux of the c arguments listed at `list`
+};
+
+struct Instr {
+    Code op = Code::Ret;
+    uint16_t d = 0, a = 0, b = 0, c = 0;
+    uint16_t unused = 0;
+    uint32_t aux = 0;  ///< jump target, callee, host or internal number; for Call/Host/Internal
+                       ///< the argument list's offset is in `list`
+    union {
+        double k = 0;
+        uint32_t list;
+    };
+};
+
+/// A compiled float function. Immutable once built: any number of threads may run it at once,
+/// each with its own Scratch.
+struct Program {
+    int params = 0;                ///< arguments, 1..56 (registers 0..params-1)
+    int outputs = 1;               ///< 1 for compiled functions; a host function's outputs
+    std::vector<Instr> code;       ///< scalar code (jumps around untaken branches, loops)
+    std::vector<Instr> batch;      ///< branch-free code for kBatch lanes; empty: run lanes one by one
+    std::vector<double> pool;      ///< constants copied to registers params.. at every scalar run
+    std::vector<double> batchPool; ///< the same for the batch code (broadcast to all lanes)
+    std::vector<uint16_t> lists;   ///< argument registers of Call/Host/Internal instructions
+    std::vector<std::shared_ptr<const Program>> callees;  ///< compiled functions called (aux)
+    std::vector<HostFunction> hosts;                      ///< host functions called (aux)
+    int registers = 0;             ///< registers of one scalar frame (params, pool, temporaries)
+    int batchRegisters = 0;        ///< registers of one batch frame
+    int scalarFrame = 0;           ///< doubles a scalar run needs, callees' frames included
+    int batchFrame = 0;            ///< doubles a batch run needs, callees' frames included
+    int callDepth = 1;             ///< 1 + the deepest chain of calls below (before inlining)
+    bool hostWrapper = false;      ///< this program only forwards its arguments to hosts[0]
+    std::shared_ptr<const Ir> inlineBody;  ///< the folded tree, kept when small enough to inline
+};
+
+}  // namespace rays::fn
