@@ -130,6 +130,20 @@ TEST(SdlSplines, LinearSplineInterpolatesAndClamps) {
     EXPECT_EQ(dbg(std::string(s) + "#debug vstr(3, P(2), \",\", 0, 1)"), "2.0,4.0,6.0");
 }
 
+TEST(SdlFunctions, BodiesCompileAndEvaluateWhileParsing) {
+    EXPECT_EQ(dbg("#declare F = function { x*x + y*y + z*z - 1 } #debug str(F(1, 2, 3), 0, 1)"), "13.0");
+    EXPECT_EQ(dbg("#declare G = function(a, b) { select(a - b, -1, 1) } #debug str(G(1, 2), 0, 0)"), "-1");
+    EXPECT_EQ(dbg("#declare K = 3; #declare H = function(u) { u * K + pi * 0 } #declare K = 100; #debug str(H(2), 0, 0)"),
+              "6");  // identifiers of floats are constants of the body, read when it is defined
+    EXPECT_EQ(dbg("#declare F = function(n) { prod(i, 1, n, i) } #debug str(F(5), 0, 0)"), "120");
+    EXPECT_EQ(dbg("#declare A = function { x + 1 } #declare B = function { A(x, y, z) * 2 } #debug str(B(1, 0, 0), 0, 0)"), "4");
+    // A macro in a body runs once, when the function is defined.
+    EXPECT_EQ(dbg("#macro Two() 2 #end #declare F = function { x * Two() } #debug str(F(8, 0, 0), 0, 0)"), "16");
+    EXPECT_EQ(dbg("#declare S = function { spline { linear_spline 0, <0,0,0>, 1, <2,4,6> } } #debug str(S(0.5).y, 0, 1)"), "2.0");
+    EXPECT_NE(err("#declare F = function { x + Nope }").find("undeclared identifier 'Nope' in a function body"), std::string::npos);
+    EXPECT_NE(err("#declare F = function { x } #declare G = F(1, 2);").find("takes 3 arguments, 2 given"), std::string::npos);
+}
+
 TEST(SdlItems, DeclaredObjectIsBoundBeforeTheNextDirective) {
     const test::SdlRun r = runSdl("#declare O = sphere { 0, 1 }\n#declare P = object { O }\nobject { P }");
     ASSERT_EQ(r.error, "");

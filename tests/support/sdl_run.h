@@ -56,6 +56,7 @@ public:
     TraceResult trace(const sdl::Item&, const double*, const double*) override { return {}; }
     int inside(const sdl::Item&, const double*) override { return -1; }
     bool extent(const sdl::Item&, double*, double*) override { return false; }
+    std::array<double, 12> transformMatrix(const sdl::Item&) override { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; }
 
     std::vector<sdl::ItemRef> items, defaults;
 };

@@ -1,6 +1,7 @@
 #include "rays/pov/pov_host.h"
 
 #include "rays/pov/grammar.h"
+#include "rays/pov/item_values.h"
 
 namespace rays::pov {
 
@@ -41,5 +42,13 @@ void PovHost::setDefault(sdl::Interpreter&, const sdl::ItemRef& item) {
 PovHost::TraceResult PovHost::trace(const sdl::Item&, const double*, const double*) { return {}; }
 int PovHost::inside(const sdl::Item&, const double*) { return -1; }
 bool PovHost::extent(const sdl::Item&, double*, double*) { return false; }
+
+std::array<double, 12> PovHost::transformMatrix(const sdl::Item& t) {
+    const Transform m = transformOf(t);
+    std::array<double, 12> out{};
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) out[size_t(r * 4 + c)] = m.m[r][c];
+    return out;
+}
 
 }  // namespace rays::pov

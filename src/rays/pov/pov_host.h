@@ -29,6 +29,7 @@ public:
     TraceResult trace(const sdl::Item& object, const double origin[3], const double dir[3]) override;
     int inside(const sdl::Item& object, const double point[3]) override;
     bool extent(const sdl::Item& object, double lo[3], double hi[3]) override;
+    std::array<double, 12> transformMatrix(const sdl::Item& transform) override;
 
 private:
     ParsedScene& out_;

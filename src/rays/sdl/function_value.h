@@ -1,11 +1,13 @@
-// A user function value (`function { ... }`): its parameters and where its body is; the
-// function machine (src/rays/fn) compiles float bodies. Pattern, pigment, transform and spline
-// functions keep the item or spline they wrap.
+// A user function value (`function { ... }`): an entry of the parse's function table
+// (src/rays/fn), compiled from its body as it was read (macros in the body ran once, identifiers
+// of floats became constants). Pattern and pigment functions keep the item they wrap for the
+// renderer; transform and spline functions are evaluated by the table's host entries.
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "rays/fn/function_table.h"
 #include "rays/sdl/item.h"
 #include "rays/sdl/source_file.h"
 #include "rays/sdl/value.h"
@@ -15,12 +17,12 @@ namespace rays::sdl {
 struct FunctionValue {
     enum class Kind : uint8_t { Float, Pattern, Pigment, Transform, Spline };
     Kind kind = Kind::Float;
-    Loc loc;                       ///< the `function` keyword
-    std::vector<uint32_t> params;  ///< parameter names (x y z when none were written)
-    uint32_t file = 0;             ///< Float: the body's tokens, from bodyStart to bodyEnd (the '}')
-    uint32_t bodyStart = 0, bodyEnd = 0;
-    ItemRef item;                  ///< Pattern, Pigment, Transform: what the host read
-    Value spline;                  ///< Spline
+    Loc loc;                                  ///< the `function` keyword
+    std::vector<uint32_t> params;             ///< parameter names (x y z when none were written)
+    std::shared_ptr<fn::FunctionTable> table; ///< the parse's functions
+    int index = -1;                           ///< this function's entry in table
+    ItemRef item;                             ///< Pattern, Pigment, Transform: what the host read
+    Value spline;                             ///< Spline
 };
 
 }  // namespace rays::sdl

@@ -4,6 +4,7 @@
 // Item; top-level items and `#default` go to the host. Parse-time questions about geometry
 // (trace, inside, min_extent, max_extent) are answered by the host too.
 #pragma once
+#include <array>
 #include <string>
 
 #include "rays/sdl/item.h"
@@ -35,6 +36,8 @@ public:
     virtual TraceResult trace(const Item& object, const double origin[3], const double dir[3]) = 0;
     /// inside(): 1 inside, 0 outside, -1 not supported.
     virtual int inside(const Item& object, const double point[3]) = 0;
+    /// The 3×4 matrix (rows, object → world) of a transform item, for transform functions.
+    virtual std::array<double, 12> transformMatrix(const Item& transform) = 0;
     /// min_extent / max_extent: false when not supported.
     virtual bool extent(const Item& object, double lo[3], double hi[3]) = 0;
 };

@@ -17,6 +17,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "rays/fn/function_table.h"
 #include "rays/sdl/host.h"
 #include "rays/sdl/item.h"
 #include "rays/sdl/names.h"
@@ -165,6 +166,11 @@ public:
         Interpreter& in_;
     };
 
+    /// The parse's user functions (shared with the scene for the renderer).
+    const std::shared_ptr<fn::FunctionTable>& functions() const { return functions_; }
+    /// A float value or an error naming what (for readers outside the interpreter).
+    double toFloatValue(const Value& v, const Loc& at, std::string_view what) { return toFloat(v, at, what); }
+
     /// Defines identifier `name` at global level (command-line Declare=NAME=VALUE).
     void declareGlobal(const std::string& name, Value v);
     Scopes& scopes() { return scopes_; }
@@ -285,6 +291,8 @@ private:
     uint64_t ticks_ = 0;
     std::vector<std::string> deprecatedMessages_;
     RandomStreams random_;
+    std::shared_ptr<fn::FunctionTable> functions_ = std::make_shared<fn::FunctionTable>();
+    std::vector<std::shared_ptr<void>> hostData_;  ///< what the table's host entries point at
     std::unordered_map<std::string, int> warnedTimes_;
 };
 
