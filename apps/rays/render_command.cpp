@@ -183,6 +183,7 @@ Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath,
     opt.rotation = rotation;
     opt.threads = threads;
     opt.language = language;
+    opt.checkInterrupt = [] { throwIfInterrupted(); };  // Ctrl-C stops a long parse
     Scene scene = loadScene(scenePath, opt);
     if (!objPath.empty()) appendObj(scene, objPath);
     return scene;

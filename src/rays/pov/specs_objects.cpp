@@ -95,7 +95,7 @@ void Specs::buildObjects() {
                                number(Kw::tolerance)};
     sphereSweep = makeSpec("a sphere_sweep", Kw::sphere_sweep, {&sweepRules, &mods}, true);
     const RuleGroup patchRules{number(Kw::type), number(Kw::flatness), number(Kw::u_steps), number(Kw::v_steps),
-                               number(Kw::accuracy)};
+                               number(Kw::accuracy), list(Kw::uv_vectors, 4)};
     bicubicPatch = makeSpec("a bicubic_patch", Kw::bicubic_patch, {&patchRules, &mods}, true);
     ovus = makeSpec("an ovus", Kw::ovus, {&mods}, true);
     const RuleGroup isoRules{function(Kw::function), sub(Kw::contained_by, containedBy), number(Kw::threshold),
