@@ -139,6 +139,26 @@ status_of() {  # rc seconds_limit wall_us image
   fi
 }
 
+# A scene with an INI file of the same name (the portfolio scenes: animations that set
+# frame_number) runs with it, frame 1 only, for both renderers.
+ini_args() {  # scene arrayname
+  local -n into=$2
+  local file=${1%.pov}.ini
+  into=()
+  [ -f "$file" ] && into=("$(basename "$file")" +SF1 +EF1)
+  return 0
+}
+
+# An animation's frame is written as BASE<digits>.png: rename it to BASE.png.
+first_frame_image() {  # base
+  [ -f "$1.png" ] && return 0
+  local f
+  for f in "$1"[0-9]*.png; do
+    [ -f "$f" ] && mv -f "$f" "$1.png" && return 0
+  done
+  return 0
+}
+
 signal_name() { kill -l "$(($1 - 128))" 2>/dev/null || echo "$(($1 - 128))"; }
 
 # Renders the POV-Ray reference unless the cache holds one for this scene's contents (a cached
@@ -156,9 +176,12 @@ povray_reference() {  # scene rel rundir
   rm -f "$base.png" "$base.part.png"
   local t0 t1 rc=0
   t0=$(now_us)
-  (cd "$rundir" && timeout -k 5 "$POV_TIMEOUT" povray "+I$(basename "$scene")" "+O$base.part.png" \
+  local ini=()
+  ini_args "$scene" ini
+  (cd "$rundir" && timeout -k 5 "$POV_TIMEOUT" povray "${ini[@]}" "+I$(basename "$scene")" "+O$base.part.png" \
       "+W$WIDTH" "+H$HEIGHT" -D -A Work_Threads=2 "+L$INCLUDE" </dev/null >/dev/null 2>"$base.log") 2>/dev/null || rc=$?
   t1=$(now_us)
+  first_frame_image "$base.part"
   local status
   status=$(status_of "$rc" "$POV_TIMEOUT" $((t1 - t0)) "$base.part.png")
   if [ "$status" = ok ]; then mv -f "$base.part.png" "$base.png"; else rm -f "$base.part.png"; fi
@@ -183,8 +206,16 @@ run_scene() {  # scene rel rundir
   rm -f "$img.png" "$dif.png" "$dif.txt"
   local t0 t1 rc=0
   t0=$(now_us)
-  (cd "$rundir" && timeout -k 5 "$RAYS_TIMEOUT" "$RAYS" render "$(basename "$scene")" "$WIDTH" "$HEIGHT" -o "$img.png" \
-      "+L$INCLUDE" --threads 2 </dev/null >/dev/null 2>"$img.log") 2>/dev/null || rc=$?
+  local ini=()
+  ini_args "$scene" ini
+  if [ ${#ini[@]} -gt 0 ]; then
+    (cd "$rundir" && timeout -k 5 "$RAYS_TIMEOUT" "$RAYS" "${ini[@]}" "+I$(basename "$scene")" "+O$img.png" \
+        "+W$WIDTH" "+H$HEIGHT" -A Work_Threads=2 "+L$INCLUDE" </dev/null >/dev/null 2>"$img.log") 2>/dev/null || rc=$?
+    first_frame_image "$img"
+  else
+    (cd "$rundir" && timeout -k 5 "$RAYS_TIMEOUT" "$RAYS" render "$(basename "$scene")" "$WIDTH" "$HEIGHT" -o "$img.png" \
+        "+L$INCLUDE" --threads 2 </dev/null >/dev/null 2>"$img.log") 2>/dev/null || rc=$?
+  fi
   t1=$(now_us)
   local status warnings notes first_error
   status=$(status_of "$rc" "$RAYS_TIMEOUT" $((t1 - t0)) "$img.png")
@@ -215,7 +246,7 @@ run_scene() {  # scene rel rundir
 
 export out refdir REFRESH=$refresh WIDTH=$width HEIGHT=$height POV_TIMEOUT=$pov_timeout RAYS_TIMEOUT=$rays_timeout \
   RAYS=$rays INCLUDE=$include
-export -f now_us seconds clean status_of signal_name povray_reference run_scene
+export -f now_us seconds clean status_of signal_name ini_args first_frame_image povray_reference run_scene
 
 # A scene's name in the results: its path under the examples folder, else other/<absolute path>.
 name_of() { if [ -n "$examples" ] && [[ $1 == "$examples"/* ]]; then echo "${1#"$examples"/}"; else echo "other$1"; fi; }
