@@ -68,7 +68,8 @@ bool Interpreter::isBuiltinFunction(Kw k) const {
 
 // The arguments of a call: '(' value {',' value} ')', each a numeric expression or a string.
 std::vector<Value> Interpreter::callArgs(const char* name, size_t minArgs, size_t maxArgs) {
-    expectSym('(', std::string("after ") + name);
+    if (!isSym('(')) errorHere(std::string("expected '(' after ") + name + ", found " + describe());
+    next();
     std::vector<Value> args;
     if (!isSym(')')) {
         for (;;) {
@@ -89,14 +90,17 @@ std::vector<Value> Interpreter::callArgs(const char* name, size_t minArgs, size_
 }
 
 Value Interpreter::builtin(Kw k, const Loc& at) {
-    const std::string name(keywordName(k));
+    const std::string_view name = keywordName(k);
     next();
-    auto f = [&](const Value& v, int i) { return toFloat(v, at, name + " argument " + std::to_string(i + 1)); };
+    auto f = [&](const Value& v, int i) {
+        if (v.type == VType::Float) return v.c[0];
+        return toFloat(v, at, std::string(name) + " argument " + std::to_string(i + 1));
+    };
     auto str = [&](const Value& v) -> const std::string& {
-        if (v.type != VType::String) error(at, name + " needs a string");
+        if (v.type != VType::String) error(at, std::string(name) + " needs a string");
         return v.str();
     };
-    auto one = [&](double (*fn)(double)) { return Value::number(fn(f(callArgs(name.c_str(), 1, 1)[0], 0))); };
+    auto one = [&](double (*fn)(double)) { return Value::number(fn(f(callArgs(name.data(), 1, 1)[0], 0))); };
     switch (k) {
         case Kw::abs: return one(std::fabs);
         case Kw::acos: return one(std::acos);
@@ -137,13 +141,13 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
             return Value::number(std::trunc(f(a[0], 0) / f(a[1], 1)));
         }
         case Kw::max: case Kw::min: {
-            const auto a = callArgs(name.c_str(), 1, SIZE_MAX);
+            const auto a = callArgs(name.data(), 1, SIZE_MAX);
             double r = f(a[0], 0);
             for (size_t i = 1; i < a.size(); ++i) r = k == Kw::max ? std::max(r, f(a[i], int(i))) : std::min(r, f(a[i], int(i)));
             return Value::number(r);
         }
         case Kw::bitwise_and: case Kw::bitwise_or: case Kw::bitwise_xor: {
-            const auto a = callArgs(name.c_str(), 2, SIZE_MAX);
+            const auto a = callArgs(name.data(), 2, SIZE_MAX);
             long long r = (long long)f(a[0], 0);
             for (size_t i = 1; i < a.size(); ++i) {
                 const long long b = (long long)f(a[i], int(i));
@@ -215,9 +219,9 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
             return Value::number(d ? 1 : 0);
         }
         case Kw::dimensions: case Kw::dimension_size: {
-            expectSym('(', "after " + name);
+            expectSym('(', "after " + std::string(name));
             const Binding* b = identBinding();
-            if (!b || b->value.type != VType::Array) errorHere(name + " needs an array identifier, found " + describe());
+            if (!b || b->value.type != VType::Array) errorHere(std::string(name) + " needs an array identifier, found " + describe());
             const Value arr = b->value;
             next();
             double r = double(arr.arr().sizes.size());
@@ -227,7 +231,7 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
                 if (d < 1 || size_t(d) > arr.arr().sizes.size()) error(at, "dimension_size: no dimension " + std::to_string(d));
                 r = arr.arr().sizes[size_t(d - 1)];
             }
-            expectSym(')', "to close " + name);
+            expectSym(')', "to close " + std::string(name));
             return Value::number(r);
         }
         case Kw::inside: case Kw::trace: case Kw::min_extent: case Kw::max_extent:
@@ -235,7 +239,7 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
         default:
             break;
     }
-    error(at, "'" + name + "' is not a function");
+    error(at, "'" + std::string(name) + "' is not a function");
 }
 
 // defined(NAME) / defined(NAME[i]): the '(' is consumed, the name is current.

@@ -23,8 +23,8 @@ bool opensBlock(uint32_t id) {
 }  // namespace
 
 void Interpreter::directive(const Token& t) {
-    const Loc at{frames_.back().file->id, t.line, t.col};
-    const uint32_t directivePos = frames_.back().pos - 1;
+    const Loc at{topFile_, t.line, t.col};
+    const uint32_t directivePos = topPos() - 1;
     if (!Names::isKeyword(t.id)) error(at, "unknown directive '#" + std::string(names_.name(t.id)) + "'");
     switch (Kw(t.id)) {
         case Kw::include: return dirInclude(at);
@@ -80,13 +80,12 @@ bool Interpreter::truth(const Value& v, const Loc& at) {
 }
 
 Interpreter::SkipStop Interpreter::skip(bool stopAtElse, bool stopAtCase, const Loc& opener, const char* openerName) {
-    Frame& f = frames_.back();
     int depth = 0;
     for (;;) {
-        const Token& t = f.file->tokens[f.pos];
+        const Token& t = *cursor_;
         if (t.kind == Tk::End)
             error(opener, std::string("#") + openerName + " is never closed by #end (end of file reached)");
-        ++f.pos;
+        ++cursor_;
         if (t.kind != Tk::Directive || !Names::isKeyword(t.id)) continue;
         if (opensBlock(t.id)) {
             ++depth;
@@ -106,12 +105,11 @@ Interpreter::SkipStop Interpreter::skip(bool stopAtElse, bool stopAtCase, const 
 }
 
 void Interpreter::skipPastEnds(int count, const Loc& opener) {
-    Frame& f = frames_.back();
     int depth = 0;
     while (count > 0) {
-        const Token& t = f.file->tokens[f.pos];
+        const Token& t = *cursor_;
         if (t.kind == Tk::End) error(opener, "this block is never closed by #end (end of file reached)");
-        ++f.pos;
+        ++cursor_;
         if (t.kind != Tk::Directive || !Names::isKeyword(t.id)) continue;
         if (opensBlock(t.id)) {
             ++depth;
@@ -188,7 +186,7 @@ void Interpreter::dirEnd(const Loc& at) {
         case Ctl::While:
             if (++iterations_ > limits_.loopIterations)
                 error(c.loc, "loops ran more than " + std::to_string(limits_.loopIterations) + " iterations (runaway #while?)");
-            f.pos = c.pos;  // the #while runs again and tests its condition
+            jumpTo(c.pos);  // the #while runs again and tests its condition
             f.ctl.pop_back();
             return;
         case Ctl::For: {
@@ -200,7 +198,7 @@ void Interpreter::dirEnd(const Loc& at) {
             const double v = b->value.c[0] + c.step;
             scopes_.local(c.var, Value::number(v));
             if (c.step > 0 ? v <= c.end : v >= c.end) {
-                f.pos = c.pos;
+                jumpTo(c.pos);
             } else {
                 f.ctl.pop_back();
             }
@@ -303,7 +301,7 @@ void Interpreter::dirFor(const Loc& at) {
     scopes_.local(var, Value::number(start));
     if (step > 0 ? start <= end : start >= end) {
         Ctl c{Ctl::For, at};
-        c.pos = frames_.back().pos;
+        c.pos = topPos();
         c.var = var;
         c.end = end;
         c.step = step;
@@ -379,9 +377,7 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
     }
     // Other declarations may end with ';': taken when it is the very next token of this file.
     if (!have_) {
-        Frame& f = frames_.back();
-        const Token& t = f.file->tokens[f.pos];
-        if (t.kind == Tk::Symbol && t.sym == ';') ++f.pos;
+        if (cursor_->kind == Tk::Symbol && cursor_->sym == ';') ++cursor_;
     } else if (isSym(';')) {
         next();
     }
@@ -438,7 +434,7 @@ void Interpreter::dirMacro(const Loc& at) {
         errorHere("expected ',' or ')' in the macro's parameter list, found " + describe());
     next();
     def->file = frames_.back().file->id;
-    def->bodyStart = frames_.back().pos;
+    def->bodyStart = topPos();
     skip(false, false, at, "macro");
     const uint32_t name = def->name;
     scopes_.declare(name, Value::macro(std::move(def)));

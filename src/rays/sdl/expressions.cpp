@@ -51,7 +51,29 @@ Value make(VType type, int dim, const std::array<double, 5>& c) {
 
 }  // namespace
 
+namespace {
+// Two floats: the common case, without the promotion to vectors.
+double combineFloats(char op, double x, double y) {
+    switch (op) {
+        case '+': return x + y;
+        case '-': return x - y;
+        case '*': return x * y;
+        case '/': return y == 0 ? HUGE_VAL : x / y;
+        case '<': return x < y;
+        case '>': return x > y;
+        case kLessEq: return x < y || std::fabs(x - y) < kEpsilon;
+        case kGreaterEq: return x > y || std::fabs(x - y) < kEpsilon;
+        case '=': return std::fabs(x - y) < kEpsilon;
+        case kNotEq: return std::fabs(x - y) >= kEpsilon;
+        case '&': return std::fabs(x) > kEpsilon && std::fabs(y) > kEpsilon;
+        case '|': return std::fabs(x) > kEpsilon || std::fabs(y) > kEpsilon;
+    }
+    return 0;
+}
+}  // namespace
+
 Value combine(char op, const Value& a, const Value& b) {
+    if (a.type == VType::Float && b.type == VType::Float) return Value::number(combineFloats(op, a.c[0], b.c[0]));
     std::array<double, 5> x, y, r{};
     VType type;
     const int dim = promote(a, b, x, y, type);

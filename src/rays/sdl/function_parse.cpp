@@ -405,8 +405,7 @@ Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at
     } else {
         if (k == Kw::internal) {
             // `function { internal(N) }` (functions.inc) takes the internal function's own parameters.
-            const Frame& fr = frames_.back();
-            const Token* t = &fr.file->tokens[have_ ? fr.pos - 1 : fr.pos];
+            const Token* t = have_ ? cursor_ - 1 : cursor_;
             if (t[1].kind == Tk::Symbol && t[1].sym == '(' && t[2].kind == Tk::Number && t[3].kind == Tk::Symbol &&
                 t[3].sym == ')' && t[4].kind == Tk::Symbol && t[4].sym == '}')
                 if (const fn::InternalFunction* f = fn::internalFunction(int(t[2].number))) {

@@ -110,6 +110,17 @@ void Interpreter::runText(std::string_view text, const std::string& shownName, c
     topLevelLoop();
 }
 
+void Interpreter::saveTop() {
+    if (!frames_.empty()) frames_.back().pos = topPos();
+}
+
+void Interpreter::enterTop() {
+    const Frame& f = frames_.back();
+    base_ = f.file->tokens.data();
+    cursor_ = base_ + f.pos;
+    topFile_ = f.file->id;
+}
+
 void Interpreter::pushFile(const SourceFile& f, Frame&& frame) {
     frame.file = &f;
     frame.pos = 0;
@@ -117,7 +128,9 @@ void Interpreter::pushFile(const SourceFile& f, Frame&& frame) {
         scopes_.pushLevel();
         frame.ownScope = true;
     }
+    saveTop();
     frames_.push_back(std::move(frame));
+    enterTop();
 }
 
 void Interpreter::topLevelLoop() {
@@ -148,33 +161,31 @@ void Interpreter::topLevelLoop() {
     }
 }
 
-void Interpreter::tick() {
-    if ((++ticks_ & 0xFFFF) == 0) {
-        if (diag_.checkInterrupt) diag_.checkInterrupt();
-        if (ticks_ > limits_.tokens) errorHere("the parse read more than " + std::to_string(limits_.tokens) + " tokens");
-    }
+void Interpreter::tickSlow() {
+    if (diag_.checkInterrupt) diag_.checkInterrupt();
+    if (ticks_ > limits_.tokens) errorHere("the parse read more than " + std::to_string(limits_.tokens) + " tokens");
 }
 
 void Interpreter::fetch(bool expandMacros) {
     for (;;) {
         tick();
-        Frame& f = frames_.back();
-        const Token& t = f.file->tokens[f.pos];
+        const Token& t = *cursor_;
         if (t.kind == Tk::End) {
             if (frames_.size() == 1) {
+                const Frame& f = frames_.back();
                 if (!f.ctl.empty()) {
                     const Ctl& open = f.ctl.back();
                     error(open.loc, "this directive is never closed by #end (end of file reached)");
                 }
                 cur_ = t;
-                curLoc_ = Loc{f.file->id, t.line, t.col};
+                curLoc_ = Loc{topFile_, t.line, t.col};
                 have_ = true;
                 return;
             }
             endOfFrame();
             continue;
         }
-        ++f.pos;
+        ++cursor_;
         if (t.kind == Tk::Directive) {
             directive(t);
             if (have_) return;  // a directive that looked ahead left the token after it current
@@ -189,7 +200,7 @@ void Interpreter::fetch(bool expandMacros) {
             }
         }
         cur_ = t;
-        curLoc_ = Loc{f.file->id, t.line, t.col};
+        curLoc_ = Loc{topFile_, t.line, t.col};
         have_ = true;
         return;
     }
@@ -201,19 +212,21 @@ void Interpreter::endOfFrame() {
     if (f.kind == Frame::Macro) error(f.site, "macro body ended without #end");
     if (f.ownScope) scopes_.popLevel();
     frames_.pop_back();
+    enterTop();
 }
 
 // ---- macros --------------------------------------------------------------------------------------
 
 void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
     const auto def = std::static_pointer_cast<const MacroDef>(macroValue.ref);
-    const Loc at{frames_.back().file->id, nameTok.line, nameTok.col};
-    const std::string name(names_.name(nameTok.id));
+    const Loc at{topFile_, nameTok.line, nameTok.col};
+    const std::string name(names_.name(nameTok.id));  // (short: kept in the string's own buffer)
     if (!isSym('(')) error(at, "macro " + name + " must be called with a parameter list: " + name + "(...)");
     next();
     std::vector<Value> args;  // Undefined: an argument left empty
     std::vector<ByRefArg> byRef;
     const size_t n = def->params.size();
+    args.reserve(n);
     if (!isSym(')')) {
         for (;;) {
             if (args.size() >= n)
@@ -249,15 +262,16 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
     fr.macro = def;
     fr.byRef = std::move(byRef);
     fr.ownScope = true;
+    saveTop();
     frames_.push_back(std::move(fr));
+    enterTop();
 }
 
 // A lone identifier is passed by reference (POV-Ray 3.7 reference, "Returning Values Via
 // Parameters"): the macro's changes to the parameter are copied back to it on return.
 bool Interpreter::passByReference(uint32_t param, std::vector<Value>& args, std::vector<ByRefArg>& byRef) {
     if (!isIdentifier()) return false;
-    const Frame& fr = frames_.back();
-    const Token& after = fr.file->tokens[fr.pos];
+    const Token& after = *cursor_;
     if (after.kind != Tk::Symbol || (after.sym != ',' && after.sym != ')')) return false;
     Binding* b = identBinding();
     if (!b)
@@ -278,6 +292,7 @@ void Interpreter::returnFromMacro() {
     for (auto& [r, v] : back)
         if (Binding* target = scopes_.findSerial(r->target, r->serial)) target->value = std::move(v);
     frames_.pop_back();
+    enterTop();
 }
 
 // ---- tokens and messages -------------------------------------------------------------------------

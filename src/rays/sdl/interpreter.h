@@ -194,7 +194,11 @@ private:
     void endOfFrame();
     void topLevelLoop();
     std::string context() const;
-    void tick();
+    /// Counts a token; every 65536th checks for Ctrl-C and the token limit (tickSlow).
+    void tick() {
+        if ((++ticks_ & 0xFFFF) == 0) tickSlow();
+    }
+    void tickSlow();
 
     // directives (directives.cpp)
     void directive(const Token& t);
@@ -282,6 +286,17 @@ private:
     Token cur_;
     Loc curLoc_;
     bool have_ = false;
+    // The top frame's read position: cursor_ points at its next raw token (its Frame::pos is
+    // stale while it is on top, saved when another frame is pushed over it).
+    const Token* cursor_ = nullptr;
+    const Token* base_ = nullptr;
+    uint32_t topFile_ = 0;
+    uint32_t topPos() const { return uint32_t(cursor_ - base_); }
+    void jumpTo(uint32_t pos) { cursor_ = base_ + pos; }
+    /// After frames_ changed: the cursor follows the (new) top frame.
+    void enterTop();
+    /// Saves the cursor into the top frame before another frame goes over it.
+    void saveTop();
 
     double version_ = 3.62;
     bool versionSeen_ = false;

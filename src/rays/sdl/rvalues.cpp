@@ -10,9 +10,7 @@ namespace rays::sdl {
 
 bool Interpreter::peekRawSym(char c) {
     if (have_) return cur_.kind == Tk::Symbol && cur_.sym == uint8_t(c);
-    const Frame& f = frames_.back();
-    const Token& t = f.file->tokens[f.pos];
-    return t.kind == Tk::Symbol && t.sym == uint8_t(c);
+    return cursor_->kind == Tk::Symbol && cursor_->sym == uint8_t(c);
 }
 
 Value Interpreter::parseRValue() {
@@ -74,9 +72,7 @@ Value Interpreter::parseRValue() {
 
 // The raw token after the current (an identifier fetched from the current frame).
 bool Interpreter::peekRawSymAfterName(char c) {
-    const Frame& f = frames_.back();
-    const Token& t = f.file->tokens[f.pos];
-    return t.kind == Tk::Symbol && t.sym == uint8_t(c);
+    return cursor_->kind == Tk::Symbol && cursor_->sym == uint8_t(c);
 }
 
 // `array[N1][N2]... [{ items }]` (POV-Ray 3.7 reference, "Array"): up to 5 dimensions.

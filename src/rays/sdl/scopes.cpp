@@ -4,11 +4,11 @@ namespace rays::sdl {
 
 void Scopes::popLevel() {
     const uint32_t lvl = level();
-    for (uint32_t name : levelNames_.back()) {
+    for (uint32_t name : levelNames_[lvl]) {
         auto& st = stacks_[name];
         if (!st.empty() && st.back().level == lvl) st.pop_back();
     }
-    levelNames_.pop_back();
+    --levels_;
 }
 
 Binding* Scopes::findSerial(uint32_t name, uint32_t serial) {

@@ -22,8 +22,13 @@ struct Binding {
 
 class Scopes {
 public:
-    uint32_t level() const { return uint32_t(levelNames_.size()) - 1; }
-    void pushLevel() { levelNames_.emplace_back(); }
+    uint32_t level() const { return levels_ - 1; }
+    void pushLevel() {
+        // Levels are reused (their name lists keep their capacity): macro calls allocate nothing here.
+        if (levels_ == levelNames_.size()) levelNames_.emplace_back();
+        else levelNames_[levels_].clear();
+        ++levels_;
+    }
     /// Destroys every binding made at the current level.
     void popLevel();
 
@@ -49,7 +54,8 @@ private:
     Binding& push(uint32_t name, Value v, uint32_t lvl);
 
     std::vector<std::vector<Binding>> stacks_;          ///< by name id; back() is the most local
-    std::vector<std::vector<uint32_t>> levelNames_{1};  ///< names bound at each level
+    std::vector<std::vector<uint32_t>> levelNames_{1};  ///< names bound at each level (the first levels_ are in use)
+    uint32_t levels_ = 1;
     uint32_t serial_ = 0;
 };
 
