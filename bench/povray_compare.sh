@@ -145,7 +145,8 @@ ini_args() {  # scene arrayname
   local -n into=$2
   local file=${1%.pov}.ini
   into=()
-  [ -f "$file" ] && into=("$(basename "$file")" +SF1 +EF1)
+  # +FN after it: an INI may turn file output off (benchmark.ini has Output_To_File=Off).
+  [ -f "$file" ] && into=("$(basename "$file")" +SF1 +EF1 +FN)
   return 0
 }
 

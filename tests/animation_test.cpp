@@ -214,9 +214,15 @@ TEST(FramePlan, FrameStep) {
 }
 
 TEST(FramePlan, OneFrameAnimationsAndBackwardFrames) {
+    // +KFI1 +KFF1 is a still for POV-Ray 3.7 (frame_number 0, clock_on 0, no number in the name).
     FramePlan p = planFrames(frames(1, 1));
+    EXPECT_FALSE(p.animated);
+    EXPECT_EQ(numbers(p), std::vector<int>{0});
+    EXPECT_FALSE(p.frames[0].clockOn);
+    // +KFI3 +KFF3 is an animation of frame 3.
+    p = planFrames(frames(3, 3));
     EXPECT_TRUE(p.animated);
-    EXPECT_EQ(numbers(p), std::vector<int>{1});
+    EXPECT_EQ(numbers(p), std::vector<int>{3});
     EXPECT_EQ(p.frames[0].clock, 0);  // povray: nan
     EXPECT_EQ(p.frames[0].clockDelta, 0);  // povray: inf
     p = planFrames(frames(5, 3));  // a final frame before the initial one is the initial one

@@ -41,7 +41,9 @@ int subsetFrame(const FrameBound& b, int initial, int count) {
 }  // namespace
 
 FramePlan planFrames(const AnimationOptions& a) {
-    if (a.finalFrame < 1) return stillPlan(a);  // POV-Ray: Final_Frame 0 (or unset, -1) is a still
+    // POV-Ray: Final_Frame 0 (or unset, -1) is a still, and so is Initial_Frame=Final_Frame=1 (frame
+    // 0, clock_on 0, output not numbered; measured: +KFI3 +KFF3 is an animation of frame 3).
+    if (a.finalFrame < 1 || (a.finalFrame == 1 && a.initialFrame == 1 && !a.cyclic)) return stillPlan(a);
     const int initial = a.initialFrame;
     const int last = std::max(a.finalFrame, initial);  // a final frame before the initial one is the initial one
     // Cyclic_Animation: the clock runs as if there were one more frame, so the last frame rendered

@@ -283,6 +283,9 @@ std::string PovOptionReader::resolveScene(const std::string& name, const Where& 
 void PovOptionReader::set(const std::string& keyName, const std::string& value, const Where& where) {
     const pov::KeyInfo* info = pov::findKey(keyName);
     if (!info) return warnOnce(keyName, "unknown option '" + keyName + "'", where);
+    // POV-Ray reads `Key=` with nothing after it as "no value": the setting stays as it was
+    // (advanced/benchmark/benchmark.ini has All_File=, Output_File_Name=, Include_Header=).
+    if (info->kind == pov::Kind::Text && value.empty()) return;
     const Value v = readValue(*info, value, where);
     if (!setAnimation(v) && !setAntialias(v) && !setOutput(v)) setOther(v);
 }
