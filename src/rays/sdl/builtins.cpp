@@ -67,10 +67,10 @@ bool Interpreter::isBuiltinFunction(Kw k) const {
 }
 
 // The arguments of a call: '(' value {',' value} ')', each a numeric expression or a string.
-std::vector<Value> Interpreter::callArgs(const char* name, size_t minArgs, size_t maxArgs) {
+Interpreter::Args Interpreter::callArgs(const char* name, size_t minArgs, size_t maxArgs) {
     if (!isSym('(')) errorHere(std::string("expected '(' after ") + name + ", found " + describe());
     next();
-    std::vector<Value> args;
+    Args args;
     if (!isSym(')')) {
         for (;;) {
             if (atStringStart()) args.push_back(Value::string(parseString()));

@@ -74,7 +74,7 @@ bool Interpreter::condition(const char* directiveName) {
     return truth(v, at);
 }
 
-bool Interpreter::truth(const Value& v, const Loc& at) {
+bool Interpreter::truth(const Num& v, const Loc& at) {
     if (v.type != VType::Float) error(at, std::string("a condition must be a float, found a ") + typeName(v.type));
     return std::fabs(v.c[0]) > kEpsilon;
 }

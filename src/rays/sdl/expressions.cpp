@@ -16,7 +16,7 @@ namespace {
 constexpr double kEpsilon = 1e-10;
 
 /// The operands as two vectors of the same width (POV-Ray's promotion rules).
-int promote(const Value& a, const Value& b, std::array<double, 5>& x, std::array<double, 5>& y, VType& type) {
+int promote(const Num& a, const Num& b, std::array<double, 5>& x, std::array<double, 5>& y, VType& type) {
     int dim;
     if (a.type == VType::Color || b.type == VType::Color) {
         type = VType::Color;
@@ -28,7 +28,7 @@ int promote(const Value& a, const Value& b, std::array<double, 5>& x, std::array
         type = VType::Float;
         dim = 1;
     }
-    auto widen = [dim](const Value& v, std::array<double, 5>& out) {
+    auto widen = [dim](const Num& v, std::array<double, 5>& out) {
         if (v.type == VType::Float) {
             out.fill(v.c[0]);
         } else {
@@ -41,8 +41,8 @@ int promote(const Value& a, const Value& b, std::array<double, 5>& x, std::array
     return dim;
 }
 
-Value make(VType type, int dim, const std::array<double, 5>& c) {
-    Value v;
+Num make(VType type, int dim, const std::array<double, 5>& c) {
+    Num v;
     v.type = type;
     v.dim = uint8_t(dim);
     v.c = c;
@@ -72,8 +72,8 @@ double combineFloats(char op, double x, double y) {
 }
 }  // namespace
 
-Value combine(char op, const Value& a, const Value& b) {
-    if (a.type == VType::Float && b.type == VType::Float) return Value::number(combineFloats(op, a.c[0], b.c[0]));
+Num combine(char op, const Num& a, const Num& b) {
+    if (a.type == VType::Float && b.type == VType::Float) return Num::number(combineFloats(op, a.c[0], b.c[0]));
     std::array<double, 5> x, y, r{};
     VType type;
     const int dim = promote(a, b, x, y, type);
@@ -100,6 +100,17 @@ double Interpreter::toFloat(const Value& v, const Loc& at, std::string_view what
     if (v.type != VType::Float)
         error(at, std::string(what) + " must be a float, found a " + typeName(v.type));
     return v.c[0];
+}
+
+double Interpreter::toFloat(const Num& v, const Loc& at, std::string_view what) {
+    if (v.type != VType::Float)
+        error(at, std::string(what) + " must be a float, found a " + typeName(v.type));
+    return v.c[0];
+}
+
+Num Interpreter::numericOf(const Value& v, const Loc& at) {
+    if (!v.isNumeric()) error(at, std::string("expected a numeric expression, found a ") + typeName(v.type));
+    return Num::of(v);
 }
 
 bool Interpreter::atNumericStart() {
@@ -141,9 +152,9 @@ bool Interpreter::atNumericStart() {
 
 Value Interpreter::parseNumeric(bool colorContext) {
     NestGuard guard(*this);
-    Value v = additive(colorContext);
-    if (colorContext && v.type == VType::Color) v = colorComponents(std::move(v));
-    return v;
+    Num v = additive(colorContext);
+    if (colorContext && v.type == VType::Color) v = colorComponents(v);
+    return v.value();
 }
 
 double Interpreter::parseFloat() {
@@ -195,21 +206,21 @@ bool Interpreter::parseOptionalBool() {
 }
 
 // FULL_EXPRESSION: LOGICAL [? FULL_EXPRESSION : FULL_EXPRESSION]; both branches are evaluated.
-Value Interpreter::fullExpression() {
+Num Interpreter::fullNum() {
     NestGuard guard(*this);
-    Value c = logical();
+    Num c = logical();
     if (!isSym('?')) return c;
     const Loc at = loc();
     next();
     const bool pick = truth(c, at);
-    Value a = fullExpression();
+    Num a = fullNum();
     expectSym(':', "in a conditional expression");
-    Value b = fullExpression();
+    Num b = fullNum();
     return pick ? a : b;
 }
 
-Value Interpreter::logical() {
-    Value a = relational();
+Num Interpreter::logical() {
+    Num a = relational();
     while (isSym('&') || isSym('|')) {
         const char op = char(cur_.sym);
         next();
@@ -218,7 +229,7 @@ Value Interpreter::logical() {
     return a;
 }
 
-Value Interpreter::relational() {
+Num Interpreter::relational() {
     if (atStringStart()) {
         const std::string a = parseString();
         const Loc at = loc();
@@ -237,9 +248,9 @@ Value Interpreter::relational() {
             case kNotEq: r = c != 0; break;
             default: error(at, "expected a comparison after a string, found " + describe());
         }
-        return Value::number(r);
+        return Num::number(r);
     }
-    Value a = additive(false);
+    Num a = additive(false);
     for (;;) {
         const Token& t = tok();
         if (t.kind != Tk::Symbol) return a;
@@ -250,8 +261,8 @@ Value Interpreter::relational() {
     }
 }
 
-Value Interpreter::additive(bool colorCtx) {
-    Value a = term(colorCtx);
+Num Interpreter::additive(bool colorCtx) {
+    Num a = term(colorCtx);
     while (isSym('+') || isSym('-')) {
         const char op = char(cur_.sym);
         next();
@@ -260,8 +271,8 @@ Value Interpreter::additive(bool colorCtx) {
     return a;
 }
 
-Value Interpreter::term(bool colorCtx) {
-    Value a = unary(colorCtx);
+Num Interpreter::term(bool colorCtx) {
+    Num a = unary(colorCtx);
     while (isSym('*') || isSym('/')) {
         const char op = char(cur_.sym);
         next();
@@ -270,13 +281,12 @@ Value Interpreter::term(bool colorCtx) {
     return a;
 }
 
-Value Interpreter::unary(bool colorCtx) {
+Num Interpreter::unary(bool colorCtx) {
     if (isSym('-') || isSym('+') || isSym('!')) {
         const char op = char(cur_.sym);
         NestGuard guard(*this);
         next();
-        Value v = unary(colorCtx);
-        if (!v.isNumeric()) errorHere("a sign or '!' needs a number");
+        Num v = unary(colorCtx);
         for (int i = 0; i < v.dim; ++i) {
             if (op == '-') v.c[i] = -v.c[i];
             else if (op == '!') v.c[i] = std::fabs(v.c[i]) > kEpsilon ? 0.0 : 1.0;
@@ -287,7 +297,7 @@ Value Interpreter::unary(bool colorCtx) {
 }
 
 // `.x .y .z .t .u .v .red .green .blue .filter .transmit .gray` after a vector or colour.
-Value Interpreter::postfix(Value v) {
+Num Interpreter::postfix(Num v) {
     while (isSym('.')) {
         next();
         const Loc at = loc();
@@ -304,26 +314,25 @@ Value Interpreter::postfix(Value v) {
         }
         next();
         if (v.type == VType::Float) error(at, "'.' needs a vector or colour, found a float");
-        if (!v.isNumeric()) error(at, std::string("'.' needs a vector or colour, found a ") + typeName(v.type));
         // Gray is POV-Ray's grey value of a colour (weights measured with POV-Ray 3.7).
         const double r = i == 5 ? 0.297 * v.c[0] + 0.589 * v.c[1] + 0.114 * v.c[2] : (i < v.dim ? v.c[i] : 0.0);
         if (i < 5 && i >= v.dim) error(at, "the vector has only " + std::to_string(v.dim) + " components");
-        v = Value::number(r);
+        v = Num::number(r);
     }
     return v;
 }
 
-Value Interpreter::factor(bool colorCtx) {
+Num Interpreter::factor(bool colorCtx) {
     const Token t = tok();
     const Loc at = curLoc_;
     switch (t.kind) {
         case Tk::Number:
             next();
-            return Value::number(t.number);
+            return Num::number(t.number);
         case Tk::Symbol:
             if (t.sym == '(') {
                 next();
-                Value v = fullExpression();
+                Num v = fullNum();
                 expectSym(')', "to close '('");
                 return v;
             }
@@ -332,35 +341,38 @@ Value Interpreter::factor(bool colorCtx) {
         case Tk::Name:
             if (!Names::isKeyword(t.id)) return identifierValue(colorCtx);
             switch (Kw(t.id)) {
-                case Kw::x: next(); return Value::vec3(1, 0, 0);
-                case Kw::y: next(); return Value::vec3(0, 1, 0);
-                case Kw::z: next(); return Value::vec3(0, 0, 1);
-                case Kw::t: { next(); const double v4[4] = {0, 0, 0, 1}; return Value::vector(4, v4); }
-                case Kw::u: { next(); const double v2[2] = {1, 0}; return Value::vector(2, v2); }
-                case Kw::v: { next(); const double v2[2] = {0, 1}; return Value::vector(2, v2); }
-                case Kw::pi: next(); return Value::number(3.1415926535897932384626);
-                case Kw::true_: case Kw::yes: case Kw::on: next(); return Value::number(1);
-                case Kw::false_: case Kw::no: case Kw::off: next(); return Value::number(0);
-                case Kw::clock: next(); return Value::number(options_.animation.clock);
-                case Kw::clock_delta: next(); return Value::number(options_.animation.clockDelta);
-                case Kw::clock_on: next(); return Value::number(options_.animation.clockOn ? 1 : 0);
-                case Kw::initial_clock: next(); return Value::number(options_.animation.initialClock);
-                case Kw::final_clock: next(); return Value::number(options_.animation.finalClock);
-                case Kw::initial_frame: next(); return Value::number(options_.animation.initialFrame);
-                case Kw::final_frame: next(); return Value::number(options_.animation.finalFrame);
-                case Kw::frame_number: next(); return Value::number(options_.animation.frameNumber);
-                case Kw::image_width: next(); return Value::number(options_.imageWidth);
-                case Kw::image_height: next(); return Value::number(options_.imageHeight);
-                case Kw::version: next(); return Value::number(version_);
-                case Kw::color: case Kw::colour:
+                case Kw::x: next(); return Num::of(Value::vec3(1, 0, 0));
+                case Kw::y: next(); return Num::of(Value::vec3(0, 1, 0));
+                case Kw::z: next(); return Num::of(Value::vec3(0, 0, 1));
+                case Kw::t: { next(); const double v4[4] = {0, 0, 0, 1}; return Num::of(Value::vector(4, v4)); }
+                case Kw::u: { next(); const double v2[2] = {1, 0}; return Num::of(Value::vector(2, v2)); }
+                case Kw::v: { next(); const double v2[2] = {0, 1}; return Num::of(Value::vector(2, v2)); }
+                case Kw::pi: next(); return Num::number(3.1415926535897932384626);
+                case Kw::true_: case Kw::yes: case Kw::on: next(); return Num::number(1);
+                case Kw::false_: case Kw::no: case Kw::off: next(); return Num::number(0);
+                case Kw::clock: next(); return Num::number(options_.animation.clock);
+                case Kw::clock_delta: next(); return Num::number(options_.animation.clockDelta);
+                case Kw::clock_on: next(); return Num::number(options_.animation.clockOn ? 1 : 0);
+                case Kw::initial_clock: next(); return Num::number(options_.animation.initialClock);
+                case Kw::final_clock: next(); return Num::number(options_.animation.finalClock);
+                case Kw::initial_frame: next(); return Num::number(options_.animation.initialFrame);
+                case Kw::final_frame: next(); return Num::number(options_.animation.finalFrame);
+                case Kw::frame_number: next(); return Num::number(options_.animation.frameNumber);
+                case Kw::image_width: next(); return Num::number(options_.imageWidth);
+                case Kw::image_height: next(); return Num::number(options_.imageHeight);
+                case Kw::version: next(); return Num::number(version_);
+                case Kw::color: case Kw::colour: {
                     next();
-                    return parseNumeric(true);
+                    NestGuard guard(*this);
+                    Num c = additive(true);
+                    return c.type == VType::Color ? colorComponents(c) : c;
+                }
                 case Kw::rgb: case Kw::rgbf: case Kw::rgbt: case Kw::rgbft: case Kw::srgb: case Kw::srgbf:
                 case Kw::srgbt: case Kw::srgbft: case Kw::red: case Kw::green: case Kw::blue: case Kw::filter:
                 case Kw::transmit:
                     return colorKeyword(colorCtx);
                 default:
-                    if (isBuiltinFunction(Kw(t.id))) return builtin(Kw(t.id), at);
+                    if (isBuiltinFunction(Kw(t.id))) return numericOf(builtin(Kw(t.id), at), at);
                     break;
             }
             break;
@@ -370,7 +382,7 @@ Value Interpreter::factor(bool colorCtx) {
     error(at, "expected a numeric expression, found " + describe());
 }
 
-Value Interpreter::vectorLiteral() {
+Num Interpreter::vectorLiteral() {
     const Loc at = loc();
     next();  // '<'
     std::array<double, 5> c{};
@@ -378,7 +390,7 @@ Value Interpreter::vectorLiteral() {
     for (;;) {
         if (n == 5) error(at, "a vector has at most 5 components");
         const Loc compAt = loc();
-        const Value v = additive(false);
+        const Num v = additive(false);
         if (v.type != VType::Float) error(compAt, std::string("a vector component must be a float, found a ") + typeName(v.type));
         c[n++] = v.c[0];
         // Commas between components are optional and a trailing one is allowed (as in POV-Ray:
@@ -388,10 +400,14 @@ Value Interpreter::vectorLiteral() {
     }
     next();
     if (n < 2) error(at, "a vector needs at least 2 components");
-    return Value::vector(n, c.data());
+    Num r;
+    r.type = VType::Vector;
+    r.dim = uint8_t(n);
+    r.c = c;
+    return r;
 }
 
-Value Interpreter::identifierValue(bool colorCtx) {
+Num Interpreter::identifierValue(bool colorCtx) {
     const Loc at = loc();
     const uint32_t id = cur_.id;
     Binding* b = scopes_.find(id);
@@ -403,22 +419,25 @@ Value Interpreter::identifierValue(bool colorCtx) {
         if (b->deprecatedOnce) b->deprecated = false;
         warning(at, msg);
     }
+    if (b->value.type == VType::Float || b->value.type == VType::Vector) {  // the common case: no shared part copied
+        const Num n = Num::of(b->value);
+        next();
+        return n;
+    }
     const Value v = b->value;
     next();
     switch (v.type) {
-        case VType::Float: case VType::Vector:
-            return v;
         case VType::Color:
-            return colorCtx ? colorComponents(v) : v;
+            return colorCtx ? colorComponents(Num::of(v)) : Num::of(v);
         case VType::Array: {
             if (!isSym('[')) error(at, "array '" + std::string(names_.name(id)) + "' needs an index here");
             Value e = arrayElement(v, false, nullptr);
             if (!e.isNumeric())
                 error(at, "element of array '" + std::string(names_.name(id)) + "' is a " + typeName(e.type) + ", not a number");
-            return e;
+            return Num::of(e);
         }
-        case VType::Function: return callFunction(v, at);
-        case VType::Spline: return callSpline(v, at);
+        case VType::Function: return Num::of(callFunction(v, at));
+        case VType::Spline: return Num::of(callSpline(v, at));
         default:
             error(at, std::string("expected a numeric expression, found ") + typeName(v.type) + " identifier '" +
                           std::string(names_.name(id)) + "'");
@@ -447,19 +466,18 @@ Value Interpreter::arrayElement(const Value& arr, bool forAssign, std::vector<in
 }
 
 // `rgb E` and its kin, and `red F` ... starting a colour.
-Value Interpreter::colorKeyword(bool colorCtx) {
+Num Interpreter::colorKeyword(bool colorCtx) {
     (void)colorCtx;
     const Kw k = kw();
     const Loc at = loc();
     next();
     if (k == Kw::red || k == Kw::green || k == Kw::blue || k == Kw::filter || k == Kw::transmit) {
-        Value c = Value::color(0, 0, 0);
+        Num c = Num::of(Value::color(0, 0, 0));
         const int i = k == Kw::red ? 0 : k == Kw::green ? 1 : k == Kw::blue ? 2 : k == Kw::filter ? 3 : 4;
         c.c[i] = toFloat(additive(false), at, keywordName(k));
-        return colorComponents(std::move(c));
+        return colorComponents(c);
     }
-    const Value v = additive(false);
-    if (!v.isNumeric()) error(at, std::string("expected a colour vector after ") + std::string(keywordName(k)));
+    const Num v = additive(false);
     const bool srgb = k == Kw::srgb || k == Kw::srgbf || k == Kw::srgbt || k == Kw::srgbft;
     const bool hasF = k == Kw::rgbf || k == Kw::rgbft || k == Kw::srgbf || k == Kw::srgbft;
     const bool hasT = k == Kw::rgbt || k == Kw::rgbft || k == Kw::srgbt || k == Kw::srgbft;
@@ -473,7 +491,7 @@ Value Interpreter::colorKeyword(bool colorCtx) {
         for (int i = 0; i < v.dim; ++i) in[i] = v.c[i];
         if (v.dim > want && v.type == VType::Vector) warning(at, "suspicious expression after " + std::string(keywordName(k)) + ": more components than it takes");
     }
-    Value c = Value::color(in[0], in[1], in[2]);
+    Num c = Num::of(Value::color(in[0], in[1], in[2]));
     if (k == Kw::rgb || k == Kw::srgb) {
         if (v.type == VType::Vector && v.dim > 3) c.c[3] = in[3];
         if (v.type == VType::Vector && v.dim > 4) c.c[4] = in[4];
@@ -495,11 +513,11 @@ Value Interpreter::colorKeyword(bool colorCtx) {
             c.c[i] = std::copysign(std::pow(lin, 1.0 / gamma), s);
         }
     }
-    return colorComponents(std::move(c));
+    return colorComponents(c);
 }
 
 // `red F green F ...` after a colour: each replaces one component.
-Value Interpreter::colorComponents(Value c) {
+Num Interpreter::colorComponents(Num c) {
     for (;;) {
         const Kw k = kw();
         int i;

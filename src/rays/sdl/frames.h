@@ -31,7 +31,7 @@ struct Interpreter::Frame {
     Loc site;                         ///< include directive or macro call
     std::vector<Ctl> ctl;
     std::shared_ptr<const MacroDef> macro;
-    std::vector<ByRefArg> byRef;
+    SmallVec<ByRefArg, 4> byRef;
 };
 
 }  // namespace rays::sdl

@@ -433,7 +433,7 @@ Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at
 
 Value Interpreter::callFunction(const Value& fnValue, const Loc& at) {
     const FunctionValue& fv = fnValue.fn();
-    std::vector<Value> a = callArgs("a function call", 0, 56);
+    const Args a = callArgs("a function call", 0, 56);
     const int want = fv.table->params(fv.index);
     if (int(a.size()) != want)
         error(at, "the function takes " + std::to_string(want) + " arguments, " + std::to_string(a.size()) + " given");

@@ -223,10 +223,9 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
     const std::string name(names_.name(nameTok.id));  // (short: kept in the string's own buffer)
     if (!isSym('(')) error(at, "macro " + name + " must be called with a parameter list: " + name + "(...)");
     next();
-    std::vector<Value> args;  // Undefined: an argument left empty
-    std::vector<ByRefArg> byRef;
+    Args args;  // Undefined: an argument left empty
+    SmallVec<ByRefArg, 4> byRef;
     const size_t n = def->params.size();
-    args.reserve(n);
     if (!isSym(')')) {
         for (;;) {
             if (args.size() >= n)
@@ -269,7 +268,7 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
 
 // A lone identifier is passed by reference (POV-Ray 3.7 reference, "Returning Values Via
 // Parameters"): the macro's changes to the parameter are copied back to it on return.
-bool Interpreter::passByReference(uint32_t param, std::vector<Value>& args, std::vector<ByRefArg>& byRef) {
+bool Interpreter::passByReference(uint32_t param, Args& args, SmallVec<ByRefArg, 4>& byRef) {
     if (!isIdentifier()) return false;
     const Token& after = *cursor_;
     if (after.kind != Tk::Symbol || (after.sym != ',' && after.sym != ')')) return false;
@@ -285,12 +284,15 @@ bool Interpreter::passByReference(uint32_t param, std::vector<Value>& args, std:
 
 void Interpreter::returnFromMacro() {
     Frame& f = frames_.back();
-    std::vector<std::pair<const ByRefArg*, Value>> back;
-    for (const ByRefArg& r : f.byRef)
+    SmallVec<std::pair<const ByRefArg*, Value>, 4> back;
+    for (size_t i = 0; i < f.byRef.size(); ++i) {
+        const ByRefArg& r = f.byRef[i];
         if (Binding* b = scopes_.find(r.param); b && b->level == scopes_.level()) back.emplace_back(&r, b->value);
+    }
     scopes_.popLevel();
-    for (auto& [r, v] : back)
-        if (Binding* target = scopes_.findSerial(r->target, r->serial)) target->value = std::move(v);
+    for (size_t i = 0; i < back.size(); ++i)
+        if (Binding* target = scopes_.findSerial(back[i].first->target, back[i].first->serial))
+            target->value = back[i].second;
     frames_.pop_back();
     enterTop();
 }

@@ -24,6 +24,7 @@
 #include "rays/sdl/options.h"
 #include "rays/sdl/pov_random.h"
 #include "rays/sdl/scopes.h"
+#include "rays/sdl/small_vec.h"
 #include "rays/sdl/source_file.h"
 #include "rays/sdl/token.h"
 #include "rays/sdl/value.h"
@@ -177,6 +178,7 @@ public:
 
 private:
     friend class DirectiveRunner;
+    using Args = SmallVec<Value, 4>;  ///< the arguments of a call
     struct Ctl;
     struct Frame;
     /// A macro parameter passed by reference: copied back to the caller's binding on return.
@@ -235,26 +237,30 @@ private:
     SkipStop skip(bool stopAtElse, bool stopAtCase, const Loc& opener, const char* openerName);
     void skipPastEnds(int count, const Loc& opener);
     void invokeMacro(const Token& nameTok, const Value& macro);
-    bool passByReference(uint32_t param, std::vector<Value>& args, std::vector<ByRefArg>& byRef);
+    bool passByReference(uint32_t param, Args& args, SmallVec<ByRefArg, 4>& byRef);
     void returnFromMacro();
     Binding& assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at, uint32_t level);
     Value readArrayValue(const Loc& at);
 
     // expressions (expressions.cpp)
-    Value fullExpression();
-    Value logical();
-    Value relational();
-    Value additive(bool colorCtx);
-    Value term(bool colorCtx);
-    Value unary(bool colorCtx);
-    Value factor(bool colorCtx);
-    Value postfix(Value v);
-    Value identifierValue(bool colorCtx);
-    Value colorKeyword(bool colorCtx);
-    Value colorComponents(Value c);
-    Value vectorLiteral();
+    Value fullExpression() { return fullNum().value(); }
+    Num fullNum();
+    Num logical();
+    Num relational();
+    Num additive(bool colorCtx);
+    Num term(bool colorCtx);
+    Num unary(bool colorCtx);
+    Num factor(bool colorCtx);
+    Num postfix(Num v);
+    Num identifierValue(bool colorCtx);
+    Num colorKeyword(bool colorCtx);
+    Num colorComponents(Num c);
+    Num vectorLiteral();
+    Num numericOf(const Value& v, const Loc& at);
     double toFloat(const Value& v, const Loc& at, std::string_view what);
-    bool truth(const Value& v, const Loc& at);
+    double toFloat(const Num& v, const Loc& at, std::string_view what);
+    bool truth(const Value& v, const Loc& at) { return truth(Num::of(v), at); }
+    bool truth(const Num& v, const Loc& at);
     Value arrayElement(const Value& arr, bool forAssign, std::vector<int>* indexOut);
 
     // built-in functions (builtins.cpp)
@@ -263,7 +269,7 @@ private:
     std::string builtinString(Kw k, const Loc& at);
     Value callFunction(const Value& f, const Loc& at);
     Value callSpline(const Value& s, const Loc& at);
-    std::vector<Value> callArgs(const char* name, size_t minArgs, size_t maxArgs);
+    Args callArgs(const char* name, size_t minArgs, size_t maxArgs);
     bool definedName();
     bool peekRawSym(char c);
     bool peekRawSymAfterName(char c);

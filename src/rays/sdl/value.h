@@ -77,6 +77,36 @@ struct Value {
     FileHandle& file() const { return *static_cast<FileHandle*>(ref.get()); }
 };
 
+/// A float, vector or colour without Value's shared part: what expressions compute with
+/// (trivially copied through the expression reader's levels).
+struct Num {
+    VType type = VType::Float;
+    uint8_t dim = 1;
+    std::array<double, 5> c{};
+
+    static Num number(double v) {
+        Num n;
+        n.c[0] = v;
+        return n;
+    }
+    /// The numeric part of a float, vector or colour value.
+    static Num of(const Value& v) {
+        Num n;
+        n.type = v.type;
+        n.dim = v.dim;
+        n.c = v.c;
+        return n;
+    }
+    Value value() const {
+        Value v;
+        v.type = type;
+        v.dim = dim;
+        v.c = c;
+        return v;
+    }
+    bool isNumeric() const { return type == VType::Float || type == VType::Vector || type == VType::Color; }
+};
+
 /// A POV-Ray array: up to 5 dimensions, elements unset until assigned; all assigned elements
 /// share one type (the first assigned decides). Arrays are copied when assigned to another
 /// identifier (POV-Ray copies them).
