@@ -100,7 +100,16 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
         if (v.type != VType::String) error(at, std::string(name) + " needs a string");
         return v.str();
     };
-    auto one = [&](double (*fn)(double)) { return Value::number(fn(f(callArgs(name.data(), 1, 1)[0], 0))); };
+    // One float argument: read directly, without an argument list.
+    auto one = [&](double (*fn)(double)) {
+        if (!isSym('(')) errorHere(std::string("expected '(' after ") + std::string(name) + ", found " + describe());
+        next();
+        const Loc argAt = loc();
+        const Num a = fullNum();
+        if (!isSym(')')) errorHere(std::string(name) + " takes 1 argument; expected ')', found " + describe());
+        next();
+        return Value::number(fn(toFloat(a, argAt, std::string(name) + " argument 1")));
+    };
     switch (k) {
         case Kw::abs: return one(std::fabs);
         case Kw::acos: return one(std::acos);
@@ -219,7 +228,7 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
             return Value::number(d ? 1 : 0);
         }
         case Kw::dimensions: case Kw::dimension_size: {
-            expectSym('(', "after " + std::string(name));
+            expectSym('(', "after ", name);
             const Binding* b = identBinding();
             if (!b || b->value.type != VType::Array) errorHere(std::string(name) + " needs an array identifier, found " + describe());
             const Value arr = b->value;
@@ -231,7 +240,7 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
                 if (d < 1 || size_t(d) > arr.arr().sizes.size()) error(at, "dimension_size: no dimension " + std::to_string(d));
                 r = arr.arr().sizes[size_t(d - 1)];
             }
-            expectSym(')', "to close " + std::string(name));
+            expectSym(')', "to close ", name);
             return Value::number(r);
         }
         case Kw::inside: case Kw::trace: case Kw::min_extent: case Kw::max_extent:
@@ -262,13 +271,13 @@ bool Interpreter::definedName() {
 // inside(O, V), trace(O, A, B [, N]), min_extent(O), max_extent(O): answered by the host.
 Value Interpreter::geometryQuery(Kw k, const Loc& at) {
     const std::string name(keywordName(k));
-    expectSym('(', "after " + name);
+    expectSym('(', "after ", name);
     const Binding* ob = identBinding();
     if (!ob || ob->value.type != VType::Item) errorHere(name + " needs an object identifier, found " + describe());
     const ItemRef object = ob->value.itemRef();
     next();
     auto vec = [&]() {
-        expectSym(',', "in " + name);
+        expectSym(',', "in ", name);
         const auto v = parseVector(3);
         return std::array<double, 3>{v[0], v[1], v[2]};
     };
@@ -301,7 +310,7 @@ Value Interpreter::geometryQuery(Kw k, const Loc& at) {
         }
         return r.hit ? Value::vec3(r.point[0], r.point[1], r.point[2]) : Value::vec3(0, 0, 0);
     }
-    expectSym(')', "to close " + name);
+    expectSym(')', "to close ", name);
     double lo[3]{}, hi[3]{};
     if (!host_.extent(*object, lo, hi)) {
         warning(at, "not rendered yet: " + name + "() of this object (gives <0,0,0>)");

@@ -66,7 +66,7 @@ void Interpreter::directive(const Token& t) {
 // `( FULL_EXPRESSION )`: nothing after the ')' is looked at, so the directive's body is not read
 // before the condition is known.
 bool Interpreter::condition(const char* directiveName) {
-    expectSym('(', std::string("after #") + directiveName);
+    expectSym('(', "after #", directiveName);
     const Loc at = loc();
     const Value v = fullExpression();
     if (!isSym(')')) errorHere(std::string("expected ')' after the condition of #") + directiveName + ", found " + describe());
@@ -333,10 +333,10 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
     const uint32_t level = scopes_.level();  // the value may end inside a macro called here
     bool deprecated = false, once = false;
     uint32_t message = UINT32_MAX;
-    if (tokNoMacro().kind == Tk::Name && cur_.id == uint32_t(Kw::deprecated)) {
+    if (tokNoMacro().kind == Tk::Name && cur_->id == uint32_t(Kw::deprecated)) {
         next();
         deprecated = true;
-        if (tokNoMacro().kind == Tk::Name && cur_.id == uint32_t(Kw::once)) {
+        if (tokNoMacro().kind == Tk::Name && cur_->id == uint32_t(Kw::once)) {
             next();
             once = true;
         }
@@ -354,7 +354,7 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
             error(nameAt, "'" + std::string(names_.name(name)) + "' is not an array");
         arrayElement(b->value, true, &index);
     }
-    expectSym('=', std::string("after the identifier in #") + (isLocal ? "local" : "declare"));
+    expectSym('=', "after the identifier in #", isLocal ? "local" : "declare");
     const Loc valueAt = loc();
     const bool numeric = atNumericStart();
     Value v = parseRValue();
@@ -411,10 +411,10 @@ void Interpreter::dirMacro(const Loc& at) {
     def->name = readNewName("macro name");
     def->loc = at;
     expectSym('(', "after the macro name");
-    if (tokNoMacro().kind != Tk::Symbol || cur_.sym != ')') {
+    if (tokNoMacro().kind != Tk::Symbol || cur_->sym != ')') {
         for (;;) {
             bool optional = false;
-            if (tokNoMacro().kind == Tk::Name && cur_.id == uint32_t(Kw::optional)) {
+            if (tokNoMacro().kind == Tk::Name && cur_->id == uint32_t(Kw::optional)) {
                 next();
                 optional = true;
             }
@@ -423,14 +423,14 @@ void Interpreter::dirMacro(const Loc& at) {
                 if (q == p) error(at, "macro parameter '" + std::string(names_.name(p)) + "' is named twice");
             def->params.push_back(p);
             def->optional.push_back(optional);
-            if (tokNoMacro().kind == Tk::Symbol && cur_.sym == ',') {
+            if (tokNoMacro().kind == Tk::Symbol && cur_->sym == ',') {
                 next();
                 continue;
             }
             break;
         }
     }
-    if (tokNoMacro().kind != Tk::Symbol || cur_.sym != ')')
+    if (tokNoMacro().kind != Tk::Symbol || cur_->sym != ')')
         errorHere("expected ',' or ')' in the macro's parameter list, found " + describe());
     next();
     def->file = frames_.back().file->id;

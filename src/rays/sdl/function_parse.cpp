@@ -137,7 +137,7 @@ private:
 
     // '(' a, b, ... ')' of a call: the children's node indices.
     std::vector<int32_t> args(const char* what) {
-        in_.expectSym('(', std::string("after ") + what);
+        in_.expectSym('(', "after ", what);
         std::vector<int32_t> out;
         if (!in_.isSym(')')) {
             for (;;) {
@@ -145,7 +145,7 @@ private:
                 if (!in_.acceptSym(',')) break;
             }
         }
-        in_.expectSym(')', std::string("to close the arguments of ") + what);
+        in_.expectSym(')', "to close the arguments of ", what);
         return out;
     }
 
@@ -290,22 +290,22 @@ private:
     int32_t sequence(Kw k, int32_t at) {
         const char* name = k == Kw::sum ? "sum" : "prod";
         in_.next();
-        in_.expectSym('(', std::string("after ") + name);
+        in_.expectSym('(', "after ", name);
         const Token& v = in_.tokNoMacro();
         if (v.kind != Tk::Name) in_.errorHere(std::string("expected the iteration variable of ") + name + ", found " + in_.describe());
         const uint32_t var = v.id;
         in_.next();
-        in_.expectSym(',', std::string("after the variable of ") + name);
+        in_.expectSym(',', "after the variable of ", name);
         const int32_t from = cond();
-        in_.expectSym(',', std::string("in ") + name);
+        in_.expectSym(',', "in ", name);
         const int32_t to = cond();
-        in_.expectSym(',', std::string("in ") + name);
+        in_.expectSym(',', "in ", name);
         const int32_t slot = int32_t(locals_.size());
         if (slot >= 56) in_.error(locs_[size_t(at)], "sum and prod nested deeper than 56 levels");
         locals_.emplace_back(var, slot);
         const int32_t body = cond();
         locals_.pop_back();
-        in_.expectSym(')', std::string("to close ") + name);
+        in_.expectSym(')', "to close ", name);
         return e_.sequence(k == Kw::sum ? fn::Op::Sum : fn::Op::Prod, slot, from, to, body, at);
     }
 

@@ -166,7 +166,7 @@ void Interpreter::tickSlow() {
     if (ticks_ > limits_.tokens) errorHere("the parse read more than " + std::to_string(limits_.tokens) + " tokens");
 }
 
-void Interpreter::fetch(bool expandMacros) {
+void Interpreter::fetchSlow(bool expandMacros) {
     for (;;) {
         tick();
         const Token& t = *cursor_;
@@ -177,8 +177,8 @@ void Interpreter::fetch(bool expandMacros) {
                     const Ctl& open = f.ctl.back();
                     error(open.loc, "this directive is never closed by #end (end of file reached)");
                 }
-                cur_ = t;
-                curLoc_ = Loc{topFile_, t.line, t.col};
+                cur_ = &t;
+                curFile_ = topFile_;
                 have_ = true;
                 return;
             }
@@ -199,8 +199,8 @@ void Interpreter::fetch(bool expandMacros) {
                 continue;
             }
         }
-        cur_ = t;
-        curLoc_ = Loc{topFile_, t.line, t.col};
+        cur_ = &t;
+        curFile_ = topFile_;
         have_ = true;
         return;
     }
@@ -220,8 +220,9 @@ void Interpreter::endOfFrame() {
 void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
     const auto def = std::static_pointer_cast<const MacroDef>(macroValue.ref);
     const Loc at{topFile_, nameTok.line, nameTok.col};
-    const std::string name(names_.name(nameTok.id));  // (short: kept in the string's own buffer)
-    if (!isSym('(')) error(at, "macro " + name + " must be called with a parameter list: " + name + "(...)");
+    const std::string_view nameView = names_.name(nameTok.id);
+    auto name = [&] { return std::string(nameView); };  // built only for messages
+    if (!isSym('(')) error(at, "macro " + name() + " must be called with a parameter list: " + name() + "(...)");
     next();
     Args args;  // Undefined: an argument left empty
     SmallVec<ByRefArg, 4> byRef;
@@ -229,7 +230,7 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
     if (!isSym(')')) {
         for (;;) {
             if (args.size() >= n)
-                errorHere("macro " + name + " takes " + std::to_string(n) + " parameters, more were given");
+                errorHere("macro " + name() + " takes " + std::to_string(n) + " parameters, more were given");
             if (isSym(',') || isSym(')')) {
                 args.emplace_back();
             } else if (!passByReference(def->params[args.size()], args, byRef)) {
@@ -237,18 +238,16 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
             }
             if (isSym(')')) break;
             if (!acceptSym(',') && atEnd())  // POV-Ray also reads arguments not separated by ','
-                errorHere("expected ',' or ')' in the arguments of macro " + name + ", found " + describe());
+                errorHere("expected ',' or ')' in the arguments of macro " + name() + ", found " + describe());
         }
     }
     next();  // ')'
     while (args.size() < n) args.emplace_back();
     for (size_t i = 0; i < n; ++i)
         if (!args[i].defined() && !def->optional[i])
-            error(at, "macro " + name + " takes " + std::to_string(n) + " parameters; '" +
+            error(at, "macro " + name() + " takes " + std::to_string(n) + " parameters; '" +
                           std::string(names_.name(def->params[i])) + "' was not given");
-    uint32_t macroFrames = 0;
-    for (const Frame& f : frames_) macroFrames += f.kind == Frame::Macro;
-    if (macroFrames >= limits_.macroDepth)
+    if (macroDepth_ >= limits_.macroDepth)
         error(at, "macro calls nested deeper than " + std::to_string(limits_.macroDepth) + " (runaway recursion?)");
     scopes_.pushLevel();
     for (size_t i = 0; i < args.size(); ++i)
@@ -263,6 +262,7 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
     fr.ownScope = true;
     saveTop();
     frames_.push_back(std::move(fr));
+    ++macroDepth_;
     enterTop();
 }
 
@@ -274,10 +274,10 @@ bool Interpreter::passByReference(uint32_t param, Args& args, SmallVec<ByRefArg,
     if (after.kind != Tk::Symbol || (after.sym != ',' && after.sym != ')')) return false;
     Binding* b = identBinding();
     if (!b)
-        errorHere("cannot pass the undeclared identifier '" + std::string(names_.name(cur_.id)) +
+        errorHere("cannot pass the undeclared identifier '" + std::string(names_.name(cur_->id)) +
                   "' as a macro parameter; declare it first");
     args.push_back(copyValue(b->value));
-    byRef.push_back(ByRefArg{param, cur_.id, b->serial});
+    byRef.push_back(ByRefArg{param, cur_->id, b->serial});
     next();
     return true;
 }
@@ -294,6 +294,7 @@ void Interpreter::returnFromMacro() {
         if (Binding* target = scopes_.findSerial(back[i].first->target, back[i].first->serial))
             target->value = back[i].second;
     frames_.pop_back();
+    --macroDepth_;
     enterTop();
 }
 
@@ -312,7 +313,7 @@ void Interpreter::expectKw(Kw k, std::string_view context) {
 
 Binding* Interpreter::identBinding() {
     if (!isIdentifier()) return nullptr;
-    return scopes_.find(cur_.id);
+    return scopes_.find(cur_->id);
 }
 
 std::string Interpreter::describe() {

@@ -65,7 +65,7 @@ public:
     /// The current token (fetched now if it was not yet: directives run, macros expand).
     const Token& tok() {
         if (!have_) fetch(true);
-        return cur_;
+        return *cur_;
     }
     /// Consumes the current token.
     void next() {
@@ -75,18 +75,18 @@ public:
     /// The current token without expanding a macro name (for names being defined or tested).
     const Token& tokNoMacro() {
         if (!have_) fetch(false);
-        return cur_;
+        return *cur_;
     }
     Loc loc() {
         tok();
-        return curLoc_;
+        return Loc{curFile_, cur_->line, cur_->col};
     }
-    bool isKw(Kw k) { return tok().kind == Tk::Name && cur_.id == uint32_t(k); }
-    bool isSym(char c) { return tok().kind == Tk::Symbol && cur_.sym == uint8_t(c); }
+    bool isKw(Kw k) { return tok().kind == Tk::Name && cur_->id == uint32_t(k); }
+    bool isSym(char c) { return tok().kind == Tk::Symbol && cur_->sym == uint8_t(c); }
     bool isName() { return tok().kind == Tk::Name; }
-    bool isKeyword() { return tok().kind == Tk::Name && Names::isKeyword(cur_.id); }
-    bool isIdentifier() { return tok().kind == Tk::Name && !Names::isKeyword(cur_.id); }
-    Kw kw() { return isKeyword() ? Kw(cur_.id) : Kw::Count; }
+    bool isKeyword() { return tok().kind == Tk::Name && Names::isKeyword(cur_->id); }
+    bool isIdentifier() { return tok().kind == Tk::Name && !Names::isKeyword(cur_->id); }
+    Kw kw() { return isKeyword() ? Kw(cur_->id) : Kw::Count; }
     bool atEnd() { return tok().kind == Tk::End; }
     bool acceptSym(char c) {
         if (!isSym(c)) return false;
@@ -99,6 +99,11 @@ public:
         return true;
     }
     void expectSym(char c, std::string_view context);
+    /// The same with the context in two parts, joined only when the symbol is missing.
+    void expectSym(char c, std::string_view contextA, std::string_view contextB) {
+        if (isSym(c)) return next();
+        expectSym(c, std::string(contextA) + std::string(contextB));
+    }
     void expectKw(Kw k, std::string_view context);
     /// The binding of the current identifier token, or null (undeclared, or not an identifier).
     Binding* identBinding();
@@ -192,7 +197,22 @@ private:
     const SourceFile& openFile(const std::string& path, const std::string& shownName);
     const SourceFile& textFile(std::string_view text, const std::string& shownName);
     void pushFile(const SourceFile& f, Frame&& frame);
-    void fetch(bool expandMacros);
+    /// Fetches the next token: plain tokens here (inline); directives, macro names and file ends
+    /// through fetchSlow.
+    void fetch(bool expandMacros) {
+        const Token& t = *cursor_;
+        if (t.kind == Tk::Directive || t.kind == Tk::End) return fetchSlow(expandMacros);
+        tick();
+        if (expandMacros && t.kind == Tk::Name && !Names::isKeyword(t.id)) {
+            const Binding* b = scopes_.find(t.id);
+            if (b && b->value.type == VType::Macro) return fetchSlow(expandMacros);
+        }
+        ++cursor_;
+        cur_ = &t;
+        curFile_ = topFile_;
+        have_ = true;
+    }
+    void fetchSlow(bool expandMacros);
     void endOfFrame();
     void topLevelLoop();
     std::string context() const;
@@ -245,10 +265,10 @@ private:
     // expressions (expressions.cpp)
     Value fullExpression() { return fullNum().value(); }
     Num fullNum();
-    Num logical();
-    Num relational();
-    Num additive(bool colorCtx);
-    Num term(bool colorCtx);
+    Num binary(int minPrec, bool full, bool colorCtx);
+    Num stringComparison();
+    Num logical() { return binary(1, true, false); }
+    Num additive(bool colorCtx) { return binary(3, false, colorCtx); }
     Num unary(bool colorCtx);
     Num factor(bool colorCtx);
     Num postfix(Num v);
@@ -289,8 +309,8 @@ private:
     std::vector<Frame> frames_;
     std::string sceneFolder_ = ".";
 
-    Token cur_;
-    Loc curLoc_;
+    const Token* cur_ = nullptr;  ///< the current token (tokens of every file stay in place)
+    uint32_t curFile_ = 0;        ///< the file it came from
     bool have_ = false;
     // The top frame's read position: cursor_ points at its next raw token (its Frame::pos is
     // stale while it is on top, saved when another frame is pushed over it).
@@ -308,6 +328,7 @@ private:
     bool versionSeen_ = false;
     double assumedGamma_ = 0;
     uint32_t nesting_ = 0;
+    uint32_t macroDepth_ = 0;  ///< macro frames on the stack
     uint64_t iterations_ = 0;
     uint64_t ticks_ = 0;
     std::vector<std::string> deprecatedMessages_;

@@ -9,7 +9,7 @@
 namespace rays::sdl {
 
 bool Interpreter::peekRawSym(char c) {
-    if (have_) return cur_.kind == Tk::Symbol && cur_.sym == uint8_t(c);
+    if (have_) return cur_->kind == Tk::Symbol && cur_->sym == uint8_t(c);
     return cursor_->kind == Tk::Symbol && cursor_->sym == uint8_t(c);
 }
 

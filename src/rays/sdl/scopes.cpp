@@ -26,11 +26,16 @@ Binding& Scopes::push(uint32_t name, Value v, uint32_t lvl) {
     b.level = lvl;
     b.serial = ++serial_;
     // A global made while locals of the same name exist goes beneath them.
-    auto at = st.begin();
-    while (at != st.end() && at->level <= lvl) ++at;
-    Binding& made = *st.insert(at, std::move(b));
+    Binding* made;
+    if (st.empty() || st.back().level <= lvl) {
+        made = &st.emplace_back(std::move(b));
+    } else {
+        auto at = st.begin();
+        while (at != st.end() && at->level <= lvl) ++at;
+        made = &*st.insert(at, std::move(b));
+    }
     levelNames_[lvl].push_back(name);
-    return made;
+    return *made;
 }
 
 Binding& Scopes::declare(uint32_t name, Value v) {

@@ -34,7 +34,7 @@ bool Interpreter::atStringStart() {
 
 std::string Interpreter::parseString() {
     const Token t = tok();
-    const Loc at = curLoc_;
+    const Loc at{curFile_, cur_->line, cur_->col};
     if (t.kind == Tk::String) {
         std::string s = files_[at.file]->strings[t.id];
         next();
@@ -81,9 +81,9 @@ std::string Interpreter::stringFunction(Kw k, const Loc& at) {
         if (!r.ok()) error(at, r.error);
         return povNarrow(r.value);
     };
-    expectSym('(', "after " + name);
-    auto comma = [&] { expectSym(',', "between the arguments of " + name); };
-    auto close = [&] { expectSym(')', "to close " + name); };
+    expectSym('(', "after ", name);
+    auto comma = [&] { expectSym(',', "between the arguments of ", name); };
+    auto close = [&] { expectSym(')', "to close ", name); };
     switch (k) {
         case Kw::str: {
             const double v = parseFloat();
