@@ -1,74 +1,22 @@
 #include <cmath>
 #include "rays/fn/internal_impl.h"
 namespace rays::fn::internal {
-double f_algbr_cyl1(const double*) { return std::nan(""); }
-double f_algbr_cyl2(const double*) { return std::nan(""); }
-double f_algbr_cyl3(const double*) { return std::nan(""); }
-double f_algbr_cyl4(const double*) { return std::nan(""); }
-double f_bicorn(const double*) { return std::nan(""); }
-double f_bifolia(const double*) { return std::nan(""); }
-double f_blob(const double*) { return std::nan(""); }
-double f_blob2(const double*) { return std::nan(""); }
-double f_boy_surface(const double*) { return std::nan(""); }
+
+
 double f_comma(const double*) { return std::nan(""); }
-double f_cross_ellipsoids(const double*) { return std::nan(""); }
-double f_crossed_trough(const double*) { return std::nan(""); }
-double f_cubic_saddle(const double*) { return std::nan(""); }
-double f_cushion(const double*) { return std::nan(""); }
-double f_devils_curve(const double*) { return std::nan(""); }
-double f_devils_curve_2d(const double*) { return std::nan(""); }
-double f_dupin_cyclid(const double*) { return std::nan(""); }
+
 double f_enneper(const double*) { return std::nan(""); }
-double f_flange_cover(const double*) { return std::nan(""); }
-double f_folium_surface(const double*) { return std::nan(""); }
-double f_folium_surface_2d(const double*) { return std::nan(""); }
-double f_glob(const double*) { return std::nan(""); }
-double f_heart(const double*) { return std::nan(""); }
-double f_helical_torus(const double*) { return std::nan(""); }
-double f_helix1(const double*) { return std::nan(""); }
-double f_helix2(const double*) { return std::nan(""); }
-double f_hex_x(const double*) { return std::nan(""); }
-double f_hex_y(const double*) { return std::nan(""); }
-double f_hetero_mf(const double*) { return std::nan(""); }
-double f_hunt_surface(const double*) { return std::nan(""); }
-double f_hyperbolic_torus(const double*) { return std::nan(""); }
-double f_isect_ellipsoids(const double*) { return std::nan(""); }
-double f_kampyle_of_eudoxus(const double*) { return std::nan(""); }
-double f_kampyle_of_eudoxus_2d(const double*) { return std::nan(""); }
-double f_klein_bottle(const double*) { return std::nan(""); }
-double f_kummer_surface_v1(const double*) { return std::nan(""); }
-double f_kummer_surface_v2(const double*) { return std::nan(""); }
-double f_lemniscate_of_gerono(const double*) { return std::nan(""); }
-double f_lemniscate_of_gerono_2d(const double*) { return std::nan(""); }
-double f_mesh1(const double*) { return std::nan(""); }
-double f_mitre(const double*) { return std::nan(""); }
-double f_nodal_cubic(const double*) { return std::nan(""); }
-double f_odd(const double*) { return std::nan(""); }
-double f_ovals_of_cassini(const double*) { return std::nan(""); }
-double f_paraboloid(const double*) { return std::nan(""); }
-double f_parabolic_torus(const double*) { return std::nan(""); }
-double f_pillow(const double*) { return std::nan(""); }
-double f_piriform(const double*) { return std::nan(""); }
-double f_piriform_2d(const double*) { return std::nan(""); }
-double f_poly4(const double*) { return std::nan(""); }
-double f_polytubes(const double*) { return std::nan(""); }
-double f_quantum(const double*) { return std::nan(""); }
-double f_quartic_paraboloid(const double*) { return std::nan(""); }
-double f_quartic_saddle(const double*) { return std::nan(""); }
-double f_quartic_cylinder(const double*) { return std::nan(""); }
-double f_ridge(const double*) { return std::nan(""); }
-double f_ridged_mf(const double*) { return std::nan(""); }
-double f_spikes(const double*) { return std::nan(""); }
-double f_spikes_2d(const double*) { return std::nan(""); }
-double f_spiral(const double*) { return std::nan(""); }
-double f_steiners_roman(const double*) { return std::nan(""); }
-double f_strophoid(const double*) { return std::nan(""); }
-double f_strophoid_2d(const double*) { return std::nan(""); }
-double f_torus2(const double*) { return std::nan(""); }
-double f_torus_gumdrop(const double*) { return std::nan(""); }
-double f_umbrella(const double*) { return std::nan(""); }
-double f_witch_of_agnesi(const double*) { return std::nan(""); }
-double f_witch_of_agnesi_2d(const double*) { return std::nan(""); }
-double f_noise3d(const double*) { return std::nan(""); }
-double f_noise_generator(const double*) { return std::nan(""); }
+
+
+
+
+
+
+
+
+
+
+
+
+
 }
