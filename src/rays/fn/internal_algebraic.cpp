@@ -252,6 +252,16 @@ double f_witch_of_agnesi(const double* p) {
     return field(p[3], p[4] * (1 - q.y) - q.y * (q.x2 + q.z2));
 }
 
+// Enneper's surface: (u/(2w) − 2z²/9)³ + 6(u/(4w))², u = x² − y², w = z except that for
+// |z| < 0.2 POV-Ray uses w = 0.2 (measured: the values there are a polynomial in z with that w).
+double f_enneper(const double* p) {
+    const Xyz q = point(p);
+    const double u = q.x2 - q.y2;
+    const double w = std::fabs(q.z) < 0.2 ? 0.2 : q.z;
+    const double a = u / (2 * w) - 2 * q.z2 / 9, b = u / (4 * w);
+    return field(p[3], a * a * a + 6 * b * b);
+}
+
 // Dupin cyclid: a torus (major radius R = P1, minor r = P2, about y, moved by (dx, dy, 0) =
 // (P3, P4, 0)) inverted in the sphere of radius k = P5, as a quartic in p (with |p|² = s):
 //   −k⁸ + 4k⁶(p·d) − k⁴(4(p·d)² + 2C·s − 4R²(x² + z²))

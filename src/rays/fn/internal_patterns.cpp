@@ -87,4 +87,17 @@ double f_mesh1(const double* p) {
     return best;
 }
 
+// A comma of size s = P0 (in units of s): the ball of radius 1/2 about (1/2, 0, 0) joined with a
+// tail: a tube about the circle of radius 3/4 around (−1/4, 0, 0) in the xz plane whose radius
+// is cos(θ/2)/2, θ = atan2(z, x) (1/2 at the ball, 0 at the tip (−1, 0, 0)), cut off below
+// z = 0: s·min(ball, max(tube, −z)). On the y axis POV-Ray moves x to 1e-4 (measured).
+double f_comma(const double* p) {
+    const double s = p[3];
+    const double x = (p[0] == 0 && p[2] == 0 ? 1e-4 : p[0]) / s, y = p[1] / s, z = p[2] / s;
+    const double ball = std::sqrt((x - 0.5) * (x - 0.5) + y * y + z * z) - 0.5;
+    const double a = std::sqrt((x + 0.25) * (x + 0.25) + z * z) - 0.75;
+    const double tube = std::sqrt(a * a + y * y) - 0.5 * std::cos(std::atan2(z, x) / 2);
+    return s * std::min(ball, std::max(tube, -z));
+}
+
 }  // namespace rays::fn::internal
