@@ -560,3 +560,13 @@ TEST(FnMachine, ThreadsShareOneTable) {
     for (int k = 0; k < 2; ++k)
         for (int i = 0; i < n; ++i) ASSERT_TRUE(same(got[k][i], expect[i])) << k << " " << i;
 }
+
+TEST(FnMachine, FusedInstructionsRoundLikeTheSeparateOps) {
+    // a*b + c with a*b inexact: a fused multiply-add would round once and differ in the last bit.
+    const double a = 1 + 0x1p-30, b = 1 - 0x1p-30, c = -1;
+    volatile double product = a * b;  // rounded, as the tree's Mul is
+    const double twoRoundings = product + c;
+    ASSERT_NE(twoRoundings, std::fma(a, b, c));  // the case distinguishes them
+    EXPECT_EQ(value("(+ (* x y) z)", {a, b, c}), twoRoundings);
+    EXPECT_EQ(value("(- (* x y) z)", {a, b, -c}), twoRoundings);
+}
