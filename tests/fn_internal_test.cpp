@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -546,4 +547,16 @@ TEST(FnInternal, FractalNoiseIsFiniteDeterministicAndContinuous) {
     }
     // A huge octave count is capped rather than looping for ever.
     EXPECT_TRUE(std::isfinite(call("f_ridged_mf", {0.1, 0.2, 0.3, 1, 2, 1e12, 1, 1, 0})));
+}
+
+TEST(FnInternal, HostileParametersStayDefined) {
+    // Counts that are NaN, negative or huge are capped, not cast as they are (UBSan would object).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (double n : {nan, -3.0, 1e300}) {
+        EXPECT_TRUE(std::isfinite(call("f_hetero_mf", {0.1, 0.2, 0.3, 1, 2, n, 0.3, 0.1, 1}))) << n;
+        EXPECT_TRUE(std::isfinite(call("f_ridge", {0.1, 0.2, 0.3, 2, n, 0.5, 0.2, 1, 0}))) << n;
+    }
+    EXPECT_EQ(call("f_polytubes", {0.1, 0.2, 0.3, nan, 1, 0, 0, 0, 0}), INFINITY);  // no tubes: infinitely far
+    EXPECT_EQ(call("f_polytubes", {0.1, 0.2, 0.3, -3, 1, 0, 0, 0, 0}), INFINITY);
+    EXPECT_TRUE(std::isfinite(call("f_polytubes", {0.1, 0.2, 0.3, 1e300, 1, 0, 0, 0, 0})));
 }

@@ -20,8 +20,8 @@ double signedNoise(const double* p, double scale, int g) {
 
 int generator(double g) { return g >= 1 && g <= 3 ? static_cast<int>(g) : 2; }
 
-// Octave counts are capped so that a huge parameter cannot stall a render.
-double octaves(double o) { return std::clamp(o, 0.0, 64.0); }
+// Octave counts are capped so that a huge parameter cannot stall a render (NaN counts as 0).
+double octaves(double o) { return o > 0 ? std::min(o, 64.0) : 0.0; }
 
 }  // namespace
 

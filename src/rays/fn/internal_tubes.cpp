@@ -1,5 +1,6 @@
 // Internal functions of surfaces of revolution and tubes around the y axis: f_poly4 and
 // f_polytubes (reference 3.4.9.1.7.9). Checked against POV-Ray 3.7's values.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -22,7 +23,7 @@ double f_poly4(const double* p) { return std::sqrt(p[0] * p[0] + p[2] * p[2]) - 
 double f_polytubes(const double* p) {
     const double n = p[3];
     const double r = quartic(p + 4, p[1]);
-    const int tubes = static_cast<int>(n);
+    const int tubes = n >= 1 ? static_cast<int>(std::min(n, 10000.0)) : 0;  // capped: NaN and huge counts
     double best = INFINITY;
     for (int k = 0; k < tubes; ++k) {
         const double a = k * (2 * std::numbers::pi / n);
