@@ -560,3 +560,59 @@ TEST(FnMachine, ThreadsShareOneTable) {
     for (int k = 0; k < 2; ++k)
         for (int i = 0; i < n; ++i) ASSERT_TRUE(same(got[k][i], expect[i])) << k << " " << i;
 }
+
+TEST(FnMachine, FusedInstructionsRoundLikeTheSeparateOps) {
+    // a*b + c with a*b inexact: a fused multiply-add would round once and differ in the last bit.
+    const double a = 1 + 0x1p-30, b = 1 - 0x1p-30, c = -1;
+    volatile double product = a * b;  // rounded, as the tree's Mul is
+    const double twoRoundings = product + c;
+    ASSERT_NE(twoRoundings, std::fma(a, b, c));  // the case distinguishes them
+    EXPECT_EQ(value("(+ (* x y) z)", {a, b, c}), twoRoundings);
+    EXPECT_EQ(value("(- (* x y) z)", {a, b, -c}), twoRoundings);
+}
+
+TEST(FnMachine, JumpedArmsWithComputedTests) {
+    // The test value lives in a temporary that must survive the first arm (select with four
+    // arguments tests it twice); every arm is expensive enough to be jumped around.
+    const std::string arm1 = "(sin (cos (sin (cos (* y 2)))))";
+    const std::string arm2 = "(cos (sin (cos (sin (* y 3)))))";
+    const std::string arm3 = "(exp (sin (cos (sin (* y 4)))))";
+    const std::string sel = "(select (- (* x x) 1) " + arm1 + " " + arm2 + " " + arm3 + ")";
+    const double y = 0.3;
+    auto f = [](double v, double k) { return std::sin(std::cos(std::sin(std::cos(v * k)))); };
+    auto g = [](double v, double k) { return std::cos(std::sin(std::cos(std::sin(v * k)))); };
+    auto h = [](double v, double k) { return std::exp(std::sin(std::cos(std::sin(v * k)))); };
+    EXPECT_EQ(value(sel, {0.5, y}), f(opaque(y), 2));
+    EXPECT_EQ(value(sel, {1, y}), g(opaque(y), 3));
+    EXPECT_EQ(value(sel, {-1.5, y}), h(opaque(y), 4));
+    const std::string cond = "(+ 1 (?: (- x 1) " + arm1 + " " + arm2 + "))";
+    EXPECT_EQ(value(cond, {3, y}), 1 + f(opaque(y), 2));
+    EXPECT_EQ(value(cond, {1, y}), 1 + g(opaque(y), 3));
+}
+
+TEST(FnMachine, BatchRunsCalleesThatAreNotInlined) {
+    // One callee with batch code, one with a loop (run lane by lane), neither inlined.
+    FunctionTable t;
+    CompileOptions noInline;
+    noInline.inlineCalls = false;
+    t.addFloat(sexpr("(+ (* x x) (* y z))"), 3, noInline);
+    t.addFloat(sexpr("(sum 0 1 3 (* i0 x))"), 1, noInline);
+    const int top = t.addFloat(sexpr("(- (call 0 x y z) (call 1 (+ x 1)))"), 3, noInline);
+    const Program& p = t.program(top);
+    ASSERT_FALSE(p.batch.empty());
+    ASSERT_EQ(p.callees.size(), 2u);
+    const size_t n = 70;
+    std::vector<double> x(n), y(n), z(n), out(n);
+    for (size_t i = 0; i < n; ++i) {
+        x[i] = 0.1 * static_cast<double>(i);
+        y[i] = 1 - 0.05 * static_cast<double>(i);
+        z[i] = 0.5;
+    }
+    Scratch s = t.makeScratch();
+    evalBatchXYZ(p, x.data(), y.data(), z.data(), out.data(), n, s);
+    for (size_t i = 0; i < n; ++i) {
+        const double a[3] = {x[i], y[i], z[i]};
+        EXPECT_TRUE(same(out[i], eval(p, a, s))) << i;  // batch = scalar, bit for bit
+        EXPECT_NEAR(out[i], (x[i] * x[i] + y[i] * z[i]) - 6 * (x[i] + 1), 1e-12) << i;
+    }
+}

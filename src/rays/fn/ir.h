@@ -1,4 +1,4 @@
-// The compiler's own tree (fn/compile.cpp builds it from an Expr, fn/emit.cpp turns it into
+// The compiler's own tree (fn/lower.cpp builds it from an Expr, fn/emit.cpp turns it into
 // machine code): an Expr after validation, constant folding and inlining. Same layout as Expr
 // (children before parents), plus two ops for inlined calls: Let evaluates its leading children
 // once and binds them to Bound ids for its last child, the inlined body.
