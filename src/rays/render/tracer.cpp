@@ -14,7 +14,7 @@ namespace rays {
 namespace {
 
 constexpr double kSurfaceOffset = Tracer::kSurfaceOffset;
-constexpr double kTMin = 1e-6;            // hits closer than this are ignored
+constexpr double kTMin = Tracer::kMinHitT;
 
 // Beer's law tint exp(−(1 − C)·0.15·d); an infinite distance absorbs every channel below 1.
 Vec3 beerTint(Vec3 c, double d) {
@@ -89,6 +89,7 @@ Hit Tracer::firstHit(const Ray& ray) const {
 
 Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log, PathInfo* info) const {
     ++ctx.stats.primaryRays;
+    if (povPath_) return tracePovPrimary(ray, ctx, info);
     return trace(ray, Frame{}, ctx, log, info).color;
 }
 
