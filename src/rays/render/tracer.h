@@ -193,29 +193,40 @@ private:
         Vec3 faded{1, 1, 1};
         bool primary = false;
     };
-    /// The interior a shaded point lies in (−1: none) and how much the viewing rays faded in it on
-    /// the way to the point. POV-Ray 3.7 divides the light reaching such a point by that fade, so
-    /// that direct light there is faded over the shadow ray's path only (measured,
-    /// docs/povray-lighting.md).
-    struct PovInside {
-        int object = -1;
-        Vec3 viewFade{1, 1, 1};
-    };
+    /// True when the scene is traced by POV-Ray's rules: pov.enabled, and not the flat or normals view.
     static bool usesPovPath(const Scene& scene, const RenderSettings& settings);
     /// True when some object lets light through (filter or transmit): shadow rays then walk.
     static bool anyPovTransparent(const Scene& scene);
+    /// tracePrimary of POV-Ray scenes (a camera ray at level 1, weight 1, in no interior).
     Vec3 tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const;
     /// Colour along a ray (the background when it misses), faded by the interior it travels in.
     Result tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const;
+    /// A surface point being shaded: the object and its surface, position, normal facing the
+    /// viewer (maps applied), pigment colour, which side the ray came from, the interior the point
+    /// lies in (−1: none) and how much the viewing rays faded in it on the way to the point.
+    /// POV-Ray 3.7 divides the light reaching the point by that fade, so that direct light there
+    /// is faded over the shadow ray's path only (measured, docs/povray-lighting.md).
+    struct PovPoint {
+        int object = -1;
+        const Material* material = nullptr;
+        const PovSurface* surface = nullptr;
+        Vec3 P, N, C;
+        bool entering = true;
+        int interior = -1;
+        Vec3 viewFade{1, 1, 1};
+    };
     /// Colour of the surface hit: local light, reflection and transmission. segmentFade: how much
     /// the interior fades this ray up to the hit (1 when it does not).
     Vec3 shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                   PathInfo* info) const;
-    /// Adds every light's diffuse (weighted by opacity) and highlights at P to color; returns the
-    /// number of lights of which less than half reaches P (counted only when countBlocked).
-    /// inside: the interior P was seen through (its light is scaled as PovInside says).
-    int povLights(const PovSurface& s, Vec3 C, double opacity, Vec3 P, Vec3 N, Vec3 V, const PovInside& inside,
-                  TraceContext& ctx, Vec3& color, bool countBlocked) const;
+    /// What the reflected and transmitted rays from a point bring (total internal reflection
+    /// included), within max_trace_level and adc_bailout.
+    Vec3 povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, TraceContext& ctx, PathInfo* info) const;
+    /// Adds every light's diffuse (weighted by opacity) and highlights at the point (seen from V)
+    /// to color; returns the number of lights of which less than half reaches it (counted only
+    /// when countBlocked).
+    int povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& ctx, Vec3& color,
+                  bool countBlocked) const;
     /// The light of one light that reaches P (its colour tinted by transparent objects on the way,
     /// times the visible share of an area light's samples); shadow rays leave P on side Nl.
     Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,

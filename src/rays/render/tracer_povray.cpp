@@ -72,87 +72,92 @@ Tracer::Result Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& c
 Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                       PathInfo* info) const {
     const Object& o = scene_.objects[size_t(hit.object)];
-    const Material& m = o.material;
-    const PovSurface& s = povSurfaceOf(m);
-    const Vec3 P = ray.at(hit.t), V = -ray.dir;
-    const bool entering = dot(ray.dir, hit.geomNormal) < 0;
-    Vec3 N = entering ? hit.normal : -hit.normal;  // faces the viewer
-    Vec3 C = m.color;
-    if (m.pigmentMap >= 0 || m.normalMap >= 0 || m.bumpMap >= 0)
-        applyMaps(scene_, o, P, SurfaceUV{hit.hasUV, hit.u, hit.v, hit.dpdu}, C, N);
+    PovPoint pt;
+    pt.object = hit.object;
+    pt.material = &o.material;
+    pt.surface = &povSurfaceOf(o.material);
+    pt.P = ray.at(hit.t);
+    pt.entering = dot(ray.dir, hit.geomNormal) < 0;
+    pt.N = pt.entering ? hit.normal : -hit.normal;  // faces the viewer
+    pt.C = o.material.color;
+    if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0)
+        applyMaps(scene_, o, pt.P, SurfaceUV{hit.hasUV, hit.u, hit.v, hit.dpdu}, pt.C, pt.N);
+    pt.interior = r.interior;
+    pt.viewFade = r.faded * segmentFade;
 
     // The surface's own colour, weighted by its opacity; highlights are not (measured).
-    const double opacity = povOpacity(C, m.filter, s.transmit, scene_.pov.version);
-    Vec3 color = opacity * povAmbient(s.finish, C, scene_.pov.ambientLight);
+    const PovSurface& s = *pt.surface;
+    const double opacity = povOpacity(pt.C, o.material.filter, s.transmit, scene_.pov.version);
+    Vec3 color = opacity * povAmbient(s.finish, pt.C, scene_.pov.ambientLight);
     ctx.surfaceObject = hit.object;
-    const Vec3 viewFade = r.faded * segmentFade;  // what this point's colour goes through in its interior
-    const int blocked = povLights(s, C, opacity, P, N, V, PovInside{r.interior, viewFade}, ctx, color, info && r.primary);
+    const int blocked = povLights(pt, opacity, -ray.dir, ctx, color, info && r.primary);
     ctx.surfaceObject = -1;
     if (info && r.primary) {
         info->blockedLights = int16_t(blocked);
-        info->setHit(hit.t, P, N);
+        info->setHit(hit.t, pt.P, pt.N);
     }
+    if (r.level >= scene_.pov.maxTraceLevel) return color;  // no further rays at the last level
+    return color + povSecondary(ray, pt, r, ctx, info);
+}
 
-    const int maxLevel = scene_.pov.maxTraceLevel;
+Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, TraceContext& ctx,
+                          PathInfo* info) const {
+    const PovSurface& s = *pt.surface;
     const double bailout = scene_.pov.adcBailout;
-    if (r.level >= maxLevel) return color;  // no further rays at the last level
     const double ior = s.interior.ior;
-    const double eta = entering ? 1.0 / ior : ior;
-    const double cosView = std::max(0.0, dot(N, V));
-    const Vec3 R = povReflectivity(s, C, cosView, eta);
-    Vec3 T = povFilterTint(C, m.filter, s.transmit);
+    const double eta = pt.entering ? 1.0 / ior : ior;
+    const Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), eta);
+    Vec3 T = povFilterTint(pt.C, pt.material->filter, s.transmit);
     if (s.finish.conserveEnergy) T *= Vec3(1.0) - R;
     // A reflected ray stays on this side of the surface, a transmitted one crosses it. Only
     // transmitted rays fade over their path inside an interior: reflected ones (total internal
-    // reflection included) do not (measured).
-    const int reflectedInterior = entering ? r.interior : hit.object;
-    const Vec3 reflectedFaded = reflectedInterior == r.interior ? viewFade : Vec3(1.0);
+    // reflection included) do not, but the fade before them still counts for the light (measured).
+    PovRay reflected{.level = r.level + 1, .weight = r.weight, .interior = pt.entering ? r.interior : pt.object};
+    if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
+    auto trace = [&](Vec3 dir, const PovRay& child) {
+        ++ctx.stats.secondaryRays;
+        return tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, child, ctx, info).color;
+    };
 
+    Vec3 color;
     if (maxAbsComponent(T) > 0) {
         Vec3 dir = ray.dir;
         int level = r.level;  // passing straight through (ior 1) keeps the level (measured)
         if (ior != 1) {
-            if (!refractDir(ray.dir, N, eta, dir)) {
-                // Total internal reflection: one reflected ray with the full weight replaces both
-                // the reflection and the transmission (measured).
-                const Vec3 Rd = normalize(reflect(ray.dir, N));
-                ++ctx.stats.secondaryRays;
-                const PovRay child{r.level + 1, r.weight, reflectedInterior, false, reflectedFaded, false};
-                return color + tracePov(Ray{P + kSurfaceOffset * Rd, Rd}, child, ctx, info).color;
-            }
+            // Total internal reflection: one reflected ray with the full weight replaces both the
+            // reflection and the transmission (measured).
+            if (!refractDir(ray.dir, pt.N, eta, dir)) return trace(normalize(reflect(ray.dir, pt.N)), reflected);
             ++level;
         }
-        const double weight = r.weight * maxAbsComponent(T);
-        if (weight >= bailout) {
-            ++ctx.stats.secondaryRays;
-            const PovRay child{level, weight, entering ? hit.object : -1, true, Vec3(1.0), false};
-            color += T * tracePov(Ray{P + kSurfaceOffset * dir, dir}, child, ctx, info).color;
-        }
+        const PovRay through{.level = level,
+                             .weight = r.weight * maxAbsComponent(T),
+                             .interior = pt.entering ? pt.object : -1,
+                             .fades = true};
+        if (through.weight >= bailout) color += T * trace(dir, through);
     }
-    const double weight = r.weight * maxComponent(R);
-    if (maxComponent(R) > 0 && weight >= bailout) {
-        const Vec3 Rd = normalize(reflect(ray.dir, N));
-        ++ctx.stats.secondaryRays;
-        const PovRay child{r.level + 1, weight, reflectedInterior, false, reflectedFaded, false};
-        const Vec3 seen = tracePov(Ray{P + kSurfaceOffset * Rd, Rd}, child, ctx, info).color;
+    reflected.weight = r.weight * maxComponent(R);
+    if (maxComponent(R) > 0 && reflected.weight >= bailout) {
+        const Vec3 seen = trace(normalize(reflect(ray.dir, pt.N)), reflected);
         color += R * povReflectionExponent(seen, s.finish.reflectionExponent);
     }
     return color;
 }
 
-int Tracer::povLights(const PovSurface& s, Vec3 C, double opacity, Vec3 P, Vec3 N, Vec3 V, const PovInside& inside,
-                      TraceContext& ctx, Vec3& color, bool countBlocked) const {
+int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& ctx, Vec3& color,
+                      bool countBlocked) const {
+    const PovSurface& s = *pt.surface;
     const PovFinish& f = s.finish;
+    const Vec3 P = pt.P, N = pt.N;
     // Which side's light can add anything: in front diffuse and highlights, behind the second
     // diffuse value, or everything with double_illuminate.
     const bool highlights = f.phong > 0 || f.specular > 0;
     const bool front = (f.diffuse != 0 && opacity != 0) || highlights;
-    const bool back = s.doubleIlluminate ? front : f.diffuseBack != 0 && opacity != 0;
+    const bool back = s.doubleIlluminate ? front : (f.diffuseBack != 0 && opacity != 0);
     // The light at a point inside a fading interior is divided by the viewing rays' fade there
     // (measured; a channel faded to nothing is left alone).
     Vec3 scale(1.0);
-    if (inside.object >= 0)
-        for (int i = 0; i < 3; ++i) scale[i] = inside.viewFade[i] > 0 ? 1.0 / inside.viewFade[i] : 1.0;
+    if (pt.interior >= 0)
+        for (int i = 0; i < 3; ++i) scale[i] = pt.viewFade[i] > 0 ? 1.0 / pt.viewFade[i] : 1.0;
     int blocked = 0;
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& light = scene_.lights[li];
@@ -167,7 +172,7 @@ int Tracer::povLights(const PovSurface& s, Vec3 C, double opacity, Vec3 P, Vec3 
         if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
-        const PovLightTerms t = povLightTerms(s, C, N, L, V, reach);
+        const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
         color += opacity * t.diffuse + t.highlight;
     }
     return blocked;
