@@ -27,6 +27,9 @@ Vec3 highlights(const PovFinish& f, Vec3 C, Vec3 N, Vec3 L, Vec3 V, double nl, V
     return amount * lightColor * povMetallicTint(f.metallic, C, nl);
 }
 
+// cosine^brilliance, without pow for the default brilliance 1.
+double brilliant(double cosine, double brilliance) { return brilliance == 1 ? cosine : std::pow(cosine, brilliance); }
+
 }  // namespace
 
 PovLightTerms povLightTerms(const PovSurface& s, Vec3 C, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor) {
@@ -37,11 +40,11 @@ PovLightTerms povLightTerms(const PovSurface& s, Vec3 C, Vec3 N, Vec3 L, Vec3 V,
     if (!front && !s.doubleIlluminate) {
         // Only the second diffuse value sees light from behind; no highlights (measured).
         if (f.diffuseBack != 0 && nl < 0)
-            out.diffuse = f.diffuseBack * std::pow(-nl, f.brilliance) * C * lightColor;
+            out.diffuse = f.diffuseBack * brilliant(-nl, f.brilliance) * C * lightColor;
         return out;
     }
     const double cosine = std::fabs(nl);
-    if (f.diffuse != 0 && cosine > 0) out.diffuse = f.diffuse * std::pow(cosine, f.brilliance) * C * lightColor;
+    if (f.diffuse != 0 && cosine > 0) out.diffuse = f.diffuse * brilliant(cosine, f.brilliance) * C * lightColor;
     out.highlight = highlights(f, C, N, L, V, nl, lightColor);
     return out;
 }
