@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "rays/math/sampling.h"
+#include "rays/render/pov_output.h"
 #include "rays/render/sampler.h"
 #include "rays/util/worker_pool.h"
 
@@ -181,6 +182,11 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         Tracer::buildSharedOrigins(scene, bvh, pinholeRays ? &view.rays.location : nullptr,
                                    double(s.width) * double(s.height) * double(view.samples), s.threads);
     const Tracer tracer(scene, bvh, s, &origins);
+    // POV-Ray scenes: each final pixel as POV-Ray writes it, sRGB(c^assumed_gamma), before anything
+    // reads the image (the PNG stream, feature lines, post filters).
+    const bool povOutput = scene.pov.enabled;
+    const double assumedGamma = scene.pov.assumedGamma;
+    auto pixelOut = [&](Vec3 c) { return povOutput ? povOutputColor(c, assumedGamma) : c; };
     const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
     const int tileCount = tilesX * tilesY;
     std::vector<TraceContext> perThread(size_t(resolveThreads(s.threads)));
@@ -219,7 +225,7 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     if (!s.aaEdges) {
         forTiles([&](int x, int y, TraceContext& ctx) {
             PathInfo info;
-            img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx, onRecord ? &info : nullptr);
+            img.at(x, y) = pixelOut(renderPixel(tracer, view, s, x, s.height - 1 - y, ctx, onRecord ? &info : nullptr));
             if (onRecord) onRecord(x, y, info);
         }, progress);
     } else {
@@ -232,7 +238,8 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         pinhole.aperture = 0;
         std::vector<PathInfo> seen(size_t(s.width) * size_t(s.height));
         forTiles([&](int x, int y, TraceContext& ctx) {
-            img.at(x, y) = renderPixel(tracer, pinhole, one, x, s.height - 1 - y, ctx, &seen[size_t(y) * s.width + x]);
+            img.at(x, y) =
+                pixelOut(renderPixel(tracer, pinhole, one, x, s.height - 1 - y, ctx, &seen[size_t(y) * s.width + x]));
         }, progress ? ProgressFn([&](double f) { progress(0.5 * f); }) : ProgressFn{});
         // Mark pixels that differ from any of their 8 neighbours.
         std::vector<uint8_t> mark(seen.size(), 0);
@@ -249,7 +256,8 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
                     }
         // Pass 2: full sampling of the marked pixels only.
         forTiles([&](int x, int y, TraceContext& ctx) {
-            if (mark[size_t(y) * s.width + x]) img.at(x, y) = renderPixel(tracer, view, s, x, s.height - 1 - y, ctx);
+            if (mark[size_t(y) * s.width + x])
+                img.at(x, y) = pixelOut(renderPixel(tracer, view, s, x, s.height - 1 - y, ctx));
         }, progress ? ProgressFn([&](double f) { progress(0.5 + 0.5 * f); }) : ProgressFn{});
         if (edgePixels) *edgePixels = std::move(mark);
         if (onRecord)

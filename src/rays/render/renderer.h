@@ -32,8 +32,9 @@ ViewSetup resolveView(const Scene& scene, const RenderSettings& s);
 Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettings& s, int i, int j,
                  TraceContext& ctx, PathInfo* info = nullptr);
 
-/// Renders the whole image (top row first). Deterministic: the result is bit-identical for any
-/// thread count. stats receives the summed counters. With settings.aaEdges, pass one renders
+/// Renders the whole image (top row first). Scenes with Scene::pov.enabled come out as POV-Ray
+/// writes them (render/pov_output.h: sRGB(c^assumed_gamma), clamped to [0, 1]); course scenes as
+/// traced. Deterministic: the result is bit-identical for any thread count. stats receives the summed counters. With settings.aaEdges, pass one renders
 /// one centre sample per pixel and pass two supersamples only pixels whose PathInfo differs
 /// from a neighbour's; edgePixels (optional) receives that mask (row-major, top row first).
 /// onRecord (optional) is called, from worker threads, with each pixel's first-sample PathInfo

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <optional>
 
+#include "rays/geometry/refract.h"
 #include "rays/image/parallel.h"
 #include "rays/math/sampling.h"
+#include "rays/render/area_light.h"
 #include "rays/render/shading.h"
 #include "rays/render/texturing.h"
 
@@ -12,17 +14,7 @@ namespace rays {
 namespace {
 
 constexpr double kSurfaceOffset = Tracer::kSurfaceOffset;
-constexpr double kTMin = 1e-6;            // hits closer than this are ignored
-
-// Refraction of unit d through unit normal n facing d's origin side (dot(d, n) < 0) with
-// relative index eta = n1/n2. Returns false on total internal reflection.
-bool refractDir(Vec3 d, Vec3 n, double eta, Vec3& out) {
-    const double cosi = -dot(d, n);
-    const double k = 1.0 - eta * eta * (1.0 - cosi * cosi);
-    if (k < 0) return false;
-    out = normalize(eta * d + (eta * cosi - std::sqrt(k)) * n);
-    return true;
-}
+constexpr double kTMin = Tracer::kMinHitT;
 
 // Beer's law tint exp(−(1 − C)·0.15·d); an infinite distance absorbs every channel below 1.
 Vec3 beerTint(Vec3 c, double d) {
@@ -32,15 +24,6 @@ Vec3 beerTint(Vec3 c, double d) {
         out[i] = a == 0 ? 1.0 : (std::isinf(d) ? 0.0 : std::exp(-a * d));
     }
     return out;
-}
-
-// Offset of sample i of n along one area-light axis, in [−½, ½] (POV-Ray: i/(n−1) − ½; the
-// centre when n = 1). With jitter the sample moves randomly within its cell.
-double areaOffset(int i, int n, bool jitter, SampleRng& rng) {
-    if (n == 1) return jitter ? rng.next() - 0.5 : 0.0;
-    double s = double(i) / (n - 1) - 0.5;
-    if (jitter) s += (rng.next() - 0.5) / (n - 1);
-    return std::clamp(s, -0.5, 0.5);
 }
 
 // Course weights of a hit: local (1−f)(1−r), reflection (1−f)·r + f·F, transmission f·(1−F);
@@ -106,6 +89,7 @@ Hit Tracer::firstHit(const Ray& ray) const {
 
 Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log, PathInfo* info) const {
     ++ctx.stats.primaryRays;
+    if (povPath_) return tracePovPrimary(ray, ctx, info);
     return trace(ray, Frame{}, ctx, log, info).color;
 }
 
@@ -185,28 +169,9 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
     }
 
     // Area light: n1 × n2 point lights, each with 1/(n1·n2) of the colour.
-    const int n1 = settings_.areaSamples > 0 ? settings_.areaSamples : light.n1;
-    const int n2 = settings_.areaSamples > 0 ? settings_.areaSamples : light.n2;
-    Vec3 a1 = light.axis1, a2 = light.axis2;
-    if (light.orient) {  // turn the light's plane to face P, keeping the axis lengths
-        const Vec3 toP = P - light.position;
-        if (length(toP) > 0) {
-            Vec3 t, b;
-            orthonormalBasis(normalize(toP), t, b);
-            a1 = length(light.axis1) * t;
-            a2 = length(light.axis2) * b;
-        }
-    }
-    auto samplePos = [&](int u, int v) {
-        double s1 = areaOffset(u, n1, light.jitter, ctx.rng), s2 = areaOffset(v, n2, light.jitter, ctx.rng);
-        if (light.circular) {
-            double x, y;
-            concentricDisc(s1 + 0.5, s2 + 0.5, x, y);
-            s1 = 0.5 * x;
-            s2 = 0.5 * y;
-        }
-        return light.position + s1 * a1 + s2 * a2;
-    };
+    const AreaGrid grid = areaGrid(light, settings_.areaSamples, P);
+    const int n1 = grid.n1, n2 = grid.n2;
+    auto samplePos = [&](int u, int v) { return areaSample(light, grid, u, v, ctx.rng); };
     const Vec3 color = light.color / double(n1 * n2);
     auto visible = [&](Vec3 pos, Vec3& L) {
         const Vec3 toLight = pos - P;

@@ -99,8 +99,14 @@ public:
     /// Rays leave a surface this far along their direction (shadow rays: along the normal).
     static constexpr double kSurfaceOffset = 0.001;
 
+    /// Hits closer than this along a ray are ignored.
+    static constexpr double kMinHitT = 1e-6;
+
+    /// Scenes with Scene::pov.enabled are traced by POV-Ray's rules (tracer_povray.cpp) unless the
+    /// settings ask for the flat or normals views.
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
-        : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins) {}
+        : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
+          povTransparent_(povPath_ && anyPovTransparent(scene)) {}
 
     /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
     /// primarySamples: the render's camera samples (each buffer is queried about that often).
@@ -115,9 +121,10 @@ public:
     static constexpr double kSharedOriginsBytesPerObject = 64.0;
 
     /// Colour seen along a primary ray. When log is non-null the ray tree is appended to it in
-    /// depth-first order (each node before its children); when info is non-null it receives the
-    /// ids along the tree and the primary hit's blocked lights. Random decisions (area-light
-    /// jitter, global illumination) draw from ctx.rng.
+    /// depth-first order (each node before its children; course scenes only); when info is non-null
+    /// it receives the ids along the tree and the primary hit's blocked lights. Random decisions
+    /// (area-light jitter, global illumination) draw from ctx.rng. POV-Ray scenes give the colour
+    /// in the scene's working space (render() encodes it for output: render/pov_output.h).
     Vec3 tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRecord>* log = nullptr,
                       PathInfo* info = nullptr) const;
 
@@ -172,10 +179,73 @@ private:
     bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface = false,
                   const FromLight* fromLight = nullptr) const;
 
+    // POV-Ray's lighting model (tracer_povray.cpp; docs/povray-lighting.md).
+    /// Per-ray arguments of POV-Ray's recursion: the trace level (the camera ray is 1; reflected
+    /// and refracted rays add one, rays passing straight through a surface keep it), the weight
+    /// adc_bailout compares, the object whose interior the ray travels in (−1: none), whether that
+    /// interior fades the ray (transmitted rays only, measured), and how much the rays before it
+    /// inside that interior faded (what the colour it brings back will go through there).
+    struct PovRay {
+        int level = 1;
+        double weight = 1;
+        int interior = -1;
+        bool fades = false;
+        Vec3 faded{1, 1, 1};
+        bool primary = false;
+    };
+    /// True when the scene is traced by POV-Ray's rules: pov.enabled, and not the flat or normals view.
+    static bool usesPovPath(const Scene& scene, const RenderSettings& settings);
+    /// True when some object lets light through (filter or transmit): shadow rays then walk.
+    static bool anyPovTransparent(const Scene& scene);
+    /// tracePrimary of POV-Ray scenes (a camera ray at level 1, weight 1, in no interior).
+    Vec3 tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const;
+    /// Colour along a ray (the background when it misses), faded by the interior it travels in.
+    Result tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const;
+    /// A surface point being shaded: the object and its surface, position, normal facing the
+    /// viewer (maps applied), pigment colour, which side the ray came from, the interior the point
+    /// lies in (−1: none) and how much the viewing rays faded in it on the way to the point.
+    /// POV-Ray 3.7 divides the light reaching the point by that fade, so that direct light there
+    /// is faded over the shadow ray's path only (measured, docs/povray-lighting.md).
+    struct PovPoint {
+        int object = -1;
+        const Material* material = nullptr;
+        const PovSurface* surface = nullptr;
+        Vec3 P, N, C;
+        bool entering = true;
+        int interior = -1;
+        Vec3 viewFade{1, 1, 1};
+    };
+    /// Colour of the surface hit: local light, reflection and transmission. segmentFade: how much
+    /// the interior fades this ray up to the hit (1 when it does not).
+    Vec3 shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
+                  PathInfo* info) const;
+    /// What the reflected and transmitted rays from a point bring (total internal reflection
+    /// included), within max_trace_level and adc_bailout.
+    Vec3 povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, TraceContext& ctx, PathInfo* info) const;
+    /// Adds every light's diffuse (weighted by opacity) and highlights at the point (seen from V)
+    /// to color; returns the number of lights of which less than half reaches it (counted only
+    /// when countBlocked).
+    int povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& ctx, Vec3& color,
+                  bool countBlocked) const;
+    /// The light of one light that reaches P (its colour tinted by transparent objects on the way,
+    /// times the visible share of an area light's samples); shadow rays leave P on side Nl.
+    Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
+                          TraceContext& ctx) const;
+    /// 1 when nothing lies on the shadow ray before tMax, else what the objects on it let through.
+    Vec3 povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
+                       const FromLight* fromLight) const;
+    /// Walks the surfaces on the shadow ray before tMax: each tints by filter·C + transmit, interiors
+    /// with fading fade over the length inside (from the ray's start for one it began in, none for
+    /// one it does not leave); an opaque surface (or too many) blocks.
+    Vec3 povTransmittance(const Ray& shadow, double tMax) const;
+    const PovSurface& povSurfaceOf(const Material& m) const;
+
     const Scene& scene_;
     const Bvh& bvh_;
     const RenderSettings& settings_;
     const SharedOrigins* origins_;
+    bool povPath_;         ///< the scene is traced by POV-Ray's rules
+    bool povTransparent_;  ///< and some of its objects let light through
 };
 
 }  // namespace rays

@@ -39,7 +39,12 @@ struct PovSurface {
 /// Scene-wide settings of POV-Ray scenes (global_settings, background).
 struct PovGlobals {
     bool enabled = false;            ///< the scene follows POV-Ray's rules (objects use PovSurface)
-    double assumedGamma = 1.0;       ///< working gamma: output = sRGB(c^assumedGamma)
+    /// Working gamma: output = sRGB(c^assumedGamma). 0: the colour is written as it is (legacy
+    /// scenes without assumed_gamma, and `assumed_gamma srgb`; measured, docs/povray-lighting.md).
+    double assumedGamma = 1.0;
+    /// The scene's #version (below 3.7, also no #version at all: the surface's own colour keeps
+    /// 1 − (filter·max(r,g,b) + transmit) of its weight instead of 1 − filter − transmit).
+    double version = 3.7;
     Vec3 ambientLight{1, 1, 1};
     int maxTraceLevel = 5;
     double adcBailout = 1.0 / 255.0;

@@ -1,0 +1,67 @@
+// POV-Ray 3.7's surface formulas (reference manual "Finish", "Interior", "Color Expressions"),
+// with the details the manual leaves open settled by black-box measurements of povray 3.7
+// (docs/povray-lighting.md; the scenes are in tests/data/povray/shading). Pure functions: the
+// tracer (tracer_povray.cpp) finds the lights, rays and colours they combine.
+#pragma once
+#include "rays/math/vec3.h"
+#include "rays/scene/pov_surface.h"
+
+namespace rays {
+
+/// What one light adds at a surface point: diffuse (to be weighted by the surface's opacity) and
+/// highlights (phong + specular, never weighted by it).
+struct PovLightTerms {
+    Vec3 diffuse;
+    Vec3 highlight;
+};
+
+/// Light from one light of colour lightColor (already tinted and dimmed by what lies between) on a
+/// surface of pigment C. N faces the viewer; L (towards the light) and V (towards the viewer) are
+/// unit. Light in front (N·L > 0): diffuse·(N·L)^brilliance·C·Lc plus phong·(R·V)^phong_size·Lc
+/// (R = L mirrored about N) and specular·(N·H)^(1/roughness)·Lc (H = normalize(L + V)), the
+/// highlights tinted by metallic (povMetallicTint). Light from behind: with double_illuminate the
+/// same with |N·L|; otherwise the second diffuse value, diffuseBack·|N·L|^brilliance·C·Lc, alone.
+PovLightTerms povLightTerms(const PovSurface& s, Vec3 C, Vec3 N, Vec3 L, Vec3 V, Vec3 lightColor);
+
+/// Ambient and emission of a surface of pigment C: (ambient·ambientLight + emission)·C.
+Vec3 povAmbient(const PovFinish& f, Vec3 C, Vec3 ambientLight);
+
+/// Share of the surface's own colour (ambient, emission, diffuse) for pigment C with filter and
+/// transmit: 1 − filter − transmit; in legacy scenes (#version below 3.7) 1 − (filter·max(C) + transmit).
+double povOpacity(Vec3 C, double filter, double transmit, double version);
+
+/// How a surface tints the light that passes through it: filter·C + transmit, per channel.
+inline Vec3 povFilterTint(Vec3 C, double filter, double transmit) { return filter * C + Vec3(transmit); }
+
+/// The empirical curve behind `metallic` (measured: docs/povray-lighting.md): 0 at normal incidence
+/// rising to 1 at grazing angles, F(x) = 0.014567225/(x − 1.12)² − 0.011612903 clamped to [0, 1],
+/// with x = acos(cosAngle)/(π/2).
+double povMetallicCurve(double cosAngle);
+
+/// Colour factor of metallic: 1 + amount·(1 − F)·(C − 1), F = povMetallicCurve(cosAngle) (1 when
+/// amount is 0: the light's own colour).
+Vec3 povMetallicTint(double amount, Vec3 C, double cosAngle);
+
+/// Unpolarised Fresnel reflectance of a dielectric interface (exact, not Schlick) for the cosine
+/// of the incidence angle and eta = n_incident / n_transmitted; 1 under total internal reflection.
+double fresnelReflectance(double cosIncidence, double eta);
+
+/// Reflectivity of a surface of pigment C seen at cosView = N·V (> 0): `reflection C` as given;
+/// variable reflection min + (max − min)·(1 − cosView)^falloff; with fresnel min + (max − min)·F
+/// (F from the interior's ior; eta as for fresnelReflectance); then tinted by the reflection's
+/// metallic (povMetallicTint at cosView).
+Vec3 povReflectivity(const PovSurface& s, Vec3 C, double cosView, double eta);
+
+/// The reflected colour as the reflection's exponent shapes it: c^(1/exponent) per channel.
+Vec3 povReflectionExponent(Vec3 reflected, double exponent);
+
+/// Transmittance of a ray's path of length distance inside an interior: without fading
+/// (fade_distance 0) 1; fade_power ≥ 1000: exp(−(1 − fade_color)·distance/fade_distance);
+/// otherwise a + (1 − a)·fade_color with a = 1/(1 + (distance/fade_distance)^fade_power).
+/// An infinite distance gives fade_color (or 0).
+Vec3 povFade(const PovInterior& in, double distance);
+
+/// True when the interior fades light at all (fade_distance > 0).
+inline bool povFades(const PovInterior& in) { return in.fadeDistance > 0; }
+
+}  // namespace rays

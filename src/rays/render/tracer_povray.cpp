@@ -1,0 +1,275 @@
+// POV-Ray 3.7's lighting model for the objects of POV-Ray scenes (Scene::pov.enabled): local light
+// per light source, filter and transmit, reflection, refraction, interior fading, shadows through
+// transparent objects, max_trace_level and adc_bailout. The formulas are in pov_lighting.h; how
+// they combine was settled by black-box measurements of povray 3.7 (docs/povray-lighting.md).
+#include <algorithm>
+#include <cmath>
+
+#include "rays/geometry/refract.h"
+#include "rays/render/area_light.h"
+#include "rays/render/pov_lighting.h"
+#include "rays/render/texturing.h"
+#include "rays/render/tracer.h"
+
+namespace rays {
+namespace {
+
+constexpr double kSurfaceOffset = Tracer::kSurfaceOffset;
+constexpr double kTMin = Tracer::kMinHitT;
+/// A shadow ray passing more surfaces than this counts as blocked (bounds the walk).
+constexpr int kMaxShadowSurfaces = 64;
+/// Interiors with fading a shadow ray can be inside at once (more are not faded).
+constexpr int kMaxOpenInteriors = 8;
+
+/// The surface of objects without one (Material::pov < 0): POV-Ray's default finish.
+const PovSurface kDefaultSurface{};
+
+double maxAbsComponent(Vec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+
+bool letsLightThrough(const Material& m, const PovSurface& s) { return m.filter != 0 || s.transmit != 0; }
+
+}  // namespace
+
+bool Tracer::usesPovPath(const Scene& scene, const RenderSettings& settings) {
+    return scene.pov.enabled && settings.shading != ShadingModel::Flat && settings.shading != ShadingModel::Normals;
+}
+
+bool Tracer::anyPovTransparent(const Scene& scene) {
+    for (const Object& o : scene.objects) {
+        const Material& m = o.material;
+        const PovSurface& s = m.pov >= 0 && size_t(m.pov) < scene.povSurfaces.size() ? scene.povSurfaces[size_t(m.pov)]
+                                                                                    : kDefaultSurface;
+        if (letsLightThrough(m, s)) return true;
+    }
+    return false;
+}
+
+const PovSurface& Tracer::povSurfaceOf(const Material& m) const {
+    return m.pov >= 0 && size_t(m.pov) < scene_.povSurfaces.size() ? scene_.povSurfaces[size_t(m.pov)]
+                                                                   : kDefaultSurface;
+}
+
+Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const {
+    PovRay r;
+    r.primary = true;
+    return tracePov(ray, r, ctx, info).color;
+}
+
+Tracer::Result Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const {
+    const Hit hit = firstHit(ray);
+    if (info) info->push(hit.object);
+    Result res;
+    res.t = hit.t;  // infinite for a miss
+    Vec3 fade(1.0);
+    if (r.fades && r.interior >= 0) {
+        const PovInterior& in = povSurfaceOf(scene_.objects[size_t(r.interior)].material).interior;
+        if (povFades(in)) fade = povFade(in, res.t);
+    }
+    res.color = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : scene_.pov.background);
+    return res;
+}
+
+Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
+                      PathInfo* info) const {
+    const Object& o = scene_.objects[size_t(hit.object)];
+    PovPoint pt;
+    pt.object = hit.object;
+    pt.material = &o.material;
+    pt.surface = &povSurfaceOf(o.material);
+    pt.P = ray.at(hit.t);
+    pt.entering = dot(ray.dir, hit.geomNormal) < 0;
+    pt.N = pt.entering ? hit.normal : -hit.normal;  // faces the viewer
+    pt.C = o.material.color;
+    if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0)
+        applyMaps(scene_, o, pt.P, SurfaceUV{hit.hasUV, hit.u, hit.v, hit.dpdu}, pt.C, pt.N);
+    pt.interior = r.interior;
+    pt.viewFade = r.faded * segmentFade;
+
+    // The surface's own colour, weighted by its opacity; highlights are not (measured).
+    const PovSurface& s = *pt.surface;
+    const double opacity = povOpacity(pt.C, o.material.filter, s.transmit, scene_.pov.version);
+    Vec3 color = opacity * povAmbient(s.finish, pt.C, scene_.pov.ambientLight);
+    ctx.surfaceObject = hit.object;
+    const int blocked = povLights(pt, opacity, -ray.dir, ctx, color, info && r.primary);
+    ctx.surfaceObject = -1;
+    if (info && r.primary) {
+        info->blockedLights = int16_t(blocked);
+        info->setHit(hit.t, pt.P, pt.N);
+    }
+    if (r.level >= scene_.pov.maxTraceLevel) return color;  // no further rays at the last level
+    return color + povSecondary(ray, pt, r, ctx, info);
+}
+
+Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, TraceContext& ctx,
+                          PathInfo* info) const {
+    const PovSurface& s = *pt.surface;
+    const double bailout = scene_.pov.adcBailout;
+    const double ior = s.interior.ior;
+    const double eta = pt.entering ? 1.0 / ior : ior;
+    const Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), eta);
+    Vec3 T = povFilterTint(pt.C, pt.material->filter, s.transmit);
+    if (s.finish.conserveEnergy) T *= Vec3(1.0) - R;
+    // A reflected ray stays on this side of the surface, a transmitted one crosses it. Only
+    // transmitted rays fade over their path inside an interior: reflected ones (total internal
+    // reflection included) do not, but the fade before them still counts for the light (measured).
+    PovRay reflected{.level = r.level + 1, .weight = r.weight, .interior = pt.entering ? r.interior : pt.object};
+    if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
+    auto trace = [&](Vec3 dir, const PovRay& child) {
+        ++ctx.stats.secondaryRays;
+        return tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, child, ctx, info).color;
+    };
+
+    Vec3 color;
+    if (maxAbsComponent(T) > 0) {
+        Vec3 dir = ray.dir;
+        int level = r.level;  // passing straight through (ior 1) keeps the level (measured)
+        if (ior != 1) {
+            // Total internal reflection: one reflected ray with the full weight replaces both the
+            // reflection and the transmission (measured).
+            if (!refractDir(ray.dir, pt.N, eta, dir)) return trace(normalize(reflect(ray.dir, pt.N)), reflected);
+            ++level;
+        }
+        const PovRay through{.level = level,
+                             .weight = r.weight * maxAbsComponent(T),
+                             .interior = pt.entering ? pt.object : -1,
+                             .fades = true};
+        if (through.weight >= bailout) color += T * trace(dir, through);
+    }
+    reflected.weight = r.weight * maxComponent(R);
+    if (maxComponent(R) > 0 && reflected.weight >= bailout) {
+        const Vec3 seen = trace(normalize(reflect(ray.dir, pt.N)), reflected);
+        color += R * povReflectionExponent(seen, s.finish.reflectionExponent);
+    }
+    return color;
+}
+
+int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& ctx, Vec3& color,
+                      bool countBlocked) const {
+    const PovSurface& s = *pt.surface;
+    const PovFinish& f = s.finish;
+    const Vec3 P = pt.P, N = pt.N;
+    // Which side's light can add anything: in front diffuse and highlights, behind the second
+    // diffuse value, or everything with double_illuminate.
+    const bool highlights = f.phong > 0 || f.specular > 0;
+    const bool front = (f.diffuse != 0 && opacity != 0) || highlights;
+    const bool back = s.doubleIlluminate ? front : (f.diffuseBack != 0 && opacity != 0);
+    // The light at a point inside a fading interior is divided by the viewing rays' fade there
+    // (measured; a channel faded to nothing is left alone).
+    Vec3 scale(1.0);
+    if (pt.interior >= 0)
+        for (int i = 0; i < 3; ++i) scale[i] = pt.viewFade[i] > 0 ? 1.0 / pt.viewFade[i] : 1.0;
+    int blocked = 0;
+    for (size_t li = 0; li < scene_.lights.size(); ++li) {
+        const Light& light = scene_.lights[li];
+        Vec3 L = light.parallel ? -light.direction : light.position - P;
+        const double dist = length(L);
+        if (dist == 0) continue;
+        L = L / dist;
+        const double nl = dot(N, L);
+        const bool useful = nl > 0 ? front : (nl < 0 && back);
+        if (!useful && !countBlocked) continue;
+        const Vec3 arriving = povLightReaching(light, li, P, nl >= 0 ? N : -N, nl < 0, ctx);
+        if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
+        const Vec3 reach = scale * arriving;
+        if (!useful || reach == Vec3{}) continue;
+        const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
+        color += opacity * t.diffuse + t.highlight;
+    }
+    return blocked;
+}
+
+Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
+                              TraceContext& ctx) const {
+    const Vec3 origin = P + kSurfaceOffset * Nl;
+    if (light.parallel) {
+        // Shadow rays end at the plane through the light's position across its direction; points
+        // beyond that plane are lit unshadowed (the manual, "Parallel Lights"; measured).
+        const double tMax = dot(light.position - origin, -light.direction);
+        if (tMax <= 0) return light.color;
+        return light.color * povShadowTint(Ray{origin, -light.direction}, tMax, index, ctx, intoSurface, nullptr);
+    }
+    if (!light.area) {
+        const Vec3 toLight = light.position - P;
+        const double dist = length(toLight);
+        const FromLight fromLight{-toLight, dist};
+        return light.color *
+               povShadowTint(Ray{origin, toLight / dist}, dist - kSurfaceOffset, index, ctx, intoSurface, &fromLight);
+    }
+    // Area light: the shading uses its centre (measured); its samples only decide how much of the
+    // light arrives, each tinted by what lies on its shadow ray.
+    const AreaGrid grid = areaGrid(light, settings_.areaSamples, P);
+    auto sampleTint = [&](Vec3 pos) {
+        const Vec3 toLight = pos - P;
+        const double dist = length(toLight);
+        if (dist == 0) return Vec3(1.0);
+        return povShadowTint(Ray{origin, toLight / dist}, dist - kSurfaceOffset, index, ctx, intoSurface, nullptr);
+    };
+    const int count = grid.n1 * grid.n2;
+    // adaptive: four corners that agree on all-or-nothing decide for the whole light.
+    if (light.adaptive >= 0 && grid.n1 > 1 && grid.n2 > 1 && !light.jitter) {
+        int lit = 0, dark = 0;
+        for (int c = 0; c < 4; ++c) {
+            const Vec3 t =
+                sampleTint(areaSample(light, grid, (c & 1) ? grid.n1 - 1 : 0, (c & 2) ? grid.n2 - 1 : 0, ctx.rng));
+            lit += t == Vec3(1.0);
+            dark += t == Vec3{};
+        }
+        if (dark == 4) return {};
+        if (lit == 4) return light.color;
+    }
+    Vec3 sum;
+    for (int v = 0; v < grid.n2; ++v)
+        for (int u = 0; u < grid.n1; ++u) sum += sampleTint(areaSample(light, grid, u, v, ctx.rng));
+    return light.color * sum / double(count);
+}
+
+Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
+                           const FromLight* fromLight) const {
+    if (!shadowed(shadow, tMax, light, ctx, intoSurface, fromLight)) return Vec3(1.0);
+    if (!povTransparent_) return {};
+    return povTransmittance(shadow, tMax);
+}
+
+Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
+    struct Entry {
+        int object;
+        double t;
+    };
+    Entry open[kMaxOpenInteriors];  // interiors with fading the ray has entered and not yet left
+    int openCount = 0;
+    Vec3 tint(1.0);
+    double tMin = kTMin;
+    for (int step = 0; step < kMaxShadowSurfaces; ++step) {
+        const Hit h = bvh_.closest(scene_.objects, shadow, tMin, tMax);
+        if (!h.valid()) return tint;  // interiors not left before the light do not fade it (measured)
+        const Object& o = scene_.objects[size_t(h.object)];
+        const PovSurface& s = povSurfaceOf(o.material);
+        if (!letsLightThrough(o.material, s)) return {};
+        Vec3 C = o.material.color;
+        if (o.material.pigmentMap >= 0) {
+            Vec3 N = h.normal;
+            applyMaps(scene_, o, shadow.at(h.t), SurfaceUV{h.hasUV, h.u, h.v, h.dpdu}, C, N);
+        }
+        tint *= povFilterTint(C, o.material.filter, s.transmit);
+        if (povFades(s.interior)) {
+            if (dot(shadow.dir, h.geomNormal) < 0) {
+                if (openCount < kMaxOpenInteriors) open[openCount++] = Entry{h.object, h.t};
+            } else {
+                // Leaving: the length inside since the entry, or since the start.
+                double from = 0;
+                for (int i = 0; i < openCount; ++i)
+                    if (open[i].object == h.object) {
+                        from = open[i].t;
+                        open[i] = open[--openCount];
+                        break;
+                    }
+                tint *= povFade(s.interior, h.t - from);
+            }
+        }
+        if (maxComponent(tint) <= 0) return {};
+        tMin = h.t + kTMin;
+    }
+    return {};
+}
+
+}  // namespace rays
