@@ -143,6 +143,16 @@ TEST(PovObjects, FinishAndInteriorReachTheSurface) {
     EXPECT_DOUBLE_EQ(s.interior.fadeDistance, 2);
 }
 
+TEST(PovObjects, OneReflectionValueWithFresnelIsTheMaximum) {
+    const Built b = build("sphere { 0, 1 finish { reflection { 0.8 fresnel on } } } sphere { 0, 1 finish { reflection { 0.3 } } }");
+    ASSERT_EQ(b.error, "");
+    const PovFinish& f = b.scene.povSurfaces[size_t(b.scene.objects[0].material.pov)].finish;
+    EXPECT_TRUE(near(f.reflectionMin, {0, 0, 0}));
+    EXPECT_TRUE(near(f.reflectionMax, {0.8, 0.8, 0.8}));
+    const PovFinish& g = b.scene.povSurfaces[size_t(b.scene.objects[1].material.pov)].finish;
+    EXPECT_TRUE(near(g.reflectionMin, {0.3, 0.3, 0.3}));
+}
+
 TEST(PovLights, PointAreaAndParallelLights) {
     const Built b = build(
         "light_source { <1, 2, 3> color rgb <1, 0.5, 0> translate <0, 1, 0> }\n"
@@ -162,7 +172,9 @@ TEST(PovLights, PointAreaAndParallelLights) {
 
 TEST(PovGlobals, AssumedGammaDefaultsByVersion) {
     EXPECT_DOUBLE_EQ(build("#version 3.7; sphere { 0, 1 }").scene.pov.assumedGamma, 1.0);
-    EXPECT_DOUBLE_EQ(build("#version 3.6; sphere { 0, 1 }").scene.pov.assumedGamma, 2.2);
+    EXPECT_DOUBLE_EQ(build("#version 3.6; sphere { 0, 1 }").scene.pov.assumedGamma, 0.0);  // written unchanged
+    EXPECT_DOUBLE_EQ(build("#version 3.7; global_settings { assumed_gamma srgb } sphere { 0, 1 }").scene.pov.assumedGamma, 0.0);
+    EXPECT_DOUBLE_EQ(build("#version 3.6; sphere { 0, 1 }").scene.pov.version, 3.6);
     const Built b = build("#version 3.7; global_settings { assumed_gamma 2.2 ambient_light rgb 0.5 max_trace_level 7 }\n"
                           "background { rgb <0.1, 0.2, 0.3> }");
     EXPECT_DOUBLE_EQ(b.scene.pov.assumedGamma, 2.2);

@@ -142,11 +142,6 @@ void applyFinish(const Item& f, PovFinish& fin, NotRendered& notes) {
                     break;
                 }
                 std::vector<const Value*> pos = positionals(r.item());
-                if (pos.size() == 1) fin.reflectionMin = fin.reflectionMax = toColor(*pos[0]).rgb;
-                if (pos.size() >= 2) {
-                    fin.reflectionMin = toColor(*pos[0]).rgb;
-                    fin.reflectionMax = toColor(*pos[1]).rgb;
-                }
                 for (const Entry& re : r.item().entries) {
                     if (re.positional()) continue;
                     const double v = re.args.empty() ? 1.0 : toFloat(re.args[0]);
@@ -154,6 +149,16 @@ void applyFinish(const Item& f, PovFinish& fin, NotRendered& notes) {
                     if (re.kw() == Kw::falloff) fin.reflectionFalloff = v;
                     if (re.kw() == Kw::exponent) fin.reflectionExponent = v;
                     if (re.kw() == Kw::metallic) fin.reflectionMetallic = v;
+                }
+                // One value is the maximum; the minimum is that value too, except with fresnel,
+                // where it is 0 (POV-Ray reflects max·Fresnel: measured, docs/povray-lighting.md).
+                if (pos.size() == 1) {
+                    fin.reflectionMax = toColor(*pos[0]).rgb;
+                    fin.reflectionMin = fin.reflectionFresnel ? Vec3{} : fin.reflectionMax;
+                }
+                if (pos.size() >= 2) {
+                    fin.reflectionMin = toColor(*pos[0]).rgb;
+                    fin.reflectionMax = toColor(*pos[1]).rgb;
                 }
                 break;
             }

@@ -427,7 +427,8 @@ void SceneBuilder::globalSettings(const Item& g) {
         if (e.positional()) continue;
         switch (e.kw()) {
             case Kw::assumed_gamma:
-                scene_.pov.assumedGamma = toFloat(e.args[0]);
+                // `assumed_gamma srgb` (kept as -1) writes colours as they are, as legacy scenes do.
+                scene_.pov.assumedGamma = toFloat(e.args[0]) < 0 ? 0.0 : toFloat(e.args[0]);
                 gammaSet_ = true;
                 break;
             case Kw::ambient_light: scene_.pov.ambientLight = toColor(e.args[0]).rgb; break;
@@ -445,8 +446,9 @@ Scene SceneBuilder::finish(const std::string& fileName) {
     scene_.fileName = fileName;
     scene_.pov.enabled = true;
     // Without assumed_gamma POV-Ray 3.7 works in linear light (1.0) for #version 3.7 scenes and
-    // leaves older scenes' colours as they are (2.2) (measured with POV-Ray 3.7.0.10).
-    if (!gammaSet_) scene_.pov.assumedGamma = version_ >= 3.7 ? 1.0 : 2.2;
+    // writes older scenes' colours as they are (0) (measured with POV-Ray 3.7.0.10).
+    if (!gammaSet_) scene_.pov.assumedGamma = version_ >= 3.7 ? 1.0 : 0.0;
+    scene_.pov.version = version_;
     if (scene_.cameras.empty()) {
         Camera c;  // POV-Ray's default camera: at the origin looking along +z, right 1.33x, up y
         c.location = {0, 0, 0};

@@ -10,6 +10,16 @@ using sdl::Value;
 
 namespace {
 
+// assumed_gamma F | srgb: srgb is kept as -1 (the builder writes colours unchanged then).
+void readAssumedGamma(Interpreter& in, Entry& e) {
+    if (in.isKw(Kw::srgb)) {
+        in.next();
+        e.args.push_back(Value::number(-1));
+        return;
+    }
+    e.args.push_back(Value::number(in.parseFloat()));
+}
+
 // charset ascii | utf8 | sys.
 void readCharset(Interpreter& in, Entry& e) {
     const Kw k = in.kw();
@@ -57,7 +67,7 @@ void Specs::buildScene() {
     skySphere = makeSpec("a sky_sphere", Kw::sky_sphere, {&skyRules, &transformRules()}, true);
     background = makeSpec("a background", Kw::background, {&none}, true);
 
-    const RuleGroup globalRules{number(Kw::adc_bailout), expr(Kw::ambient_light), number(Kw::assumed_gamma),
+    const RuleGroup globalRules{number(Kw::adc_bailout), expr(Kw::ambient_light), custom(Kw::assumed_gamma, readAssumedGamma),
                                 boolean(Kw::hf_gray_16), expr(Kw::irid_wavelength), custom(Kw::charset, readCharset),
                                 number(Kw::max_intersections), number(Kw::max_trace_level),
                                 number(Kw::number_of_waves), number(Kw::noise_generator),
