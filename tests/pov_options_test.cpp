@@ -288,6 +288,21 @@ TEST(PovOptionsIni, CommentsSwitchLinesAndSettings) {
     EXPECT_EQ(r.warnings[0], ini.string() + ":6: warning: Post_Scene_Command is not acted on: Rays runs no shell commands");
 }
 
+TEST(PovOptionsIni, SettingsOnASwitchLineAndEmptyValues) {
+    // animations/splinefollow.ini: `+kf0.1666 +kff20 +kc declare=fp=0`; benchmark.ini: `All_File=`.
+    TempDir dir;
+    const fs::path ini = dir.path() / "anim.ini";
+    writeText(ini, "+kff20 +kc declare=fp=0\nOutput_File_Name=\nAll_File=\n");
+    const Read r = readArgs({ini.string()});
+    EXPECT_EQ(r.o.animation.finalFrame, 20);
+    EXPECT_TRUE(r.o.animation.cyclic);
+    ASSERT_EQ(r.o.declares.size(), 1u);
+    EXPECT_EQ(r.o.declares[0].name, "fp");
+    EXPECT_EQ(r.o.declares[0].value, "0");
+    EXPECT_EQ(r.o.outputFile, "");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+}
+
 TEST(PovOptionsIni, TheExtensionIsAssumedAndTheIniIsReadInPlace) {
     TempDir dir;
     writeText(dir.path() / "res.ini", "Width=100\nHeight=50\n");

@@ -442,8 +442,14 @@ void PovOptionReader::readIniText(const std::string& text, const std::string& pa
         if (line[0] == '+' || line[0] == '-') {
             for (const std::string& word : switchWords(line)) {
                 const Where at{path, lineNo, word};
-                if (isPovSwitch(word)) readSwitch(word, at);
-                else warnOnce(word, "unknown option '" + word + "'", at);
+                if (isPovSwitch(word)) {
+                    readSwitch(word, at);
+                } else if (isPovSetting(word)) {  // `+kc declare=fp=0` (animations/splinefollow.ini)
+                    const size_t eq = word.find('=');
+                    set(trim(word.substr(0, eq)), unquote(trim(word.substr(eq + 1))), at);
+                } else {
+                    warnOnce(word, "unknown option '" + word + "'", at);
+                }
             }
         } else if (line.find('=') != std::string::npos) {
             const size_t eq = line.find('=');
