@@ -199,6 +199,31 @@ TEST(PovNotes, UnrenderedFeaturesWarnOnceEachOrFailWithStrict) {
     EXPECT_EQ(build(text, true).error, "scene.pov:2:1: error: not rendered yet: torus (--strict)");
 }
 
+TEST(PovGeometry, TraceAndExtentsAnswerAsPovRayDoes) {
+    // Values printed by POV-Ray 3.7 for the same calls.
+    const Built b = build(
+        "#declare S = sphere { 0, 1 scale <2, 1, 1> translate x }\n"
+        "#declare N = <0, 0, 0>;\n"
+        "#declare P = trace(S, <0, 0, 0>, x, N);\n"
+        "sphere { P, 0.1 } sphere { N, 0.1 }\n"
+        "#declare P = trace(S, <-5, 0.5, 0>, x, N);\n"
+        "sphere { P, 0.1 } sphere { N, 0.1 }\n"
+        "#declare B = union { box { 0, 1 } sphere { <5, 0, 0>, 2 } }\n"
+        "sphere { min_extent(B), 0.1 } sphere { max_extent(B), 0.1 }\n"
+        "#declare M = trace(S, <0, 5, 0>, x, N);\n"  // a miss gives <0,0,0> and a zero normal
+        "sphere { N + <0, 0, 9>, 0.1 }");
+    ASSERT_EQ(b.error, "");
+    ASSERT_EQ(b.scene.objects.size(), 7u);
+    auto at = [&](size_t i) { return b.scene.objects[i].p0; };
+    EXPECT_TRUE(near(at(0), {3, 0, 0}, 1e-9));
+    EXPECT_TRUE(near(at(1), {1, 0, 0}, 1e-9));  // the outward normal, seen from inside
+    EXPECT_TRUE(near(at(2), {-0.7320508, 0.5, 0}, 1e-6));
+    EXPECT_TRUE(near(at(3), {-0.6546537, 0.7559289, 0}, 1e-6));
+    EXPECT_TRUE(near(at(4), {0, -2, -2}));
+    EXPECT_TRUE(near(at(5), {7, 2, 2}));
+    EXPECT_TRUE(near(at(6), {0, 0, 9}));
+}
+
 TEST(PovGrammar, EveryKindOfItemIsReadInItsPlace) {
     // One of each of POV-Ray 3.7's items and modifiers; none may be a syntax error.
     const char* text = R"(#version 3.7;

@@ -53,9 +53,9 @@ public:
     }
     void topLevel(sdl::Interpreter&, const sdl::ItemRef& item) override { items.push_back(item); }
     void setDefault(sdl::Interpreter&, const sdl::ItemRef& item) override { defaults.push_back(item); }
-    TraceResult trace(const sdl::Item&, const double*, const double*) override { return {}; }
-    int inside(const sdl::Item&, const double*) override { return -1; }
-    bool extent(const sdl::Item&, double*, double*) override { return false; }
+    TraceResult trace(const sdl::ItemRef&, const double*, const double*) override { return {}; }
+    int inside(const sdl::ItemRef&, const double*) override { return -1; }
+    bool extent(const sdl::ItemRef&, double*, double*) override { return false; }
     std::array<double, 12> transformMatrix(const sdl::Item&) override { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}; }
 
     std::vector<sdl::ItemRef> items, defaults;

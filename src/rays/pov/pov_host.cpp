@@ -1,11 +1,42 @@
 #include "rays/pov/pov_host.h"
 
+#include <cmath>
+
+#include "rays/accel/bvh.h"
 #include "rays/pov/grammar.h"
 #include "rays/pov/item_values.h"
+#include "rays/pov/scene_builder.h"
 
 namespace rays::pov {
 
 using sdl::Kw;
+
+// Parse-time geometry (trace, min_extent, max_extent): the object built as the scene builder
+// builds it, alone, with its own BVH; built once per object value.
+struct PovHost::Probe {
+    sdl::ItemRef object;  ///< keeps the item (the cache's key) alive
+    Scene scene;
+    Bvh bvh;
+    bool complete = true;  ///< every part of the object could be built
+};
+
+PovHost::PovHost(ParsedScene& out) : out_(out) {}
+PovHost::~PovHost() = default;
+
+const PovHost::Probe& PovHost::probe(const sdl::ItemRef& object) {
+    auto& slot = probes_[object.get()];
+    if (!slot) {
+        slot = std::make_unique<Probe>();
+        slot->object = object;
+        NotRendered quiet([](const sdl::Loc&) { return std::string(); }, nullptr, false);
+        SceneBuilder b(quiet);
+        b.add(ParsedScene::Top{object, nullptr, 3.7});
+        slot->scene = b.finish("");
+        slot->complete = quiet.count() == 0;
+        slot->bvh = Bvh(slot->scene.objects);
+    }
+    return *slot;
+}
 
 bool PovHost::startsItem(Kw k) const { return itemSpec(k) != nullptr; }
 
@@ -39,9 +70,45 @@ void PovHost::setDefault(sdl::Interpreter&, const sdl::ItemRef& item) {
     defaults_ = std::move(t);
 }
 
-PovHost::TraceResult PovHost::trace(const sdl::Item&, const double*, const double*) { return {}; }
-int PovHost::inside(const sdl::Item&, const double*) { return -1; }
-bool PovHost::extent(const sdl::Item&, double*, double*) { return false; }
+PovHost::TraceResult PovHost::trace(const sdl::ItemRef& object, const double origin[3], const double dir[3]) {
+    TraceResult r;
+    const Probe& p = probe(object);
+    r.supported = p.complete;
+    const Vec3 d{dir[0], dir[1], dir[2]};
+    if (length(d) == 0) return r;
+    const Ray ray{Vec3{origin[0], origin[1], origin[2]}, normalize(d)};
+    const Hit h = p.bvh.closest(p.scene.objects, ray, 1e-6, kInfinity);
+    if (!h.valid()) return r;
+    r.hit = true;
+    const Vec3 at = ray.at(h.t);
+    // POV-Ray gives the surface's outward normal, whichever side the ray came from (measured).
+    const Vec3 n = h.normal;
+    for (int i = 0; i < 3; ++i) {
+        r.point[i] = at[i];
+        r.normal[i] = n[i];
+    }
+    return r;
+}
+
+int PovHost::inside(const sdl::ItemRef&, const double*) { return -1; }
+
+bool PovHost::extent(const sdl::ItemRef& object, double lo[3], double hi[3]) {
+    const Probe& p = probe(object);
+    if (!p.complete || p.scene.objects.empty()) return false;
+    constexpr double kHuge = 2e10;  // an unbounded object's extent
+    Bounds all;
+    bool unbounded = false;
+    for (const Object& o : p.scene.objects) {
+        const Bounds b = worldBounds(o);
+        if (b.empty()) unbounded = true;
+        else all.extend(b);
+    }
+    for (int i = 0; i < 3; ++i) {
+        lo[i] = unbounded ? -kHuge : all.lo[i];
+        hi[i] = unbounded ? kHuge : all.hi[i];
+    }
+    return true;
+}
 
 std::array<double, 12> PovHost::transformMatrix(const sdl::Item& t) {
     const Transform m = transformOf(t);

@@ -2,6 +2,8 @@
 // (grammar.h, specs.h) and collects the scene's top-level items, each with the default texture
 // in force where it appeared (#default), for the builder (scene_builder.h).
 #pragma once
+#include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "rays/sdl/host.h"
@@ -21,19 +23,24 @@ struct ParsedScene {
 
 class PovHost : public sdl::ItemHost {
 public:
-    explicit PovHost(ParsedScene& out) : out_(out) {}
+    explicit PovHost(ParsedScene& out);
+    ~PovHost() override;
     bool startsItem(sdl::Kw k) const override;
     sdl::ItemRef readItem(sdl::Interpreter& in) override;
     void topLevel(sdl::Interpreter& in, const sdl::ItemRef& item) override;
     void setDefault(sdl::Interpreter& in, const sdl::ItemRef& item) override;
-    TraceResult trace(const sdl::Item& object, const double origin[3], const double dir[3]) override;
-    int inside(const sdl::Item& object, const double point[3]) override;
-    bool extent(const sdl::Item& object, double lo[3], double hi[3]) override;
+    TraceResult trace(const sdl::ItemRef& object, const double origin[3], const double dir[3]) override;
+    int inside(const sdl::ItemRef& object, const double point[3]) override;
+    bool extent(const sdl::ItemRef& object, double lo[3], double hi[3]) override;
     std::array<double, 12> transformMatrix(const sdl::Item& transform) override;
 
 private:
+    struct Probe;  // an object built alone, for trace() and min_extent() / max_extent()
+    const Probe& probe(const sdl::ItemRef& object);
+
     ParsedScene& out_;
     sdl::ItemRef defaults_;
+    std::unordered_map<const sdl::Item*, std::unique_ptr<Probe>> probes_;
 };
 
 }  // namespace rays::pov

@@ -284,7 +284,7 @@ Value Interpreter::geometryQuery(Kw k, const Loc& at) {
     if (k == Kw::inside) {
         const auto p = vec();
         expectSym(')', "to close inside");
-        const int r = host_.inside(*object, p.data());
+        const int r = host_.inside(object, p.data());
         if (r < 0) {
             warning(at, "not rendered yet: inside() of this object (gives 0)");
             return Value::number(0);
@@ -302,7 +302,7 @@ Value Interpreter::geometryQuery(Kw k, const Loc& at) {
             next();
         }
         expectSym(')', "to close trace");
-        const ItemHost::TraceResult r = host_.trace(*object, origin.data(), dir.data());
+        const ItemHost::TraceResult r = host_.trace(object, origin.data(), dir.data());
         if (!r.supported) warning(at, "not rendered yet: trace() of this object (gives <0,0,0>)");
         if (normalName != UINT32_MAX) {
             const Value n = r.hit ? Value::vec3(r.normal[0], r.normal[1], r.normal[2]) : Value::vec3(0, 0, 0);
@@ -312,7 +312,7 @@ Value Interpreter::geometryQuery(Kw k, const Loc& at) {
     }
     expectSym(')', "to close ", name);
     double lo[3]{}, hi[3]{};
-    if (!host_.extent(*object, lo, hi)) {
+    if (!host_.extent(object, lo, hi)) {
         warning(at, "not rendered yet: " + name + "() of this object (gives <0,0,0>)");
         return Value::vec3(0, 0, 0);
     }

@@ -33,13 +33,13 @@ public:
         bool hit = false;
         double point[3]{}, normal[3]{};
     };
-    virtual TraceResult trace(const Item& object, const double origin[3], const double dir[3]) = 0;
+    virtual TraceResult trace(const ItemRef& object, const double origin[3], const double dir[3]) = 0;
     /// inside(): 1 inside, 0 outside, -1 not supported.
-    virtual int inside(const Item& object, const double point[3]) = 0;
+    virtual int inside(const ItemRef& object, const double point[3]) = 0;
     /// The 3×4 matrix (rows, object → world) of a transform item, for transform functions.
     virtual std::array<double, 12> transformMatrix(const Item& transform) = 0;
     /// min_extent / max_extent: false when not supported.
-    virtual bool extent(const Item& object, double lo[3], double hi[3]) = 0;
+    virtual bool extent(const ItemRef& object, double lo[3], double hi[3]) = 0;
 };
 
 }  // namespace rays::sdl
