@@ -224,6 +224,23 @@ TEST(PovGeometry, TraceAndExtentsAnswerAsPovRayDoes) {
     EXPECT_TRUE(near(at(6), {0, 0, 9}));
 }
 
+TEST(PovGeometry, InsideTellsSolidsApartAsPovRayDoes) {
+    // POV-Ray 3.7 prints 101101110 for the nine calls; each result places a sphere at x = result.
+    const std::string calls[] = {"<2.5,0,0>", "<3.5,0,0>", "<5.5,5.5,5.5>", "<0.5,-4,0>", "<1.5,-4,0>", "<10,1.4,0.2>",
+                                 "<10,0.5,0.2>"};
+    std::string text =
+        "#declare O = union { sphere { 0, 1 scale <2,1,1> translate x } box { <5,5,5>, <6,6,6> }\n"
+        "  cylinder { <0,-3,0>, <0,-5,0>, 1 } cone { <10,0,0>, 1, <10,2,0>, 0 } }\n"
+        "#declare P = plane { y, 1 }\n";
+    for (const std::string& c : calls) text += "sphere { <inside(O, " + c + "), 0, 0>, 0.1 }\n";
+    text += "sphere { <inside(P, <0,0,0>), 0, 0>, 0.1 } sphere { <inside(P, <0,2,0>), 0, 0>, 0.1 }\n";
+    const Built b = build(text);
+    ASSERT_EQ(b.error, "");
+    std::string bits;
+    for (const Object& o : b.scene.objects) bits += o.p0.x > 0.5 ? '1' : '0';
+    EXPECT_EQ(bits, "101101110");
+}
+
 TEST(PovGrammar, EveryKindOfItemIsReadInItsPlace) {
     // One of each of POV-Ray 3.7's items and modifiers; none may be a syntax error.
     const char* text = R"(#version 3.7;
