@@ -174,6 +174,22 @@ TEST(SdlErrors, RunawayLoopsAndRecursionStop) {
     EXPECT_NE(runSdl("#macro R() R() #end R()", {}, ".", limits).error.find("macro calls nested deeper than 500"), std::string::npos);
 }
 
+TEST(SdlErrors, AnInterruptStopsALongParse) {
+    // The host's check (Ctrl-C in the CLI) runs every 65536 tokens; here it stops the 3rd time.
+    test::GenericHost host;
+    sdl::Diagnostics d;
+    int checks = 0;
+    struct Stop {};
+    d.checkInterrupt = [&] {
+        if (++checks == 3) throw Stop{};
+    };
+    sdl::LanguageOptions o;
+    o.installedIncludeDir.clear();
+    sdl::Interpreter in(o, host, d);
+    EXPECT_THROW(in.runText("#while (1) #declare A = 1; #end", "scene.pov"), Stop);
+    EXPECT_EQ(checks, 3);
+}
+
 class SdlFiles : public ::testing::Test {
 protected:
     void SetUp() override {
