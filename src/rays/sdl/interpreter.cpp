@@ -19,11 +19,9 @@ Interpreter::Interpreter(const LanguageOptions& options, ItemHost& host, Diagnos
 
 Interpreter::~Interpreter() = default;
 
-Interpreter::NestGuard::NestGuard(Interpreter& in) : in_(in) {
-    if (++in_.nesting_ > in_.limits_.nesting) {
-        --in_.nesting_;
-        in_.errorHere("nesting deeper than " + std::to_string(in_.limits_.nesting) + " levels");
-    }
+void Interpreter::tooDeep() {
+    --nesting_;
+    errorHere("nesting deeper than " + std::to_string(limits_.nesting) + " levels");
 }
 
 // ---- files ---------------------------------------------------------------------------------------

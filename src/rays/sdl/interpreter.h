@@ -163,7 +163,9 @@ public:
     /// Counts a nesting level of the host's readers; throws past Limits::nesting.
     class NestGuard {
     public:
-        explicit NestGuard(Interpreter& in);
+        explicit NestGuard(Interpreter& in) : in_(in) {
+            if (++in_.nesting_ > in_.limits_.nesting) in_.tooDeep();
+        }
         ~NestGuard() { --in_.nesting_; }
         NestGuard(const NestGuard&) = delete;
         NestGuard& operator=(const NestGuard&) = delete;
@@ -221,6 +223,7 @@ private:
         if ((++ticks_ & 0xFFFF) == 0) tickSlow();
     }
     void tickSlow();
+    [[noreturn]] void tooDeep();
 
     // directives (directives.cpp)
     void directive(const Token& t);
