@@ -14,7 +14,7 @@ for arg in "$@"; do
     *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
   esac
 done
-scripts/install-deps.sh
+RAYS_TEST_DEPS=1 scripts/install-deps.sh
 [ $quick -eq 1 ] || scripts/sanitize.sh asan tsan
 scripts/build.sh -DRAYS_WERROR=ON
 cd build
