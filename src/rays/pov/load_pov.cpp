@@ -56,6 +56,9 @@ Scene parsePovText(std::string_view text, const std::string& shownName, const st
 }
 
 bool looksLikePovray(std::string_view s) {
+    // Most course files (2.5 MB for balls2.pov) hold neither '#' nor "global_settings" at all:
+    // two library searches decide them without the character-by-character scan below.
+    if (s.find('#') == std::string_view::npos && s.find("global_settings") == std::string_view::npos) return false;
     for (size_t i = 0; i < s.size(); ++i) {
         const char c = s[i];
         if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
