@@ -299,6 +299,34 @@ std::vector<BadInput> catalogue() {
     t.push_back({"pov-subset-no-frame", {{"scene.pov", kScene}},
                  {"+Iscene.pov", "+W16", "+H12", "+KFF3", "+SF5", "+Oout.png"}, 2,
                  "rays: error: Subset_Start_Frame selects frame 5, after the final frame 3"});
+    // ---- POV-Ray scene language ----
+    const std::string pov = "#version 3.7;\n";
+    const std::string povScene = "camera { location -5*z look_at 0 }\nlight_source { <5, 5, -5> rgb 1 }\n";
+    t.push_back({"sdl-undeclared", {{"scene.pov", pov + "#declare A = B + 1;\n" + povScene}}, render(), 2,
+                 "scene.pov:2:14: error: undeclared identifier 'B'"});
+    t.push_back({"sdl-missing-semicolon", {{"scene.pov", pov + "#declare A = 1\n" + povScene}}, render(), 2,
+                 "scene.pov:2:14: error: the declaration of 'A' must end with ';' (float, vector and colour "
+                 "declarations need one since POV-Ray 3.5)"});
+    t.push_back({"sdl-error-directive", {{"scene.pov", pov + "#error \"the scene says no\\n\"\n"}}, render(), 2,
+                 "scene.pov:2:1: error: #error: the scene says no"});
+    t.push_back({"sdl-never-closed", {{"scene.pov", pov + "#if (1)\n" + povScene}}, render(), 2,
+                 "scene.pov:2:1: error: this directive is never closed by #end (end of file reached)"});
+    t.push_back({"sdl-macro-error", {{"scene.pov", pov + "#macro M(A)\n  #local B = A + Nope;\n#end\nM(1)\n" + povScene}},
+                 render(), 2, "scene.pov:3:18: error: undeclared identifier 'Nope' (in macro M called at scene.pov:5:1)"});
+    t.push_back({"sdl-include-cycle", {{"scene.pov", pov + "#include \"a.inc\"\n"}, {"a.inc", "#include \"a.inc\"\n"}},
+                 render(), 2,
+                 "a.inc:1:1: error: include files nested deeper than 64 (does a file include itself?) (in a.inc included "
+                 "from a.inc:1:1; in a.inc included from a.inc:1:1; in a.inc included from a.inc:1:1; in a.inc included from "
+                 "a.inc:1:1; ... 58 more; in a.inc included from a.inc:1:1; in a.inc included from scene.pov:2:1)"});
+    t.push_back({"sdl-macro-recursion", {{"scene.pov", pov + "#macro R() R() #end\nR()\n"}}, render(), 2,
+                 "scene.pov:2:12: error: macro calls nested deeper than 10000 (runaway recursion?) (in macro R called at "
+                 "scene.pov:2:12; in macro R called at scene.pov:2:12; in macro R called at scene.pov:2:12; in macro R called "
+                 "at scene.pov:2:12; ... 9994 more; in macro R called at scene.pov:2:12; in macro R called at scene.pov:3:1)"});
+    t.push_back({"pov-not-rendered", {{"scene.pov", pov + povScene + "torus { 1, 0.25 }\nsphere { 0, 1 }\n"}}, render(), 0,
+                 "scene.pov:4:1: warning: not rendered yet: torus (left out)"});
+    t.push_back({"pov-strict", {{"scene.pov", pov + povScene + "torus { 1, 0.25 }\nsphere { 0, 1 }\n"}},
+                 {"render", "scene.pov", "16", "12", "-o", "out.png", "-q", "--strict"}, 2,
+                 "scene.pov:4:1: error: not rendered yet: torus (--strict)"});
     return t;
 }
 

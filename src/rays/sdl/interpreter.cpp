@@ -347,10 +347,18 @@ std::string Interpreter::where(const Loc& at) const {
     return s;
 }
 
+// The include files and macro calls the parse is in, innermost first; a deep stack (recursion)
+// shows its 4 innermost and 2 outermost frames.
 std::string Interpreter::context() const {
     std::string s;
-    for (size_t i = frames_.size(); i-- > 1;) {
-        const Frame& f = frames_[i];
+    const size_t n = frames_.size() - 1;  // frames above the main file
+    for (size_t k = 0; k < n; ++k) {
+        if (n > 8 && k == 4) {
+            s += "; ... " + std::to_string(n - 6) + " more";
+            k = n - 3;
+            continue;
+        }
+        const Frame& f = frames_[n - k];
         s += s.empty() ? " (" : "; ";
         if (f.kind == Frame::Macro)
             s += "in macro " + std::string(names_.name(f.macro->name)) + " called at " + where(f.site);
