@@ -6,6 +6,7 @@
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
 #include "rays/sdl/pov_random.h"
+#include "rays/sdl/pure_builtins.h"
 #include "rays/sdl/pov_datetime.h"
 #include "rays/sdl/pov_strings.h"
 
@@ -14,37 +15,6 @@ namespace rays::sdl {
 namespace {
 
 constexpr double kPi = 3.1415926535897932384626;
-
-// Rotation of p about the x, then y, then z axis by the angles in degrees (standard rotation
-// matrices; measured with POV-Ray 3.7: vrotate(x, 90*y) = <0,0,-1>).
-std::array<double, 3> rotateXYZ(std::array<double, 3> p, const double deg[3]) {
-    for (int axis = 0; axis < 3; ++axis) {
-        const double a = deg[axis] * kPi / 180, c = std::cos(a), s = std::sin(a);
-        const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-        const double pi = p[i], pj = p[j];
-        p[i] = c * pi - s * pj;
-        p[j] = s * pi + c * pj;
-    }
-    return p;
-}
-
-// Rodrigues' rotation of p about the unit axis k by deg degrees, in the sense of rotateXYZ.
-std::array<double, 3> rotateAxis(const std::array<double, 3>& p, std::array<double, 3> k, double deg) {
-    const double len = std::sqrt(k[0] * k[0] + k[1] * k[1] + k[2] * k[2]);
-    for (double& c : k) c /= len;
-    const double a = deg * kPi / 180, c = std::cos(a), s = std::sin(a);
-    const double d = k[0] * p[0] + k[1] * p[1] + k[2] * p[2];
-    const std::array<double, 3> x{k[1] * p[2] - k[2] * p[1], k[2] * p[0] - k[0] * p[2], k[0] * p[1] - k[1] * p[0]};
-    return {p[0] * c + x[0] * s + k[0] * d * (1 - c), p[1] * c + x[1] * s + k[1] * d * (1 - c),
-            p[2] * c + x[2] * s + k[2] * d * (1 - c)};
-}
-
-std::array<double, 3> vec3Of(const Value& v) {
-    if (v.type == VType::Float) return {v.c[0], v.c[0], v.c[0]};
-    return {v.c[0], v.dim > 1 ? v.c[1] : 0.0, v.dim > 2 ? v.c[2] : 0.0};
-}
-
-Value fromVec3(const std::array<double, 3>& p) { return Value::vec3(p[0], p[1], p[2]); }
 
 }  // namespace
 
@@ -110,44 +80,31 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
         next();
         return Value::number(fn(toFloat(a, argAt, std::string(name) + " argument 1")));
     };
+    if (double (*fn1)(double) = mathFunction1(k)) return one(fn1);
     switch (k) {
-        case Kw::abs: return one(std::fabs);
-        case Kw::acos: return one(std::acos);
-        case Kw::acosh: return one(std::acosh);
-        case Kw::asin: return one(std::asin);
-        case Kw::asinh: return one(std::asinh);
-        case Kw::atan: return one(std::atan);
-        case Kw::atanh: return one(std::atanh);
-        case Kw::ceil: return one(std::ceil);
-        case Kw::cos: return one(std::cos);
-        case Kw::cosh: return one(std::cosh);
-        case Kw::exp: return one(std::exp);
-        case Kw::floor: return one(std::floor);
-        case Kw::int_: return one(std::trunc);
-        case Kw::ln: return one(std::log);
-        case Kw::log: return one(std::log10);
-        case Kw::sin: return one(std::sin);
-        case Kw::sinh: return one(std::sinh);
-        case Kw::sqrt: return one(std::sqrt);
-        case Kw::tan: return one(std::tan);
-        case Kw::tanh: return one(std::tanh);
-        case Kw::degrees: return Value::number(f(callArgs("degrees", 1, 1)[0], 0) * 180 / kPi);
-        case Kw::radians: return Value::number(f(callArgs("radians", 1, 1)[0], 0) * kPi / 180);
         case Kw::atan2: {
             const auto a = callArgs("atan2", 2, 2);
-            return Value::number(std::atan2(f(a[0], 0), f(a[1], 1)));
+            double r = 0;
+            mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
+            return Value::number(r);
         }
         case Kw::pow: {
             const auto a = callArgs("pow", 2, 2);
-            return Value::number(std::pow(f(a[0], 0), f(a[1], 1)));
+            double r = 0;
+            mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
+            return Value::number(r);
         }
         case Kw::mod: {
             const auto a = callArgs("mod", 2, 2);
-            return Value::number(std::fmod(f(a[0], 0), f(a[1], 1)));
+            double r = 0;
+            mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
+            return Value::number(r);
         }
         case Kw::div: {
             const auto a = callArgs("div", 2, 2);
-            return Value::number(std::trunc(f(a[0], 0) / f(a[1], 1)));
+            double r = 0;
+            mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
+            return Value::number(r);
         }
         case Kw::max: case Kw::min: {
             const auto a = callArgs(name.data(), 1, SIZE_MAX);
@@ -184,36 +141,18 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
         }
         case Kw::val: return Value::number(povVal(povString(str(callArgs("val", 1, 1)[0]))));
         case Kw::file_exists: return Value::number(findFile(str(callArgs("file_exists", 1, 1)[0])).empty() ? 0.0 : 1.0);
-        case Kw::vdot: {
-            const auto a = callArgs("vdot", 2, 2);
-            const auto p = vec3Of(a[0]), q = vec3Of(a[1]);
-            return Value::number(p[0] * q[0] + p[1] * q[1] + p[2] * q[2]);
-        }
-        case Kw::vlength: {
-            const auto p = vec3Of(callArgs("vlength", 1, 1)[0]);
-            return Value::number(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
-        }
-        case Kw::vcross: {
-            const auto a = callArgs("vcross", 2, 2);
-            const auto p = vec3Of(a[0]), q = vec3Of(a[1]);
-            return fromVec3({p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]});
-        }
-        case Kw::vnormalize: {
-            const auto p = vec3Of(callArgs("vnormalize", 1, 1)[0]);
-            const double l = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-            if (l == 0) error(at, "vnormalize of a zero vector");
-            return fromVec3({p[0] / l, p[1] / l, p[2] / l});
-        }
-        case Kw::vrotate: {
-            const auto a = callArgs("vrotate", 2, 2);
-            const auto r = vec3Of(a[1]);
-            return fromVec3(rotateXYZ(vec3Of(a[0]), r.data()));
-        }
-        case Kw::vaxis_rotate: {
-            const auto a = callArgs("vaxis_rotate", 3, 3);
-            const auto axis = vec3Of(a[1]);
-            if (axis[0] == 0 && axis[1] == 0 && axis[2] == 0) error(at, "vaxis_rotate about a zero axis");
-            return fromVec3(rotateAxis(vec3Of(a[0]), axis, f(a[2], 2)));
+        case Kw::vdot: case Kw::vlength: case Kw::vcross: case Kw::vnormalize: case Kw::vrotate: case Kw::vaxis_rotate: {
+            const size_t n = k == Kw::vaxis_rotate ? 3 : (k == Kw::vlength || k == Kw::vnormalize) ? 1 : 2;
+            const auto a = callArgs(name.data(), n, n);
+            Num in[3];
+            for (size_t i = 0; i < n; ++i) in[i] = numericOf(a[i], at);
+            if (k == Kw::vaxis_rotate) f(a[2], 2);  // the angle must be a float
+            Num out;
+            if (!vectorFunction(k, in, int(n), out)) {
+                if (k == Kw::vnormalize) error(at, "vnormalize of a zero vector");
+                error(at, "vaxis_rotate about a zero axis");
+            }
+            return out.value();
         }
         case Kw::vturbulence: {
             callArgs("vturbulence", 4, 4);
