@@ -26,6 +26,7 @@ while [ $# -gt 0 ]; do
 done
 command -v povray >/dev/null || { echo "parse_speed: povray is not installed (RAYS_BENCH_DEPS=1 scripts/install-deps.sh)" >&2; exit 2; }
 [ -x "$RAYS" ] || { echo "parse_speed: $RAYS is not built (scripts/build.sh)" >&2; exit 2; }
+RAYS=$(realpath "$RAYS")  # the runs below change folder
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -53,8 +54,10 @@ for scene in "${scenes[@]}"; do
         tr '\r' '\n' | sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p' | head -n 1)
     r=$(cd "$dir" && "$RAYS" render "$base" 32 24 -o "$work/r.png" --threads 2 +L/usr/share/povray-3.7/include 2>&1 </dev/null |
         sed -n 's/.*: parse \([0-9.]*\) ms,.*/\1/p' | tail -n 1)
-    [ -n "$p" ] && pov+=("$p")
-    [ -n "$r" ] && rays+=("$(awk -v m="$r" 'BEGIN {printf "%.4f", m / 1000}')")
+    [ -n "$p" ] || { echo "parse_speed: POV-Ray gave no parse time for $scene" >&2; exit 1; }
+    [ -n "$r" ] || { echo "parse_speed: Rays gave no parse time for $scene" >&2; exit 1; }
+    pov+=("$p")
+    rays+=("$(awk -v m="$r" 'BEGIN {printf "%.4f", m / 1000}')")
   done
   mp=$(printf '%s\n' "${pov[@]}" | median)
   mr=$(printf '%s\n' "${rays[@]}" | median)

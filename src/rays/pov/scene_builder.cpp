@@ -442,6 +442,11 @@ void SceneBuilder::globalSettings(const Item& g) {
     }
 }
 
+void SceneBuilder::reserve(size_t n) {
+    scene_.objects.reserve(n);
+    scene_.povSurfaces.reserve(n);
+}
+
 Scene SceneBuilder::finish(const std::string& fileName) {
     scene_.fileName = fileName;
     scene_.pov.enabled = true;

@@ -14,6 +14,9 @@ namespace rays::pov {
 class SceneBuilder {
 public:
     explicit SceneBuilder(NotRendered& notes) : notes_(notes) {}
+    /// Room for about n objects (one per top-level item), so that a scene of many objects does
+    /// not grow its arrays step by step.
+    void reserve(size_t n);
     /// Adds one top-level item.
     void add(const ParsedScene::Top& top);
     /// The scene, with POV-Ray's default camera when the file has none.
