@@ -6,6 +6,7 @@
 // rays_tests links rays_core only (the app's sources are not a library), so the command's source
 // is compiled into this test directly.
 #include "../apps/rays/filter_command.cpp"
+#include "../apps/rays/subcommand_args.cpp"
 
 #include <gtest/gtest.h>
 

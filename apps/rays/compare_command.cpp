@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 
 #include "rays/error.h"
 #include "rays/image/compare.h"
 #include "rays/io/image_io.h"
+#include "subcommand_args.h"
 
 namespace rays::cli {
 namespace {
@@ -67,16 +67,9 @@ int runCompareCommand(const std::vector<std::string>& args) {
                                ->check(CLI::Range(-1.0, 1.0));
     app.footer("Output (stdout), one figure a line: ssim, ssim_rgb, ssim_luma, psnr, mean, max, over, size\n"
                "(see docs/cli.md). Exit status 0, 1 when --fail-ssim S is given and ssim < S, 2 on errors.");
-    try {
-        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them reversed
-        app.parse(reversed);
-    } catch (const CLI::CallForHelp&) {
-        std::cout << app.help();
+    if (parseSubcommandArgs(app, args, "compare",
+                            "rays compare A B [--diff DIFF] [--scale K] [--threshold N] [--fail-ssim S]"))
         return 0;
-    } catch (const CLI::ParseError& e) {
-        throw Error(std::string("rays: error: compare: ") + e.what() +
-                    " (usage: rays compare A B [--diff DIFF] [--scale K] [--threshold N] [--fail-ssim S])");
-    }
     if (!diff.empty()) checkDiffPath(diff, a, b);
 
     const Image8 imgA = readImage(a);

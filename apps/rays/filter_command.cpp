@@ -6,11 +6,11 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 
 #include "rays/error.h"
 #include "rays/image/filter.h"
 #include "rays/io/image_io.h"
+#include "subcommand_args.h"
 
 namespace rays::cli {
 namespace {
@@ -51,16 +51,9 @@ int runFilterCommand(const std::vector<std::string>& args) {
     app.add_flag("-q,--quiet", quiet, "no summary line on stderr");
     app.footer("Kernels: box_blur_N, gaussian_blur_N[:SIGMA] (sigma N/6 by default), median_N (N odd), edge_detect_1,\n"
                "edge_detect_2, sobel, sharpen, emboss, brighten_X, kernel:FILE (see docs/filters.md).");
-    try {
-        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them reversed
-        app.parse(reversed);
-    } catch (const CLI::CallForHelp&) {
-        std::cout << app.help();
+    if (parseSubcommandArgs(app, args, "filter",
+                            "rays filter INPUT OUTPUT KERNEL [KERNEL ...] [--border MODE] [--quality Q] [--threads T] [-q]"))
         return 0;
-    } catch (const CLI::ParseError& e) {
-        throw Error(std::string("rays: error: filter: ") + e.what() +
-                    " (usage: rays filter INPUT OUTPUT KERNEL [KERNEL ...] [--border MODE] [--quality Q] [--threads T] [-q])");
-    }
 
     const BorderMode border = parseBorderMode(borderName);
     const std::vector<KernelSpec> kernels = parseKernelList(kernelArgs);

@@ -145,6 +145,13 @@ void readMapEntry(Interpreter& in, const BlockSpec& spec, Item& item) {
     item.entries.push_back(std::move(e));
 }
 
+// A bare number, vector, colour or string (a sphere's centre, a text object's string).
+bool atBareValue(Interpreter& in) { return in.atNumericStart() || in.atStringStart(); }
+void readBareValue(Interpreter& in, Entry& e) {
+    if (in.atStringStart()) e.args.push_back(Value::string(in.parseString()));
+    else e.args.push_back(in.parseNumeric(true));
+}
+
 }  // namespace
 
 // Most blocks hold a few entries (a sphere's centre, radius, texture and a transform): one
@@ -205,9 +212,8 @@ void readBody(Interpreter& in, Item& item, const BlockSpec& spec, char terminato
                 item.entries.push_back(std::move(e));
                 continue;
             }
-            if (spec.positionals && (in.atNumericStart() || in.atStringStart())) {
-                if (in.atStringStart()) e.args.push_back(Value::string(in.parseString()));
-                else e.args.push_back(in.parseNumeric(true));
+            if (spec.positionals && atBareValue(in)) {
+                readBareValue(in, e);
                 item.entries.push_back(std::move(e));
                 continue;
             }
@@ -237,9 +243,8 @@ void readBody(Interpreter& in, Item& item, const BlockSpec& spec, char terminato
             item.entries.push_back(std::move(e));
             continue;
         }
-        if (spec.positionals && (in.atNumericStart() || in.atStringStart())) {
-            if (in.atStringStart()) e.args.push_back(Value::string(in.parseString()));
-            else e.args.push_back(in.parseNumeric(true));
+        if (spec.positionals && atBareValue(in)) {
+            readBareValue(in, e);
             item.entries.push_back(std::move(e));
             continue;
         }

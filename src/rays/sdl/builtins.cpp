@@ -82,26 +82,11 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
     };
     if (double (*fn1)(double) = mathFunction1(k)) return one(fn1);
     switch (k) {
-        case Kw::atan2: {
-            const auto a = callArgs("atan2", 2, 2);
-            double r = 0;
-            mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
-            return Value::number(r);
-        }
-        case Kw::pow: {
-            const auto a = callArgs("pow", 2, 2);
-            double r = 0;
-            mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
-            return Value::number(r);
-        }
-        case Kw::mod: {
-            const auto a = callArgs("mod", 2, 2);
-            double r = 0;
-            mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
-            return Value::number(r);
-        }
+        case Kw::atan2:
+        case Kw::pow:
+        case Kw::mod:
         case Kw::div: {
-            const auto a = callArgs("div", 2, 2);
+            const auto a = callArgs(keywordName(k).data(), 2, 2);
             double r = 0;
             mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
             return Value::number(r);
