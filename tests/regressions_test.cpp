@@ -2,7 +2,7 @@
 // found by the fuzzers in fuzz/, see docs/fuzzing.md) is run through the same entry point as the
 // fuzzer (fuzz/entry_points.h) and must now end normally; the reader it exercises must refuse it
 // with the one-line message listed here. File names start with the fuzz target: scene-, obj-,
-// kernel-, image-. The sanitizer builds (scripts/sanitize.sh) run these too, which is where a
+// kernel-, image-, pov-. The sanitizer builds (scripts/sanitize.sh) run these too, which is where a
 // regression of a memory or UB fix would show.
 #include <gtest/gtest.h>
 
@@ -63,7 +63,9 @@ std::string prefixOf(const std::string& file) { return file.substr(0, file.find(
 /// The message of the Error the target's reader throws for the bytes ("" when it accepts them).
 std::string errorOf(const std::string& target, const std::string& bytes, const fs::path& scratch) {
     try {
-        if (target == "scene") {
+        if (target == "pov") {
+            rays::fuzz::parseFuzzPov(bytes);
+        } else if (target == "scene") {
             rays::ParseOptions opt;
             opt.warn = [](const std::string&) {};
             rays::parseScene(bytes, "fuzz.pov", opt);
@@ -92,6 +94,7 @@ TEST_P(Regressions, SameEntryPointAsTheFuzzerEndsNormally) {
     else if (target == "obj") rays::fuzz::fuzzObj(data, bytes.size());
     else if (target == "kernel") rays::fuzz::fuzzKernel(data, bytes.size());
     else if (target == "image") rays::fuzz::fuzzImage(data, bytes.size());
+    else if (target == "pov") rays::fuzz::fuzzPov(data, bytes.size());
     else FAIL() << "unknown target prefix in " << r.file;
 }
 

@@ -1,0 +1,115 @@
+// The POV-Ray scene fuzzer's harness (fuzz/entry_points.h, parseFuzzPov) and dictionary
+// (fuzz/dict/pov.dict): the include folder it writes is found and usable, #fopen writes stay in its
+// scratch scene folder and are removed after each input, its lowered limits apply, and the
+// dictionary lists every keyword of the language.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "../fuzz/entry_points.h"
+#include "rays/error.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The Error parseFuzzPov throws for text ("" when it parses), with text padded to an even size so
+/// that strict mode (odd sizes) is off.
+std::string povError(std::string text) {
+    if (text.size() % 2) text += ' ';
+    try {
+        rays::fuzz::parseFuzzPov(text);
+    } catch (const rays::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+TEST(FuzzPovHarness, IncludeFilesDefineColoursTexturesAndMacros) {
+    EXPECT_EQ(povError("#include \"stdinc.inc\"\n"
+                       "object { Row(2) }\n"
+                       "sphere { 0, Square(2) texture { Checks } }\n"
+                       "Ball(<0, 1, 0>, Fact(3), Plain)\n"
+                       "#declare A = 1; #declare B = 2; Swap(A, B)\n"
+                       "#if (A != 2 | B != 1) #error \"Swap\" #end\n"
+                       "box { 0, 1 pigment { Marble } } sphere { 0, 1 material { Glass } }"),
+              "");
+    // stdinc.inc includes the other two: their identifiers come from the harness's folder.
+    EXPECT_NE(povError("#include \"colors.inc\" #declare X = Yellow + Square(1);").find("undeclared identifier 'Square'"),
+              std::string::npos);
+    EXPECT_EQ(povError("#include \"macros.inc\" #declare X = Fact(4); #if (X != 24) #error \"Fact\" #end"), "");
+}
+
+TEST(FuzzPovHarness, IncludeFolderIsTheInstalledOneAndNothingElseIsSearched) {
+    const fs::path inc = rays::fuzz::povIncludeDir();
+    EXPECT_TRUE(fs::is_regular_file(inc / "colors.inc"));
+    EXPECT_TRUE(fs::is_regular_file(inc / "macros.inc"));
+    EXPECT_TRUE(fs::is_regular_file(inc / "stdinc.inc"));
+    // POV-Ray's own include files are not reached even when they are installed.
+    EXPECT_NE(povError("#include \"textures.inc\"").find("cannot find include file \"textures.inc\""), std::string::npos);
+}
+
+TEST(FuzzPovHarness, WrittenFilesStayInTheScratchSceneFolderAndAreRemoved) {
+    const fs::path scene = rays::fuzz::povSceneDir();
+    EXPECT_EQ(povError("#fopen F \"w.txt\" write #write (F, \"\\\"hi\\\"\") #fclose F\n"
+                       "#fopen G \"w.txt\" read #read (G, S) #if (strcmp(S, \"hi\") != 0) #error \"read back\" #end"),
+              "");
+    EXPECT_TRUE(fs::is_empty(scene)) << "files written by one input must not reach the next";
+    EXPECT_NE(povError("#fopen F \"../w.txt\" write").find("may only write files in the scene's folder"), std::string::npos);
+    EXPECT_NE(povError("#fopen F \"/tmp/w.txt\" write").find("may only write files in the scene's folder"), std::string::npos);
+    EXPECT_FALSE(fs::exists(scene.parent_path() / "w.txt"));
+}
+
+TEST(FuzzPovHarness, LimitsAreLoweredToKeepInputsShort) {
+    EXPECT_NE(povError("#while (1) #end").find("loops ran more than 20000 iterations"), std::string::npos);
+    EXPECT_NE(povError("#macro R() R() #end R()").find("macro calls nested deeper than 1000"), std::string::npos);
+}
+
+TEST(FuzzPovHarness, StrictModeOnOddSizesOnly) {
+    const std::string text = "sphere { 0, 1 pigment { checker } }";  // checker is not rendered yet
+    ASSERT_EQ(text.size() % 2, 1u);
+    EXPECT_NO_THROW(rays::fuzz::parseFuzzPov(text + " "));
+    EXPECT_THROW(rays::fuzz::parseFuzzPov(text), rays::Error);
+    // The fuzz entry point swallows the Error.
+    rays::fuzz::fuzzPov(reinterpret_cast<const uint8_t*>(text.data()), text.size());
+}
+
+TEST(FuzzPovDictionary, ListsEveryKeywordAndDirective) {
+    const std::string def = readText(fs::path(RAYS_SOURCE_DIR) / "src/rays/sdl/keywords.def");
+    const std::string dict = readText(fs::path(RAYS_SOURCE_DIR) / "fuzz/dict/pov.dict");
+    ASSERT_FALSE(def.empty());
+    ASSERT_FALSE(dict.empty());
+    std::set<std::string> entries;
+    const std::regex entry(R"re(^\w+="([^"\\]*)"$)re");
+    std::istringstream lines(dict);
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch m;
+        if (std::regex_match(line, m, entry)) entries.insert(m[1]);
+    }
+    const std::regex keyword(R"(^XR?\((\w+)\))");
+    std::istringstream defs(def);
+    int keywords = 0;
+    for (std::string line; std::getline(defs, line);) {
+        std::smatch m;
+        if (!std::regex_search(line, m, keyword)) continue;
+        ++keywords;
+        EXPECT_TRUE(entries.count(m[1].str() + " ")) << m[1] << " is missing from fuzz/dict/pov.dict";
+    }
+    EXPECT_GT(keywords, 400);
+    for (const char* d : {"#include ", "#declare ", "#local ", "#macro ", "#switch ", "#fopen ", "#write "})
+        EXPECT_TRUE(entries.count(d)) << d;
+}
+
+}  // namespace
