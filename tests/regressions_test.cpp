@@ -48,6 +48,7 @@ std::vector<Regression> regressions() {
         {"obj-skin-weight-joint-huge.obj", "6:1: error: invalid joint id '1e390' in 'vw' line (a number from 0 to 16777216)"},
         {"image-png-chunk-length-huge.png", "cannot read image: corrupt PNG (a chunk runs past the end of the file)"},
         {"image-jpeg-corrupt-scan.jpg", "cannot read image: corrupt JPEG (Corrupt JPEG data: premature end of data segment)"},
+        {"pov-bitwise-huge.pov", "fuzz.pov:2:1: error: #error: bitwise 0 -2147483648 -2147483648"},
     };
 }
 
