@@ -49,6 +49,7 @@ std::vector<Regression> regressions() {
         {"image-png-chunk-length-huge.png", "cannot read image: corrupt PNG (a chunk runs past the end of the file)"},
         {"image-jpeg-corrupt-scan.jpg", "cannot read image: corrupt JPEG (Corrupt JPEG data: premature end of data segment)"},
         {"pov-bitwise-huge.pov", "fuzz.pov:2:1: error: #error: bitwise 0 -2147483648 -2147483648"},
+        {"pov-internal-number-huge.pov", "fuzz.pov:1:34: error: the internal function number is out of range"},
     };
 }
 

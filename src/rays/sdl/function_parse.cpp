@@ -12,6 +12,7 @@
 #include "rays/sdl/frames.h"
 #include "rays/sdl/function_value.h"
 #include "rays/sdl/interpreter.h"
+#include "rays/sdl/pov_int.h"
 
 namespace rays::sdl {
 
@@ -409,7 +410,7 @@ Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at
             const Token* t = &fr.file->tokens[have_ ? fr.pos - 1 : fr.pos];
             if (t[1].kind == Tk::Symbol && t[1].sym == '(' && t[2].kind == Tk::Number && t[3].kind == Tk::Symbol &&
                 t[3].sym == ')' && t[4].kind == Tk::Symbol && t[4].sym == '}')
-                if (const fn::InternalFunction* f = fn::internalFunction(int(t[2].number))) {
+                if (const fn::InternalFunction* f = fn::internalFunction(povInt(t[2].number))) {
                     // x, y, z, then unnamed parameters (only internal(N) reads them).
                     fv->params.resize(3);
                     for (int i = 3; i < f->params; ++i) fv->params.push_back(UINT32_MAX - uint32_t(i));
