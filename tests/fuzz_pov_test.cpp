@@ -1,7 +1,8 @@
 // The POV-Ray scene fuzzer's harness (fuzz/entry_points.h, parseFuzzPov) and dictionary
 // (fuzz/dict/pov.dict): the include folder it writes is found and usable, #fopen writes stay in its
 // scratch scene folder and are removed after each input, its lowered limits apply, and the
-// dictionary lists every keyword of the language.
+// dictionary lists every keyword of the language. FuzzPovFindings: the behaviour of the fixes for
+// its findings (docs/fuzzing.md) beyond the messages tests/regressions_test.cpp checks.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -110,6 +111,20 @@ TEST(FuzzPovDictionary, ListsEveryKeywordAndDirective) {
     EXPECT_GT(keywords, 400);
     for (const char* d : {"#include ", "#declare ", "#local ", "#macro ", "#switch ", "#fopen ", "#write "})
         EXPECT_TRUE(entries.count(d)) << d;
+}
+
+TEST(FuzzPovFindings, BuilderClampsCountsAsFloatsBeforeConverting) {
+    const rays::Scene scene = rays::fuzz::parseFuzzPov(
+        "camera { aperture 1 blur_samples 1e300 }\n"
+        "light_source { 0, 1 area_light x, y, 1e300, -1e300 adaptive 1e300 }\n"
+        "global_settings { max_trace_level 1e300 }\n");
+    ASSERT_EQ(scene.cameras.size(), 1u);
+    EXPECT_EQ(scene.cameras[0].blurSamples, 65536);
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].n1, 1024);
+    EXPECT_EQ(scene.lights[0].n2, 1);
+    EXPECT_EQ(scene.lights[0].adaptive, 1000);
+    EXPECT_EQ(scene.pov.maxTraceLevel, 256);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "rays/pov/scene_builder.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rays/error.h"
@@ -14,6 +15,9 @@ namespace {
 
 constexpr int kMaxObjectDepth = 1000;
 constexpr double kPi = 3.14159265358979323846;
+
+// v as an int in [lo, hi], clamped as a float first (1e300 has no int); NaN gives lo.
+int clampedInt(double v, int lo, int hi) { return std::isnan(v) ? lo : int(std::clamp(v, double(lo), double(hi))); }
 
 bool isObjectKind(Kw k) {
     switch (k) {
@@ -153,7 +157,7 @@ void SceneBuilder::addCamera(const Item& cam) {
             }
             case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
             case Kw::aperture: c.aperture = 0.5 * toFloat(e.args[0]); break;
-            case Kw::blur_samples: c.blurSamples = int(toFloat(e.args.back())); break;
+            case Kw::blur_samples: c.blurSamples = clampedInt(toFloat(e.args.back()), 0, 65536); break;
             case Kw::normal: notes_.note("camera normal", e.loc); break;
             case Kw::bokeh: notes_.note("bokeh", e.loc); break;
             default: break;
@@ -196,12 +200,12 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
                     l.area = true;
                     l.axis1 = toVec3(e.args[0]);
                     l.axis2 = toVec3(e.args[1]);
-                    l.n1 = std::clamp(int(toFloat(e.args[2])), 1, 1024);
-                    l.n2 = std::clamp(int(toFloat(e.args[3])), 1, 1024);
+                    l.n1 = clampedInt(toFloat(e.args[2]), 1, 1024);
+                    l.n2 = clampedInt(toFloat(e.args[3]), 1, 1024);
                 }
                 break;
             case Kw::jitter: l.jitter = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::adaptive: l.adaptive = int(toFloat(e.args[0])); break;
+            case Kw::adaptive: l.adaptive = clampedInt(toFloat(e.args[0]), -1, 1000); break;
             case Kw::circular: l.circular = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::orient: l.orient = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::fade_distance: case Kw::fade_power: notes_.note("light fading", e.loc); break;
@@ -431,7 +435,7 @@ void SceneBuilder::globalSettings(const Item& g) {
                 gammaSet_ = true;
                 break;
             case Kw::ambient_light: scene_.pov.ambientLight = toColor(e.args[0]).rgb; break;
-            case Kw::max_trace_level: scene_.pov.maxTraceLevel = std::clamp(int(toFloat(e.args[0])), 1, 256); break;
+            case Kw::max_trace_level: scene_.pov.maxTraceLevel = clampedInt(toFloat(e.args[0]), 1, 256); break;
             case Kw::adc_bailout: scene_.pov.adcBailout = toFloat(e.args[0]); break;
             case Kw::radiosity: notes_.note("radiosity", e.loc); break;
             case Kw::photons: notes_.note("photons", e.loc); break;
