@@ -52,6 +52,7 @@ std::vector<Regression> regressions() {
         {"pov-internal-number-huge.pov", "fuzz.pov:1:34: error: the internal function number is out of range"},
         {"pov-array-index-huge.pov", "fuzz.pov:2:11: error: array index 1e+300 is out of range 0..1"},
         {"pov-builder-counts-huge.pov", ""},  // accepted: the counts are clamped (FuzzPovFindings)
+        {"pov-mesh2-index-huge.pov", "fuzz.pov:1:1: error: mesh2 face index 4294967295 is out of range (3 vertices)"},
     };
 }
 
