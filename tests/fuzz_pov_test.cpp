@@ -127,4 +127,17 @@ TEST(FuzzPovFindings, BuilderClampsCountsAsFloatsBeforeConverting) {
     EXPECT_EQ(scene.pov.maxTraceLevel, 256);
 }
 
+TEST(FuzzPovFindings, FunctionLoopsShareTheParsesLoopLimit) {
+    const std::string sum = "#declare F = function(n) { sum(i, 1, n, i) };\n";
+    EXPECT_EQ(povError(sum + "#if (F(100) != 5050) #error \"sum\" #end"), "");
+    // 20000 in all: 15000 #while iterations leave 5000 for sum's repetitions.
+    const std::string loop = "#declare I = 0; #while (I < 15000) #declare I = I + 1; #end\n";
+    EXPECT_EQ(povError(sum + loop + "#declare A = F(4999);"), "");
+    EXPECT_NE(povError(sum + loop + "#declare A = F(5001);").find("loops ran more than 20000 iterations (sum or prod"),
+              std::string::npos);
+    // A loop whose counter stops growing (1e300 + 1 = 1e300) ends too.
+    EXPECT_NE(povError("#declare G = function { prod(i, 1e300, 1e301, 1) };\n#declare A = G(0, 0, 0);").find("loops ran more"),
+              std::string::npos);
+}
+
 }  // namespace

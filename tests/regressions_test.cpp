@@ -53,6 +53,7 @@ std::vector<Regression> regressions() {
         {"pov-array-index-huge.pov", "fuzz.pov:2:11: error: array index 1e+300 is out of range 0..1"},
         {"pov-builder-counts-huge.pov", ""},  // accepted: the counts are clamped (FuzzPovFindings)
         {"pov-mesh2-index-huge.pov", "fuzz.pov:1:1: error: mesh2 face index 4294967295 is out of range (3 vertices)"},
+        {"pov-function-sum-huge.pov", "fuzz.pov:2:14: error: loops ran more than 20000 iterations (sum or prod in a function called while parsing)"},
     };
 }
 

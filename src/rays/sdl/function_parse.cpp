@@ -444,9 +444,19 @@ Value Interpreter::callFunction(const Value& fnValue, const Loc& at) {
     if (fv.kind == FunctionValue::Kind::Pattern || fv.kind == FunctionValue::Kind::Pigment)
         warning(at, "not rendered yet: pattern and pigment functions called while parsing (they give 0)");
     fn::Scratch scratch(fv.table->program(fv.index));
-    if (fv.table->outputs(fv.index) == 1) return Value::number(fv.table->call(fv.index, args.data(), scratch));
+    // sum/prod repetitions count against the parse's loop limit, as #while and #for do.
+    fn::LoopBudget budget(iterations_ < limits_.loopIterations ? limits_.loopIterations - iterations_ : 0);
     double out[5] = {};
-    const int n = fv.table->callVector(fv.index, args.data(), out, scratch);
+    int n = 1;
+    try {
+        if (fv.table->outputs(fv.index) == 1) out[0] = fv.table->call(fv.index, args.data(), scratch);
+        else n = fv.table->callVector(fv.index, args.data(), out, scratch);
+    } catch (const fn::LoopBudgetExceeded&) {
+        error(at, "loops ran more than " + std::to_string(limits_.loopIterations) +
+                      " iterations (sum or prod in a function called while parsing)");
+    }
+    iterations_ += budget.used();
+    if (fv.table->outputs(fv.index) == 1) return Value::number(out[0]);
     if (fv.kind == FunctionValue::Kind::Pigment) return Value::color(out[0], out[1], out[2], out[3], out[4]);
     return Value::vector(n, out);
 }
