@@ -14,6 +14,7 @@
 
 #include "../fuzz/entry_points.h"
 #include "rays/error.h"
+#include "rays/pov/load_pov.h"
 
 namespace fs = std::filesystem;
 
@@ -138,6 +139,40 @@ TEST(FuzzPovFindings, FunctionLoopsShareTheParsesLoopLimit) {
     // A loop whose counter stops growing (1e300 + 1 = 1e300) ends too.
     EXPECT_NE(povError("#declare G = function { prod(i, 1e300, 1e301, 1) };\n#declare A = G(0, 0, 0);").find("loops ran more"),
               std::string::npos);
+}
+
+TEST(FuzzPovFindings, DirectivesAndMacroArgumentsCountAsNesting) {
+    rays::sdl::Limits limits;
+    limits.nesting = 50;
+    rays::ParseOptions opt;
+    opt.warn = [](const std::string&) {};
+    opt.language.installedIncludeDir.clear();
+    auto errorOf = [&](const std::string& text) {
+        try {
+            rays::pov::parsePovText(text, "scene.pov", ".", opt, limits);
+        } catch (const rays::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    auto nest = [](const std::string& open, const std::string& core, const std::string& close, int n) {
+        std::string s;
+        for (int i = 0; i < n; ++i) s += open;
+        s += core;
+        for (int i = 0; i < n; ++i) s += close;
+        return s;
+    };
+    const std::string tooDeep = "nesting deeper than 50 levels";
+    EXPECT_NE(errorOf("#macro M(A) A #end #declare B = " + nest("M(", "1", ")", 60) + ";").find(tooDeep), std::string::npos);
+    EXPECT_NE(errorOf(nest("#debug ", "\"x\"", "", 60)).find(tooDeep), std::string::npos);
+    EXPECT_NE(errorOf("#declare V = " + nest("<", "1", ">", 60) + ";").find(tooDeep), std::string::npos);
+    EXPECT_NE(errorOf("#declare C = " + nest("rgb ", "1", "", 60) + ";").find(tooDeep), std::string::npos);
+    EXPECT_NE(errorOf("#declare S = " + nest("concat(", "\"a\"", ")", 60) + ";").find(tooDeep), std::string::npos);
+    EXPECT_NE(errorOf("sphere { 0, 1 pigment { " + nest("pigment_pattern { ", "checker", " }", 60) + " } }").find(tooDeep),
+              std::string::npos);
+    // Shallow nests of each kind still parse.
+    EXPECT_EQ(errorOf("#macro M(A) A #end #declare B = " + nest("M(", "1", ")", 10) + ";"), "");
+    EXPECT_EQ(errorOf("#declare S = " + nest("concat(", "\"a\"", ")", 10) + ";"), "");
 }
 
 }  // namespace

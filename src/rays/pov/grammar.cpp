@@ -148,6 +148,7 @@ void readMapEntry(Interpreter& in, const BlockSpec& spec, Item& item) {
 }  // namespace
 
 sdl::ItemRef readBlockBody(Interpreter& in, const BlockSpec& spec, Kw kind) {
+    Interpreter::NestGuard guard(in);  // sub-blocks nest too: pigment_pattern { pigment_pattern { ... } }
     auto item = std::make_shared<Item>();
     item->kind = kind;
     item->loc = in.loc();

@@ -350,6 +350,7 @@ Value Interpreter::factor(bool colorCtx) {
 }
 
 Value Interpreter::vectorLiteral() {
+    NestGuard guard(*this);  // vectors nest without parentheses: <<<1, 2>, 3>, 4>
     const Loc at = loc();
     next();  // '<'
     std::array<double, 5> c{};
@@ -431,6 +432,7 @@ Value Interpreter::arrayElement(const Value& arr, bool forAssign, std::vector<in
 // `rgb E` and its kin, and `red F` ... starting a colour.
 Value Interpreter::colorKeyword(bool colorCtx) {
     (void)colorCtx;
+    NestGuard guard(*this);  // rgb rgb rgb 1 nests too
     const Kw k = kw();
     const Loc at = loc();
     next();

@@ -22,7 +22,8 @@ Interpreter::~Interpreter() = default;
 Interpreter::NestGuard::NestGuard(Interpreter& in) : in_(in) {
     if (++in_.nesting_ > in_.limits_.nesting) {
         --in_.nesting_;
-        in_.errorHere("nesting deeper than " + std::to_string(in_.limits_.nesting) + " levels");
+        // rawLoc, not loc(): fetching the next token could expand a macro and nest once more.
+        in_.error(in_.rawLoc(), "nesting deeper than " + std::to_string(in_.limits_.nesting) + " levels");
     }
 }
 
@@ -176,6 +177,7 @@ void Interpreter::fetch(bool expandMacros) {
         }
         ++f.pos;
         if (t.kind == Tk::Directive) {
+            NestGuard guard(*this);  // a directive read while another reads its arguments: #debug #debug "x"
             directive(t);
             if (have_) return;  // a directive that looked ahead left the token after it current
             continue;
@@ -206,6 +208,8 @@ void Interpreter::endOfFrame() {
 // ---- macros --------------------------------------------------------------------------------------
 
 void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
+    // Reading the arguments may expand another macro call before this one returns: M(M(M(...))).
+    NestGuard guard(*this);
     const auto def = std::static_pointer_cast<const MacroDef>(macroValue.ref);
     const Loc at{frames_.back().file->id, nameTok.line, nameTok.col};
     const std::string name(names_.name(nameTok.id));
@@ -323,6 +327,13 @@ std::string Interpreter::describe() {
             }
     }
     return "?";
+}
+
+Loc Interpreter::rawLoc() const {
+    if (have_ || frames_.empty()) return curLoc_;
+    const Frame& f = frames_.back();
+    const Token& t = f.file->tokens[f.pos];
+    return Loc{f.file->id, t.line, t.col};
 }
 
 std::string Interpreter::where(const Loc& at) const {

@@ -195,6 +195,8 @@ private:
     void topLevelLoop();
     std::string context() const;
     void tick();
+    /// Where the next raw token is (no directive run, no macro expanded).
+    Loc rawLoc() const;
 
     // directives (directives.cpp)
     void directive(const Token& t);

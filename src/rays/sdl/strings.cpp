@@ -76,6 +76,7 @@ std::string Interpreter::parseString() {
 // String values are held as bytes (UTF-8 where a scene writes non-ASCII text); the functions
 // below follow POV-Ray's 16-bit string rules (pov_strings.h) and convert at this boundary.
 std::string Interpreter::stringFunction(Kw k, const Loc& at) {
+    NestGuard guard(*this);  // concat(concat(concat(...)))
     const std::string name(keywordName(k));
     auto check = [&](Outcome<PovString> r) {
         if (!r.ok()) error(at, r.error);
