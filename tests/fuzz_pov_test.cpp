@@ -4,6 +4,7 @@
 // dictionary lists every keyword of the language. FuzzPovFindings: the behaviour of the fixes for
 // its findings (docs/fuzzing.md) beyond the messages tests/regressions_test.cpp checks.
 #include <gtest/gtest.h>
+#include <pthread.h>
 
 #include <filesystem>
 #include <fstream>
@@ -173,6 +174,46 @@ TEST(FuzzPovFindings, DirectivesAndMacroArgumentsCountAsNesting) {
     // Shallow nests of each kind still parse.
     EXPECT_EQ(errorOf("#macro M(A) A #end #declare B = " + nest("M(", "1", ")", 10) + ";"), "");
     EXPECT_EQ(errorOf("#declare S = " + nest("concat(", "\"a\"", ")", 10) + ";"), "");
+}
+
+// Parses text on a thread with a stack of stackBytes; returns the Error's message ("" when none).
+std::string parseOnSmallStack(const std::string& text, size_t stackBytes) {
+    struct Job {
+        std::string text, error;
+    } job{text, ""};
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    pthread_attr_setstacksize(&attr, stackBytes);
+    pthread_t thread;
+    const int rc = pthread_create(
+        &thread, &attr,
+        [](void* p) -> void* {
+            Job& j = *static_cast<Job*>(p);
+            try {
+                rays::ParseOptions opt;
+                opt.warn = [](const std::string&) {};
+                opt.language.installedIncludeDir.clear();
+                rays::pov::parsePovText(j.text, "scene.pov", ".", opt);
+            } catch (const rays::Error& e) {
+                j.error = e.what();
+            }
+            return nullptr;
+        },
+        &job);
+    pthread_attr_destroy(&attr);
+    if (rc != 0) return "pthread_create failed";
+    pthread_join(thread, nullptr);
+    return job.error;
+}
+
+TEST(FuzzPovFindings, NestingWithinTheCountLimitStopsBeforeTheStackRunsOut) {
+    // 3990 parentheses are within the 4000 levels allowed; on a 1 MiB stack (about 1.6 KiB a level
+    // in a release build) they would overflow it.
+    std::string text = "#declare A = " + std::string(3990, '(') + "1" + std::string(3990, ')') + ";";
+    const std::string e = parseOnSmallStack(text, size_t(1) << 20);
+    EXPECT_NE(e.find("scene.pov:1:"), std::string::npos) << e;
+    EXPECT_NE(e.find(": error: nesting too deep for the parser's stack ("), std::string::npos) << e;
+    EXPECT_EQ(parseOnSmallStack("#declare A = ((((1))));", size_t(1) << 20), "");
 }
 
 }  // namespace

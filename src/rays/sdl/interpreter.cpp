@@ -2,8 +2,11 @@
 // expands macros on the way, macro calls and returns, the top-level loop and messages.
 #include "rays/sdl/interpreter.h"
 
-#include <filesystem>
+#include <pthread.h>
 #include <sys/stat.h>
+
+#include <algorithm>
+#include <filesystem>
 
 #include "rays/error.h"
 #include "rays/io/file_text.h"
@@ -19,11 +22,38 @@ Interpreter::Interpreter(const LanguageOptions& options, ItemHost& host, Diagnos
 
 Interpreter::~Interpreter() = default;
 
+namespace {
+
+// Stack kept free below the deepest nesting level: room for the work between two NestGuards and
+// for throwing the error.
+constexpr size_t kStackReserve = size_t(256) << 10;
+
+// The lowest stack address a parse on this thread may nest down to (the stack grows down on the
+// platforms Rays builds for); 0 when the thread's stack is unknown.
+uintptr_t threadStackFloor() {
+    thread_local const uintptr_t floor = [] {
+        pthread_attr_t attr;
+        if (pthread_getattr_np(pthread_self(), &attr) != 0) return uintptr_t(0);
+        void* low = nullptr;
+        size_t size = 0;
+        const bool known = pthread_attr_getstack(&attr, &low, &size) == 0 && low;
+        pthread_attr_destroy(&attr);
+        return known ? uintptr_t(low) + std::min(kStackReserve, size / 2) : uintptr_t(0);
+    }();
+    return floor;
+}
+
+}  // namespace
+
 Interpreter::NestGuard::NestGuard(Interpreter& in) : in_(in) {
-    if (++in_.nesting_ > in_.limits_.nesting) {
+    ++in_.nesting_;
+    const bool counted = in_.nesting_ > in_.limits_.nesting;
+    if (counted || reinterpret_cast<uintptr_t>(__builtin_frame_address(0)) < in_.stackFloor_) {
         --in_.nesting_;
         // rawLoc, not loc(): fetching the next token could expand a macro and nest once more.
-        in_.error(in_.rawLoc(), "nesting deeper than " + std::to_string(in_.limits_.nesting) + " levels");
+        in_.error(in_.rawLoc(), counted ? "nesting deeper than " + std::to_string(in_.limits_.nesting) + " levels"
+                                        : "nesting too deep for the parser's stack (" + std::to_string(in_.nesting_) +
+                                              " levels)");
     }
 }
 
@@ -93,6 +123,7 @@ void Interpreter::declareGlobal(const std::string& name, Value v) {
 }
 
 void Interpreter::run(const std::string& path) {
+    stackFloor_ = threadStackFloor();
     const fs::path p(path);
     sceneFolder_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
     const SourceFile& f = openFile(path, path);
@@ -103,6 +134,7 @@ void Interpreter::run(const std::string& path) {
 }
 
 void Interpreter::runText(std::string_view text, const std::string& shownName, const std::string& folder) {
+    stackFloor_ = threadStackFloor();
     sceneFolder_ = folder;
     const SourceFile& f = textFile(text, shownName);
     Frame fr;

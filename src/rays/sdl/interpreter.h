@@ -154,7 +154,8 @@ public:
     /// `assumed_gamma` as the host read it from global_settings (needed for srgb colours); 0 unset.
     void setAssumedGamma(double g) { assumedGamma_ = g; }
     double assumedGamma() const { return assumedGamma_; }
-    /// Counts a nesting level of the host's readers; throws past Limits::nesting.
+    /// Counts a nesting level of the host's readers; throws past Limits::nesting, or when the
+    /// thread's stack is nearly used up (a deep nest of heavy levels, smaller thread stacks).
     class NestGuard {
     public:
         explicit NestGuard(Interpreter& in);
@@ -289,6 +290,7 @@ private:
     bool versionSeen_ = false;
     double assumedGamma_ = 0;
     uint32_t nesting_ = 0;
+    uintptr_t stackFloor_ = 0;  ///< NestGuard refuses to nest below this stack address (0: no check)
     uint64_t iterations_ = 0;
     uint64_t ticks_ = 0;
     std::vector<std::string> deprecatedMessages_;
