@@ -226,14 +226,16 @@ inline const std::string& povSceneDir() {
     return dir;
 }
 
-/// The limits fuzzPov parses with: loops, macro recursion and tokens lowered from the defaults so an
-/// input ends in well under a second; nesting and include depth stay as users get them (the C++
+/// The limits fuzzPov parses with: the budgets of time and memory (loops, macro recursion, tokens,
+/// array elements) lowered from the defaults so that an input ends in well
+/// under a second and a few hundred MiB; nesting and include depth stay as users get them (the C++
 /// stack depth those allow is what should be tested).
 inline sdl::Limits povFuzzLimits() {
     sdl::Limits l;
     l.loopIterations = 20'000;
     l.macroDepth = 1'000;
     l.tokens = uint64_t(1) << 21;
+    l.arrayElements = uint64_t(1) << 20;
     return l;
 }
 

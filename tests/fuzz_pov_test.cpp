@@ -142,20 +142,24 @@ TEST(FuzzPovFindings, FunctionLoopsShareTheParsesLoopLimit) {
               std::string::npos);
 }
 
-TEST(FuzzPovFindings, DirectivesAndMacroArgumentsCountAsNesting) {
-    rays::sdl::Limits limits;
-    limits.nesting = 50;
+/// The Error pov::parsePovText throws for text with the given limits ("" when it parses); files
+/// are written in folder.
+std::string povErrorWith(const std::string& text, const rays::sdl::Limits& limits, const std::string& folder = ".") {
     rays::ParseOptions opt;
     opt.warn = [](const std::string&) {};
     opt.language.installedIncludeDir.clear();
-    auto errorOf = [&](const std::string& text) {
-        try {
-            rays::pov::parsePovText(text, "scene.pov", ".", opt, limits);
-        } catch (const rays::Error& e) {
-            return std::string(e.what());
-        }
-        return std::string();
-    };
+    try {
+        rays::pov::parsePovText(text, "scene.pov", folder, opt, limits);
+    } catch (const rays::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(FuzzPovFindings, DirectivesAndMacroArgumentsCountAsNesting) {
+    rays::sdl::Limits limits;
+    limits.nesting = 50;
+    auto errorOf = [&](const std::string& text) { return povErrorWith(text, limits); };
     auto nest = [](const std::string& open, const std::string& core, const std::string& close, int n) {
         std::string s;
         for (int i = 0; i < n; ++i) s += open;
@@ -174,6 +178,22 @@ TEST(FuzzPovFindings, DirectivesAndMacroArgumentsCountAsNesting) {
     // Shallow nests of each kind still parse.
     EXPECT_EQ(errorOf("#macro M(A) A #end #declare B = " + nest("M(", "1", ")", 10) + ";"), "");
     EXPECT_EQ(errorOf("#declare S = " + nest("concat(", "\"a\"", ")", 10) + ";"), "");
+}
+
+TEST(FuzzPovFindings, ArrayElementsMadeAreCountedNewAndCopied) {
+    rays::sdl::Limits limits;
+    limits.arrayElements = 100;
+    // A declaration counts the new array and its copy: 2 x 30 + 30 for B's copy = 90.
+    EXPECT_EQ(povErrorWith("#declare A = array[30]; #declare B = A;", limits), "");
+    EXPECT_EQ(povErrorWith("#declare A = array[40]; #declare B = A;", limits),
+              "scene.pov:1:34: error: more than 100 array elements made (new arrays and copies) in this parse (runaway loop?)");
+    // Nested arrays count their elements too; a macro's by-reference argument is a copy.
+    EXPECT_NE(povErrorWith("#declare A = array[2] { array[30], array[30] };", limits).find("more than 100 array elements"),
+              std::string::npos);
+    EXPECT_NE(povErrorWith("#macro M(P) #end #declare A = array[40]; M(A) M(A)", limits).find("more than 100 array elements"),
+              std::string::npos);
+    // The default allows any single array the size limits allow (up to 2^27 elements, copied once).
+    EXPECT_EQ(rays::sdl::Limits{}.arrayElements, uint64_t(1) << 28);
 }
 
 // Parses text on a thread with a stack of stackBytes; returns the Error's message ("" when none).

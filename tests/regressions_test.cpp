@@ -62,6 +62,8 @@ std::vector<Regression> regressions() {
         {"pov-deep-string-functions.pov", ": error: nesting "},
         {"pov-deep-pattern-blocks.pov", ": error: nesting "},
         {"pov-parentheses-3990.pov", ""},  // within the count limit: parses, or the stack guard stops it
+        {"pov-array-copies-many.pov", "fuzz.pov:3:26: error: more than 1048576 array elements made (new arrays and copies) in this parse (runaway loop?)"},
+        {"pov-array-copies-nested.pov", "fuzz.pov:3:52: error: more than 1048576 array elements made (new arrays and copies) in this parse (runaway loop?)"},
     };
 }
 

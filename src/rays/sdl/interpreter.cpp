@@ -299,7 +299,7 @@ bool Interpreter::passByReference(uint32_t param, std::vector<Value>& args, std:
     if (!b)
         errorHere("cannot pass the undeclared identifier '" + std::string(names_.name(cur_.id)) +
                   "' as a macro parameter; declare it first");
-    args.push_back(copyValue(b->value));
+    args.push_back(copyCharged(b->value, loc()));
     byRef.push_back(ByRefArg{param, cur_.id, b->serial});
     next();
     return true;

@@ -45,6 +45,7 @@ struct Limits {
     uint32_t includeDepth = 64;              ///< nested include files
     uint32_t nesting = 4'000;                ///< nested items, expressions and parentheses
     uint64_t tokens = uint64_t(1) << 30;     ///< tokens consumed (a runaway recursion ends here)
+    uint64_t arrayElements = uint64_t(1) << 28;  ///< array elements made in one parse: new arrays and copies
 };
 
 class Interpreter {
@@ -238,6 +239,10 @@ private:
     void returnFromMacro();
     Binding& assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at, uint32_t level);
     Value readArrayValue(const Loc& at);
+    /// Adds n to one of the parse's running totals; throws "more than LIMIT WHAT in this parse" past limit.
+    void spend(uint64_t& total, uint64_t n, uint64_t limit, const Loc& at, const char* what);
+    /// copyValue, with the elements an array copy makes charged.
+    Value copyCharged(const Value& v, const Loc& at);
 
     // expressions (expressions.cpp)
     Value fullExpression();
@@ -292,6 +297,7 @@ private:
     uint32_t nesting_ = 0;
     uintptr_t stackFloor_ = 0;  ///< NestGuard refuses to nest below this stack address (0: no check)
     uint64_t iterations_ = 0;
+    uint64_t arrayElements_ = 0;
     uint64_t ticks_ = 0;
     std::vector<std::string> deprecatedMessages_;
     RandomStreams random_;
