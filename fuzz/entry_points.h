@@ -227,7 +227,7 @@ inline const std::string& povSceneDir() {
 }
 
 /// The limits fuzzPov parses with: the budgets of time and memory (loops, macro recursion, tokens,
-/// array elements) lowered from the defaults so that an input ends in well
+/// array elements, string and #write bytes) lowered from the defaults so that an input ends in well
 /// under a second and a few hundred MiB; nesting and include depth stay as users get them (the C++
 /// stack depth those allow is what should be tested).
 inline sdl::Limits povFuzzLimits() {
@@ -236,6 +236,8 @@ inline sdl::Limits povFuzzLimits() {
     l.macroDepth = 1'000;
     l.tokens = uint64_t(1) << 21;
     l.arrayElements = uint64_t(1) << 20;
+    l.stringBytes = uint64_t(1) << 27;
+    l.writeBytes = uint64_t(1) << 26;
     return l;
 }
 

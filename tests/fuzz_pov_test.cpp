@@ -16,6 +16,7 @@
 #include "../fuzz/entry_points.h"
 #include "rays/error.h"
 #include "rays/pov/load_pov.h"
+#include "support/process.h"
 
 namespace fs = std::filesystem;
 
@@ -194,6 +195,27 @@ TEST(FuzzPovFindings, ArrayElementsMadeAreCountedNewAndCopied) {
               std::string::npos);
     // The default allows any single array the size limits allow (up to 2^27 elements, copied once).
     EXPECT_EQ(rays::sdl::Limits{}.arrayElements, uint64_t(1) << 28);
+}
+
+TEST(FuzzPovFindings, StringBytesAndWrittenBytesAreCounted) {
+    rays::sdl::Limits limits;
+    limits.stringBytes = 10;
+    EXPECT_EQ(povErrorWith("#declare S = concat(\"abcde\", \"fghij\");", limits), "");
+    EXPECT_NE(povErrorWith("#declare S = concat(\"abcde\", \"fghij\"); #declare T = str(1, 0, 0);", limits)
+                  .find("more than 10 bytes of strings made by string functions"),
+              std::string::npos);
+    // concat checks its length as it grows, not once all arguments are joined.
+    std::string longArgs = "#declare S = \"ab\"; #for (I, 1, 23) #declare S = concat(S, S); #end #declare T = concat(S";
+    for (int i = 0; i < 100; ++i) longArgs += ", S";
+    EXPECT_NE(povError(longArgs + ");").find("concat made a string longer than 16 MiB"), std::string::npos);
+
+    rays::test::TempDir dir;
+    rays::sdl::Limits w;
+    w.writeBytes = 8;
+    EXPECT_EQ(povErrorWith("#fopen F \"a.txt\" write #write (F, \"1234\", uint16le <1, 2>)", w, dir.path().string()), "");
+    EXPECT_NE(povErrorWith("#fopen F \"a.txt\" write #write (F, \"1234\", uint16le <1, 2>, 5)", w, dir.path().string())
+                  .find("more than 8 bytes written by #write"),
+              std::string::npos);
 }
 
 // Parses text on a thread with a stack of stackBytes; returns the Error's message ("" when none).

@@ -46,6 +46,8 @@ struct Limits {
     uint32_t nesting = 4'000;                ///< nested items, expressions and parentheses
     uint64_t tokens = uint64_t(1) << 30;     ///< tokens consumed (a runaway recursion ends here)
     uint64_t arrayElements = uint64_t(1) << 28;  ///< array elements made in one parse: new arrays and copies
+    uint64_t stringBytes = uint64_t(1) << 36;    ///< bytes of the strings string functions make in one parse
+    uint64_t writeBytes = uint64_t(1) << 34;     ///< bytes #write writes in one parse
 };
 
 class Interpreter {
@@ -297,7 +299,7 @@ private:
     uint32_t nesting_ = 0;
     uintptr_t stackFloor_ = 0;  ///< NestGuard refuses to nest below this stack address (0: no check)
     uint64_t iterations_ = 0;
-    uint64_t arrayElements_ = 0;
+    uint64_t arrayElements_ = 0, stringBytes_ = 0, writeBytes_ = 0;
     uint64_t ticks_ = 0;
     std::vector<std::string> deprecatedMessages_;
     RandomStreams random_;

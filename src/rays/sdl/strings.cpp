@@ -61,8 +61,12 @@ std::string Interpreter::parseString() {
         switch (k) {
             case Kw::str: case Kw::concat: case Kw::chr: case Kw::substr: case Kw::strupr: case Kw::strlwr:
             case Kw::vstr: case Kw::datetime:
+            {
                 next();
-                return stringFunction(k, at);
+                std::string s = stringFunction(k, at);
+                spend(stringBytes_, s.size(), limits_.stringBytes, at, "bytes of strings made by string functions");
+                return s;
+            }
             case Kw::input_file_name:
                 next();
                 return files_.empty() ? std::string() : files_[0]->shownName;
@@ -113,9 +117,11 @@ std::string Interpreter::stringFunction(Kw k, const Loc& at) {
         }
         case Kw::concat: {
             std::string s = parseString();
-            while (acceptSym(',')) s += parseString();
+            while (acceptSym(',')) {  // checked as it grows: concat(S, S, S, ...) of long strings
+                s += parseString();
+                if (s.size() > (size_t(1) << 24)) error(at, "concat made a string longer than 16 MiB");
+            }
             close();
-            if (s.size() > (size_t(1) << 24)) error(at, "concat made a string longer than 16 MiB");
             return s;
         }
         case Kw::chr: {
