@@ -218,6 +218,18 @@ TEST(FuzzPovFindings, StringBytesAndWrittenBytesAreCounted) {
               std::string::npos);
 }
 
+TEST(FuzzPovFindings, SceneBuilderCountsObjectsCopiesAndTriangles) {
+    rays::sdl::Limits limits;
+    limits.sceneObjects = 3;
+    EXPECT_EQ(povErrorWith("union { sphere { 0, 1 } sphere { x, 1 } }", limits), "");
+    // The second copy is refused: a union and its two spheres count three.
+    EXPECT_EQ(povErrorWith("#declare O = union { sphere { 0, 1 } sphere { x, 1 } } object { O } object { O }", limits),
+              "scene.pov:1:69: error: the scene makes more than 3 objects (each copy of a declared object counts, and each "
+              "mesh triangle)");
+    EXPECT_NE(povErrorWith("mesh { triangle { 0, x, y } triangle { 0, y, z } triangle { 0, z, x } }", limits).find("more than 3 objects"),
+              std::string::npos);
+}
+
 // Parses text on a thread with a stack of stackBytes; returns the Error's message ("" when none).
 std::string parseOnSmallStack(const std::string& text, size_t stackBytes) {
     struct Job {

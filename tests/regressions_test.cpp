@@ -67,6 +67,8 @@ std::vector<Regression> regressions() {
         {"pov-strings-many-long.pov", "fuzz.pov:4:34: error: more than 134217728 bytes of strings made by string functions in this parse (runaway loop?)"},
         {"pov-concat-long-arguments.pov", "fuzz.pov:3:14: error: concat made a string longer than 16 MiB"},
         {"pov-write-many.pov", "fuzz.pov:4:18: error: more than 67108864 bytes written by #write in this parse (runaway loop?)"},
+        {"pov-object-copies-doubling.pov", "fuzz.pov:2:51: error: the scene makes more than 65536 objects (each copy of a declared object counts, and each mesh triangle)"},
+        {"pov-mesh-copies-doubling.pov", "fuzz.pov:2:38: error: the scene makes more than 65536 objects (each copy of a declared object counts, and each mesh triangle)"},
     };
 }
 

@@ -40,7 +40,7 @@ Scene build(const std::function<void(sdl::Interpreter&)>& run, const std::string
     }
     run(in);
     NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);
-    SceneBuilder builder(notes);
+    SceneBuilder builder(notes, limits.sceneObjects);
     for (const ParsedScene::Top& top : parsed.items) builder.add(top);
     return builder.finish(shownName);
 }

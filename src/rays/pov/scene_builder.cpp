@@ -252,8 +252,16 @@ Material SceneBuilder::material(const Appearance& look, const sdl::Loc&) {
     return m;
 }
 
+void SceneBuilder::countObjects(uint64_t n, const sdl::Loc& at) {
+    objects_ += n;
+    if (objects_ > maxObjects_)
+        throw Error(notes_.where(at) + ": error: the scene makes more than " + std::to_string(maxObjects_) +
+                    " objects (each copy of a declared object counts, and each mesh triangle)");
+}
+
 void SceneBuilder::addObject(const Item& item, const Transform& parent, const Appearance* inherited, int depth) {
     if (depth > kMaxObjectDepth) throw Error(notes_.where(item.loc) + ": error: objects nested deeper than 1000 levels");
+    countObjects(1, item.loc);  // a union of copies of a union of copies ... doubles at every level
     std::vector<const Entry*> entries;
     const Kw kind = unrollObject(item, entries, 0);
     if (kind == Kw::light_source) {
@@ -405,6 +413,7 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     std::unique_ptr<Mesh> mesh = meshFromItem(m, problem);
     if (!mesh) throw Error(notes_.where(m.loc) + ": error: " + problem);
     if (mesh->triangleCount() == 0) return;
+    countObjects(mesh->triangleCount(), m.loc);
     for (const Entry& e : m.entries)
         if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::texture_list)
             notes_.note("mesh2 texture_list", e.loc, "(the mesh's own texture is used)");

@@ -48,6 +48,9 @@ struct Limits {
     uint64_t arrayElements = uint64_t(1) << 28;  ///< array elements made in one parse: new arrays and copies
     uint64_t stringBytes = uint64_t(1) << 36;    ///< bytes of the strings string functions make in one parse
     uint64_t writeBytes = uint64_t(1) << 34;     ///< bytes #write writes in one parse
+    /// Objects the scene builder (src/rays/pov) makes from the parsed items: every copy of a declared
+    /// object counts, a mesh counts its triangles too.
+    uint64_t sceneObjects = uint64_t(1) << 26;
 };
 
 class Interpreter {
