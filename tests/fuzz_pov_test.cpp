@@ -230,6 +230,15 @@ TEST(FuzzPovFindings, SceneBuilderCountsObjectsCopiesAndTriangles) {
               std::string::npos);
 }
 
+TEST(FuzzPovFindings, DeclaredItemsNestAtMost4000Deep) {
+    auto chain = [](int n) {  // n levels: a sphere in n - 1 objects
+        return "#declare O = sphere { 0, 1 }\n#for (I, 2, " + std::to_string(n) + ") #declare O = object { O } #end\n";
+    };
+    EXPECT_EQ(povErrorWith(chain(4000), {}), "");
+    EXPECT_EQ(povErrorWith(chain(4001), {}),
+              "scene.pov:2:32: error: items nested deeper than 4000 levels (a declared item used in itself again and again?)");
+}
+
 // Parses text on a thread with a stack of stackBytes; returns the Error's message ("" when none).
 std::string parseOnSmallStack(const std::string& text, size_t stackBytes) {
     struct Job {

@@ -69,6 +69,7 @@ std::vector<Regression> regressions() {
         {"pov-write-many.pov", "fuzz.pov:4:18: error: more than 67108864 bytes written by #write in this parse (runaway loop?)"},
         {"pov-object-copies-doubling.pov", "fuzz.pov:2:51: error: the scene makes more than 65536 objects (each copy of a declared object counts, and each mesh triangle)"},
         {"pov-mesh-copies-doubling.pov", "fuzz.pov:2:38: error: the scene makes more than 65536 objects (each copy of a declared object counts, and each mesh triangle)"},
+        {"pov-item-chain-deep.pov", "fuzz.pov:2:33: error: items nested deeper than 4000 levels (a declared item used in itself again and again?)"},
     };
 }
 

@@ -1,6 +1,7 @@
 // The generic block reader: one loop for every POV-Ray block, driven by its BlockSpec.
 #include "rays/pov/grammar.h"
 
+#include <algorithm>
 #include <string>
 
 namespace rays::pov {
@@ -147,6 +148,29 @@ void readMapEntry(Interpreter& in, const BlockSpec& spec, Item& item) {
 
 }  // namespace
 
+namespace {
+
+// Items nested at most this deep, counting those reached through identifiers: a file can nest a
+// declared item in itself again and again without writing the levels out (#declare O = union {
+// object { O } } in a loop); such chains overflowed the stack when freed (100,000 levels in a release
+// build), and the scene builder renders 1000 levels at most. As deep as Limits::nesting allows
+// items to be written out.
+constexpr uint32_t kMaxItemDepth = 4000;
+
+// Sets item.depth from its item arguments; throws past kMaxItemDepth.
+void setDepth(Interpreter& in, Item& item) {
+    uint32_t below = 0;
+    for (const Entry& e : item.entries)
+        for (const Value& v : e.args)
+            if (v.type == sdl::VType::Item) below = std::max(below, v.item().depth);
+    item.depth = below + 1;
+    if (item.depth > kMaxItemDepth)
+        in.error(item.loc, "items nested deeper than " + std::to_string(kMaxItemDepth) +
+                               " levels (a declared item used in itself again and again?)");
+}
+
+}  // namespace
+
 sdl::ItemRef readBlockBody(Interpreter& in, const BlockSpec& spec, Kw kind) {
     Interpreter::NestGuard guard(in);  // sub-blocks nest too: pigment_pattern { pigment_pattern { ... } }
     auto item = std::make_shared<Item>();
@@ -174,7 +198,7 @@ sdl::ItemRef readBlock(Interpreter& in, const BlockSpec& spec) {
 void readBody(Interpreter& in, Item& item, const BlockSpec& spec, char terminator) {
     const sdl::Loc open = item.loc;
     for (;;) {
-        if (in.isSym(terminator)) return;
+        if (in.isSym(terminator)) return setDepth(in, item);
         if (in.atEnd())
             in.error(open, std::string("'") + (terminator == ']' ? "[" : "{") + "' of '" +
                                std::string(sdl::keywordName(item.kind)) + "' is never closed (end of file reached)");

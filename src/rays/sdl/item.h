@@ -28,6 +28,7 @@ struct Item {
     Kw kind = Kw::object;  ///< the keyword that opened it (sphere, union, texture, pigment, ...)
     Loc loc;
     std::vector<Entry> entries;
+    uint32_t depth = 1;  ///< levels of items in it, itself included (the host sets it when read)
 };
 
 using ItemRef = std::shared_ptr<const Item>;
