@@ -16,6 +16,7 @@
 #include "../fuzz/entry_points.h"
 #include "rays/error.h"
 #include "rays/pov/load_pov.h"
+#include "rays/pov/pov_host.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
@@ -237,6 +238,30 @@ TEST(FuzzPovFindings, DeclaredItemsNestAtMost4000Deep) {
     EXPECT_EQ(povErrorWith(chain(4000), {}), "");
     EXPECT_EQ(povErrorWith(chain(4001), {}),
               "scene.pov:2:32: error: items nested deeper than 4000 levels (a declared item used in itself again and again?)");
+}
+
+TEST(FuzzPovFindings, DefaultsAreAppendedAndSharedNotCopied) {
+    rays::pov::ParsedScene parsed;
+    rays::pov::PovHost host(parsed);
+    rays::sdl::LanguageOptions lang;
+    lang.installedIncludeDir.clear();
+    rays::sdl::Interpreter in(lang, host, rays::sdl::Diagnostics{});
+    in.runText("sphere { 0, 1 } #for (I, 1, 3) #default { finish { ambient I / 10 } } sphere { 0, 1 } #end", "scene.pov");
+    ASSERT_EQ(parsed.items.size(), 4u);
+    EXPECT_EQ(parsed.items[0].defaults, nullptr);
+    for (size_t i = 1; i < 4; ++i) {
+        EXPECT_EQ(parsed.items[i].defaults, parsed.items[3].defaults) << i;
+        EXPECT_EQ(parsed.items[i].defaultsCount, i);
+    }
+    // Each object gets the defaults in force where it was written.
+    const rays::Scene scene = rays::fuzz::parseFuzzPov(
+        "#default { finish { ambient 0.5 } } sphere { 0, 1 } #default { finish { ambient 0.25 diffuse 0.5 } } "
+        "sphere { 0, 1 } sphere { 0, 1 finish { ambient 0.125 } } #default { pigment { rgb 1 } } sphere { 0, 1 }   ");
+    ASSERT_EQ(scene.objects.size(), 4u);
+    EXPECT_EQ(scene.objects[0].material.ambient, 0.5);
+    EXPECT_EQ(scene.objects[1].material.ambient, 0.25);
+    EXPECT_EQ(scene.objects[2].material.ambient, 0.125);
+    EXPECT_EQ(scene.objects[3].material.ambient, 0.25);
 }
 
 // Parses text on a thread with a stack of stackBytes; returns the Error's message ("" when none).

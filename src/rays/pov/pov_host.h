@@ -2,6 +2,7 @@
 // (grammar.h, specs.h) and collects the scene's top-level items, each with the default texture
 // in force where it appeared (#default), for the builder (scene_builder.h).
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "rays/sdl/host.h"
@@ -13,8 +14,11 @@ namespace rays::pov {
 struct ParsedScene {
     struct Top {
         sdl::ItemRef item;
-        sdl::ItemRef defaults;  ///< the #default texture in force (a texture item; null: POV-Ray's own)
-        double version = 3.7;   ///< #version in force
+        /// The #default texture in force: the first defaultsCount entries of `defaults`, applied in
+        /// order (null: POV-Ray's own). #default only appends, so all items share one list.
+        std::shared_ptr<const std::vector<sdl::Entry>> defaults;
+        size_t defaultsCount = 0;
+        double version = 3.7;  ///< #version in force
     };
     std::vector<Top> items;
 };
@@ -33,7 +37,7 @@ public:
 
 private:
     ParsedScene& out_;
-    sdl::ItemRef defaults_;
+    std::shared_ptr<std::vector<sdl::Entry>> defaults_;
 };
 
 }  // namespace rays::pov

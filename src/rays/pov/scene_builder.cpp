@@ -61,7 +61,7 @@ Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
 void SceneBuilder::add(const ParsedScene::Top& top) {
     version_ = top.version;
     const Item& item = *top.item;
-    fallback_ = defaultAppearance(top.defaults, notes_);
+    updateDefaults(top);
     switch (item.kind) {
         case Kw::camera: return addCamera(item);
         case Kw::light_source: return addLight(item, Transform{});
@@ -86,6 +86,26 @@ void SceneBuilder::add(const ParsedScene::Top& top) {
             if (isObjectKind(item.kind)) return addObject(item, Transform{}, nullptr, 0);
             notes_.note(std::string(sdl::keywordName(item.kind)) + " at the top level", item.loc);
     }
+}
+
+// The #default entries not applied yet are applied to the default look kept from the items before
+// (items come in file order and their defaults only grow), so n items under n #defaults cost O(n).
+void SceneBuilder::updateDefaults(const ParsedScene::Top& top) {
+    if (top.defaults != defaultsSeen_ || top.defaultsCount < defaultsApplied_) {
+        defaultsSeen_ = top.defaults;
+        defaultsApplied_ = 0;
+        defaultsLook_ = Appearance{};
+    }
+    if (top.defaultsCount > defaultsApplied_) {
+        Item added;
+        added.kind = Kw::texture;
+        added.entries.assign(top.defaults->begin() + std::ptrdiff_t(defaultsApplied_),
+                             top.defaults->begin() + std::ptrdiff_t(top.defaultsCount));
+        applyTexture(added, defaultsLook_, notes_);
+        defaultsApplied_ = top.defaultsCount;
+    }
+    fallback_ = defaultsLook_;
+    fallback_.set = false;
 }
 
 // ---- camera ----------------------------------------------------------------------------------

@@ -25,6 +25,7 @@ public:
     Scene finish(const std::string& fileName);
 
 private:
+    void updateDefaults(const ParsedScene::Top& top);
     void addCamera(const Item& camera);
     void addLight(const Item& light, const Transform& toWorld);
     void addObject(const Item& object, const Transform& parent, const Appearance* inherited, int depth);
@@ -43,6 +44,9 @@ private:
     bool gammaSet_ = false;
     bool backgroundSet_ = false;
     uint64_t maxObjects_, objects_ = 0;
+    std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
+    size_t defaultsApplied_ = 0;                                   ///< how many of its entries
+    Appearance defaultsLook_;
 };
 
 }  // namespace rays::pov
