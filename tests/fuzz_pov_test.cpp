@@ -137,8 +137,16 @@ TEST(FuzzPovFindings, FunctionLoopsShareTheParsesLoopLimit) {
     // 20000 in all: 15000 #while iterations leave 5000 for sum's repetitions.
     const std::string loop = "#declare I = 0; #while (I < 15000) #declare I = I + 1; #end\n";
     EXPECT_EQ(povError(sum + loop + "#declare A = F(4999);"), "");
-    EXPECT_NE(povError(sum + loop + "#declare A = F(5001);").find("loops ran more than 20000 iterations (sum or prod"),
+    EXPECT_NE(povError(sum + loop + "#declare A = F(5001);").find("loops ran more than 20000 iterations (sum, prod"),
               std::string::npos);
+    // Calls of other functions count too: each level calls the one below twice (2^41 calls).
+    EXPECT_NE(povError("#declare H = function { x + 1 }\n#for (I, 0, 40) #declare H = function { H(x, y, z) + H(y, x, z) } #end\n"
+                       "#declare A = H(1, 2, 3);")
+                  .find("loops ran more than 20000 iterations (sum, prod or calls"),
+              std::string::npos);
+    EXPECT_EQ(povError("#declare H = function { x + 1 }\n#for (I, 0, 5) #declare H = function { H(x, y, z) + H(y, x, z) } #end\n"
+                       "#if (H(1, 2, 3) != 160) #error \"calls\" #end"),
+              "");
     // A loop whose counter stops growing (1e300 + 1 = 1e300) ends too.
     EXPECT_NE(povError("#declare G = function { prod(i, 1e300, 1e301, 1) };\n#declare A = G(0, 0, 0);").find("loops ran more"),
               std::string::npos);

@@ -147,6 +147,10 @@ double runScalar(const Program& p, double* r) {
                 ++ip;
                 continue;
             case Code::Call: {
+                if (tlLoopLeft && (*tlLoopLeft)-- == 0) {  // a call tree can double at every level
+                    *tlLoopLeft = 0;
+                    throw LoopBudgetExceeded();
+                }
                 const Program& callee = *p.callees[in.aux];
                 double* cr = r + p.registers;
                 enterScalar(callee, p, in, r, cr);

@@ -31,16 +31,17 @@ private:
     std::vector<double> scalar_, batch_;
 };
 
-/// While one lives, the sum/prod loops of runs on this thread may repeat `iterations` times in
-/// all; the next repetition throws LoopBudgetExceeded. The scene language sets one around the
-/// calls it makes while parsing, so that a call cannot run unbounded; renders set none.
+/// While one lives, the sum/prod loops of runs on this thread may repeat, and functions may call
+/// other functions, `iterations` times in all; the next repetition or call throws
+/// LoopBudgetExceeded. The scene language sets one around the calls it makes while parsing, so
+/// that a call cannot run unbounded; renders set none.
 class LoopBudget {
 public:
     explicit LoopBudget(uint64_t iterations);
     ~LoopBudget();
     LoopBudget(const LoopBudget&) = delete;
     LoopBudget& operator=(const LoopBudget&) = delete;
-    /// Repetitions used so far.
+    /// Repetitions and calls so far.
     uint64_t used() const { return initial_ - left_; }
 
 private:
@@ -48,7 +49,7 @@ private:
     uint64_t* outer_;
 };
 
-/// Thrown by a run whose loops used up the thread's LoopBudget.
+/// Thrown by a run whose loops and calls used up the thread's LoopBudget.
 class LoopBudgetExceeded : public std::runtime_error {
 public:
     LoopBudgetExceeded() : std::runtime_error("function loops ran past their budget") {}

@@ -444,7 +444,8 @@ Value Interpreter::callFunction(const Value& fnValue, const Loc& at) {
     if (fv.kind == FunctionValue::Kind::Pattern || fv.kind == FunctionValue::Kind::Pigment)
         warning(at, "not rendered yet: pattern and pigment functions called while parsing (they give 0)");
     fn::Scratch scratch(fv.table->program(fv.index));
-    // sum/prod repetitions count against the parse's loop limit, as #while and #for do.
+    // sum/prod repetitions and calls of other functions count against the parse's loop limit, as
+    // #while and #for iterations do.
     fn::LoopBudget budget(iterations_ < limits_.loopIterations ? limits_.loopIterations - iterations_ : 0);
     double out[5] = {};
     int n = 1;
@@ -453,7 +454,7 @@ Value Interpreter::callFunction(const Value& fnValue, const Loc& at) {
         else n = fv.table->callVector(fv.index, args.data(), out, scratch);
     } catch (const fn::LoopBudgetExceeded&) {
         error(at, "loops ran more than " + std::to_string(limits_.loopIterations) +
-                      " iterations (sum or prod in a function called while parsing)");
+                      " iterations (sum, prod or calls of other functions in a function called while parsing)");
     }
     iterations_ += budget.used();
     if (fv.table->outputs(fv.index) == 1) return Value::number(out[0]);
