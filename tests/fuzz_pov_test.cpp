@@ -196,7 +196,7 @@ TEST(FuzzPovFindings, ArrayElementsMadeAreCountedNewAndCopied) {
     // A declaration counts the new array and its copy: 2 x 30 + 30 for B's copy = 90.
     EXPECT_EQ(povErrorWith("#declare A = array[30]; #declare B = A;", limits), "");
     EXPECT_EQ(povErrorWith("#declare A = array[40]; #declare B = A;", limits),
-              "scene.pov:1:34: error: more than 100 array elements made (new arrays and copies) in this parse (runaway loop?)");
+              "scene.pov:1:34: error: more than 100 array elements and spline points made (new and copied) in this parse (runaway loop?)");
     // Nested arrays count their elements too; a macro's by-reference argument is a copy.
     EXPECT_NE(povErrorWith("#declare A = array[2] { array[30], array[30] };", limits).find("more than 100 array elements"),
               std::string::npos);
@@ -204,6 +204,24 @@ TEST(FuzzPovFindings, ArrayElementsMadeAreCountedNewAndCopied) {
               std::string::npos);
     // The default allows any single array the size limits allow (up to 2^27 elements, copied once).
     EXPECT_EQ(rays::sdl::Limits{}.arrayElements, uint64_t(1) << 28);
+}
+
+TEST(FuzzPovFindings, SplinePointsAreCountedNewAndCopied) {
+    rays::sdl::Limits limits;
+    limits.arrayElements = 10;
+    // Three points (the second t = 0 replaces the first), then 3 + 1 copied and new, then 4 + 1.
+    const std::string s = "#declare S = spline { linear_spline 0, 0, 1, 1, 0, 2, 2, 3 }\n"
+                          "#if (S(0).x != 2) #error \"replaced\" #end\n"
+                          "#declare T = spline { S 5, 5 }\n";
+    EXPECT_EQ(povErrorWith(s, limits), "");
+    EXPECT_EQ(povErrorWith(s + "#declare U = spline { T 6, 6 }", limits),
+              "scene.pov:4:14: error: more than 10 array elements and spline points made (new and copied) in this parse "
+              "(runaway loop?)");
+    // A NaN time sorts last instead of breaking the sort's ordering.
+    EXPECT_EQ(povErrorWith("#declare S = spline { linear_spline sqrt(-1), 7, 0, 0, 1, 1 }\n"
+                           "#if (S(0.5).x != 0.5) #error \"nan\" #end",
+                           {}),
+              "");
 }
 
 TEST(FuzzPovFindings, StringBytesAndWrittenBytesAreCounted) {

@@ -62,8 +62,8 @@ std::vector<Regression> regressions() {
         {"pov-deep-string-functions.pov", ": error: nesting "},
         {"pov-deep-pattern-blocks.pov", ": error: nesting "},
         {"pov-parentheses-3990.pov", ""},  // within the count limit: parses, or the stack guard stops it
-        {"pov-array-copies-many.pov", "fuzz.pov:3:26: error: more than 1048576 array elements made (new arrays and copies) in this parse (runaway loop?)"},
-        {"pov-array-copies-nested.pov", "fuzz.pov:3:52: error: more than 1048576 array elements made (new arrays and copies) in this parse (runaway loop?)"},
+        {"pov-array-copies-many.pov", "fuzz.pov:3:26: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
+        {"pov-array-copies-nested.pov", "fuzz.pov:3:52: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
         {"pov-strings-many-long.pov", "fuzz.pov:4:34: error: more than 134217728 bytes of strings made by string functions in this parse (runaway loop?)"},
         {"pov-concat-long-arguments.pov", "fuzz.pov:3:14: error: concat made a string longer than 16 MiB"},
         {"pov-write-many.pov", "fuzz.pov:4:18: error: more than 67108864 bytes written by #write in this parse (runaway loop?)"},
@@ -72,6 +72,7 @@ std::vector<Regression> regressions() {
         {"pov-item-chain-deep.pov", "fuzz.pov:2:33: error: items nested deeper than 4000 levels (a declared item used in itself again and again?)"},
         {"pov-default-loop.pov", ""},  // accepted, in linear time (FuzzPovFindings.DefaultsAreAppendedAndSharedNotCopied)
         {"pov-function-calls-doubling.pov", "fuzz.pov:3:14: error: loops ran more than 20000 iterations (sum, prod or calls of other functions in a function called while parsing)"},
+        {"pov-spline-copies-quadratic.pov", "fuzz.pov:2:33: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
     };
 }
 

@@ -45,7 +45,7 @@ struct Limits {
     uint32_t includeDepth = 64;              ///< nested include files
     uint32_t nesting = 4'000;                ///< nested items, expressions and parentheses
     uint64_t tokens = uint64_t(1) << 30;     ///< tokens consumed (a runaway recursion ends here)
-    uint64_t arrayElements = uint64_t(1) << 28;  ///< array elements made in one parse: new arrays and copies
+    uint64_t arrayElements = uint64_t(1) << 28;  ///< array elements and spline points made in one parse, new and copied
     uint64_t stringBytes = uint64_t(1) << 36;    ///< bytes of the strings string functions make in one parse
     uint64_t writeBytes = uint64_t(1) << 34;     ///< bytes #write writes in one parse
     /// Objects the scene builder (src/rays/pov) makes from the parsed items: every copy of a declared

@@ -97,7 +97,7 @@ Value Interpreter::parseArray() {
         total *= size_t(n);
         if (total > (size_t(1) << 27)) error(at, "an array may hold at most 134217728 elements");
     } while (peekRawSym('['));
-    spend(arrayElements_, total, limits_.arrayElements, at, "array elements made (new arrays and copies)");
+    spend(arrayElements_, total, limits_.arrayElements, at, "array elements and spline points made (new and copied)");
     data->elems.resize(total);
     if (peekRawSym('{')) {
         size_t flat = 0;
@@ -112,7 +112,7 @@ void Interpreter::spend(uint64_t& total, uint64_t n, uint64_t limit, const Loc& 
 }
 
 Value Interpreter::copyCharged(const Value& v, const Loc& at) {
-    spend(arrayElements_, arrayElementCount(v), limits_.arrayElements, at, "array elements made (new arrays and copies)");
+    spend(arrayElements_, arrayElementCount(v), limits_.arrayElements, at, "array elements and spline points made (new and copied)");
     return copyValue(v);
 }
 
