@@ -227,9 +227,10 @@ inline const std::string& povSceneDir() {
 }
 
 /// The limits fuzzPov parses with: the budgets of time and memory (loops, macro recursion, tokens,
-/// array elements, string and #write bytes, objects the scene builder makes) lowered from the
-/// defaults so that an input ends in well under a second and a few hundred MiB; nesting and include
-/// depth stay as users get them (the C++ stack depth those allow is what should be tested).
+/// array elements, string and #write bytes, items used again, objects the scene builder makes)
+/// lowered from the defaults so that an input ends in well under a second and a few hundred MiB;
+/// nesting and include depth stay as users get them (the C++ stack depth those allow is what should
+/// be tested).
 inline sdl::Limits povFuzzLimits() {
     sdl::Limits l;
     l.loopIterations = 20'000;
@@ -239,6 +240,7 @@ inline sdl::Limits povFuzzLimits() {
     l.stringBytes = uint64_t(1) << 27;
     l.writeBytes = uint64_t(1) << 26;
     l.sceneObjects = uint64_t(1) << 16;
+    l.itemCopies = uint64_t(1) << 16;
     return l;
 }
 

@@ -257,6 +257,27 @@ TEST(FuzzPovFindings, SceneBuilderCountsObjectsCopiesAndTriangles) {
               std::string::npos);
 }
 
+TEST(FuzzPovFindings, ItemsUsedAgainCountTheirWholeTree) {
+    rays::sdl::Limits limits;
+    limits.itemCopies = 20;
+    // O is a union and two spheres: 3 items per use.
+    const std::string o = "#declare O = union { sphere { 0, 1 } sphere { x, 1 } }\n";
+    std::string uses;
+    for (int i = 0; i < 6; ++i) uses += "object { O }\n";
+    EXPECT_EQ(povErrorWith(o + uses, limits), "");
+    EXPECT_EQ(povErrorWith(o + uses + "object { O }", limits),
+              "scene.pov:8:1: error: more than 20 items used again through identifiers (each use counts the item's whole "
+              "tree) in this parse (runaway loop?)");
+    // Items written out are not uses: a union of 30 spheres counts nothing.
+    std::string written = "union {";
+    for (int i = 0; i < 30; ++i) written += " sphere { 0, 1 }";
+    EXPECT_EQ(povErrorWith(written + " }", limits), "");
+    // A doubling chain of transforms, finishes or cameras stops after a few levels.
+    EXPECT_NE(povErrorWith("#declare F = finish { ambient 0.1 }\n#for (I, 0, 40) #declare F = finish { F F } #end", limits)
+                  .find("items used again"),
+              std::string::npos);
+}
+
 TEST(FuzzPovFindings, DeclaredItemsNestAtMost4000Deep) {
     auto chain = [](int n) {  // n levels: a sphere in n - 1 objects
         return "#declare O = sphere { 0, 1 }\n#for (I, 2, " + std::to_string(n) + ") #declare O = object { O } #end\n";

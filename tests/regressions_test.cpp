@@ -67,12 +67,14 @@ std::vector<Regression> regressions() {
         {"pov-strings-many-long.pov", "fuzz.pov:4:34: error: more than 134217728 bytes of strings made by string functions in this parse (runaway loop?)"},
         {"pov-concat-long-arguments.pov", "fuzz.pov:3:14: error: concat made a string longer than 16 MiB"},
         {"pov-write-many.pov", "fuzz.pov:4:18: error: more than 67108864 bytes written by #write in this parse (runaway loop?)"},
-        {"pov-object-copies-doubling.pov", "fuzz.pov:2:51: error: the scene makes more than 65536 objects (each copy of a declared object counts, and each mesh triangle)"},
-        {"pov-mesh-copies-doubling.pov", "fuzz.pov:2:38: error: the scene makes more than 65536 objects (each copy of a declared object counts, and each mesh triangle)"},
-        {"pov-item-chain-deep.pov", "fuzz.pov:2:33: error: items nested deeper than 4000 levels (a declared item used in itself again and again?)"},
+        {"pov-object-copies-doubling.pov", "fuzz.pov:2:38: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},
+        {"pov-mesh-copies-doubling.pov", "fuzz.pov:2:38: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},
+        {"pov-item-chain-deep.pov", "fuzz.pov:2:41: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},  // with the default limits the depth limit stops it (FuzzPovFindings)
         {"pov-default-loop.pov", ""},  // accepted, in linear time (FuzzPovFindings.DefaultsAreAppendedAndSharedNotCopied)
         {"pov-function-calls-doubling.pov", "fuzz.pov:3:14: error: loops ran more than 20000 iterations (sum, prod or calls of other functions in a function called while parsing)"},
         {"pov-spline-copies-quadratic.pov", "fuzz.pov:2:33: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
+        {"pov-transform-copies-doubling.pov", "fuzz.pov:2:52: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},
+        {"pov-finish-copies-doubling.pov", "fuzz.pov:2:30: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},
     };
 }
 

@@ -157,13 +157,24 @@ namespace {
 // items to be written out.
 constexpr uint32_t kMaxItemDepth = 4000;
 
-// Sets item.depth from its item arguments; throws past kMaxItemDepth.
+// Sets item.depth and item.size from its item arguments; throws past kMaxItemDepth. An argument
+// held elsewhere too (an identifier's item: `object { O }`, `pigment { P }`) is a use that POV-Ray
+// would copy; its size is counted (Interpreter::countItemCopy): a union of two uses of a union of two
+// uses ... doubles at every level, for the builder to walk.
 void setDepth(Interpreter& in, Item& item) {
+    constexpr uint64_t kSaturated = uint64_t(1) << 62;
     uint32_t below = 0;
+    uint64_t size = 1;
     for (const Entry& e : item.entries)
         for (const Value& v : e.args)
-            if (v.type == sdl::VType::Item) below = std::max(below, v.item().depth);
+            if (v.type == sdl::VType::Item) {
+                const Item& child = v.item();
+                below = std::max(below, child.depth);
+                size = std::min(size + child.size, kSaturated);
+                if (v.ref.use_count() > 1) in.countItemCopy(child.size, item.loc);
+            }
     item.depth = below + 1;
+    item.size = size;
     if (item.depth > kMaxItemDepth)
         in.error(item.loc, "items nested deeper than " + std::to_string(kMaxItemDepth) +
                                " levels (a declared item used in itself again and again?)");

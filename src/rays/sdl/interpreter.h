@@ -51,6 +51,9 @@ struct Limits {
     /// Objects the scene builder (src/rays/pov) makes from the parsed items: every copy of a declared
     /// object counts, a mesh counts its triangles too.
     uint64_t sceneObjects = uint64_t(1) << 26;
+    /// Items in the declared items used in other items, counted at every use: what POV-Ray copies
+    /// there, and what the scene builder walks.
+    uint64_t itemCopies = uint64_t(1) << 27;
 };
 
 class Interpreter {
@@ -178,6 +181,11 @@ public:
     /// A float value or an error naming what (for readers outside the interpreter).
     double toFloatValue(const Value& v, const Loc& at, std::string_view what) { return toFloat(v, at, what); }
 
+    /// Counts the items of a declared item used in another one (Limits::itemCopies); throws past it.
+    void countItemCopy(uint64_t items, const Loc& at) {
+        spend(itemCopies_, items, limits_.itemCopies, at, "items used again through identifiers (each use counts the item's whole tree)");
+    }
+
     /// Defines identifier `name` at global level (command-line Declare=NAME=VALUE).
     void declareGlobal(const std::string& name, Value v);
     Scopes& scopes() { return scopes_; }
@@ -302,7 +310,7 @@ private:
     uint32_t nesting_ = 0;
     uintptr_t stackFloor_ = 0;  ///< NestGuard refuses to nest below this stack address (0: no check)
     uint64_t iterations_ = 0;
-    uint64_t arrayElements_ = 0, stringBytes_ = 0, writeBytes_ = 0;
+    uint64_t arrayElements_ = 0, stringBytes_ = 0, writeBytes_ = 0, itemCopies_ = 0;
     uint64_t ticks_ = 0;
     std::vector<std::string> deprecatedMessages_;
     RandomStreams random_;
