@@ -1,4 +1,4 @@
-// The four fuzzing entry points, shared by the libFuzzer targets in fuzz/ and by
+// The five fuzzing entry points, shared by the libFuzzer targets in fuzz/ and by
 // tests/regressions_test.cpp (which replays the saved crash inputs in tests/regressions/).
 // Each takes arbitrary bytes, feeds them to one reader of the library and returns normally for any
 // input: a rays::Error is the expected outcome of bad input; everything else (a crash, a sanitizer
@@ -23,6 +23,8 @@
 #include "rays/io/image_io.h"
 #include "rays/io/obj_loader.h"
 #include "rays/io/scene_parser.h"
+#include "rays/pov/load_pov.h"
+#include "rays/sdl/interpreter.h"
 
 namespace rays::fuzz {
 
@@ -46,6 +48,18 @@ inline const std::string& scratchDir() {
         return tmpl;
     }();
     return dir;
+}
+
+/// A folder below scratchDir(), created on first use.
+inline std::string scratchSubdir(const std::string& name) {
+    const std::string d = scratchDir() + "/" + name;
+    std::error_code ec;
+    std::filesystem::create_directories(d, ec);
+    if (ec) {
+        std::perror(d.c_str());
+        std::abort();
+    }
+    return d;
 }
 
 /// Writes bytes to path (truncating); aborts when that fails (a broken harness, not a finding).
@@ -156,6 +170,104 @@ inline void fuzzImage(const uint8_t* data, size_t size) {
         if (img.width <= 0 || img.height <= 0 || img.channels < 1 || img.channels > 4 ||
             img.pixels.size() != size_t(img.width) * size_t(img.height) * size_t(img.channels))
             std::abort();
+    } catch (const Error&) {
+    }
+}
+
+/// The include files fuzzPov's scenes find as POV-Ray's installed includes (tiny stand-ins written
+/// for the harness, not POV-Ray's files): colours and textures, macros, and one including both.
+inline constexpr std::string_view kPovColorsInc = R"(// fuzz harness: colours and textures
+#declare White = rgb 1;
+#declare Black = rgb 0;
+#declare Red = rgb <1, 0, 0>;
+#declare Green = rgb <0, 1, 0>;
+#declare Blue = rgb <0, 0, 1>;
+#declare Yellow = rgb <1, 1, 0>;
+#declare Gray50 = rgb 0.5;
+#declare Clear = rgbf 1;
+#declare Shiny = finish { specular 0.6 roughness 0.01 reflection 0.2 }
+#declare Plain = texture { pigment { color White } finish { ambient 0.1 diffuse 0.7 } }
+#declare Checks = texture { pigment { checker color Red color Blue scale 0.5 } finish { Shiny } }
+#declare Marble = pigment { marble turbulence 0.5 color_map { [0 Black] [0.5 Gray50] [1 White] } }
+#declare Glass = material { texture { pigment { Clear } } interior { ior 1.5 } }
+)";
+inline constexpr std::string_view kPovMacrosInc = R"(// fuzz harness: macros
+#macro Square(X) (X * X) #end
+#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N - 1) #end #end
+#macro Swap(A, B) #local T = A; #declare A = B; #declare B = T; #end
+#macro Ball(P, R, optional T) sphere { P, R #ifdef (T) texture { T } #end } #end
+#macro Row(N) union { #for (I, 0, N - 1) Ball(<I, 0, 0>, 0.4,) #end } #end
+)";
+inline constexpr std::string_view kPovStdincInc = R"(// fuzz harness: includes the others
+#ifndef (Stdinc_Inc_Temp)
+#declare Stdinc_Inc_Temp = version;
+#version 3.7;
+#include "colors.inc"
+#include "macros.inc"
+#version Stdinc_Inc_Temp;
+#end
+)";
+
+/// fuzzPov's include folder (colors.inc, macros.inc, stdinc.inc), written on first use.
+inline const std::string& povIncludeDir() {
+    static const std::string dir = [] {
+        const std::string d = scratchSubdir("povinc");
+        writeScratchFile(d + "/colors.inc", kPovColorsInc);
+        writeScratchFile(d + "/macros.inc", kPovMacrosInc);
+        writeScratchFile(d + "/stdinc.inc", kPovStdincInc);
+        return d;
+    }();
+    return dir;
+}
+
+/// fuzzPov's scene folder: where #include looks first and the only place #fopen may write.
+inline const std::string& povSceneDir() {
+    static const std::string dir = scratchSubdir("povscene");
+    return dir;
+}
+
+/// The limits fuzzPov parses with: the budgets of time and memory (loops, macro recursion, tokens,
+/// array elements, string and #write bytes, items used again, objects the scene builder makes)
+/// lowered from the defaults so that an input ends in well under a second and a few hundred MiB;
+/// nesting and include depth stay as users get them (the C++ stack depth those allow is what should
+/// be tested).
+inline sdl::Limits povFuzzLimits() {
+    sdl::Limits l;
+    l.loopIterations = 20'000;
+    l.macroDepth = 1'000;
+    l.tokens = uint64_t(1) << 21;
+    l.arrayElements = uint64_t(1) << 20;
+    l.stringBytes = uint64_t(1) << 27;
+    l.writeBytes = uint64_t(1) << 26;
+    l.sceneObjects = uint64_t(1) << 16;
+    l.itemCopies = uint64_t(1) << 16;
+    return l;
+}
+
+/// POV-Ray scene language, items and scene builder: pov::parsePovText on the text, with the
+/// harness's include folder as the installed includes, no library paths, povFuzzLimits(), and strict
+/// mode on odd-sized inputs. Throws what the parse throws. Files #fopen wrote are removed after.
+inline Scene parseFuzzPov(std::string_view text) {
+    ParseOptions opt;
+    opt.warn = [](const std::string&) {};
+    opt.language.installedIncludeDir = povIncludeDir();
+    opt.language.libraryPaths.clear();
+    opt.language.strict = text.size() % 2 == 1;
+    struct Tidy {  // every input starts with an empty scene folder
+        ~Tidy() {
+            std::error_code ec;
+            for (std::filesystem::directory_iterator it(povSceneDir(), ec), end; !ec && it != end; it.increment(ec))
+                std::filesystem::remove_all(it->path(), ec);
+        }
+    } tidy;
+    return pov::parsePovText(text, "fuzz.pov", povSceneDir(), opt, povFuzzLimits());
+}
+
+/// POV-Ray scenes: parseFuzzPov on the bytes; a rays::Error is the expected answer to bad input.
+inline void fuzzPov(const uint8_t* data, size_t size) {
+    try {
+        const Scene scene = parseFuzzPov(asText(data, size));
+        (void)scene;
     } catch (const Error&) {
     }
 }

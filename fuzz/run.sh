@@ -2,10 +2,11 @@
 # Builds the libFuzzer targets (fuzz/CMakeLists.txt → build-fuzz/, clang++-14, ASan + UBSan) and runs
 # them one after another, each for SECONDS (default 600), niced, one process at a time.
 #
-#   fuzz/run.sh [SECONDS] [TARGET ...]      targets: scene obj kernel image (default: all four)
+#   fuzz/run.sh [SECONDS] [TARGET ...]      targets: scene obj kernel image pov (default: all five)
 #
 # Corpora grow in build-fuzz/corpus/TARGET (kept between runs); the seeds (project scenes, the files in
-# fuzz/seeds/, generated images, the saved regression inputs in tests/regressions/) are added every run.
+# fuzz/seeds/, generated images, the saved regression inputs in tests/regressions/, and for pov the
+# POV-Ray example scenes and a few include files when installed) are added every run.
 # Findings land in build-fuzz/artifacts/TARGET/ (crash-*, timeout-*, leak-*, oom-*); logs in
 # build-fuzz/logs/TARGET.log. Exit status 1 when any target found something. Environment:
 # FUZZ_BUILD_DIR (default build-fuzz), FUZZ_CXX (default clang++-14), FUZZ_FLAGS (extra libFuzzer flags).
@@ -16,7 +17,7 @@ root=$(pwd)
 secs=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene obj kernel image)
+[ ${#targets[@]} -eq 0 ] && targets=(scene obj kernel image pov)
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
 
@@ -27,7 +28,7 @@ nice -n 10 cmake --build "$build" -j2 >/dev/null
 # ---- seed corpora ---------------------------------------------------------------------------------
 seeds="$build/seeds"
 rm -rf "$seeds"
-mkdir -p "$seeds"/{scene,obj,kernel,image}
+mkdir -p "$seeds"/{scene,obj,kernel,image,pov}
 for f in scenes/*.pov tests/scenes/*.pov; do
   # Big scenes (05-mesh.pov, 265 KB) would raise the input size limit for every run: keep their start.
   head -c 16384 "$f" >"$seeds/scene/$(basename "$f")"
@@ -36,7 +37,21 @@ cp fuzz/seeds/scene/* "$seeds/scene/"
 cp fuzz/seeds/obj/* "$seeds/obj/"
 cp fuzz/seeds/kernel/* "$seeds/kernel/"
 "$build/make_image_seeds" "$seeds/image" >/dev/null
-for t in scene obj kernel image; do
+cp fuzz/seeds/pov/* "$seeds/pov/"
+# POV-Ray's example scenes and some of its include files (AGPL: copied at run time, never kept in the
+# repository), the first 16 KB of each; names keep the folder so equal file names do not collide.
+examples=/usr/share/doc/povray/examples
+if [ -d "$examples" ]; then
+  while IFS= read -r -d '' f; do
+    rel=${f#"$examples"/}
+    head -c 16384 "$f" >"$seeds/pov/example-${rel//\//-}"
+  done < <(find "$examples" -name '*.pov' -print0)
+fi
+for inc in arrays colors consts math rand shapes strings transforms metals functions; do
+  f=/usr/share/povray-3.7/include/$inc.inc
+  [ -f "$f" ] && head -c 16384 "$f" >"$seeds/pov/include-$inc.inc"
+done
+for t in scene obj kernel image pov; do
   for f in tests/regressions/"$t"-*; do [ -e "$f" ] && cp "$f" "$seeds/$t/"; done
 done
 
@@ -46,7 +61,7 @@ status=0
 summary=()
 for t in "${targets[@]}"; do
   exe="$build/fuzz_$t"
-  [ -x "$exe" ] || { echo "unknown target '$t' (scene obj kernel image)" >&2; exit 2; }
+  [ -x "$exe" ] || { echo "unknown target '$t' (scene obj kernel image pov)" >&2; exit 2; }
   corpus="$build/corpus/$t"
   artifacts="$build/artifacts/$t"
   work="$build/work/$t"
@@ -56,10 +71,14 @@ for t in "${targets[@]}"; do
   cp fuzz/seeds/obj/quad-normals-uv.obj "$work/tiny.obj"
   dict=()
   [ -f "fuzz/dict/$t.dict" ] && dict=(-dict="$root/fuzz/dict/$t.dict")
+  # pov: #debug text goes to stderr, closed (libFuzzer and sanitizer reports still reach the log); inputs
+  # at most 16 KB like the seeds (the deep-nesting regression inputs are longer and load truncated).
+  extra=()
+  [ "$t" = pov ] && extra=(-close_fd_mask=2 -max_len=16384)
   echo "== fuzz_$t for ${secs}s (log: $log)" >&2
   set +e
   (cd "$work" && TMPDIR=${TMPDIR:-/tmp} nice -n 10 "$exe" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 \
-      -print_final_stats=1 -artifact_prefix="$artifacts/" "${dict[@]}" ${FUZZ_FLAGS:-} "$corpus" "$seeds/$t") >"$log" 2>&1
+      -print_final_stats=1 -artifact_prefix="$artifacts/" "${dict[@]}" "${extra[@]}" ${FUZZ_FLAGS:-} "$corpus" "$seeds/$t") >"$log" 2>&1
   rc=$?
   set -e
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

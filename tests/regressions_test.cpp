@@ -2,7 +2,7 @@
 // found by the fuzzers in fuzz/, see docs/fuzzing.md) is run through the same entry point as the
 // fuzzer (fuzz/entry_points.h) and must now end normally; the reader it exercises must refuse it
 // with the one-line message listed here. File names start with the fuzz target: scene-, obj-,
-// kernel-, image-. The sanitizer builds (scripts/sanitize.sh) run these too, which is where a
+// kernel-, image-, pov-. The sanitizer builds (scripts/sanitize.sh) run these too, which is where a
 // regression of a memory or UB fix would show.
 #include <gtest/gtest.h>
 
@@ -48,6 +48,33 @@ std::vector<Regression> regressions() {
         {"obj-skin-weight-joint-huge.obj", "6:1: error: invalid joint id '1e390' in 'vw' line (a number from 0 to 16777216)"},
         {"image-png-chunk-length-huge.png", "cannot read image: corrupt PNG (a chunk runs past the end of the file)"},
         {"image-jpeg-corrupt-scan.jpg", "cannot read image: corrupt JPEG (Corrupt JPEG data: premature end of data segment)"},
+        {"pov-bitwise-huge.pov", "fuzz.pov:2:1: error: #error: bitwise 0 -2147483648 -2147483648"},
+        {"pov-internal-number-huge.pov", "fuzz.pov:1:34: error: the internal function number is out of range"},
+        {"pov-array-index-huge.pov", "fuzz.pov:2:11: error: array index 1e+300 is out of range 0..1"},
+        {"pov-builder-counts-huge.pov", ""},  // accepted: the counts are clamped (FuzzPovFindings)
+        {"pov-mesh2-index-huge.pov", "fuzz.pov:1:1: error: mesh2 face index 4294967295 is out of range (3 vertices)"},
+        {"pov-function-sum-huge.pov", "fuzz.pov:2:14: error: loops ran more than 20000 iterations (sum, prod or calls of other functions in a function called while parsing)"},
+        // Nesting errors name the count limit, or the stack when it runs short first (sanitizer builds).
+        {"pov-deep-macro-arguments.pov", ": error: nesting "},
+        {"pov-deep-directives.pov", ": error: nesting "},
+        {"pov-deep-vectors.pov", ": error: nesting "},
+        {"pov-deep-colour-keywords.pov", ": error: nesting "},
+        {"pov-deep-string-functions.pov", ": error: nesting "},
+        {"pov-deep-pattern-blocks.pov", ": error: nesting "},
+        {"pov-parentheses-3990.pov", ""},  // within the count limit: parses, or the stack guard stops it
+        {"pov-array-copies-many.pov", "fuzz.pov:3:26: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
+        {"pov-array-copies-nested.pov", "fuzz.pov:3:52: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
+        {"pov-strings-many-long.pov", "fuzz.pov:4:34: error: more than 134217728 bytes of strings made by string functions in this parse (runaway loop?)"},
+        {"pov-concat-long-arguments.pov", "fuzz.pov:3:14: error: concat made a string longer than 16 MiB"},
+        {"pov-write-many.pov", "fuzz.pov:4:18: error: more than 67108864 bytes written by #write in this parse (runaway loop?)"},
+        {"pov-object-copies-doubling.pov", "fuzz.pov:2:38: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},
+        {"pov-mesh-copies-doubling.pov", "fuzz.pov:2:38: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},
+        {"pov-item-chain-deep.pov", "fuzz.pov:2:41: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},  // with the default limits the depth limit stops it (FuzzPovFindings)
+        {"pov-default-loop.pov", ""},  // accepted, in linear time (FuzzPovFindings.DefaultsAreAppendedAndSharedNotCopied)
+        {"pov-function-calls-doubling.pov", "fuzz.pov:3:14: error: loops ran more than 20000 iterations (sum, prod or calls of other functions in a function called while parsing)"},
+        {"pov-spline-copies-quadratic.pov", "fuzz.pov:2:33: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
+        {"pov-transform-copies-doubling.pov", "fuzz.pov:2:52: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},
+        {"pov-finish-copies-doubling.pov", "fuzz.pov:2:30: error: more than 65536 items used again through identifiers (each use counts the item's whole tree) in this parse (runaway loop?)"},
     };
 }
 
@@ -63,7 +90,9 @@ std::string prefixOf(const std::string& file) { return file.substr(0, file.find(
 /// The message of the Error the target's reader throws for the bytes ("" when it accepts them).
 std::string errorOf(const std::string& target, const std::string& bytes, const fs::path& scratch) {
     try {
-        if (target == "scene") {
+        if (target == "pov") {
+            rays::fuzz::parseFuzzPov(bytes);
+        } else if (target == "scene") {
             rays::ParseOptions opt;
             opt.warn = [](const std::string&) {};
             rays::parseScene(bytes, "fuzz.pov", opt);
@@ -92,6 +121,7 @@ TEST_P(Regressions, SameEntryPointAsTheFuzzerEndsNormally) {
     else if (target == "obj") rays::fuzz::fuzzObj(data, bytes.size());
     else if (target == "kernel") rays::fuzz::fuzzKernel(data, bytes.size());
     else if (target == "image") rays::fuzz::fuzzImage(data, bytes.size());
+    else if (target == "pov") rays::fuzz::fuzzPov(data, bytes.size());
     else FAIL() << "unknown target prefix in " << r.file;
 }
 

@@ -13,6 +13,16 @@
 
 namespace rays::fn {
 
+namespace {
+thread_local uint64_t* tlLoopLeft = nullptr;  // the innermost LoopBudget's count, or null
+}  // namespace
+
+LoopBudget::LoopBudget(uint64_t iterations) : initial_(iterations), left_(iterations), outer_(tlLoopLeft) {
+    tlLoopLeft = &left_;
+}
+
+LoopBudget::~LoopBudget() { tlLoopLeft = outer_; }
+
 void Scratch::fit(const Program& p) {
     if (scalar_.size() < static_cast<size_t>(p.scalarFrame)) scalar_.resize(p.scalarFrame);
     if (batch_.size() < static_cast<size_t>(p.batchFrame)) batch_.resize(p.batchFrame);
@@ -132,8 +142,22 @@ double runScalar(const Program& p, double* r) {
             case Code::JumpIfZero: ip = r[in.a] == 0 ? code + in.aux : ip + 1; continue;
             case Code::JumpIfNotNeg: ip = !(r[in.a] < 0) ? code + in.aux : ip + 1; continue;
             case Code::JumpIfNotZero: ip = !(r[in.a] == 0) ? code + in.aux : ip + 1; continue;
-            case Code::JumpIfNotLe: ip = !(r[in.a] <= r[in.b]) ? code + in.aux : ip + 1; continue;
+            case Code::JumpIfNotLe:  // the sum/prod loop test: one more repetition when it falls through
+                if (!(r[in.a] <= r[in.b])) {
+                    ip = code + in.aux;
+                    continue;
+                }
+                if (tlLoopLeft && (*tlLoopLeft)-- == 0) {
+                    *tlLoopLeft = 0;
+                    throw LoopBudgetExceeded();
+                }
+                ++ip;
+                continue;
             case Code::Call: {
+                if (tlLoopLeft && (*tlLoopLeft)-- == 0) {  // a call tree can double at every level
+                    *tlLoopLeft = 0;
+                    throw LoopBudgetExceeded();
+                }
                 const Program& callee = *p.callees[in.aux];
                 double* cr = r + p.registers;
                 enterScalar(callee, p, in, r, cr);

@@ -4,6 +4,8 @@
 // each with its own Scratch.
 #pragma once
 #include <cstddef>
+#include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "rays/fn/program.h"
@@ -27,6 +29,30 @@ public:
 
 private:
     std::vector<double> scalar_, batch_;
+};
+
+/// While one lives, the sum/prod loops of runs on this thread may repeat, and functions may call
+/// other functions, `iterations` times in all; the next repetition or call throws
+/// LoopBudgetExceeded. The scene language sets one around the calls it makes while parsing, so
+/// that a call cannot run unbounded; renders set none.
+class LoopBudget {
+public:
+    explicit LoopBudget(uint64_t iterations);
+    ~LoopBudget();
+    LoopBudget(const LoopBudget&) = delete;
+    LoopBudget& operator=(const LoopBudget&) = delete;
+    /// Repetitions and calls so far.
+    uint64_t used() const { return initial_ - left_; }
+
+private:
+    uint64_t initial_, left_;
+    uint64_t* outer_;
+};
+
+/// Thrown by a run whose loops and calls used up the thread's LoopBudget.
+class LoopBudgetExceeded : public std::runtime_error {
+public:
+    LoopBudgetExceeded() : std::runtime_error("function loops ran past their budget") {}
 };
 
 /// The function's value at `args` (p.params values). For a host function: its first output.

@@ -1,5 +1,7 @@
 #include "rays/pov/build_mesh.h"
 
+#include <algorithm>
+
 #include "rays/pov/grammar.h"
 
 namespace rays::pov {
@@ -81,7 +83,8 @@ std::unique_ptr<Mesh> fromMesh2(const Item& m, std::string& problem) {
         std::vector<uint32_t> out;
         for (const Value* v : vals)
             if (v->type == VType::Vector)
-                for (int k = 0; k < 3; ++k) out.push_back(uint32_t(std::max(0.0, v->c[size_t(k)])));
+                for (int k = 0; k < 3; ++k)  // clamped as a float first: 1e300 has no uint32 (then out of range below)
+                    out.push_back(uint32_t(std::min(std::max(0.0, v->c[size_t(k)]), 4294967295.0)));
         return out;
     };
     mesh->indices = triples(section(m, Kw::face_indices));

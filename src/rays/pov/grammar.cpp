@@ -1,6 +1,7 @@
 // The generic block reader: one loop for every POV-Ray block, driven by its BlockSpec.
 #include "rays/pov/grammar.h"
 
+#include <algorithm>
 #include <string>
 
 namespace rays::pov {
@@ -158,7 +159,42 @@ void readBareValue(Interpreter& in, Entry& e) {
 // allocation for them instead of the vector's 1, 2, 4 growth.
 constexpr size_t kEntriesReserved = 4;
 
+namespace {
+
+// Items nested at most this deep, counting those reached through identifiers: a file can nest a
+// declared item in itself again and again without writing the levels out (#declare O = union {
+// object { O } } in a loop); such chains overflowed the stack when freed (100,000 levels in a release
+// build), and the scene builder renders 1000 levels at most. As deep as Limits::nesting allows
+// items to be written out.
+constexpr uint32_t kMaxItemDepth = 4000;
+
+// Sets item.depth and item.size from its item arguments; throws past kMaxItemDepth. An argument
+// held elsewhere too (an identifier's item: `object { O }`, `pigment { P }`) is a use that POV-Ray
+// would copy; its size is counted (Interpreter::countItemCopy): a union of two uses of a union of two
+// uses ... doubles at every level, for the builder to walk.
+void setDepth(Interpreter& in, Item& item) {
+    constexpr uint64_t kSaturated = uint64_t(1) << 62;
+    uint32_t below = 0;
+    uint64_t size = 1;
+    for (const Entry& e : item.entries)
+        for (const Value& v : e.args)
+            if (v.type == sdl::VType::Item) {
+                const Item& child = v.item();
+                below = std::max(below, child.depth);
+                size = std::min(size + child.size, kSaturated);
+                if (v.ref.use_count() > 1) in.countItemCopy(child.size, item.loc);
+            }
+    item.depth = below + 1;
+    item.size = size;
+    if (item.depth > kMaxItemDepth)
+        in.error(item.loc, "items nested deeper than " + std::to_string(kMaxItemDepth) +
+                               " levels (a declared item used in itself again and again?)");
+}
+
+}  // namespace
+
 sdl::ItemRef readBlockBody(Interpreter& in, const BlockSpec& spec, Kw kind) {
+    Interpreter::NestGuard guard(in);  // sub-blocks nest too: pigment_pattern { pigment_pattern { ... } }
     auto item = std::make_shared<Item>();
     item->kind = kind;
     item->loc = in.loc();
@@ -186,7 +222,7 @@ sdl::ItemRef readBlock(Interpreter& in, const BlockSpec& spec) {
 void readBody(Interpreter& in, Item& item, const BlockSpec& spec, char terminator) {
     const sdl::Loc open = item.loc;
     for (;;) {
-        if (in.isSym(terminator)) return;
+        if (in.isSym(terminator)) return setDepth(in, item);
         if (in.atEnd())
             in.error(open, std::string("'") + (terminator == ']' ? "[" : "{") + "' of '" +
                                std::string(sdl::keywordName(item.kind)) + "' is never closed (end of file reached)");

@@ -16,14 +16,15 @@ namespace {
 
 void printLine(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
 
-Scene build(const std::function<void(sdl::Interpreter&)>& run, const std::string& shownName, const ParseOptions& options) {
+Scene build(const std::function<void(sdl::Interpreter&)>& run, const std::string& shownName, const ParseOptions& options,
+            const sdl::Limits& limits = {}) {
     ParsedScene parsed;
     PovHost host(parsed);
     sdl::Diagnostics d;
     d.warning = options.warn ? options.warn : std::function<void(const std::string&)>(printLine);
     d.debug = [](const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); };
     d.checkInterrupt = options.checkInterrupt;
-    sdl::Interpreter in(options.language, host, d);
+    sdl::Interpreter in(options.language, host, d, limits);
     for (const sdl::Declare& decl : options.language.declares) {
         if (!decl.value.empty() && decl.value.front() == '"') {
             std::string v = decl.value.substr(1);
@@ -39,7 +40,7 @@ Scene build(const std::function<void(sdl::Interpreter&)>& run, const std::string
     }
     run(in);
     NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);
-    SceneBuilder builder(notes);
+    SceneBuilder builder(notes, limits.sceneObjects);
     builder.reserve(parsed.items.size());
     for (const ParsedScene::Top& top : parsed.items) builder.add(top);
     return builder.finish(shownName);
@@ -54,6 +55,11 @@ Scene loadPovScene(const std::string& path, const ParseOptions& options) {
 Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
                    const ParseOptions& options) {
     return build([&](sdl::Interpreter& in) { in.runText(text, shownName, folder); }, shownName, options);
+}
+
+Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
+                   const ParseOptions& options, const sdl::Limits& limits) {
+    return build([&](sdl::Interpreter& in) { in.runText(text, shownName, folder); }, shownName, options, limits);
 }
 
 bool looksLikePovray(std::string_view s) {

@@ -8,6 +8,10 @@
 #include "rays/io/scene_parser.h"
 #include "rays/scene/scene.h"
 
+namespace rays::sdl {
+struct Limits;
+}
+
 namespace rays::pov {
 
 /// Parses and builds the POV-Ray scene at path. Warnings (language warnings, "not rendered yet"
@@ -16,6 +20,10 @@ Scene loadPovScene(const std::string& path, const ParseOptions& options);
 /// The same for text held in memory; folder is where its includes are looked up first.
 Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
                    const ParseOptions& options);
+/// The same with the scene language's limits (sdl::Limits: loop iterations, macro and include
+/// depth, nesting, tokens) instead of the defaults; fuzz/ lowers them to keep each input short.
+Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
+                   const ParseOptions& options, const sdl::Limits& limits);
 
 /// True when text is read as POV-Ray 3.7: it holds a `#` directive or `global_settings` outside
 /// comments and strings. The course dialect has neither.

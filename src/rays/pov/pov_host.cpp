@@ -30,7 +30,7 @@ const PovHost::Probe& PovHost::probe(const sdl::ItemRef& object) {
         slot->object = object;
         NotRendered quiet([](const sdl::Loc&) { return std::string(); }, nullptr, false);
         SceneBuilder b(quiet);
-        b.add(ParsedScene::Top{object, nullptr, 3.7});
+        b.add(ParsedScene::Top{object, nullptr, 0, 3.7});
         slot->scene = b.finish("");
         slot->complete = quiet.count() == 0;
         slot->bvh = Bvh(slot->scene.objects);
@@ -52,22 +52,19 @@ void PovHost::topLevel(sdl::Interpreter& in, const sdl::ItemRef& item) {
         for (const sdl::Entry& e : item->entries)
             if (e.key == uint16_t(Kw::assumed_gamma) && !e.args.empty()) in.setAssumedGamma(e.args[0].c[0]);
     }
-    out_.items.push_back(ParsedScene::Top{item, defaults_, in.version()});
+    out_.items.push_back(ParsedScene::Top{item, defaults_, defaults_ ? defaults_->size() : 0, in.version()});
 }
 
 // Each #default adds to the defaults in force (POV-Ray 3.7 reference, "Default Directive"): the
-// default texture is kept as one texture item whose entries are applied in order.
+// default texture is one list of texture entries applied in order. Items read so far keep their
+// prefix of it: the list is appended to, never copied (a loop of #default and objects stays linear).
 void PovHost::setDefault(sdl::Interpreter&, const sdl::ItemRef& item) {
-    auto t = std::make_shared<sdl::Item>();
-    t->kind = Kw::texture;
-    t->loc = item->loc;
-    if (defaults_) t->entries = defaults_->entries;
+    if (!defaults_) defaults_ = std::make_shared<std::vector<sdl::Entry>>();
     sdl::Entry e;
     e.key = uint16_t(item->kind);
     e.loc = item->loc;
     e.args.push_back(sdl::Value::item(item));
-    t->entries.push_back(std::move(e));
-    defaults_ = std::move(t);
+    defaults_->push_back(std::move(e));
 }
 
 PovHost::TraceResult PovHost::trace(const sdl::ItemRef& object, const double origin[3], const double dir[3]) {

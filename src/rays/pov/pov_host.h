@@ -15,8 +15,11 @@ namespace rays::pov {
 struct ParsedScene {
     struct Top {
         sdl::ItemRef item;
-        sdl::ItemRef defaults;  ///< the #default texture in force (a texture item; null: POV-Ray's own)
-        double version = 3.7;   ///< #version in force
+        /// The #default texture in force: the first defaultsCount entries of `defaults`, applied in
+        /// order (null: POV-Ray's own). #default only appends, so all items share one list.
+        std::shared_ptr<const std::vector<sdl::Entry>> defaults;
+        size_t defaultsCount = 0;
+        double version = 3.7;  ///< #version in force
     };
     std::vector<Top> items;
 };
@@ -39,7 +42,7 @@ private:
     const Probe& probe(const sdl::ItemRef& object);
 
     ParsedScene& out_;
-    sdl::ItemRef defaults_;
+    std::shared_ptr<std::vector<sdl::Entry>> defaults_;
     std::unordered_map<const sdl::Item*, std::unique_ptr<Probe>> probes_;
 };
 

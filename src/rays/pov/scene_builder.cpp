@@ -1,5 +1,6 @@
 #include "rays/pov/scene_builder.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rays/error.h"
@@ -14,6 +15,9 @@ namespace {
 
 constexpr int kMaxObjectDepth = 1000;
 constexpr double kPi = 3.14159265358979323846;
+
+// v as an int in [lo, hi], clamped as a float first (1e300 has no int); NaN gives lo.
+int clampedInt(double v, int lo, int hi) { return std::isnan(v) ? lo : int(std::clamp(v, double(lo), double(hi))); }
 
 bool isObjectKind(Kw k) {
     switch (k) {
@@ -57,7 +61,7 @@ Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
 void SceneBuilder::add(const ParsedScene::Top& top) {
     version_ = top.version;
     const Item& item = *top.item;
-    fallback_ = defaultAppearance(top.defaults, notes_);
+    updateDefaults(top);
     switch (item.kind) {
         case Kw::camera: return addCamera(item);
         case Kw::light_source: return addLight(item, Transform{});
@@ -82,6 +86,26 @@ void SceneBuilder::add(const ParsedScene::Top& top) {
             if (isObjectKind(item.kind)) return addObject(item, Transform{}, nullptr, 0);
             notes_.note(std::string(sdl::keywordName(item.kind)) + " at the top level", item.loc);
     }
+}
+
+// The #default entries not applied yet are applied to the default look kept from the items before
+// (items come in file order and their defaults only grow), so n items under n #defaults cost O(n).
+void SceneBuilder::updateDefaults(const ParsedScene::Top& top) {
+    if (top.defaults != defaultsSeen_ || top.defaultsCount < defaultsApplied_) {
+        defaultsSeen_ = top.defaults;
+        defaultsApplied_ = 0;
+        defaultsLook_ = Appearance{};
+    }
+    if (top.defaultsCount > defaultsApplied_) {
+        Item added;
+        added.kind = Kw::texture;
+        added.entries.assign(top.defaults->begin() + std::ptrdiff_t(defaultsApplied_),
+                             top.defaults->begin() + std::ptrdiff_t(top.defaultsCount));
+        applyTexture(added, defaultsLook_, notes_);
+        defaultsApplied_ = top.defaultsCount;
+    }
+    fallback_ = defaultsLook_;
+    fallback_.set = false;
 }
 
 // ---- camera ----------------------------------------------------------------------------------
@@ -153,7 +177,7 @@ void SceneBuilder::addCamera(const Item& cam) {
             }
             case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
             case Kw::aperture: c.aperture = 0.5 * toFloat(e.args[0]); break;
-            case Kw::blur_samples: c.blurSamples = int(toFloat(e.args.back())); break;
+            case Kw::blur_samples: c.blurSamples = clampedInt(toFloat(e.args.back()), 0, 65536); break;
             case Kw::normal: notes_.note("camera normal", e.loc); break;
             case Kw::bokeh: notes_.note("bokeh", e.loc); break;
             default: break;
@@ -196,12 +220,12 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
                     l.area = true;
                     l.axis1 = toVec3(e.args[0]);
                     l.axis2 = toVec3(e.args[1]);
-                    l.n1 = std::clamp(int(toFloat(e.args[2])), 1, 1024);
-                    l.n2 = std::clamp(int(toFloat(e.args[3])), 1, 1024);
+                    l.n1 = clampedInt(toFloat(e.args[2]), 1, 1024);
+                    l.n2 = clampedInt(toFloat(e.args[3]), 1, 1024);
                 }
                 break;
             case Kw::jitter: l.jitter = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::adaptive: l.adaptive = int(toFloat(e.args[0])); break;
+            case Kw::adaptive: l.adaptive = clampedInt(toFloat(e.args[0]), -1, 1000); break;
             case Kw::circular: l.circular = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::orient: l.orient = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::fade_distance: case Kw::fade_power: notes_.note("light fading", e.loc); break;
@@ -248,8 +272,16 @@ Material SceneBuilder::material(const Appearance& look, const sdl::Loc&) {
     return m;
 }
 
+void SceneBuilder::countObjects(uint64_t n, const sdl::Loc& at) {
+    objects_ += n;
+    if (objects_ > maxObjects_)
+        throw Error(notes_.where(at) + ": error: the scene makes more than " + std::to_string(maxObjects_) +
+                    " objects (each copy of a declared object counts, and each mesh triangle)");
+}
+
 void SceneBuilder::addObject(const Item& item, const Transform& parent, const Appearance* inherited, int depth) {
     if (depth > kMaxObjectDepth) throw Error(notes_.where(item.loc) + ": error: objects nested deeper than 1000 levels");
+    countObjects(1, item.loc);  // a union of copies of a union of copies ... doubles at every level
     std::vector<const Entry*> entries;
     const Kw kind = unrollObject(item, entries, 0);
     if (kind == Kw::light_source) {
@@ -401,6 +433,7 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     std::unique_ptr<Mesh> mesh = meshFromItem(m, problem);
     if (!mesh) throw Error(notes_.where(m.loc) + ": error: " + problem);
     if (mesh->triangleCount() == 0) return;
+    countObjects(mesh->triangleCount(), m.loc);
     for (const Entry& e : m.entries)
         if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::texture_list)
             notes_.note("mesh2 texture_list", e.loc, "(the mesh's own texture is used)");
@@ -432,7 +465,7 @@ void SceneBuilder::globalSettings(const Item& g) {
                 gammaSet_ = true;
                 break;
             case Kw::ambient_light: scene_.pov.ambientLight = toColor(e.args[0]).rgb; break;
-            case Kw::max_trace_level: scene_.pov.maxTraceLevel = std::clamp(int(toFloat(e.args[0])), 1, 256); break;
+            case Kw::max_trace_level: scene_.pov.maxTraceLevel = clampedInt(toFloat(e.args[0]), 1, 256); break;
             case Kw::adc_bailout: scene_.pov.adcBailout = toFloat(e.args[0]); break;
             case Kw::radiosity: notes_.note("radiosity", e.loc); break;
             case Kw::photons: notes_.note("photons", e.loc); break;

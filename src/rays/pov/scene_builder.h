@@ -4,6 +4,8 @@
 // texture, global settings and background. What Rays cannot render yet is noted (not_rendered.h):
 // objects of unrendered kinds are left out, unrendered appearance is approximated.
 #pragma once
+#include <cstdint>
+
 #include "rays/pov/appearance.h"
 #include "rays/pov/not_rendered.h"
 #include "rays/pov/pov_host.h"
@@ -13,7 +15,10 @@ namespace rays::pov {
 
 class SceneBuilder {
 public:
-    explicit SceneBuilder(NotRendered& notes) : notes_(notes) {}
+    /// maxObjects: objects it may make, copies of declared objects included (a mesh also counts its
+    /// triangles); past it add() throws.
+    explicit SceneBuilder(NotRendered& notes, uint64_t maxObjects = uint64_t(1) << 26)
+        : notes_(notes), maxObjects_(maxObjects) {}
     /// Room for about n objects (one per top-level item), so that a scene of many objects does
     /// not grow its arrays step by step.
     void reserve(size_t n);
@@ -23,6 +28,7 @@ public:
     Scene finish(const std::string& fileName);
 
 private:
+    void updateDefaults(const ParsedScene::Top& top);
     void addCamera(const Item& camera);
     void addLight(const Item& light, const Transform& toWorld);
     void addObject(const Item& object, const Transform& parent, const Appearance* inherited, int depth);
@@ -31,6 +37,8 @@ private:
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look);
     void globalSettings(const Item& g);
     Material material(const Appearance& look, const sdl::Loc& at);
+    /// Counts n more objects made at `at`; throws past maxObjects_.
+    void countObjects(uint64_t n, const sdl::Loc& at);
 
     NotRendered& notes_;
     Scene scene_;
@@ -38,6 +46,10 @@ private:
     double version_ = 3.7;
     bool gammaSet_ = false;
     bool backgroundSet_ = false;
+    uint64_t maxObjects_, objects_ = 0;
+    std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
+    size_t defaultsApplied_ = 0;                                   ///< how many of its entries
+    Appearance defaultsLook_;
 };
 
 }  // namespace rays::pov

@@ -5,6 +5,7 @@
 
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
+#include "rays/sdl/pov_int.h"
 #include "rays/sdl/pov_random.h"
 #include "rays/sdl/pure_builtins.h"
 #include "rays/sdl/pov_datetime.h"
@@ -98,10 +99,12 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
             return Value::number(r);
         }
         case Kw::bitwise_and: case Kw::bitwise_or: case Kw::bitwise_xor: {
+            // 32-bit ints as POV-Ray 3.7 converts them (pov_int.h): bitwise_or(2^40 + 3, 0) and
+            // bitwise_or(1e300, 0) give -2147483648 there.
             const auto a = callArgs(name.data(), 2, SIZE_MAX);
-            long long r = (long long)f(a[0], 0);
+            int r = povInt(f(a[0], 0));
             for (size_t i = 1; i < a.size(); ++i) {
-                const long long b = (long long)f(a[i], int(i));
+                const int b = povInt(f(a[i], int(i)));
                 r = k == Kw::bitwise_and ? (r & b) : k == Kw::bitwise_or ? (r | b) : (r ^ b);
             }
             return Value::number(double(r));

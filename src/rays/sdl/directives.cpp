@@ -385,7 +385,7 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
 
 Binding& Interpreter::assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at,
                                    uint32_t level) {
-    if (v.type == VType::Array) v = copyValue(v);  // arrays are copied on assignment
+    if (v.type == VType::Array) v = copyCharged(v, at);  // arrays are copied on assignment
     if (index.empty()) return isLocal ? scopes_.localAt(name, std::move(v), level) : scopes_.declareAt(name, std::move(v), level);
     Binding* b = scopes_.find(name);
     ArrayData& a = b->value.arr();

@@ -5,6 +5,7 @@
 // logical and conditional operators are allowed only inside parentheses, where POV-Ray allows
 // them (elsewhere '<' and '>' are vector brackets).
 #include <cmath>
+#include <cstdio>
 
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
@@ -365,6 +366,7 @@ Num Interpreter::factor(bool colorCtx) {
 }
 
 Num Interpreter::vectorLiteral() {
+    NestGuard guard(*this);  // vectors nest without parentheses: <<<1, 2>, 3>, 4>
     const Loc at = loc();
     next();  // '<'
     std::array<double, 5> c{};
@@ -436,9 +438,12 @@ Value Interpreter::arrayElement(const Value& arr, bool forAssign, std::vector<in
         expectSym('[', "for the next array dimension");
         const double i = toFloat(fullExpression(), at, "an array index");
         expectSym(']', "after an array index");
+        if (!(i > -1 && i < double(a.sizes[d]))) {  // checked as a float: 1e300 or NaN has no int
+            char shown[32];
+            std::snprintf(shown, sizeof shown, "%.10g", std::trunc(i));
+            error(at, "array index " + std::string(shown) + " is out of range 0.." + std::to_string(a.sizes[d] - 1));
+        }
         const int k = int(i);
-        if (k < 0 || k >= a.sizes[d])
-            error(at, "array index " + std::to_string(k) + " is out of range 0.." + std::to_string(a.sizes[d] - 1));
         flat = flat * size_t(a.sizes[d]) + size_t(k);
         if (indexOut) indexOut->push_back(k);
     }
@@ -450,6 +455,7 @@ Value Interpreter::arrayElement(const Value& arr, bool forAssign, std::vector<in
 // `rgb E` and its kin, and `red F` ... starting a colour.
 Num Interpreter::colorKeyword(bool colorCtx) {
     (void)colorCtx;
+    NestGuard guard(*this);  // rgb rgb rgb 1 nests too
     const Kw k = kw();
     const Loc at = loc();
     next();

@@ -172,6 +172,10 @@ void Interpreter::dirWrite(const Loc& at) {
         error(at, "'" + std::string(names_.name(handle)) + "' is not a file opened for writing");
     const Value fileValue = b->value;
     std::FILE* out = fileValue.file().out;
+    auto put = [&](const std::string& bytes) {
+        spend(writeBytes_, bytes.size(), limits_.writeBytes, at, "bytes written by #write");
+        std::fwrite(bytes.data(), 1, bytes.size(), out);
+    };
     for (;;) {  // commas between the items are optional, as in POV-Ray
         acceptSym(',');
         if (isSym(')')) break;
@@ -196,6 +200,7 @@ void Interpreter::dirWrite(const Loc& at) {
             const double lo = isSigned ? -std::ldexp(1.0, bytes * 8 - 1) : 0.0;
             const double hi = isSigned ? std::ldexp(1.0, bytes * 8 - 1) - 1 : std::ldexp(1.0, bytes * 8) - 1;
             const int n = v.type == VType::Float ? 1 : v.dim;
+            spend(writeBytes_, uint64_t(n * bytes), limits_.writeBytes, at, "bytes written by #write");
             for (int c = 0; c < n; ++c) {
                 const long long w = (long long)std::clamp(std::round(v.c[c]), lo, hi);
                 for (int i = 0; i < bytes; ++i) {
@@ -206,17 +211,14 @@ void Interpreter::dirWrite(const Loc& at) {
             continue;
         }
         if (atStringStart()) {
-            const std::string s = parseString();
-            std::fwrite(s.data(), 1, s.size(), out);
+            put(parseString());
             continue;
         }
         const Value v = parseNumeric(false);
         if (v.type == VType::Float) {
-            const std::string t = povWriteFloat(v.c[0]);
-            std::fwrite(t.data(), 1, t.size(), out);
+            put(povWriteFloat(v.c[0]));
         } else if (v.isNumeric()) {
-            const std::string t = povWriteVector(std::span<const double>(v.c.data(), v.dim));
-            std::fwrite(t.data(), 1, t.size(), out);
+            put(povWriteVector(std::span<const double>(v.c.data(), v.dim)));
         } else {
             error(at, std::string("#write cannot write a ") + typeName(v.type));
         }

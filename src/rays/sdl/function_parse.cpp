@@ -12,6 +12,7 @@
 #include "rays/sdl/frames.h"
 #include "rays/sdl/function_value.h"
 #include "rays/sdl/interpreter.h"
+#include "rays/sdl/pov_int.h"
 
 namespace rays::sdl {
 
@@ -408,7 +409,7 @@ Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at
             const Token* t = have_ ? cursor_ - 1 : cursor_;
             if (t[1].kind == Tk::Symbol && t[1].sym == '(' && t[2].kind == Tk::Number && t[3].kind == Tk::Symbol &&
                 t[3].sym == ')' && t[4].kind == Tk::Symbol && t[4].sym == '}')
-                if (const fn::InternalFunction* f = fn::internalFunction(int(t[2].number))) {
+                if (const fn::InternalFunction* f = fn::internalFunction(povInt(t[2].number))) {
                     // x, y, z, then unnamed parameters (only internal(N) reads them).
                     fv->params.resize(3);
                     for (int i = 3; i < f->params; ++i) fv->params.push_back(UINT32_MAX - uint32_t(i));
@@ -442,9 +443,20 @@ Value Interpreter::callFunction(const Value& fnValue, const Loc& at) {
     if (fv.kind == FunctionValue::Kind::Pattern || fv.kind == FunctionValue::Kind::Pigment)
         warning(at, "not rendered yet: pattern and pigment functions called while parsing (they give 0)");
     fn::Scratch scratch(fv.table->program(fv.index));
-    if (fv.table->outputs(fv.index) == 1) return Value::number(fv.table->call(fv.index, args.data(), scratch));
+    // sum/prod repetitions and calls of other functions count against the parse's loop limit, as
+    // #while and #for iterations do.
+    fn::LoopBudget budget(iterations_ < limits_.loopIterations ? limits_.loopIterations - iterations_ : 0);
     double out[5] = {};
-    const int n = fv.table->callVector(fv.index, args.data(), out, scratch);
+    int n = 1;
+    try {
+        if (fv.table->outputs(fv.index) == 1) out[0] = fv.table->call(fv.index, args.data(), scratch);
+        else n = fv.table->callVector(fv.index, args.data(), out, scratch);
+    } catch (const fn::LoopBudgetExceeded&) {
+        error(at, "loops ran more than " + std::to_string(limits_.loopIterations) +
+                      " iterations (sum, prod or calls of other functions in a function called while parsing)");
+    }
+    iterations_ += budget.used();
+    if (fv.table->outputs(fv.index) == 1) return Value::number(out[0]);
     if (fv.kind == FunctionValue::Kind::Pigment) return Value::color(out[0], out[1], out[2], out[3], out[4]);
     return Value::vector(n, out);
 }

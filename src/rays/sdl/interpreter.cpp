@@ -2,8 +2,11 @@
 // expands macros on the way, macro calls and returns, the top-level loop and messages.
 #include "rays/sdl/interpreter.h"
 
-#include <filesystem>
+#include <pthread.h>
 #include <sys/stat.h>
+
+#include <algorithm>
+#include <filesystem>
 
 #include "rays/error.h"
 #include "rays/io/file_text.h"
@@ -19,9 +22,35 @@ Interpreter::Interpreter(const LanguageOptions& options, ItemHost& host, Diagnos
 
 Interpreter::~Interpreter() = default;
 
+namespace {
+
+// Stack kept free below the deepest nesting level: room for the work between two NestGuards and
+// for throwing the error.
+constexpr size_t kStackReserve = size_t(256) << 10;
+
+// The lowest stack address a parse on this thread may nest down to (the stack grows down on the
+// platforms Rays builds for); 0 when the thread's stack is unknown.
+uintptr_t threadStackFloor() {
+    thread_local const uintptr_t floor = [] {
+        pthread_attr_t attr;
+        if (pthread_getattr_np(pthread_self(), &attr) != 0) return uintptr_t(0);
+        void* low = nullptr;
+        size_t size = 0;
+        const bool known = pthread_attr_getstack(&attr, &low, &size) == 0 && low;
+        pthread_attr_destroy(&attr);
+        return known ? uintptr_t(low) + std::min(kStackReserve, size / 2) : uintptr_t(0);
+    }();
+    return floor;
+}
+
+}  // namespace
+
 void Interpreter::tooDeep() {
+    const bool counted = nesting_ > limits_.nesting;
     --nesting_;
-    errorHere("nesting deeper than " + std::to_string(limits_.nesting) + " levels");
+    // rawLoc, not loc(): fetching the next token could expand a macro and nest once more.
+    error(rawLoc(), counted ? "nesting deeper than " + std::to_string(limits_.nesting) + " levels"
+                            : "nesting too deep for the parser's stack (" + std::to_string(nesting_) + " levels)");
 }
 
 // ---- files ---------------------------------------------------------------------------------------
@@ -90,6 +119,7 @@ void Interpreter::declareGlobal(const std::string& name, Value v) {
 }
 
 void Interpreter::run(const std::string& path) {
+    stackFloor_ = threadStackFloor();
     const fs::path p(path);
     sceneFolder_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
     const SourceFile& f = openFile(path, path);
@@ -100,6 +130,7 @@ void Interpreter::run(const std::string& path) {
 }
 
 void Interpreter::runText(std::string_view text, const std::string& shownName, const std::string& folder) {
+    stackFloor_ = threadStackFloor();
     sceneFolder_ = folder;
     const SourceFile& f = textFile(text, shownName);
     Frame fr;
@@ -185,6 +216,7 @@ void Interpreter::fetchSlow(bool expandMacros) {
         }
         ++cursor_;
         if (t.kind == Tk::Directive) {
+            NestGuard guard(*this);  // a directive read while another reads its arguments: #debug #debug "x"
             directive(t);
             if (have_) return;  // a directive that looked ahead left the token after it current
             continue;
@@ -216,6 +248,8 @@ void Interpreter::endOfFrame() {
 // ---- macros --------------------------------------------------------------------------------------
 
 void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
+    // Reading the arguments may expand another macro call before this one returns: M(M(M(...))).
+    NestGuard guard(*this);
     const auto def = std::static_pointer_cast<const MacroDef>(macroValue.ref);
     const Loc at{topFile_, nameTok.line, nameTok.col};
     const std::string_view nameView = names_.name(nameTok.id);
@@ -274,7 +308,7 @@ bool Interpreter::passByReference(uint32_t param, Args& args, SmallVec<ByRefArg,
     if (!b)
         errorHere("cannot pass the undeclared identifier '" + std::string(names_.name(cur_->id)) +
                   "' as a macro parameter; declare it first");
-    args.push_back(copyValue(b->value));
+    args.push_back(copyCharged(b->value, loc()));
     byRef.push_back(ByRefArg{param, cur_->id, b->serial});
     next();
     return true;
@@ -339,6 +373,11 @@ std::string Interpreter::describe() {
             }
     }
     return "?";
+}
+
+Loc Interpreter::rawLoc() const {
+    if (have_ || frames_.empty() || !cursor_) return cur_ ? Loc{curFile_, cur_->line, cur_->col} : Loc{};
+    return Loc{topFile_, cursor_->line, cursor_->col};
 }
 
 std::string Interpreter::where(const Loc& at) const {

@@ -46,6 +46,15 @@ struct Limits {
     uint32_t includeDepth = 64;              ///< nested include files
     uint32_t nesting = 4'000;                ///< nested items, expressions and parentheses
     uint64_t tokens = uint64_t(1) << 30;     ///< tokens consumed (a runaway recursion ends here)
+    uint64_t arrayElements = uint64_t(1) << 28;  ///< array elements and spline points made in one parse, new and copied
+    uint64_t stringBytes = uint64_t(1) << 36;    ///< bytes of the strings string functions make in one parse
+    uint64_t writeBytes = uint64_t(1) << 34;     ///< bytes #write writes in one parse
+    /// Objects the scene builder (src/rays/pov) makes from the parsed items: every copy of a declared
+    /// object counts, a mesh counts its triangles too.
+    uint64_t sceneObjects = uint64_t(1) << 26;
+    /// Items in the declared items used in other items, counted at every use: what POV-Ray copies
+    /// there, and what the scene builder walks.
+    uint64_t itemCopies = uint64_t(1) << 27;
 };
 
 class Interpreter {
@@ -160,11 +169,14 @@ public:
     /// `assumed_gamma` as the host read it from global_settings (needed for srgb colours); 0 unset.
     void setAssumedGamma(double g) { assumedGamma_ = g; }
     double assumedGamma() const { return assumedGamma_; }
-    /// Counts a nesting level of the host's readers; throws past Limits::nesting.
+    /// Counts a nesting level of the host's readers; throws past Limits::nesting, or when the
+    /// thread's stack is nearly used up (a deep nest of heavy levels, smaller thread stacks).
     class NestGuard {
     public:
         explicit NestGuard(Interpreter& in) : in_(in) {
-            if (++in_.nesting_ > in_.limits_.nesting) in_.tooDeep();
+            if (++in_.nesting_ > in_.limits_.nesting ||
+                reinterpret_cast<uintptr_t>(__builtin_frame_address(0)) < in_.stackFloor_)
+                in_.tooDeep();
         }
         ~NestGuard() { --in_.nesting_; }
         NestGuard(const NestGuard&) = delete;
@@ -178,6 +190,11 @@ public:
     const std::shared_ptr<fn::FunctionTable>& functions() const { return functions_; }
     /// A float value or an error naming what (for readers outside the interpreter).
     double toFloatValue(const Value& v, const Loc& at, std::string_view what) { return toFloat(v, at, what); }
+
+    /// Counts the items of a declared item used in another one (Limits::itemCopies); throws past it.
+    void countItemCopy(uint64_t items, const Loc& at) {
+        spend(itemCopies_, items, limits_.itemCopies, at, "items used again through identifiers (each use counts the item's whole tree)");
+    }
 
     /// Defines identifier `name` at global level (command-line Declare=NAME=VALUE).
     void declareGlobal(const std::string& name, Value v);
@@ -224,6 +241,8 @@ private:
     }
     void tickSlow();
     [[noreturn]] void tooDeep();
+    /// Where the next raw token is (no directive run, no macro expanded).
+    Loc rawLoc() const;
 
     // directives (directives.cpp)
     void directive(const Token& t);
@@ -264,6 +283,10 @@ private:
     void returnFromMacro();
     Binding& assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at, uint32_t level);
     Value readArrayValue(const Loc& at);
+    /// Adds n to one of the parse's running totals; throws "more than LIMIT WHAT in this parse" past limit.
+    void spend(uint64_t& total, uint64_t n, uint64_t limit, const Loc& at, const char* what);
+    /// copyValue, with the elements an array copy makes charged.
+    Value copyCharged(const Value& v, const Loc& at);
 
     // expressions (expressions.cpp)
     Value fullExpression() { return fullNum().value(); }
@@ -332,7 +355,9 @@ private:
     double assumedGamma_ = 0;
     uint32_t nesting_ = 0;
     uint32_t macroDepth_ = 0;  ///< macro frames on the stack
+    uintptr_t stackFloor_ = 0;  ///< NestGuard refuses to nest below this stack address (0: no check)
     uint64_t iterations_ = 0;
+    uint64_t arrayElements_ = 0, stringBytes_ = 0, writeBytes_ = 0, itemCopies_ = 0;
     uint64_t ticks_ = 0;
     std::vector<std::string> deprecatedMessages_;
     RandomStreams random_;

@@ -28,6 +28,8 @@ struct Item {
     Kw kind = Kw::object;  ///< the keyword that opened it (sphere, union, texture, pigment, ...)
     Loc loc;
     std::vector<Entry> entries;
+    uint32_t depth = 1;  ///< levels of items in it, itself included (the host sets it when read)
+    uint64_t size = 1;   ///< items in it, itself included, a shared item once per use (the host sets it)
 };
 
 using ItemRef = std::shared_ptr<const Item>;

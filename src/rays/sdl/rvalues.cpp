@@ -93,12 +93,23 @@ Value Interpreter::parseArray() {
         total *= size_t(n);
         if (total > (size_t(1) << 27)) error(at, "an array may hold at most 134217728 elements");
     } while (peekRawSym('['));
+    spend(arrayElements_, total, limits_.arrayElements, at, "array elements and spline points made (new and copied)");
     data->elems.resize(total);
     if (peekRawSym('{')) {
         size_t flat = 0;
         arrayInitializer(*data, 0, flat);
     }
     return Value::array(std::move(data));
+}
+
+void Interpreter::spend(uint64_t& total, uint64_t n, uint64_t limit, const Loc& at, const char* what) {
+    total += n;
+    if (total > limit) error(at, "more than " + std::to_string(limit) + " " + what + " in this parse (runaway loop?)");
+}
+
+Value Interpreter::copyCharged(const Value& v, const Loc& at) {
+    spend(arrayElements_, arrayElementCount(v), limits_.arrayElements, at, "array elements and spline points made (new and copied)");
+    return copyValue(v);
 }
 
 void Interpreter::arrayInitializer(ArrayData& a, size_t dim, size_t& flat) {

@@ -3,6 +3,7 @@
 // outside the range the end points hold (for cubic splines the second and next-to-last).
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
@@ -114,9 +115,15 @@ Value Interpreter::parseSplineBlock() {
         *sp = b->value.spline();
         next();
     }
+    const char* const counted = "array elements and spline points made (new and copied)";
+    spend(arrayElements_, sp->t.size(), limits_.arrayElements, at, counted);  // spline { S ... } in a loop
     int widest = sp->t.empty() ? 0 : sp->dim;
     std::vector<std::pair<double, P>> pts;
-    for (size_t i = 0; i < sp->t.size(); ++i) pts.emplace_back(sp->t[i], sp->points[i]);
+    std::unordered_map<double, size_t> index;  // a point at a time already given replaces it (NaN never matches)
+    for (size_t i = 0; i < sp->t.size(); ++i) {
+        index.emplace(sp->t[i], pts.size());
+        pts.emplace_back(sp->t[i], sp->points[i]);
+    }
     for (;;) {
         if (isSym('}')) break;
         if (atEnd()) error(at, "'{' of 'spline' is never closed (end of file reached)");
@@ -136,14 +143,21 @@ Value Interpreter::parseSplineBlock() {
         if (p.type == VType::Float) c.fill(p.c[0]);
         else for (int k = 0; k < p.dim; ++k) c[k] = p.c[k];
         if (p.type != VType::Float) widest = std::max(widest, int(p.dim));
-        auto same = std::find_if(pts.begin(), pts.end(), [&](const auto& q) { return q.first == t; });
-        if (same != pts.end()) same->second = c;
-        else pts.emplace_back(t, c);
+        if (auto same = index.find(t); same != index.end()) {
+            pts[same->second].second = c;
+        } else {
+            spend(arrayElements_, 1, limits_.arrayElements, pAt, counted);
+            index.emplace(t, pts.size());
+            pts.emplace_back(t, c);
+        }
         acceptSym(',');
     }
     next();
     sp->dim = widest >= 2 ? widest : 3;
-    std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    // NaN times (sqrt(-1)) go last: a < b alone is no ordering once a NaN is among them.
+    std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) {
+        return !std::isnan(a.first) && (std::isnan(b.first) || a.first < b.first);
+    });
     sp->t.clear();
     sp->points.clear();
     for (auto& [t, p] : pts) {

@@ -61,8 +61,12 @@ std::string Interpreter::parseString() {
         switch (k) {
             case Kw::str: case Kw::concat: case Kw::chr: case Kw::substr: case Kw::strupr: case Kw::strlwr:
             case Kw::vstr: case Kw::datetime:
+            {
                 next();
-                return stringFunction(k, at);
+                std::string s = stringFunction(k, at);
+                spend(stringBytes_, s.size(), limits_.stringBytes, at, "bytes of strings made by string functions");
+                return s;
+            }
             case Kw::input_file_name:
                 next();
                 return files_.empty() ? std::string() : files_[0]->shownName;
@@ -76,6 +80,7 @@ std::string Interpreter::parseString() {
 // String values are held as bytes (UTF-8 where a scene writes non-ASCII text); the functions
 // below follow POV-Ray's 16-bit string rules (pov_strings.h) and convert at this boundary.
 std::string Interpreter::stringFunction(Kw k, const Loc& at) {
+    NestGuard guard(*this);  // concat(concat(concat(...)))
     const std::string name(keywordName(k));
     auto check = [&](Outcome<PovString> r) {
         if (!r.ok()) error(at, r.error);
@@ -112,9 +117,11 @@ std::string Interpreter::stringFunction(Kw k, const Loc& at) {
         }
         case Kw::concat: {
             std::string s = parseString();
-            while (acceptSym(',')) s += parseString();
+            while (acceptSym(',')) {  // checked as it grows: concat(S, S, S, ...) of long strings
+                s += parseString();
+                if (s.size() > (size_t(1) << 24)) error(at, "concat made a string longer than 16 MiB");
+            }
             close();
-            if (s.size() > (size_t(1) << 24)) error(at, "concat made a string longer than 16 MiB");
             return s;
         }
         case Kw::chr: {

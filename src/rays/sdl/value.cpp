@@ -40,6 +40,13 @@ Value Value::spline(std::shared_ptr<const Spline> s) { return withRef(VType::Spl
 Value Value::macro(std::shared_ptr<const MacroDef> m) { return withRef(VType::Macro, std::const_pointer_cast<MacroDef>(m)); }
 Value Value::file(std::shared_ptr<FileHandle> f) { return withRef(VType::File, std::move(f)); }
 
+uint64_t arrayElementCount(const Value& v) {
+    if (v.type != VType::Array) return 0;
+    uint64_t n = v.arr().elems.size();
+    for (const Value& e : v.arr().elems) n += arrayElementCount(e);
+    return n;
+}
+
 Value copyValue(const Value& v) {
     if (v.type != VType::Array) return v;
     auto a = std::make_shared<ArrayData>(v.arr());

@@ -119,6 +119,8 @@ struct ArrayData {
 /// A deep copy of a value (arrays and their nested arrays are copied; everything else is
 /// immutable and shared).
 Value copyValue(const Value& v);
+/// The elements copyValue(v) makes: those of v and of its nested arrays (0 for a non-array).
+uint64_t arrayElementCount(const Value& v);
 
 /// A macro: its parameters and where its body starts (the token after the parameter list).
 struct MacroDef {

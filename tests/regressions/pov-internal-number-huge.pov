@@ -1,0 +1,1 @@
+#declare F = function { internal(1e10) };
