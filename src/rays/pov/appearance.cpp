@@ -225,13 +225,6 @@ void applyTexture(const Item& t, Appearance& a, NotRendered& notes) {
     }
 }
 
-Appearance defaultAppearance(const sdl::ItemRef& defaults, NotRendered& notes) {
-    Appearance a;
-    if (defaults) applyTexture(*defaults, a, notes);
-    a.set = false;
-    return a;
-}
-
 bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallback, NotRendered& notes) {
     if (e.positional() || e.key == kMapEntry) return false;
     const Kw k = e.kw();

@@ -17,9 +17,6 @@ struct Appearance {
     bool interiorSet = false;
 };
 
-/// POV-Ray's default texture with the #default items in force (defaults may be null).
-Appearance defaultAppearance(const sdl::ItemRef& defaults, NotRendered& notes);
-
 /// Applies an object modifier entry that concerns appearance (texture, pigment, normal, finish,
 /// interior, material); false when the entry is something else. `fallback` is what an unset
 /// appearance starts from (the default texture).
