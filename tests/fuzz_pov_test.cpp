@@ -193,12 +193,12 @@ TEST(FuzzPovFindings, DirectivesAndMacroArgumentsCountAsNesting) {
 TEST(FuzzPovFindings, ArrayElementsMadeAreCountedNewAndCopied) {
     rays::sdl::Limits limits;
     limits.arrayElements = 100;
-    // A declaration counts the new array and its copy: 2 x 30 + 30 for B's copy = 90.
-    EXPECT_EQ(povErrorWith("#declare A = array[30]; #declare B = A;", limits), "");
-    EXPECT_EQ(povErrorWith("#declare A = array[40]; #declare B = A;", limits),
+    // A new array counts once (a declaration takes it as it is), a copy again: 50 + 50 for B's copy.
+    EXPECT_EQ(povErrorWith("#declare A = array[50]; #declare B = A;", limits), "");
+    EXPECT_EQ(povErrorWith("#declare A = array[60]; #declare B = A;", limits),
               "scene.pov:1:34: error: more than 100 array elements and spline points made (new and copied) in this parse (runaway loop?)");
     // Nested arrays count their elements too; a macro's by-reference argument is a copy.
-    EXPECT_NE(povErrorWith("#declare A = array[2] { array[30], array[30] };", limits).find("more than 100 array elements"),
+    EXPECT_NE(povErrorWith("#declare A = array[3] { array[40], array[40], array[40] };", limits).find("more than 100 array elements"),
               std::string::npos);
     EXPECT_NE(povErrorWith("#macro M(P) #end #declare A = array[40]; M(A) M(A)", limits).find("more than 100 array elements"),
               std::string::npos);

@@ -63,7 +63,7 @@ std::vector<Regression> regressions() {
         {"pov-deep-pattern-blocks.pov", ": error: nesting "},
         {"pov-parentheses-3990.pov", ""},  // within the count limit: parses, or the stack guard stops it
         {"pov-array-copies-many.pov", "fuzz.pov:3:26: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
-        {"pov-array-copies-nested.pov", "fuzz.pov:3:52: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
+        {"pov-array-copies-nested.pov", "fuzz.pov:3:71: error: more than 1048576 array elements and spline points made (new and copied) in this parse (runaway loop?)"},
         {"pov-strings-many-long.pov", "fuzz.pov:4:34: error: more than 134217728 bytes of strings made by string functions in this parse (runaway loop?)"},
         {"pov-concat-long-arguments.pov", "fuzz.pov:3:14: error: concat made a string longer than 16 MiB"},
         {"pov-write-many.pov", "fuzz.pov:4:18: error: more than 67108864 bytes written by #write in this parse (runaway loop?)"},

@@ -111,6 +111,22 @@ TEST(SdlArrays, InitialisersCopiesAndDimensions) {
     EXPECT_NE(err("#declare A = array[2]; #declare B = A[2];").find("out of range 0..1"), std::string::npos);
 }
 
+TEST(SdlArrays, ArraysOfArraysAndFreshArraysKeepPovRaysCopyRules) {
+    // Values measured with POV-Ray 3.7.0: an array in an initialiser is copied, G[0][0] indexes
+    // the inner array, and each call of a macro returning its local array gives a new array.
+    EXPECT_EQ(dbg("#declare A = array[2] {1, 2}; #declare G = array[1] {A}; #declare G[0][0] = 9;"
+                  "#debug concat(str(A[0],0,0), str(G[0][0],0,0))"),
+              "19");
+    EXPECT_EQ(dbg("#macro M() #local L = array[2] {5, 6}; L #end #declare X = M(); #declare X[0] = 7;"
+                  "#declare Y = M(); #debug concat(str(X[0],0,0), str(Y[0],0,0))"),
+              "75");
+    EXPECT_EQ(dbg("#declare A = array[2] {1, 2}; #declare B = array[1]; #declare B[0] = A; #declare B[0][1] = 8;"
+                  "#debug concat(str(A[1],0,0), str(B[0][1],0,0)) #if (defined(B[0][1])) #debug \"d\" #end"),
+              "28d");
+    EXPECT_NE(err("#declare A = array[2] {1, 2}; #declare G = array[1] {A}; #declare G[0][2] = 1;").find("out of range 0..1"),
+              std::string::npos);
+}
+
 TEST(SdlStrings, FunctionsAndComparisons) {
     EXPECT_EQ(dbg("#debug concat(\"a\", str(12.345, 0, 1), chr(66), substr(\"ABCDEF\", 2, 3))"), "a12.3BBCD");
     EXPECT_EQ(dbg("#debug str(strlen(\"hello\"),0,0) #debug strupr(\"aB\") #debug strlwr(\"aB\")"), "5ABab");

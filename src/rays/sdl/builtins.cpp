@@ -189,8 +189,7 @@ bool Interpreter::definedName() {
     Binding* b = scopes_.find(t.id);
     next();
     if (b && b->value.type == VType::Array && isSym('[')) {
-        std::vector<int> idx;
-        return arrayElement(b->value, true, &idx).defined();
+        return arrayElement(b->value, true, nullptr).defined();
     }
     return b != nullptr;
 }

@@ -347,19 +347,19 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
     }
     const Loc nameAt = loc();
     const uint32_t name = readNewName(isLocal ? "#local" : "#declare");
-    std::vector<int> index;
+    std::vector<size_t> path;  // the element's flat index in each (nested) array
     if (isSym('[')) {
         Binding* b = scopes_.find(name);
         if (!b || b->value.type != VType::Array)
             error(nameAt, "'" + std::string(names_.name(name)) + "' is not an array");
-        arrayElement(b->value, true, &index);
+        arrayElement(b->value, true, &path);
     }
     expectSym('=', "after the identifier in #", isLocal ? "local" : "declare");
     const Loc valueAt = loc();
     const bool numeric = atNumericStart();
     Value v = parseRValue();
     const bool wasNumeric = numeric || v.isNumeric();
-    Binding& bound = assignTarget(name, isLocal, std::move(index), std::move(v), nameAt, level);
+    Binding& bound = assignTarget(name, isLocal, path, std::move(v), nameAt, level);
     if (deprecated) {
         Binding* b = &bound;
         b->deprecated = true;
@@ -383,24 +383,32 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
     }
 }
 
-Binding& Interpreter::assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at,
+Binding& Interpreter::assignTarget(uint32_t name, bool isLocal, const std::vector<size_t>& path, Value v, const Loc& at,
                                    uint32_t level) {
-    if (v.type == VType::Array) v = copyCharged(v, at);  // arrays are copied on assignment
-    if (index.empty()) return isLocal ? scopes_.localAt(name, std::move(v), level) : scopes_.declareAt(name, std::move(v), level);
+    // Arrays are copied on assignment; one that nothing else holds (a literal just made, a macro's
+    // result) is taken as it is.
+    if (v.type == VType::Array) v = v.ref.use_count() == 1 ? adoptArray(std::move(v), at) : copyCharged(v, at);
+    if (path.empty()) return isLocal ? scopes_.localAt(name, std::move(v), level) : scopes_.declareAt(name, std::move(v), level);
+    // The element is found again from the name: reading the value may have changed the array.
     Binding* b = scopes_.find(name);
-    ArrayData& a = b->value.arr();
-    size_t flat = 0;
-    for (size_t d = 0; d < index.size(); ++d) flat = flat * size_t(a.sizes[d]) + size_t(index[d]);
+    Value* slot = b ? &b->value : nullptr;
+    ArrayData* a = nullptr;
+    for (const size_t flat : path) {
+        if (!slot || slot->type != VType::Array || flat >= slot->arr().elems.size())
+            error(at, "array '" + std::string(names_.name(name)) + "' changed while its element was being assigned");
+        a = &slot->arr();
+        slot = &a->elems[flat];
+    }
     const bool numericKind = v.isNumeric();
-    if (a.elemType != VType::Undefined) {
-        const bool wasNumeric = a.elemType == VType::Float || a.elemType == VType::Vector || a.elemType == VType::Color;
-        if (numericKind != wasNumeric || (!numericKind && a.elemType != v.type))
-            error(at, std::string("array '") + std::string(names_.name(name)) + "' holds " + typeName(a.elemType) +
+    if (a->elemType != VType::Undefined) {
+        const bool wasNumeric = a->elemType == VType::Float || a->elemType == VType::Vector || a->elemType == VType::Color;
+        if (numericKind != wasNumeric || (!numericKind && a->elemType != v.type))
+            error(at, std::string("array '") + std::string(names_.name(name)) + "' holds " + typeName(a->elemType) +
                           " elements; a " + typeName(v.type) + " cannot be stored in it");
     } else {
-        a.elemType = v.type;
+        a->elemType = v.type;
     }
-    a.elems[flat] = std::move(v);
+    *slot = std::move(v);
     return *b;
 }
 

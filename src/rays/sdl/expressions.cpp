@@ -430,26 +430,29 @@ Num Interpreter::identifierValue(bool colorCtx) {
 
 // `A[i][j]` with the array value given and '[' current: the element (Undefined when unset and
 // forAssign; an error otherwise).
-Value Interpreter::arrayElement(const Value& arr, bool forAssign, std::vector<int>* indexOut) {
-    const ArrayData& a = arr.arr();
-    size_t flat = 0;
-    for (size_t d = 0; d < a.sizes.size(); ++d) {
-        const Loc at = loc();
-        expectSym('[', "for the next array dimension");
-        const double i = toFloat(fullExpression(), at, "an array index");
-        expectSym(']', "after an array index");
-        if (!(i > -1 && i < double(a.sizes[d]))) {  // checked as a float: 1e300 or NaN has no int
-            char shown[32];
-            std::snprintf(shown, sizeof shown, "%.10g", std::trunc(i));
-            error(at, "array index " + std::string(shown) + " is out of range 0.." + std::to_string(a.sizes[d] - 1));
+Value Interpreter::arrayElement(const Value& arr, bool forAssign, std::vector<size_t>* pathOut) {
+    const ArrayData* a = &arr.arr();
+    for (;;) {
+        size_t flat = 0;
+        for (size_t d = 0; d < a->sizes.size(); ++d) {
+            const Loc at = loc();
+            expectSym('[', "for the next array dimension");
+            const double i = toFloat(fullExpression(), at, "an array index");
+            expectSym(']', "after an array index");
+            if (!(i > -1 && i < double(a->sizes[d]))) {  // checked as a float: 1e300 or NaN has no int
+                char shown[32];
+                std::snprintf(shown, sizeof shown, "%.10g", std::trunc(i));
+                error(at, "array index " + std::string(shown) + " is out of range 0.." + std::to_string(a->sizes[d] - 1));
+            }
+            flat = flat * size_t(a->sizes[d]) + size_t(int(i));
         }
-        const int k = int(i);
-        flat = flat * size_t(a.sizes[d]) + size_t(k);
-        if (indexOut) indexOut->push_back(k);
+        if (pathOut) pathOut->push_back(flat);
+        const Value& e = a->elems[flat];
+        if (!e.defined() && !forAssign) errorHere("array element is used before it was given a value");
+        // An element that is an array is indexed further: G[0][1] of an array of arrays.
+        if (e.type != VType::Array || !isSym('[')) return e;
+        a = &e.arr();
     }
-    const Value& e = a.elems[flat];
-    if (!e.defined() && !forAssign) errorHere("array element is used before it was given a value");
-    return e;
 }
 
 // `rgb E` and its kin, and `red F` ... starting a colour.

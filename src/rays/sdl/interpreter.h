@@ -281,10 +281,12 @@ private:
     void invokeMacro(const Token& nameTok, const Value& macro);
     bool passByReference(uint32_t param, Args& args, SmallVec<ByRefArg, 4>& byRef);
     void returnFromMacro();
-    Binding& assignTarget(uint32_t name, bool isLocal, std::vector<int> index, Value v, const Loc& at, uint32_t level);
+    Binding& assignTarget(uint32_t name, bool isLocal, const std::vector<size_t>& path, Value v, const Loc& at, uint32_t level);
     Value readArrayValue(const Loc& at);
     /// Adds n to one of the parse's running totals; throws "more than LIMIT WHAT in this parse" past limit.
     void spend(uint64_t& total, uint64_t n, uint64_t limit, const Loc& at, const char* what);
+    /// An array held by v alone, kept as it is; its element arrays held elsewhere too are copied.
+    Value adoptArray(Value v, const Loc& at);
     /// copyValue, with the elements an array copy makes charged.
     Value copyCharged(const Value& v, const Loc& at);
 
@@ -307,7 +309,9 @@ private:
     double toFloat(const Num& v, const Loc& at, std::string_view what);
     bool truth(const Value& v, const Loc& at) { return truth(Num::of(v), at); }
     bool truth(const Num& v, const Loc& at);
-    Value arrayElement(const Value& arr, bool forAssign, std::vector<int>* indexOut);
+    /// The element `[i][j]...` of arr (the current token is '['), going on into elements that are
+    /// arrays while '[' follows; pathOut gets the flat index at each array level.
+    Value arrayElement(const Value& arr, bool forAssign, std::vector<size_t>* pathOut);
 
     // built-in functions (builtins.cpp)
     bool isBuiltinFunction(Kw k) const;

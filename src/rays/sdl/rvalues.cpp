@@ -107,6 +107,12 @@ void Interpreter::spend(uint64_t& total, uint64_t n, uint64_t limit, const Loc& 
     if (total > limit) error(at, "more than " + std::to_string(limit) + " " + what + " in this parse (runaway loop?)");
 }
 
+Value Interpreter::adoptArray(Value v, const Loc& at) {
+    for (Value& e : v.arr().elems)
+        if (e.type == VType::Array) e = e.ref.use_count() == 1 ? adoptArray(std::move(e), at) : copyCharged(e, at);
+    return v;
+}
+
 Value Interpreter::copyCharged(const Value& v, const Loc& at) {
     spend(arrayElements_, arrayElementCount(v), limits_.arrayElements, at, "array elements and spline points made (new and copied)");
     return copyValue(v);
