@@ -143,6 +143,20 @@ TEST(PovObjects, FinishAndInteriorReachTheSurface) {
     EXPECT_DOUBLE_EQ(s.interior.fadeDistance, 2);
 }
 
+TEST(PovObjects, TexturesWrittenInARowAreOneLayeredTexture) {
+    // As textures.inc declares its layered stones: the layers belong to the declaration, and the
+    // #declare right after it runs only once the declaration is complete.
+    const Built b = build(
+        "#declare T = texture { pigment { rgb 1 } }\n"
+        "  texture { pigment { rgbt <1, 0, 0, 0.5> } }\n"
+        "#declare M = material { texture { T } }\n"
+        "sphere { 0, 1 material { M } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } } texture { T } }\n");
+    ASSERT_EQ(b.error, "");
+    EXPECT_TRUE(b.warnings.empty()) << b.warnings.front();  // no "texture at the top level"
+    ASSERT_EQ(b.scene.objects.size(), 2u);
+}
+
 TEST(PovObjects, OneReflectionValueWithFresnelIsTheMaximum) {
     const Built b = build("sphere { 0, 1 finish { reflection { 0.8 fresnel on } } } sphere { 0, 1 finish { reflection { 0.3 } } }");
     ASSERT_EQ(b.error, "");

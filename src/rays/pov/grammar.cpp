@@ -219,6 +219,25 @@ sdl::ItemRef readBlock(Interpreter& in, const BlockSpec& spec) {
     return item;
 }
 
+// Textures written one after another are layers, each over the one before (POV-Ray 3.7 reference,
+// "Layered Textures"): `#declare T = texture { A } texture { B };` declares one layered texture,
+// as textures.inc does. They become one texture item whose bare entries are the layers in order.
+sdl::ItemRef readTextureLayers(Interpreter& in, const BlockSpec& spec, sdl::ItemRef first) {
+    auto layered = std::make_shared<Item>();
+    layered->kind = Kw::texture;
+    layered->loc = first->loc;
+    auto addLayer = [&](sdl::ItemRef layer) {
+        Entry e;
+        e.loc = layer->loc;
+        e.args.push_back(Value::item(std::move(layer)));
+        layered->entries.push_back(std::move(e));
+    };
+    addLayer(std::move(first));
+    while (in.peekRawKw(Kw::texture)) addLayer(readBlock(in, spec));
+    setDepth(in, *layered);
+    return layered;
+}
+
 void readBody(Interpreter& in, Item& item, const BlockSpec& spec, char terminator) {
     const sdl::Loc open = item.loc;
     for (;;) {

@@ -80,6 +80,9 @@ BlockSpec makeSpec(const char* name, Kw kind, std::initializer_list<const RuleGr
 sdl::ItemRef readBlock(sdl::Interpreter& in, const BlockSpec& spec);
 /// Reads `{ body }` (the '{' current) as an item of the given kind.
 sdl::ItemRef readBlockBody(sdl::Interpreter& in, const BlockSpec& spec, Kw kind);
+/// `first` and the `texture { }` blocks that follow it in the text (the next is `texture`), as one
+/// layered texture: a texture item whose bare entries are the layers, bottom first.
+sdl::ItemRef readTextureLayers(sdl::Interpreter& in, const BlockSpec& spec, sdl::ItemRef first);
 /// Reads a block's body up to (not including) terminator into item.
 void readBody(sdl::Interpreter& in, sdl::Item& item, const BlockSpec& spec, char terminator);
 

@@ -43,8 +43,11 @@ bool PovHost::startsItem(Kw k) const { return itemSpec(k) != nullptr; }
 sdl::ItemRef PovHost::readItem(sdl::Interpreter& in) {
     const BlockSpec* spec = itemSpec(in.kw());
     if (!spec) in.errorHere("expected a scene item, found " + in.describe());
-    return readBlock(in, *spec);
+    sdl::ItemRef item = readBlock(in, *spec);
+    if (item->kind == Kw::texture && in.peekRawKw(Kw::texture)) return readTextureLayers(in, *spec, std::move(item));
+    return item;
 }
+
 
 void PovHost::topLevel(sdl::Interpreter& in, const sdl::ItemRef& item) {
     if (item->kind == Kw::global_settings) {

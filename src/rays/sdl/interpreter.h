@@ -91,6 +91,13 @@ public:
         return Loc{curFile_, cur_->line, cur_->col};
     }
     bool isKw(Kw k) { return tok().kind == Tk::Name && cur_->id == uint32_t(k); }
+    /// Whether the next token is keyword k, looking at the file's text only: no directive runs and
+    /// no macro expands to find out (for items that may go on after their block, before a
+    /// following #declare has run).
+    bool peekRawKw(Kw k) const {
+        const Token* t = have_ ? cur_ : cursor_;
+        return t && t->kind == Tk::Name && t->id == uint32_t(k);
+    }
     bool isSym(char c) { return tok().kind == Tk::Symbol && cur_->sym == uint8_t(c); }
     bool isName() { return tok().kind == Tk::Name; }
     bool isKeyword() { return tok().kind == Tk::Name && Names::isKeyword(cur_->id); }
