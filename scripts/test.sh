@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Quick start 2 and CI (.ci/run calls exactly this): install what is missing, then
 #   1. the sanitizer stages (scripts/sanitize.sh): an ASan + UBSan build running the whole test
-#      suite, and a TSan build running the multithreaded tests (about 10 minutes on 2 cores);
+#      suite, and a TSan build running the multithreaded tests (about 14 minutes on 2 cores);
 #   2. the warning-free optimised build and the whole test suite with CTest (its summary is the
 #      last line of the output).
 #   scripts/test.sh --quick    step 2 only (a few minutes)

@@ -153,8 +153,14 @@ TEST(PovObjects, TexturesWrittenInARowAreOneLayeredTexture) {
         "sphere { 0, 1 material { M } }\n"
         "sphere { 0, 1 texture { pigment { rgb 1 } } texture { T } }\n");
     ASSERT_EQ(b.error, "");
-    EXPECT_TRUE(b.warnings.empty()) << b.warnings.front();  // no "texture at the top level"
+    // One note for the layers, none for "texture at the top level".
+    ASSERT_EQ(b.warnings.size(), 1u);
+    EXPECT_EQ(b.warnings[0], "scene.pov:2:3: warning: not rendered yet: layered texture (layers mixed by their transparency)");
     ASSERT_EQ(b.scene.objects.size(), 2u);
+    // Half-transmitting red over white: half red, half the white below.
+    EXPECT_TRUE(near(b.scene.objects[0].material.color, {1, 0.5, 0.5})) << b.scene.objects[0].material.color.y;
+    EXPECT_DOUBLE_EQ(b.scene.objects[0].material.filter, 0);
+    EXPECT_DOUBLE_EQ(b.scene.povSurfaces[size_t(b.scene.objects[0].material.pov)].transmit, 0);
 }
 
 TEST(PovObjects, OneReflectionValueWithFresnelIsTheMaximum) {

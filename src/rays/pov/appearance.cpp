@@ -1,5 +1,6 @@
 #include "rays/pov/appearance.h"
 
+#include <algorithm>
 #include <string>
 
 #include "rays/pov/grammar.h"
@@ -196,12 +197,38 @@ void applyInterior(const Item& i, PovInterior& in, NotRendered& notes) {
     }
 }
 
+namespace {
+
+// A layer over the texture below it (POV-Ray 3.7 reference, "Layered Textures"): the lower texture
+// shows through the layer's pigment where it filters (tinted by the layer's colour) or transmits.
+// With flat colours that is a mix of the two colours, light passing only where both let it; the
+// finish is the layer's where it is mostly opaque. Lighting each layer apart is not rendered yet.
+void applyLayer(const Item& layer, Appearance& a, NotRendered& notes) {
+    notes.note("layered texture", layer.loc, "(layers mixed by their transparency)");
+    const Appearance below = a;
+    applyTexture(layer, a, notes);
+    const double f = std::clamp(a.pigment.filter, 0.0, 1.0);
+    const double t = std::clamp(a.pigment.transmit, 0.0, 1.0);
+    const double through = std::min(1.0, f + t);
+    a.pigment.rgb = a.pigment.rgb * (1 - through) + below.pigment.rgb * (Vec3{t, t, t} + f * a.pigment.rgb);
+    a.pigment.filter = below.pigment.filter * through;
+    a.pigment.transmit = below.pigment.transmit * through;
+    if (through >= 0.5) a.finish = below.finish;
+}
+
+}  // namespace
+
 void applyTexture(const Item& t, Appearance& a, NotRendered& notes) {
     a.set = true;
+    bool layered = false;  // a texture item applied already: the next is a layer over it
     for (const Entry& e : t.entries) {
         if (e.positional()) {
-            for (const Value& v : e.args)
-                if (v.type == VType::Item && v.item().kind == Kw::texture) applyTexture(v.item(), a, notes);
+            for (const Value& v : e.args) {
+                if (v.type != VType::Item || v.item().kind != Kw::texture) continue;
+                if (layered) applyLayer(v.item(), a, notes);
+                else applyTexture(v.item(), a, notes);
+                layered = true;
+            }
             continue;
         }
         if (e.key == kMapEntry) continue;
