@@ -114,6 +114,7 @@ Value Interpreter::adoptArray(Value v, const Loc& at) {
 }
 
 Value Interpreter::copyCharged(const Value& v, const Loc& at) {
+    if (v.type != VType::Array) return v;  // only arrays are copied deeply
     spend(arrayElements_, arrayElementCount(v), limits_.arrayElements, at, "array elements and spline points made (new and copied)");
     return copyValue(v);
 }
