@@ -10,8 +10,4 @@ void NotRendered::note(const std::string& what, const sdl::Loc& at, const std::s
     if (warn_) warn_(where_(at) + ": warning: not rendered yet: " + what + (detail.empty() ? "" : " " + detail));
 }
 
-void NotRendered::warn(const sdl::Loc& at, const std::string& msg) {
-    if (warn_) warn_(where_(at) + ": warning: " + msg);
-}
-
 }  // namespace rays::pov

@@ -20,8 +20,6 @@ public:
     /// Notes feature at loc (what: "isosurface", "pigment pattern wood", ...); detail is added to
     /// the first note only (what Rays does instead, e.g. "(left out)").
     void note(const std::string& what, const sdl::Loc& at, const std::string& detail = "");
-    /// Any other warning about the scene (not a missing feature).
-    void warn(const sdl::Loc& at, const std::string& msg);
     size_t count() const { return seen_.size(); }
     /// "file:line:col" of a location (for the builder's errors).
     std::string where(const sdl::Loc& at) const { return where_(at); }

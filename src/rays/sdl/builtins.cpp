@@ -1,7 +1,6 @@
 // Built-in float and vector functions (POV-Ray 3.7 reference, "Float Functions", "Vector
 // Functions"), and calls of user functions and splines.
 #include <cmath>
-#include <ctime>
 
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
@@ -12,12 +11,6 @@
 #include "rays/sdl/pov_strings.h"
 
 namespace rays::sdl {
-
-namespace {
-
-constexpr double kPi = 3.1415926535897932384626;
-
-}  // namespace
 
 bool Interpreter::isBuiltinFunction(Kw k) const {
     switch (k) {
@@ -87,7 +80,7 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
         case Kw::pow:
         case Kw::mod:
         case Kw::div: {
-            const auto a = callArgs(keywordName(k).data(), 2, 2);
+            const auto a = callArgs(name.data(), 2, 2);
             double r = 0;
             mathFunction2(k, f(a[0], 0), f(a[1], 1), r);
             return Value::number(r);

@@ -24,14 +24,13 @@ bool opensBlock(uint32_t id) {
 
 void Interpreter::directive(const Token& t) {
     const Loc at{topFile_, t.line, t.col};
-    const uint32_t directivePos = topPos() - 1;
     if (!Names::isKeyword(t.id)) error(at, "unknown directive '#" + std::string(names_.name(t.id)) + "'");
     switch (Kw(t.id)) {
         case Kw::include: return dirInclude(at);
         case Kw::declare: return dirDeclare(at, false);
         case Kw::local: return dirDeclare(at, true);
         case Kw::undef: return dirUndef();
-        case Kw::if_: return dirIf(at, directivePos);
+        case Kw::if_: return dirIf(at);
         case Kw::ifdef: return dirIfdef(at, true);
         case Kw::ifndef: return dirIfdef(at, false);
         case Kw::else_: return dirElse(at, false);
@@ -41,7 +40,7 @@ void Interpreter::directive(const Token& t) {
         case Kw::case_: return dirCase(at, false);
         case Kw::range: return dirCase(at, true);
         case Kw::break_: return dirBreak(at);
-        case Kw::while_: return dirWhile(at, directivePos);
+        case Kw::while_: return dirWhile(at, topPos() - 1);  // the loop returns to its #while
         case Kw::for_: return dirFor(at);
         case Kw::macro: return dirMacro(at);
         case Kw::version: return dirVersion();
@@ -120,19 +119,15 @@ void Interpreter::skipPastEnds(int count, const Loc& opener) {
     }
 }
 
-void Interpreter::dirIf(const Loc& at, uint32_t) {
-    if (condition("if")) {
-        frames_.back().ctl.push_back(Ctl{Ctl::If, at});
-        return;
-    }
-    for (;;) {
-        const SkipStop s = skip(true, false, at, "if");
+void Interpreter::dirIf(const Loc& at) { ifBranches(condition("if"), at, "if"); }
+
+void Interpreter::ifBranches(bool taken, const Loc& at, const char* name) {
+    while (!taken) {
+        const SkipStop s = skip(true, false, at, name);
         if (s == SkipStop::End) return;
-        if (s == SkipStop::Else || condition("elseif")) {
-            frames_.back().ctl.push_back(Ctl{Ctl::If, at});
-            return;
-        }
+        taken = s == SkipStop::Else || condition("elseif");
     }
+    frames_.back().ctl.push_back(Ctl{Ctl::If, at});
 }
 
 bool Interpreter::definedTest() {
@@ -144,19 +139,7 @@ bool Interpreter::definedTest() {
 }
 
 void Interpreter::dirIfdef(const Loc& at, bool wantDefined) {
-    if (definedTest() == wantDefined) {
-        frames_.back().ctl.push_back(Ctl{Ctl::If, at});
-        return;
-    }
-    const char* name = wantDefined ? "ifdef" : "ifndef";
-    for (;;) {
-        const SkipStop s = skip(true, false, at, name);
-        if (s == SkipStop::End) return;
-        if (s == SkipStop::Else || condition("elseif")) {
-            frames_.back().ctl.push_back(Ctl{Ctl::If, at});
-            return;
-        }
-    }
+    ifBranches(definedTest() == wantDefined, at, wantDefined ? "ifdef" : "ifndef");
 }
 
 // Met while running a branch: the rest of the #if is skipped. In a #switch, a running clause
@@ -361,10 +344,9 @@ void Interpreter::dirDeclare(const Loc&, bool isLocal) {
     const bool wasNumeric = numeric || v.isNumeric();
     Binding& bound = assignTarget(name, isLocal, path, std::move(v), nameAt, level);
     if (deprecated) {
-        Binding* b = &bound;
-        b->deprecated = true;
-        b->deprecatedOnce = once;
-        b->deprecatedMessage = message;
+        bound.deprecated = true;
+        bound.deprecatedOnce = once;
+        bound.deprecatedMessage = message;
     }
     if (wasNumeric && have_) {
         if (isSym(';')) {
@@ -401,7 +383,7 @@ Binding& Interpreter::assignTarget(uint32_t name, bool isLocal, const std::vecto
     }
     const bool numericKind = v.isNumeric();
     if (a->elemType != VType::Undefined) {
-        const bool wasNumeric = a->elemType == VType::Float || a->elemType == VType::Vector || a->elemType == VType::Color;
+        const bool wasNumeric = isNumericType(a->elemType);
         if (numericKind != wasNumeric || (!numericKind && a->elemType != v.type))
             error(at, std::string("array '") + std::string(names_.name(name)) + "' holds " + typeName(a->elemType) +
                           " elements; a " + typeName(v.type) + " cannot be stored in it");
@@ -473,12 +455,9 @@ void Interpreter::dirVersion() {
     if (isSym(';')) next();
     else warning(at, "#version should end with ';'");
     version_ = v;
-    versionSeen_ = true;
 }
 
-void Interpreter::dirDefault() { dirDefaultBody(); }
-
-void Interpreter::dirDefaultBody() {
+void Interpreter::dirDefault() {
     const Loc at = loc();
     expectSym('{', "after #default");
     while (!isSym('}')) {
@@ -494,16 +473,13 @@ void Interpreter::dirDefaultBody() {
 
 void Interpreter::dirMessage(const Loc& at, Kw which) {
     std::string text = parseString();
-    if (which == Kw::error) {
-        while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-        error(at, "#error: " + text);
-    }
-    if (which == Kw::warning) {
-        while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-        if (diag_.warning) diag_.warning(where(at) + ": warning: " + text);
+    if (which != Kw::error && which != Kw::warning) {
+        if (diag_.debug) diag_.debug(text);
         return;
     }
-    if (diag_.debug) diag_.debug(text);
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();  // one line each
+    if (which == Kw::error) error(at, "#error: " + text);
+    if (diag_.warning) diag_.warning(where(at) + ": warning: " + text);
 }
 
 }  // namespace rays::sdl

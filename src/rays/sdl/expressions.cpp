@@ -6,6 +6,7 @@
 // them (elsewhere '<' and '>' are vector brackets).
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"
@@ -53,13 +54,13 @@ Num make(VType type, int dim, const std::array<double, 5>& c) {
 }  // namespace
 
 namespace {
-// Two floats: the common case, without the promotion to vectors.
+// One operator on two floats (on each component of promoted vectors and colours).
 double combineFloats(char op, double x, double y) {
     switch (op) {
         case '+': return x + y;
         case '-': return x - y;
         case '*': return x * y;
-        case '/': return y == 0 ? HUGE_VAL : x / y;
+        case '/': return y == 0 ? HUGE_VAL : x / y;  // POV-Ray: x/0 is +inf for every x
         case '<': return x < y;
         case '>': return x > y;
         case kLessEq: return x < y || std::fabs(x - y) < kEpsilon;
@@ -78,28 +79,12 @@ Num combine(char op, const Num& a, const Num& b) {
     std::array<double, 5> x, y, r{};
     VType type;
     const int dim = promote(a, b, x, y, type);
-    for (int i = 0; i < dim; ++i) {
-        switch (op) {
-            case '+': r[i] = x[i] + y[i]; break;
-            case '-': r[i] = x[i] - y[i]; break;
-            case '*': r[i] = x[i] * y[i]; break;
-            case '/': r[i] = y[i] == 0 ? HUGE_VAL : x[i] / y[i]; break;  // POV-Ray: x/0 is +inf for every x
-            case '<': r[i] = x[i] < y[i]; break;
-            case '>': r[i] = x[i] > y[i]; break;
-            case kLessEq: r[i] = x[i] < y[i] || std::fabs(x[i] - y[i]) < kEpsilon; break;
-            case kGreaterEq: r[i] = x[i] > y[i] || std::fabs(x[i] - y[i]) < kEpsilon; break;
-            case '=': r[i] = std::fabs(x[i] - y[i]) < kEpsilon; break;
-            case kNotEq: r[i] = std::fabs(x[i] - y[i]) >= kEpsilon; break;
-            case '&': r[i] = std::fabs(x[i]) > kEpsilon && std::fabs(y[i]) > kEpsilon; break;
-            case '|': r[i] = std::fabs(x[i]) > kEpsilon || std::fabs(y[i]) > kEpsilon; break;
-        }
-    }
+    for (int i = 0; i < dim; ++i) r[i] = combineFloats(op, x[i], y[i]);  // component by component
     return make(type, dim, r);
 }
 
 double Interpreter::toFloat(const Value& v, const Loc& at, std::string_view what) {
-    if (v.type != VType::Float)
-        error(at, std::string(what) + " must be a float, found a " + typeName(v.type));
+    if (v.type != VType::Float) error(at, std::string(what) + " must be a float, found a " + typeName(v.type));
     return v.c[0];
 }
 
@@ -126,10 +111,7 @@ bool Interpreter::atNumericStart() {
                 switch (b->value.type) {
                     case VType::Float: case VType::Vector: case VType::Color: case VType::Function: case VType::Spline:
                         return true;
-                    case VType::Array: {
-                        const VType e = b->value.arr().elemType;
-                        return e == VType::Float || e == VType::Vector || e == VType::Color;
-                    }
+                    case VType::Array: return isNumericType(b->value.arr().elemType);
                     default: return false;
                 }
             }
@@ -330,7 +312,7 @@ Num Interpreter::factor(bool colorCtx) {
                 case Kw::t: { next(); const double v4[4] = {0, 0, 0, 1}; return Num::of(Value::vector(4, v4)); }
                 case Kw::u: { next(); const double v2[2] = {1, 0}; return Num::of(Value::vector(2, v2)); }
                 case Kw::v: { next(); const double v2[2] = {0, 1}; return Num::of(Value::vector(2, v2)); }
-                case Kw::pi: next(); return Num::number(3.1415926535897932384626);
+                case Kw::pi: next(); return Num::number(std::numbers::pi);
                 case Kw::true_: case Kw::yes: case Kw::on: next(); return Num::number(1);
                 case Kw::false_: case Kw::no: case Kw::off: next(); return Num::number(0);
                 case Kw::clock: next(); return Num::number(options_.animation.clock);
@@ -353,7 +335,7 @@ Num Interpreter::factor(bool colorCtx) {
                 case Kw::rgb: case Kw::rgbf: case Kw::rgbt: case Kw::rgbft: case Kw::srgb: case Kw::srgbf:
                 case Kw::srgbt: case Kw::srgbft: case Kw::red: case Kw::green: case Kw::blue: case Kw::filter:
                 case Kw::transmit:
-                    return colorKeyword(colorCtx);
+                    return colorKeyword();
                 default:
                     if (isBuiltinFunction(Kw(t.id))) return numericOf(builtin(Kw(t.id), at), at);
                     break;
@@ -456,8 +438,7 @@ Value Interpreter::arrayElement(const Value& arr, bool forAssign, std::vector<si
 }
 
 // `rgb E` and its kin, and `red F` ... starting a colour.
-Num Interpreter::colorKeyword(bool colorCtx) {
-    (void)colorCtx;
+Num Interpreter::colorKeyword() {
     NestGuard guard(*this);  // rgb rgb rgb 1 nests too
     const Kw k = kw();
     const Loc at = loc();

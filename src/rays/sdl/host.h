@@ -26,7 +26,7 @@ public:
     /// `#default { ... }`: the item is a texture, pigment, normal or finish.
     virtual void setDefault(Interpreter& in, const ItemRef& item) = 0;
 
-    /// Parse-time geometry. found = false when the host cannot answer (the caller then warns
+    /// Parse-time geometry. supported = false when the host cannot answer (the caller then warns
     /// that the feature is not available yet and uses zeros).
     struct TraceResult {
         bool supported = false;

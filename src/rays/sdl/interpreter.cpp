@@ -110,8 +110,6 @@ std::string Interpreter::findFile(const std::string& name) const {
     return {};
 }
 
-const std::string& Interpreter::fileName(uint32_t fileId) const { return files_[fileId]->shownName; }
-
 // ---- running -------------------------------------------------------------------------------------
 
 void Interpreter::declareGlobal(const std::string& name, Value v) {
@@ -119,20 +117,17 @@ void Interpreter::declareGlobal(const std::string& name, Value v) {
 }
 
 void Interpreter::run(const std::string& path) {
-    stackFloor_ = threadStackFloor();
     const fs::path p(path);
-    sceneFolder_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
-    const SourceFile& f = openFile(path, path);
-    Frame fr;
-    fr.kind = Frame::Main;
-    pushFile(f, std::move(fr));
-    topLevelLoop();
+    runMain(openFile(path, path), p.has_parent_path() ? p.parent_path().string() : std::string("."));
 }
 
 void Interpreter::runText(std::string_view text, const std::string& shownName, const std::string& folder) {
+    runMain(textFile(text, shownName), folder);
+}
+
+void Interpreter::runMain(const SourceFile& f, std::string folder) {
     stackFloor_ = threadStackFloor();
-    sceneFolder_ = folder;
-    const SourceFile& f = textFile(text, shownName);
+    sceneFolder_ = std::move(folder);
     Frame fr;
     fr.kind = Frame::Main;
     pushFile(f, std::move(fr));
@@ -174,7 +169,7 @@ void Interpreter::topLevelLoop() {
         }
         if (t.kind == Tk::Name && t.id == uint32_t(Kw::default_)) {  // `default { }` without '#' (POV-Ray 2 syntax, still read)
             next();
-            dirDefaultBody();
+            dirDefault();
             continue;
         }
         if (isSym(';')) {  // POV-Ray accepts stray semicolons between items

@@ -99,7 +99,6 @@ public:
         return t && t->kind == Tk::Name && t->id == uint32_t(k);
     }
     bool isSym(char c) { return tok().kind == Tk::Symbol && cur_->sym == uint8_t(c); }
-    bool isName() { return tok().kind == Tk::Name; }
     bool isKeyword() { return tok().kind == Tk::Name && Names::isKeyword(cur_->id); }
     bool isIdentifier() { return tok().kind == Tk::Name && !Names::isKeyword(cur_->id); }
     Kw kw() { return isKeyword() ? Kw(cur_->id) : Kw::Count; }
@@ -160,19 +159,14 @@ public:
     void warning(const Loc& at, const std::string& msg);
     /// "file:line:col".
     std::string where(const Loc& at) const;
-    const std::string& fileName(uint32_t fileId) const;
-    /// Folder of the main scene file ('.' when it has none).
-    const std::string& sceneFolder() const { return sceneFolder_; }
     /// Resolves a file name as #include does (scene folder, library paths, installed includes);
     /// empty when not found.
     std::string findFile(const std::string& name) const;
 
     // ---- state the host reads -----------------------------------------------------------------
     double version() const { return version_; }
-    bool versionSeen() const { return versionSeen_; }
     const LanguageOptions& options() const { return options_; }
     ItemHost& host() { return host_; }
-    Names& names() { return names_; }
     /// `assumed_gamma` as the host read it from global_settings (needed for srgb colours); 0 unset.
     void setAssumedGamma(double g) { assumedGamma_ = g; }
     double assumedGamma() const { return assumedGamma_; }
@@ -193,8 +187,6 @@ public:
         Interpreter& in_;
     };
 
-    /// The parse's user functions (shared with the scene for the renderer).
-    const std::shared_ptr<fn::FunctionTable>& functions() const { return functions_; }
     /// A float value or an error naming what (for readers outside the interpreter).
     double toFloatValue(const Value& v, const Loc& at, std::string_view what) { return toFloat(v, at, what); }
 
@@ -205,7 +197,6 @@ public:
 
     /// Defines identifier `name` at global level (command-line Declare=NAME=VALUE).
     void declareGlobal(const std::string& name, Value v);
-    Scopes& scopes() { return scopes_; }
 
 private:
     friend class DirectiveRunner;
@@ -223,6 +214,8 @@ private:
     const SourceFile& openFile(const std::string& path, const std::string& shownName);
     const SourceFile& textFile(std::string_view text, const std::string& shownName);
     void pushFile(const SourceFile& f, Frame&& frame);
+    /// Parses the main file f (its folder given) to its end.
+    void runMain(const SourceFile& f, std::string folder);
     /// Fetches the next token: plain tokens here (inline); directives, macro names and file ends
     /// through fetchSlow.
     void fetch(bool expandMacros) {
@@ -256,7 +249,9 @@ private:
     void dirInclude(const Loc& at);
     void dirDeclare(const Loc& at, bool isLocal);
     void dirUndef();
-    void dirIf(const Loc& at, uint32_t directivePos);
+    void dirIf(const Loc& at);
+    /// After an #if's test: runs the branch taken, or skips to the #else / #elseif that runs, or past #end.
+    void ifBranches(bool taken, const Loc& at, const char* name);
     void dirIfdef(const Loc& at, bool wantDefined);
     void dirElse(const Loc& at, bool isElseif);
     void dirEnd(const Loc& at);
@@ -271,7 +266,6 @@ private:
     void dirMacro(const Loc& at);
     void dirVersion();
     void dirDefault();
-    void dirDefaultBody();
     void dirMessage(const Loc& at, Kw which);
     void dirFopen(const Loc& at);
     void dirFclose();
@@ -308,7 +302,7 @@ private:
     Num factor(bool colorCtx);
     Num postfix(Num v);
     Num identifierValue(bool colorCtx);
-    Num colorKeyword(bool colorCtx);
+    Num colorKeyword();
     Num colorComponents(Num c);
     Num vectorLiteral();
     Num numericOf(const Value& v, const Loc& at);
@@ -362,7 +356,6 @@ private:
     void saveTop();
 
     double version_ = 3.62;
-    bool versionSeen_ = false;
     double assumedGamma_ = 0;
     uint32_t nesting_ = 0;
     uint32_t macroDepth_ = 0;  ///< macro frames on the stack

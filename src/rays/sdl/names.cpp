@@ -20,9 +20,4 @@ uint32_t Names::intern(std::string_view name) {
     return id;
 }
 
-uint32_t Names::find(std::string_view name) const {
-    auto it = ids_.find(name);
-    return it == ids_.end() ? UINT32_MAX : it->second;
-}
-
 }  // namespace rays::sdl

@@ -17,8 +17,6 @@ public:
     Names();
     /// The id of name, interning it when new.
     uint32_t intern(std::string_view name);
-    /// The id of name, or UINT32_MAX when it was never interned.
-    uint32_t find(std::string_view name) const;
     std::string_view name(uint32_t id) const { return spelled_[id]; }
     static bool isKeyword(uint32_t id) { return id < kKeywordCount; }
     size_t size() const { return spelled_.size(); }

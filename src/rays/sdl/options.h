@@ -1,6 +1,7 @@
 // What the host tells the scene language before a parse: where include files are found,
-// identifiers declared on the command line, the animation clock, the image size and how
-// warnings and interrupts reach it. Plain values; the language reads them, never changes them.
+// identifiers declared on the command line, the animation clock, the image size, the dialect
+// and --strict. Plain values; the language reads them, never changes them. (Warnings and Ctrl-C
+// reach the language through interpreter.h's Diagnostics.)
 #pragma once
 #include <functional>
 #include <string>

@@ -48,7 +48,7 @@ Value Interpreter::parseRValue() {
                     return arr;  // the whole array (copied when assigned)
                 }
                 const VType e = arr.arr().elemType;
-                if (e == VType::Float || e == VType::Vector || e == VType::Color) return parseNumeric(e == VType::Color);
+                if (isNumericType(e)) return parseNumeric(e == VType::Color);
                 if (e == VType::String) return Value::string(parseString());
                 next();
                 return arrayElement(arr, false, nullptr);
@@ -129,7 +129,7 @@ void Interpreter::arrayInitializer(ArrayData& a, size_t dim, size_t& flat) {
             const Loc vAt = loc();
             Value v = parseRValue();
             if (a.elemType == VType::Undefined) a.elemType = v.type;
-            else if (v.isNumeric() != (a.elemType == VType::Float || a.elemType == VType::Vector || a.elemType == VType::Color))
+            else if (v.isNumeric() != isNumericType(a.elemType))
                 error(vAt, std::string("array elements must all be of one type; this one is a ") + typeName(v.type));
             a.elems[flat++] = std::move(v);
         }

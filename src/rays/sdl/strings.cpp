@@ -3,7 +3,6 @@
 // of strings are read in expressions.cpp.
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 
 #include "rays/sdl/frames.h"
 #include "rays/sdl/interpreter.h"

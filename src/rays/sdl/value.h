@@ -15,6 +15,9 @@ namespace rays::sdl {
 
 enum class VType : uint8_t { Undefined, Float, Vector, Color, String, Array, Item, Function, Spline, Macro, File };
 
+/// Floats, vectors and colours: the types expressions compute with and promote into each other.
+inline bool isNumericType(VType t) { return t == VType::Float || t == VType::Vector || t == VType::Color; }
+
 /// "float", "vector", "colour", "string", "array", ... for messages.
 const char* typeName(VType t);
 
@@ -64,7 +67,7 @@ struct Value {
     static Value macro(std::shared_ptr<const MacroDef> m);
     static Value file(std::shared_ptr<FileHandle> f);
 
-    bool isNumeric() const { return type == VType::Float || type == VType::Vector || type == VType::Color; }
+    bool isNumeric() const { return isNumericType(type); }
     bool defined() const { return type != VType::Undefined; }
 
     const std::string& str() const { return *static_cast<const std::string*>(ref.get()); }
@@ -104,7 +107,7 @@ struct Num {
         v.c = c;
         return v;
     }
-    bool isNumeric() const { return type == VType::Float || type == VType::Vector || type == VType::Color; }
+    bool isNumeric() const { return isNumericType(type); }
 };
 
 /// A POV-Ray array: up to 5 dimensions, elements unset until assigned; all assigned elements
