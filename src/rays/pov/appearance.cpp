@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "rays/pov/grammar.h"
+#include "rays/pov/specs.h"
 
 namespace rays::pov {
 
@@ -11,26 +11,25 @@ using sdl::VType;
 
 namespace {
 
-bool isPatternKeyword(Kw k) {
-    switch (k) {
-        case Kw::agate: case Kw::aoi: case Kw::average: case Kw::boxed: case Kw::bozo: case Kw::brick:
-        case Kw::bumps: case Kw::cells: case Kw::checker: case Kw::crackle: case Kw::cubic: case Kw::cylindrical:
-        case Kw::density_file: case Kw::dents: case Kw::facets: case Kw::function: case Kw::gradient:
-        case Kw::granite: case Kw::hexagon: case Kw::image_pattern: case Kw::julia: case Kw::leopard:
-        case Kw::magnet: case Kw::mandel: case Kw::marble: case Kw::object: case Kw::onion: case Kw::pavement:
-        case Kw::pigment_pattern: case Kw::planar: case Kw::quilted: case Kw::radial: case Kw::ripples:
-        case Kw::slope: case Kw::spherical: case Kw::spiral1: case Kw::spiral2: case Kw::spotted: case Kw::square:
-        case Kw::tiling: case Kw::triangular: case Kw::waves: case Kw::wood: case Kw::wrinkles: case Kw::image_map:
-            return true;
-        default:
-            return false;
+// A pattern keyword of a pigment or texture: a pattern type, or a pigment's image_map.
+bool isPatternKeyword(Kw k) { return isPatternType(k) || k == Kw::image_map; }
+
+// The mean of colours, filter and transmit included.
+struct ColorMean {
+    Rgbft sum;
+    int n = 0;
+    void add(const Rgbft& c) {
+        sum.rgb += c.rgb;
+        sum.filter += c.filter;
+        sum.transmit += c.transmit;
+        ++n;
     }
-}
+    Rgbft mean() const { return {sum.rgb / double(n), sum.filter / n, sum.transmit / n}; }
+};
 
 // The mean colour of a colour map (each entry's colours), for patterns drawn as a flat colour.
 bool mapAverage(const Item& map, Rgbft& out) {
-    Rgbft sum;
-    int n = 0;
+    ColorMean m;
     for (const Entry& e : map.entries) {
         if (e.positional()) {
             for (const Value& v : e.args)
@@ -39,18 +38,11 @@ bool mapAverage(const Item& map, Rgbft& out) {
         }
         if (e.key != kMapEntry) continue;
         for (size_t i = 1; i < e.args.size(); ++i) {
-            if (e.args[i].type != VType::Color) continue;
-            const Rgbft c = toColor(e.args[i]);
-            sum.rgb += c.rgb;
-            sum.filter += c.filter;
-            sum.transmit += c.transmit;
-            ++n;
+            if (e.args[i].type == VType::Color) m.add(toColor(e.args[i]));
         }
     }
-    if (n == 0) return false;
-    out.rgb = sum.rgb / double(n);
-    out.filter = sum.filter / n;
-    out.transmit = sum.transmit / n;
+    if (m.n == 0) return false;
+    out = m.mean();
     return true;
 }
 
@@ -59,8 +51,7 @@ bool mapAverage(const Item& map, Rgbft& out) {
 void applyPigment(const Item& p, Rgbft& c, NotRendered& notes) {
     const char* pattern = nullptr;
     sdl::Loc patternAt;
-    Rgbft listSum;
-    int listCount = 0;
+    ColorMean list;  // a colour list of checker, hexagon, brick, object, ...
     bool fromMap = false;
     Rgbft mapColor;
     for (const Entry& e : p.entries) {
@@ -71,15 +62,8 @@ void applyPigment(const Item& p, Rgbft& c, NotRendered& notes) {
                 } else if (v.type == VType::Item && (v.item().kind == Kw::color_map || v.item().kind == Kw::colour_map)) {
                     fromMap = mapAverage(v.item(), mapColor) || fromMap;
                 } else if (v.isNumeric()) {
-                    const Rgbft col = toColor(v);
-                    if (pattern) {  // a colour list of checker, hexagon, brick, object, ...
-                        listSum.rgb += col.rgb;
-                        listSum.filter += col.filter;
-                        listSum.transmit += col.transmit;
-                        ++listCount;
-                    } else {
-                        c = col;
-                    }
+                    if (pattern) list.add(toColor(v));
+                    else c = toColor(v);
                 }
             }
             continue;
@@ -99,10 +83,8 @@ void applyPigment(const Item& p, Rgbft& c, NotRendered& notes) {
     notes.note(std::string("pigment pattern ") + pattern, patternAt, "(drawn in its mean colour)");
     if (fromMap) {
         c = mapColor;
-    } else if (listCount > 0) {
-        c.rgb = listSum.rgb / double(listCount);
-        c.filter = listSum.filter / listCount;
-        c.transmit = listSum.transmit / listCount;
+    } else if (list.n > 0) {
+        c = list.mean();
     } else {
         c = Rgbft{Vec3(0.5), 0, 0};
     }
@@ -276,11 +258,9 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
         a.set = true;
     }
     switch (k) {
-        case Kw::texture: {
-            // A second texture on the same object is a layer on top of the first.
+        case Kw::texture:  // over what is set (textures written in a row arrive as one layered texture)
             applyTexture(e.args[0].item(), a, notes);
             break;
-        }
         case Kw::pigment: applyPigment(e.args[0].item(), a.pigment, notes); break;
         case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
         case Kw::normal: notes.note("normal", e.loc, "(surfaces drawn smooth)"); break;

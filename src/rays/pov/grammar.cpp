@@ -153,13 +153,9 @@ void readBareValue(Interpreter& in, Entry& e) {
     else e.args.push_back(in.parseNumeric(true));
 }
 
-}  // namespace
-
 // Most blocks hold a few entries (a sphere's centre, radius, texture and a transform): one
 // allocation for them instead of the vector's 1, 2, 4 growth.
 constexpr size_t kEntriesReserved = 4;
-
-namespace {
 
 // Items nested at most this deep, counting those reached through identifiers: a file can nest a
 // declared item in itself again and again without writing the levels out (#declare O = union {
@@ -191,24 +187,8 @@ void setDepth(Interpreter& in, Item& item) {
                                " levels (a declared item used in itself again and again?)");
 }
 
-}  // namespace
-
-sdl::ItemRef readBlockBody(Interpreter& in, const BlockSpec& spec, Kw kind) {
-    Interpreter::NestGuard guard(in);  // sub-blocks nest too: pigment_pattern { pigment_pattern { ... } }
-    auto item = std::make_shared<Item>();
-    item->kind = kind;
-    item->loc = in.loc();
-    item->entries.reserve(kEntriesReserved);
-    in.expectSym('{', std::string("after '") + std::string(sdl::keywordName(kind)) + "'");
-    readBody(in, *item, spec, '}');
-    in.next();
-    return item;
-}
-
-sdl::ItemRef readBlock(Interpreter& in, const BlockSpec& spec) {
-    const Kw kind = in.kw();
-    const sdl::Loc at = in.loc();
-    in.next();
+// `{ body }` (the '{' current) as an item of the given kind, opened at `at`.
+sdl::ItemRef readBraced(Interpreter& in, const BlockSpec& spec, Kw kind, const sdl::Loc& at) {
     auto item = std::make_shared<Item>();
     item->kind = kind;
     item->loc = at;
@@ -217,6 +197,66 @@ sdl::ItemRef readBlock(Interpreter& in, const BlockSpec& spec) {
     readBody(in, *item, spec, '}');
     in.next();
     return item;
+}
+
+// One entry of a block at the current token, into e; false when it went into item already (a map
+// entry).
+bool readEntry(Interpreter& in, Item& item, const BlockSpec& spec, Entry& e) {
+    if (in.isKeyword()) {
+        const Kw k = in.kw();
+        if (const Rule* r = spec.find(k)) {
+            e.key = uint16_t(k);
+            if (r->arg != Arg::Item && r->arg != Arg::Function) in.next();  // those readers take their keyword
+            readArgs(in, *r, e);
+            return true;
+        }
+        if (spec.children && in.host().startsItem(k)) {
+            Interpreter::NestGuard guard(in);
+            e.key = uint16_t(k);
+            e.args.push_back(Value::item(in.host().readItem(in)));
+            return true;
+        }
+        if (!spec.positionals || !atBareValue(in))
+            in.errorHere("'" + std::string(sdl::keywordName(k)) + "' is not allowed in " + spec.name);
+        readBareValue(in, e);
+        return true;
+    }
+    if (in.isIdentifier()) {
+        if (!in.identBinding()) in.errorHere("undeclared identifier '" + std::string(in.spelling(in.tok().id)) + "'");
+        if (isItemValue(in) && !in.atNumericStart()) {
+            e.args.push_back(in.identBinding()->value);
+            in.next();
+            return true;
+        }
+        if (!spec.positionals) in.errorHere(in.describe() + " is not allowed in " + spec.name);
+        e.args.push_back(in.parseRValue());
+        return true;
+    }
+    if (in.isSym('[') && spec.map != BlockSpec::Map::None) {
+        readMapEntry(in, spec, item);
+        return false;
+    }
+    if (spec.coefficients && in.isSym('<')) {
+        readCoefficients(in, e);
+        return true;
+    }
+    if (!spec.positionals || !atBareValue(in)) in.errorHere("unexpected " + in.describe() + " in " + spec.name);
+    readBareValue(in, e);
+    return true;
+}
+
+}  // namespace
+
+sdl::ItemRef readBlockBody(Interpreter& in, const BlockSpec& spec, Kw kind) {
+    Interpreter::NestGuard guard(in);  // sub-blocks nest too: pigment_pattern { pigment_pattern { ... } }
+    return readBraced(in, spec, kind, in.loc());
+}
+
+sdl::ItemRef readBlock(Interpreter& in, const BlockSpec& spec) {
+    const Kw kind = in.kw();
+    const sdl::Loc at = in.loc();
+    in.next();
+    return readBraced(in, spec, kind, at);
 }
 
 // Textures written one after another are layers, each over the one before (POV-Ray 3.7 reference,
@@ -251,59 +291,7 @@ void readBody(Interpreter& in, Item& item, const BlockSpec& spec, char terminato
         }
         Entry e;
         e.loc = in.loc();
-        if (in.isKeyword()) {
-            const Kw k = in.kw();
-            if (const Rule* r = spec.find(k)) {
-                e.key = uint16_t(k);
-                if (r->arg != Arg::Item && r->arg != Arg::Function) in.next();  // those readers take their keyword
-                readArgs(in, *r, e);
-                item.entries.push_back(std::move(e));
-                continue;
-            }
-            if (spec.children && in.host().startsItem(k)) {
-                Interpreter::NestGuard guard(in);
-                e.key = uint16_t(k);
-                e.args.push_back(Value::item(in.host().readItem(in)));
-                item.entries.push_back(std::move(e));
-                continue;
-            }
-            if (spec.positionals && atBareValue(in)) {
-                readBareValue(in, e);
-                item.entries.push_back(std::move(e));
-                continue;
-            }
-            in.errorHere("'" + std::string(sdl::keywordName(k)) + "' is not allowed in " + spec.name);
-        }
-        if (in.isIdentifier()) {
-            if (!in.identBinding()) in.errorHere("undeclared identifier '" + std::string(in.spelling(in.tok().id)) + "'");
-            if (isItemValue(in) && !in.atNumericStart()) {
-                e.args.push_back(in.identBinding()->value);
-                in.next();
-                item.entries.push_back(std::move(e));
-                continue;
-            }
-            if (spec.positionals) {
-                e.args.push_back(in.parseRValue());
-                item.entries.push_back(std::move(e));
-                continue;
-            }
-            in.errorHere(in.describe() + " is not allowed in " + spec.name);
-        }
-        if (in.isSym('[') && spec.map != BlockSpec::Map::None) {
-            readMapEntry(in, spec, item);
-            continue;
-        }
-        if (spec.coefficients && in.isSym('<')) {
-            readCoefficients(in, e);
-            item.entries.push_back(std::move(e));
-            continue;
-        }
-        if (spec.positionals && atBareValue(in)) {
-            readBareValue(in, e);
-            item.entries.push_back(std::move(e));
-            continue;
-        }
-        in.errorHere("unexpected " + in.describe() + " in " + spec.name);
+        if (readEntry(in, item, spec, e)) item.entries.push_back(std::move(e));
     }
 }
 

@@ -16,8 +16,10 @@ namespace {
 
 void printLine(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
 
-Scene build(const std::function<void(sdl::Interpreter&)>& run, const std::string& shownName, const ParseOptions& options,
-            const sdl::Limits& limits = {}) {
+}  // namespace
+
+Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
+                   const ParseOptions& options, const sdl::Limits& limits) {
     ParsedScene parsed;
     PovHost host(parsed);
     sdl::Diagnostics d;
@@ -38,7 +40,7 @@ Scene build(const std::function<void(sdl::Interpreter&)>& run, const std::string
             in.declareGlobal(decl.name, sdl::Value::number(v));
         }
     }
-    run(in);
+    in.runText(text, shownName, folder);
     NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);
     SceneBuilder builder(notes, limits.sceneObjects);
     builder.reserve(parsed.items.size());
@@ -46,20 +48,9 @@ Scene build(const std::function<void(sdl::Interpreter&)>& run, const std::string
     return builder.finish(shownName);
 }
 
-}  // namespace
-
-Scene loadPovScene(const std::string& path, const ParseOptions& options) {
-    return build([&](sdl::Interpreter& in) { in.run(path); }, path, options);
-}
-
 Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
                    const ParseOptions& options) {
-    return build([&](sdl::Interpreter& in) { in.runText(text, shownName, folder); }, shownName, options);
-}
-
-Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
-                   const ParseOptions& options, const sdl::Limits& limits) {
-    return build([&](sdl::Interpreter& in) { in.runText(text, shownName, folder); }, shownName, options, limits);
+    return parsePovText(text, shownName, folder, options, sdl::Limits{});
 }
 
 bool looksLikePovray(std::string_view s) {

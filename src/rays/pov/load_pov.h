@@ -14,10 +14,9 @@ struct Limits;
 
 namespace rays::pov {
 
-/// Parses and builds the POV-Ray scene at path. Warnings (language warnings, "not rendered yet"
+/// Parses and builds a POV-Ray scene held in memory (shownName names it in messages; folder is
+/// where its includes are looked up first). Warnings (language warnings, "not rendered yet"
 /// notes) go to options.warn (stderr when unset), #debug text to stderr. Throws Error.
-Scene loadPovScene(const std::string& path, const ParseOptions& options);
-/// The same for text held in memory; folder is where its includes are looked up first.
 Scene parsePovText(std::string_view text, const std::string& shownName, const std::string& folder,
                    const ParseOptions& options);
 /// The same with the scene language's limits (sdl::Limits: loop iterations, macro and include

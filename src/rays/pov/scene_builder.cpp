@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "rays/error.h"
 #include "rays/pov/build_mesh.h"
@@ -14,7 +15,6 @@ using sdl::VType;
 namespace {
 
 constexpr int kMaxObjectDepth = 1000;
-constexpr double kPi = 3.14159265358979323846;
 
 // v as an int in [lo, hi], clamped as a float first (1e300 has no int); NaN gives lo.
 int clampedInt(double v, int lo, int hi) { return std::isnan(v) ? lo : int(std::clamp(v, double(lo), double(hi))); }
@@ -153,7 +153,7 @@ void SceneBuilder::addCamera(const Item& cam) {
             case Kw::angle: {
                 const double a = toFloat(e.args[0]);
                 if (a > 0 && a < 180 && length(dir) > 0)
-                    dir = normalize(dir) * (0.5 * length(right) / std::tan(a * kPi / 360.0));
+                    dir = normalize(dir) * (0.5 * length(right) / std::tan(a * std::numbers::pi / 360.0));
                 break;
             }
             case Kw::look_at: {
@@ -253,7 +253,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
 
 // ---- objects ---------------------------------------------------------------------------------
 
-Material SceneBuilder::material(const Appearance& look, const sdl::Loc&) {
+Material SceneBuilder::material(const Appearance& look) {
     Material m;
     m.color = look.pigment.rgb;
     m.filter = std::clamp(look.pigment.filter, 0.0, 1.0);
@@ -371,8 +371,8 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             need(2);
             o.type = ShapeType::Box;
             const Vec3 p = toVec3(*a[0]), q = toVec3(*a[1]);
-            o.p0 = {std::min(p.x, q.x), std::min(p.y, q.y), std::min(p.z, q.z)};
-            o.p1 = {std::max(p.x, q.x), std::max(p.y, q.y), std::max(p.z, q.z)};
+            o.p0 = vmin(p, q);
+            o.p1 = vmax(p, q);
             break;
         }
         case Kw::cone:
@@ -405,7 +405,7 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             const bool smooth = kind == Kw::smooth_triangle;
             need(smooth ? 6 : 3);
             o.type = ShapeType::Triangle;
-            o.p0 = toVec3(*a[0 + (smooth ? 0 : 0)]);
+            o.p0 = toVec3(*a[0]);
             o.p1 = toVec3(*a[smooth ? 2 : 1]);
             o.p2 = toVec3(*a[smooth ? 4 : 2]);
             if (length(cross(o.p1 - o.p0, o.p2 - o.p0)) == 0) return;
@@ -423,7 +423,7 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             notes_.note(std::string(sdl::keywordName(kind)), at, "(left out)");
             return;
     }
-    o.material = material(look, at);
+    o.material = material(look);
     prepareObject(o, toWorld);
     scene_.objects.push_back(o);
 }
@@ -447,7 +447,7 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     o.mesh = mesh.get();
     o.line = int(m.loc.line);
     o.col = int(m.loc.col);
-    o.material = material(look, m.loc);
+    o.material = material(look);
     prepareObject(o, toWorld);
     scene_.meshes.push_back(std::move(mesh));
     scene_.objects.push_back(o);

@@ -36,7 +36,7 @@ private:
                       const Appearance& look);
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look);
     void globalSettings(const Item& g);
-    Material material(const Appearance& look, const sdl::Loc& at);
+    Material material(const Appearance& look);
     /// Counts n more objects made at `at`; throws past maxObjects_.
     void countObjects(uint64_t n, const sdl::Loc& at);
 

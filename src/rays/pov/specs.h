@@ -12,6 +12,7 @@ struct Specs {
     BlockSpec colorMap, pigmentMap, normalMap, slopeMap, textureMap, densityMap;
     BlockSpec pigmentBody, normalBody, textureBody, densityBody;  // map entries' bodies
     BlockSpec warp, imageMap, reflection, irid, subsurfaceFinish, scattering, materialMap, tiles, slope;
+    BlockSpec patternTypes;  ///< the pattern type keywords alone (agate ... wrinkles), for isPatternType
     // objects (specs_objects.cpp)
     BlockSpec sphere, box, cone, cylinder, plane, torus, disc, polygon, prism, lathe, sor, superellipsoid, blob,
         heightField, text, quadric, cubic, quartic, poly, polynomial, juliaFractal, sphereSweep, bicubicPatch, ovus,
@@ -29,6 +30,8 @@ struct Specs {
 
 /// The one Specs of the program.
 const Specs& specs();
+/// True when k names a pattern type (checker, wood, gradient, ...).
+inline bool isPatternType(Kw k) { return specs().patternTypes.find(k) != nullptr; }
 
 // Rule constructors and the rule groups shared between files.
 inline Rule flag(Kw k) { return {k, Arg::Flag}; }

@@ -68,9 +68,9 @@ void readOptionalList(Interpreter& in, Entry& e) {
     }
 }
 
-// quick_color / quick_colour: a colour.
-RuleGroup patternTypes(const Specs& s) {
-    return {flag(Kw::agate), number(Kw::agate_turb), optExpr(Kw::aoi), flag(Kw::average), flag(Kw::boxed), flag(Kw::bozo), flag(Kw::brick),
+// The pattern types (POV-Ray 3.7 reference, "Patterns"), each with what follows its keyword.
+RuleGroup patternKinds(const Specs& s) {
+    return {flag(Kw::agate), optExpr(Kw::aoi), flag(Kw::average), flag(Kw::boxed), flag(Kw::bozo), flag(Kw::brick),
             optNumber(Kw::bumps), flag(Kw::cells), flag(Kw::checker), flag(Kw::crackle), flag(Kw::cubic),
             flag(Kw::cylindrical), custom(Kw::density_file, readDensityFile), optNumber(Kw::dents),
             flag(Kw::facets), function(Kw::function), expr(Kw::gradient), flag(Kw::granite), flag(Kw::hexagon),
@@ -79,9 +79,12 @@ RuleGroup patternTypes(const Specs& s) {
             flag(Kw::pavement), sub(Kw::pigment_pattern, s.pigmentBody), flag(Kw::planar), flag(Kw::quilted),
             flag(Kw::radial), optNumber(Kw::ripples), subOrExpr(Kw::slope, s.slope), flag(Kw::spherical),
             list(Kw::spiral1, 2), list(Kw::spiral2, 2), flag(Kw::spotted), flag(Kw::square), number(Kw::tiling),
-            flag(Kw::triangular), optNumber(Kw::waves), flag(Kw::wood), optNumber(Kw::wrinkles),
-            // pattern-specific modifiers
-            expr(Kw::brick_size), number(Kw::mortar), number(Kw::control0), number(Kw::control1), expr(Kw::form),
+            flag(Kw::triangular), optNumber(Kw::waves), flag(Kw::wood), optNumber(Kw::wrinkles)};
+}
+
+// Modifiers of one pattern type or another (agate_turb, brick_size, mortar, ...).
+RuleGroup patternSpecificModifiers() {
+    return {number(Kw::agate_turb), expr(Kw::brick_size), number(Kw::mortar), number(Kw::control0), number(Kw::control1), expr(Kw::form),
             number(Kw::metric), number(Kw::offset), flag(Kw::solid), number(Kw::coords), number(Kw::size),
             number(Kw::exponent), list(Kw::exterior, 2), list(Kw::interior, 2), number(Kw::number_of_sides),
             number(Kw::number_of_tiles), number(Kw::pattern), expr(Kw::orientation), number(Kw::dist_exp),
@@ -103,7 +106,11 @@ RuleGroup patternModifiers(const Specs& s) {
 }  // namespace
 
 void Specs::buildTextures() {
-    const RuleGroup types = patternTypes(*this);
+    const RuleGroup kinds = patternKinds(*this);
+    patternTypes = makeSpec("a pattern type", Kw::pattern, {&kinds});
+    RuleGroup types = kinds;
+    const RuleGroup specific = patternSpecificModifiers();
+    types.insert(types.end(), specific.begin(), specific.end());
     const RuleGroup mods = patternModifiers(*this);
 
     const RuleGroup pigmentOnly{sub(Kw::image_map, imageMap), item(Kw::pigment)};

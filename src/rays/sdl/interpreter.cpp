@@ -116,18 +116,10 @@ void Interpreter::declareGlobal(const std::string& name, Value v) {
     scopes_.declare(names_.intern(name), std::move(v));
 }
 
-void Interpreter::run(const std::string& path) {
-    const fs::path p(path);
-    runMain(openFile(path, path), p.has_parent_path() ? p.parent_path().string() : std::string("."));
-}
-
 void Interpreter::runText(std::string_view text, const std::string& shownName, const std::string& folder) {
-    runMain(textFile(text, shownName), folder);
-}
-
-void Interpreter::runMain(const SourceFile& f, std::string folder) {
     stackFloor_ = threadStackFloor();
-    sceneFolder_ = std::move(folder);
+    sceneFolder_ = folder;
+    const SourceFile& f = textFile(text, shownName);
     Frame fr;
     fr.kind = Frame::Main;
     pushFile(f, std::move(fr));

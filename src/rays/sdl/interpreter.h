@@ -64,10 +64,9 @@ public:
     Interpreter(const Interpreter&) = delete;
     Interpreter& operator=(const Interpreter&) = delete;
 
-    /// Parses the scene file at path to its end, giving top-level items to the host. Throws
-    /// Error "FILE:LINE:COL: error: ..." (with the include chain and macro calls) on bad input.
-    void run(const std::string& path);
-    /// Parses scene text held in memory (tests, fuzzing); shownName names it in messages.
+    /// Parses scene text (a scene file's, read by the caller) to its end, giving top-level items to
+    /// the host; shownName names it in messages, folder is where its includes are looked up first.
+    /// Throws Error "FILE:LINE:COL: error: ..." (with the include chain and macro calls) on bad input.
     void runText(std::string_view text, const std::string& shownName, const std::string& folder = ".");
 
     // ---- tokens -------------------------------------------------------------------------
@@ -214,8 +213,6 @@ private:
     const SourceFile& openFile(const std::string& path, const std::string& shownName);
     const SourceFile& textFile(std::string_view text, const std::string& shownName);
     void pushFile(const SourceFile& f, Frame&& frame);
-    /// Parses the main file f (its folder given) to its end.
-    void runMain(const SourceFile& f, std::string folder);
     /// Fetches the next token: plain tokens here (inline); directives, macro names and file ends
     /// through fetchSlow.
     void fetch(bool expandMacros) {
