@@ -156,6 +156,12 @@ TEST(SdlFunctions, BodiesCompileAndEvaluateWhileParsing) {
     // A macro in a body runs once, when the function is defined.
     EXPECT_EQ(dbg("#macro Two() 2 #end #declare F = function { x * Two() } #debug str(F(8, 0, 0), 0, 0)"), "16");
     EXPECT_EQ(dbg("#declare S = function { spline { linear_spline 0, <0,0,0>, 1, <2,4,6> } } #debug str(S(0.5).y, 0, 1)"), "2.0");
+    // An array element is a constant operand; the rest of the expression stays the body's
+    // (values from POV-Ray 3.7.0).
+    EXPECT_EQ(dbg("#declare A = array[2] {7, 8}; #declare G = function { A[1] * x + 1 } #debug str(G(2, 0, 0), 0, 0)"), "17");
+    // A sum's variable is seen from its `to` expression on, holding `from` there.
+    EXPECT_EQ(dbg("#declare S = function { sum(i, 1, 3, sum(i, 1, i, i)) } #debug str(S(0, 0, 0), 0, 0)"), "3");
+    EXPECT_EQ(dbg("#declare T = function { sum(j, 1, 4, j) } #debug str(T(0, 0, 0), 0, 0)"), "10");
     EXPECT_NE(err("#declare F = function { x + Nope }").find("undeclared identifier 'Nope' in a function body"), std::string::npos);
     EXPECT_NE(err("#declare F = function { x } #declare G = F(1, 2);").find("takes 3 arguments, 2 given"), std::string::npos);
 }

@@ -299,11 +299,14 @@ private:
         in_.expectSym(',', "after the variable of ", name);
         const int32_t from = cond();
         in_.expectSym(',', "in ", name);
+        // The variable is seen from `to` on (holding `from` there), as in POV-Ray 3.7:
+        // sum(i, 1, 3, sum(i, 1, i, i)) is 3.
+        const int32_t slot = int32_t(locals_.size());
+        if (slot >= fn::kMaxLocals)
+            in_.error(locs_[size_t(at)], "sum and prod nested deeper than " + std::to_string(fn::kMaxLocals) + " levels");
+        locals_.emplace_back(var, slot);
         const int32_t to = cond();
         in_.expectSym(',', "in ", name);
-        const int32_t slot = int32_t(locals_.size());
-        if (slot >= 56) in_.error(locs_[size_t(at)], "sum and prod nested deeper than 56 levels");
-        locals_.emplace_back(var, slot);
         const int32_t body = cond();
         locals_.pop_back();
         in_.expectSym(')', "to close ", name);
@@ -337,9 +340,9 @@ private:
             return e_.call(callee.index, a, member, at);
         }
         if (v.isNumeric() || v.type == VType::Array) {
-            // A vector or colour component, or an array element: a constant of the body.
-            const Loc loc = in_.loc();
-            return e_.constant(in_.toFloatValue(in_.parseNumeric(false), loc, "a value in a function body"), at);
+            // An array element, or a vector or colour component: a constant operand of the body
+            // (the rest of the expression is the body's: `A[1] * x`).
+            return e_.constant(in_.parseIdentifierOperand("a value in a function body"), at);
         }
         in_.errorHere(std::string("a ") + typeName(v.type) + " identifier ('" + name + "') cannot be used in a function body");
     }
@@ -370,7 +373,8 @@ Value Interpreter::parseFunction() {
             break;
         }
         expectSym(')', "after the function's parameters");
-        if (params.size() > 56) error(at, "a function takes at most 56 parameters");
+        if (params.size() > size_t(fn::kMaxParams))
+            error(at, "a function takes at most " + std::to_string(fn::kMaxParams) + " parameters");
     } else {
         params = {uint32_t(Kw::x), uint32_t(Kw::y), uint32_t(Kw::z)};
     }
@@ -406,7 +410,7 @@ Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at
     } else {
         if (k == Kw::internal) {
             // `function { internal(N) }` (functions.inc) takes the internal function's own parameters.
-            const Token* t = have_ ? cursor_ - 1 : cursor_;
+            const Token* t = peekRaw();
             if (t[1].kind == Tk::Symbol && t[1].sym == '(' && t[2].kind == Tk::Number && t[3].kind == Tk::Symbol &&
                 t[3].sym == ')' && t[4].kind == Tk::Symbol && t[4].sym == '}')
                 if (const fn::InternalFunction* f = fn::internalFunction(povInt(t[2].number))) {
@@ -434,7 +438,7 @@ Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at
 
 Value Interpreter::callFunction(const Value& fnValue, const Loc& at) {
     const FunctionValue& fv = fnValue.fn();
-    const Args a = callArgs("a function call", 0, 56);
+    const Args a = callArgs("a function call", 0, fn::kMaxParams);
     const int want = fv.table->params(fv.index);
     if (int(a.size()) != want)
         error(at, "the function takes " + std::to_string(want) + " arguments, " + std::to_string(a.size()) + " given");

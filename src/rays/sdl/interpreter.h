@@ -94,9 +94,12 @@ public:
     /// no macro expands to find out (for items that may go on after their block, before a
     /// following #declare has run).
     bool peekRawKw(Kw k) const {
-        const Token* t = have_ ? cur_ : cursor_;
+        const Token* t = peekRaw();
         return t && t->kind == Tk::Name && t->id == uint32_t(k);
     }
+    /// The next token in the file's text (the current one if it was fetched), the tokens after it
+    /// following in the array: no directive runs and no macro expands.
+    const Token* peekRaw() const { return have_ ? cur_ : cursor_; }
     bool isSym(char c) { return tok().kind == Tk::Symbol && cur_->sym == uint8_t(c); }
     bool isKeyword() { return tok().kind == Tk::Name && Names::isKeyword(cur_->id); }
     bool isIdentifier() { return tok().kind == Tk::Name && !Names::isKeyword(cur_->id); }
@@ -186,8 +189,12 @@ public:
         Interpreter& in_;
     };
 
-    /// A float value or an error naming what (for readers outside the interpreter).
-    double toFloatValue(const Value& v, const Loc& at, std::string_view what) { return toFloat(v, at, what); }
+    /// The value of the identifier at the current token with its `[i]` and `.x` postfixes and nothing
+    /// after them, as a float (an error naming what otherwise): a constant operand of a function body.
+    double parseIdentifierOperand(std::string_view what) {
+        const Loc at = loc();
+        return toFloat(postfix(identifierValue(false)), at, what);
+    }
 
     /// Counts the items of a declared item used in another one (Limits::itemCopies); throws past it.
     void countItemCopy(uint64_t items, const Loc& at) {
