@@ -4,6 +4,7 @@
 // all must agree bit for bit, so each op test also checks folding and the batch machine.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -615,4 +616,52 @@ TEST(FnMachine, BatchRunsCalleesThatAreNotInlined) {
         EXPECT_TRUE(same(out[i], eval(p, a, s))) << i;  // batch = scalar, bit for bit
         EXPECT_NEAR(out[i], (x[i] * x[i] + y[i] * z[i]) - 6 * (x[i] + 1), 1e-12) << i;
     }
+}
+
+namespace {
+std::atomic<int> hostRuns{0};
+// A host function that counts its runs: in[0] + 7.
+void countingHost(const void*, const double* in, double* out) {
+    ++hostRuns;
+    out[0] = in[0] + 7;
+}
+}  // namespace
+
+TEST(FnMachine, CallsWithConstantArgumentsFoldOnlyWhenSafe) {
+    // A call that is not inlined, with constant arguments, is folded by running the callee at
+    // compile time. Not when the callee runs a host function (at parse time pattern and pigment
+    // functions give 0, their rendered value is not known yet), and not when its loops and calls
+    // run long: no parse loop limit guards the compile.
+    FunctionTable t;
+    CompileOptions noInline;
+    noInline.inlineCalls = false;
+    t.addHost({&countingHost, nullptr, 3, 1});
+    t.addFloat(sexpr("(* 2 (call 0 x y z))"), 3, noInline);          // 1: calls the host
+    t.addFloat(sexpr("(sum 0 1 1000000 (* i0 x))"), 1, noInline);    // 2: a long loop
+    t.addFloat(sexpr("(sum 0 1 10 (* i0 x))"), 1, noInline);         // 3: a short loop
+    hostRuns = 0;
+    auto viaHost = compile(sexpr("(call 1 1 2 3)"), 1, t.programs(), noInline);
+    EXPECT_EQ(hostRuns, 0);
+    EXPECT_EQ(viaHost->callees.size(), 1u);
+    Scratch s(*viaHost);
+    const double x = 0;
+    EXPECT_EQ(eval(*viaHost, &x, s), 16);
+    EXPECT_EQ(hostRuns, 1);
+    auto longLoop = compile(sexpr("(call 2 2)"), 1, t.programs(), noInline);
+    EXPECT_EQ(longLoop->callees.size(), 1u);
+    s.fit(*longLoop);
+    EXPECT_EQ(eval(*longLoop, &x, s), 1000001000000.0);
+    auto shortLoop = compile(sexpr("(call 3 2)"), 1, t.programs(), noInline);
+    EXPECT_TRUE(shortLoop->callees.empty());  // folded
+    EXPECT_EQ(eval(*shortLoop, &x, s), 110);
+    // Calls count as loops do: a chain where each function calls the one before twice runs
+    // 2^20 calls.
+    FunctionTable chain;
+    chain.addFloat(sexpr("(+ x 1)"), 1, noInline);
+    for (int k = 0; k < 20; ++k)
+        chain.addFloat(sexpr("(+ (call " + std::to_string(k) + " x) (call " + std::to_string(k) + " x))"), 1, noInline);
+    auto top = compile(sexpr("(call 20 1)"), 1, chain.programs(), noInline);
+    EXPECT_EQ(top->callees.size(), 1u);
+    s.fit(*top);
+    EXPECT_EQ(eval(*top, &x, s), 2.0 * (1 << 20));
 }

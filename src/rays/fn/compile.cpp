@@ -20,6 +20,8 @@ std::shared_ptr<const Program> compile(const Expr& body, int params,
     p->callDepth = callDepth;
     p->callees = ir.callees;
     p->hosts = ir.hosts;
+    p->callsHost = !ir.hosts.empty();
+    for (const auto& c : ir.callees) p->callsHost = p->callsHost || c->callsHost;
     emitProgram(ir, *p);
     std::shared_ptr<Ir> small = compactIr(ir);
     if (static_cast<int>(small->nodes.size()) <= options.inlineLimit) p->inlineBody = std::move(small);
@@ -52,6 +54,7 @@ std::shared_ptr<const Program> hostProgram(const HostFunction& host) {
     p->outputs = host.outputs;
     p->hosts = ir.hosts;
     p->hostWrapper = true;
+    p->callsHost = true;
     emitProgram(ir, *p);
     return p;
 }

@@ -14,6 +14,9 @@
 namespace rays::fn {
 namespace {
 
+// Loop repetitions and calls a folded call may run (more: the call stays).
+constexpr uint64_t kFoldBudget = 10000;
+
 bool isUnary(Op op) { return opArity(op).min == 1 && opArity(op).max == 1; }
 bool isBinary(Op op) { return opArity(op).min == 2 && opArity(op).max == 2; }
 
@@ -108,15 +111,29 @@ public:
         }
         if (opt_.inlineCalls && callee->inlineBody) return inlineCall(*callee->inlineBody, args, loc);
         if (opt_.fold && allConst(args)) {
-            std::vector<double> values;
-            for (int32_t a : args) values.push_back(ir.nodes[a].value);
-            Scratch s(*callee);
-            return constant(eval(*callee, values.data(), s), loc);
+            const int32_t folded = foldCall(*callee, args, loc);
+            if (folded >= 0) return folded;
         }
         return make(irOp(Op::Call), args, calleeIndex(callee), member, 0, loc);
     }
 
 private:
+    /// The value of `callee` at constant `args`, run now; -1 when it runs a host function (whose
+    /// value may not be known yet: pattern functions give 0 while parsing) or when its loops and
+    /// calls exceed kFoldBudget (the compile runs under no parse loop limit).
+    int32_t foldCall(const Program& callee, std::span<const int32_t> args, int32_t loc) {
+        if (callee.callsHost) return -1;
+        std::vector<double> values;
+        for (int32_t a : args) values.push_back(ir.nodes[a].value);
+        Scratch s(callee);
+        LoopBudget budget(kFoldBudget);
+        try {
+            return constant(eval(callee, values.data(), s), loc);
+        } catch (const LoopBudgetExceeded&) {
+            return -1;
+        }
+    }
+
     bool allConst(std::span<const int32_t> kids) const {
         return std::all_of(kids.begin(), kids.end(), [&](int32_t k) { return ir.isConst(k); });
     }

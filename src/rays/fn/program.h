@@ -89,6 +89,7 @@ struct Program {
     int batchFrame = 0;            ///< doubles a batch run needs, callees' frames included
     int callDepth = 1;             ///< 1 + the deepest chain of calls below (before inlining)
     bool hostWrapper = false;      ///< this program only forwards its arguments to hosts[0]
+    bool callsHost = false;        ///< it or a function it calls runs a host function
     std::shared_ptr<const Ir> inlineBody;  ///< the folded tree, kept when small enough to inline
 };
 
