@@ -4,10 +4,10 @@
 // rotated by the SOR angle (degrees) about z. The value is the field strength times g, clamped
 // (internal_field.h). The curves were recovered by fitting POV-Ray 3.7's values.
 #include <cmath>
-#include <numbers>
 
 #include "rays/fn/internal_field.h"
 #include "rays/fn/internal_impl.h"
+#include "rays/fn/ops.h"
 
 namespace rays::fn::internal {
 namespace {
@@ -20,7 +20,7 @@ struct Plane {
 Plane curvePoint(const double* p, int sor) {
     if (!(p[sor] > 0)) return {p[0], p[1]};
     const double x = std::sqrt(p[0] * p[0] + p[2] * p[2]) - p[sor + 1];
-    const double a = p[sor + 2] * (std::numbers::pi / 180);
+    const double a = p[sor + 2] * ops::kRadiansPerDegree;
     const double c = std::cos(a), s = std::sin(a);
     return {x * c - p[1] * s, x * s + p[1] * c};
 }

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "rays/fn/internal_impl.h"
+#include "rays/fn/ops.h"
 
 namespace rays::fn::internal {
 namespace {
@@ -17,7 +18,7 @@ constexpr double kPi = std::numbers::pi;
 // (u, v) by `degrees`.
 double crossSection(double u, double v, double type, double degrees) {
     if (degrees != 0) {
-        const double a = degrees * (kPi / 180), c = std::cos(a), s = std::sin(a);
+        const double a = degrees * ops::kRadiansPerDegree, c = std::cos(a), s = std::sin(a);
         const double ru = u * c + v * s, rv = v * c - u * s;
         u = ru;
         v = rv;
@@ -31,14 +32,19 @@ double crossSection(double u, double v, double type, double degrees) {
     return std::pow(std::pow(u, q) + std::pow(v, q), 1 / q);
 }
 
+// v less a whole number of turns, in [−π, π].
+double wrapAngle(double v) {
+    double d = std::fmod(v, 2 * kPi);
+    if (d > kPi) d -= 2 * kPi;
+    if (d < -kPi) d += 2 * kPi;
+    return d;
+}
+
 // The angle from a point's direction to the nearest of n strands that wind about y (n strands
 // at phase n·(θ + ω·y) ≡ π, θ = atan2(z, x)), in radians of θ, signed.
 double strandOffset(double x, double y, double z, double n, double omega) {
     const double phase = n * (std::atan2(z, x) + omega * y) - kPi;
-    double d = std::fmod(phase, 2 * kPi);
-    if (d > kPi) d -= 2 * kPi;
-    if (d < -kPi) d += 2 * kPi;
-    return d / n;
+    return wrapAngle(phase) / n;
 }
 
 }  // namespace
@@ -98,9 +104,7 @@ double f_helical_torus(const double* p) {
     const double r = std::sqrt(x * x + z * z);
     const double rho = std::sqrt((r - R) * (r - R) + y * y);
     const double theta = std::atan2(x, z), sigma = std::atan2(r - R, y);
-    double d = std::fmod(loops * theta + twist * sigma - kPi, 2 * kPi);
-    if (d > kPi) d -= 2 * kPi;
-    if (d < -kPi) d += 2 * kPi;
+    const double d = wrapAngle(loops * theta + twist * sigma - kPi);
     const double a = rho - inner;
     const double groove = fat * std::cos(p[10] * std::atan2(d * p[11], a) + p[12] * theta);
     const double winding = std::sqrt(stretch * d * d + a * a) - groove;

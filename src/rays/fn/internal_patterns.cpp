@@ -9,7 +9,7 @@
 namespace rays::fn::internal {
 namespace {
 
-constexpr double kSqrt3 = 1.7320508075688772;
+constexpr double kSqrt3 = std::numbers::sqrt3;
 
 // The hexagonal lattice with centres √3 apart: rows 1.5 apart along y, every other row shifted
 // by √3/2 along x. Calls visit(dx, dy) with p minus each centre that can be nearest.
