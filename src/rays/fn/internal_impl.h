@@ -1,9 +1,12 @@
-// The internal functions' code, one declaration per functions.inc name (internal_functions.cpp
-// lists them with their numbers). Each reads p[0..2] = x, y, z and p[3..] = its parameters.
-// Files by family: internal_basic.cpp (distance-like shapes), internal_algebraic.cpp (polynomial
-// surfaces with a field strength), internal_curves.cpp (the 2-D curves swept or extruded),
-// internal_blobs.cpp (blobs, crossed/intersected ellipsoids, spikes), internal_helix.cpp
-// (helixes, spiral, meshes, hexagons, tubes), internal_noise.cpp (noise and fractal noise).
+// The internal functions' code. RAYS_FN_INTERNAL_LIST gives each functions.inc name its
+// internal number and parameter count (x, y, z included) and declares its f_NAME below;
+// internal_functions.cpp builds the numbered table from the same list. Each reads p[0..2] =
+// x, y, z and p[3..] = its parameters. Files by family: internal_basic.cpp (distance-like
+// shapes), internal_algebraic.cpp (polynomial surfaces with a field strength),
+// internal_curves.cpp (the 2-D curves swept or extruded), internal_blobs.cpp (blobs,
+// crossed/intersected ellipsoids, flange cover, spikes), internal_helix.cpp (helixes, spiral,
+// helical torus), internal_patterns.cpp (2-D spikes, hexagons, mesh, quantum, comma),
+// internal_tubes.cpp (poly4, polytubes), internal_noise.cpp (noise and fractal noise).
 #pragma once
 
 namespace rays::fn::internal {
