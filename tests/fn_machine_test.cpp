@@ -1,7 +1,8 @@
 // The function machine (src/rays/fn): every op against hand values and POV-Ray 3.7's measured
 // edge cases, sum/prod, calls with members, and the compiler's forms agreeing with each other.
-// Every value is computed four ways (folding on/off × scalar/batch code, plus jumps on/off) and
-// all must agree bit for bit, so each op test also checks folding and the batch machine.
+// Every value is compiled eight ways (folding, jumps and inlining each on and off) and run by
+// scalar and batch code, and all must agree bit for bit, so each op test also checks folding
+// and the batch machine.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -575,20 +576,30 @@ TEST(FnMachine, FusedInstructionsRoundLikeTheSeparateOps) {
 TEST(FnMachine, JumpedArmsWithComputedTests) {
     // The test value lives in a temporary that must survive the first arm (select with four
     // arguments tests it twice); every arm is expensive enough to be jumped around.
-    const std::string arm1 = "(sin (cos (sin (cos (* y 2)))))";
-    const std::string arm2 = "(cos (sin (cos (sin (* y 3)))))";
-    const std::string arm3 = "(exp (sin (cos (sin (* y 4)))))";
+    const std::string arm1 = "(sin (cos (sin (cos (sin (cos (* y 2)))))))";
+    const std::string arm2 = "(cos (sin (cos (sin (cos (sin (* y 3)))))))";
+    const std::string arm3 = "(exp (sin (cos (sin (cos (sin (* y 4)))))))";
     const std::string sel = "(select (- (* x x) 1) " + arm1 + " " + arm2 + " " + arm3 + ")";
     const double y = 0.3;
-    auto f = [](double v, double k) { return std::sin(std::cos(std::sin(std::cos(v * k)))); };
-    auto g = [](double v, double k) { return std::cos(std::sin(std::cos(std::sin(v * k)))); };
-    auto h = [](double v, double k) { return std::exp(std::sin(std::cos(std::sin(v * k)))); };
+    auto f = [](double v, double k) { return std::sin(std::cos(std::sin(std::cos(std::sin(std::cos(v * k)))))); };
+    auto g = [](double v, double k) { return std::cos(std::sin(std::cos(std::sin(std::cos(std::sin(v * k)))))); };
+    auto h = [](double v, double k) { return std::exp(std::sin(std::cos(std::sin(std::cos(std::sin(v * k)))))); };
     EXPECT_EQ(value(sel, {0.5, y}), f(opaque(y), 2));
     EXPECT_EQ(value(sel, {1, y}), g(opaque(y), 3));
     EXPECT_EQ(value(sel, {-1.5, y}), h(opaque(y), 4));
     const std::string cond = "(+ 1 (?: (- x 1) " + arm1 + " " + arm2 + "))";
     EXPECT_EQ(value(cond, {3, y}), 1 + f(opaque(y), 2));
     EXPECT_EQ(value(cond, {1, y}), 1 + g(opaque(y), 3));
+    // CompileOptions::branches turns the jumps off (value() has run both forms).
+    auto jumps = [](const Program& p) {
+        int n = 0;
+        for (const Instr& in : p.code) n += in.op == Code::Jump || in.op == Code::JumpIfNotNeg;
+        return n;
+    };
+    CompileOptions straight;
+    straight.branches = false;
+    EXPECT_GT(jumps(*compile(sexpr(sel), 2, {})), 0);
+    EXPECT_EQ(jumps(*compile(sexpr(sel), 2, {}, straight)), 0);
 }
 
 TEST(FnMachine, BatchRunsCalleesThatAreNotInlined) {

@@ -22,7 +22,7 @@ std::shared_ptr<const Program> compile(const Expr& body, int params,
     p->hosts = ir.hosts;
     p->callsHost = !ir.hosts.empty();
     for (const auto& c : ir.callees) p->callsHost = p->callsHost || c->callsHost;
-    emitProgram(ir, *p);
+    emitProgram(ir, *p, options.branches);
     std::shared_ptr<Ir> small = compactIr(ir);
     if (static_cast<int>(small->nodes.size()) <= options.inlineLimit) p->inlineBody = std::move(small);
     return p;
@@ -55,7 +55,7 @@ std::shared_ptr<const Program> hostProgram(const HostFunction& host) {
     p->hosts = ir.hosts;
     p->hostWrapper = true;
     p->callsHost = true;
-    emitProgram(ir, *p);
+    emitProgram(ir, *p, true);
     return p;
 }
 

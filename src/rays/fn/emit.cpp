@@ -106,8 +106,8 @@ Code binaryCode(Op op) {
 
 class Emitter {
 public:
-    Emitter(const Ir& ir, int params, bool batch, bool branches)
-        : ir_(ir), params_(params), batch_(batch), branches_(branches && !batch), bound_(ir.boundIds) {}
+    Emitter(const Ir& ir, bool batch, bool branches)
+        : ir_(ir), batch_(batch), branches_(branches && !batch), bound_(ir.boundIds) {}
 
     std::vector<VInstr> code;
     std::vector<int32_t> lists;
@@ -568,7 +568,6 @@ private:
     }
 
     const Ir& ir_;
-    int params_;
     bool batch_;
     bool branches_;
     std::vector<int32_t> free_;
@@ -618,16 +617,16 @@ int finish(const Emitter& e, int params, std::vector<Instr>& out, std::vector<do
 
 }  // namespace
 
-void emitProgram(const Ir& ir, Program& p) {
+void emitProgram(const Ir& ir, Program& p, bool branches) {
     p.lists.clear();
-    Emitter scalar(ir, p.params, false, true);
+    Emitter scalar(ir, false, branches);
     scalar.run();
     p.registers = finish(scalar, p.params, p.code, p.pool, p.lists);
     p.batch.clear();
     p.batchPool.clear();
     p.batchRegisters = 0;
     if (!ir.nodes[ir.root].loops) {
-        Emitter batch(ir, p.params, true, false);
+        Emitter batch(ir, true, false);
         batch.run();
         p.batchRegisters = finish(batch, p.params, p.batch, p.batchPool, p.lists);
     }

@@ -48,8 +48,8 @@ struct Ir {
 };
 
 /// Builds the machine code of `ir` into `p` (code, batch, pool, lists, register counts); `p`
-/// already holds params, callees and hosts. Throws CompileError when a frame needs more than
-/// 65535 registers.
-void emitProgram(const Ir& ir, Program& p);
+/// already holds params, callees and hosts. With `branches`, scalar code jumps around expensive
+/// select/?: arms. Throws CompileError when a frame needs more than 65535 registers.
+void emitProgram(const Ir& ir, Program& p, bool branches);
 
 }  // namespace rays::fn
