@@ -6,7 +6,6 @@
 // machine's lane loops can use restrict pointers (a tree with a sum/prod gets no batch code).
 #include <algorithm>
 #include <bit>
-#include <cstring>
 #include <string>
 #include <unordered_map>
 
@@ -52,54 +51,21 @@ Operand regOperand(int32_t reg, bool temp, int32_t def = -1) {
     return o;
 }
 
+// The instruction of a one-child op (Ret for ops without one).
 Code unaryCode(Op op) {
     switch (op) {
-        case Op::Neg: return Code::Neg;
-        case Op::Not: return Code::Not;
-        case Op::Abs: return Code::Abs;
-        case Op::Acos: return Code::Acos;
-        case Op::Acosh: return Code::Acosh;
-        case Op::Asin: return Code::Asin;
-        case Op::Asinh: return Code::Asinh;
-        case Op::Atan: return Code::Atan;
-        case Op::Atanh: return Code::Atanh;
-        case Op::Ceil: return Code::Ceil;
-        case Op::Cos: return Code::Cos;
-        case Op::Cosh: return Code::Cosh;
-        case Op::Exp: return Code::Exp;
-        case Op::Floor: return Code::Floor;
-        case Op::Sin: return Code::Sin;
-        case Op::Sinh: return Code::Sinh;
-        case Op::Sqrt: return Code::Sqrt;
-        case Op::Tan: return Code::Tan;
-        case Op::Tanh: return Code::Tanh;
-        case Op::Int: return Code::Int;
-        case Op::Ln: return Code::Ln;
-        case Op::Log: return Code::Log;
+#define RAYS_FN_CODE_CASE(name, expr) \
+    case Op::name: return Code::name;
+        RAYS_FN_UNARY_OPS(RAYS_FN_CODE_CASE)
         default: return Code::Ret;
     }
 }
 
+// The instruction of a two-child op (Max/Min: of two values).
 Code binaryCode(Op op) {
     switch (op) {
-        case Op::Add: return Code::Add;
-        case Op::Sub: return Code::Sub;
-        case Op::Mul: return Code::Mul;
-        case Op::Div: return Code::Div;
-        case Op::Lt: return Code::Lt;
-        case Op::Le: return Code::Le;
-        case Op::Gt: return Code::Gt;
-        case Op::Ge: return Code::Ge;
-        case Op::Eq: return Code::Eq;
-        case Op::Ne: return Code::Ne;
-        case Op::And: return Code::And;
-        case Op::Or: return Code::Or;
-        case Op::Atan2: return Code::Atan2;
-        case Op::Mod: return Code::Mod;
-        case Op::Pow: return Code::Pow;
-        case Op::IntDiv: return Code::IntDiv;
-        case Op::Max: return Code::Max;
-        case Op::Min: return Code::Min;
+        RAYS_FN_BINARY_OPS(RAYS_FN_CODE_CASE)
+#undef RAYS_FN_CODE_CASE
         default: return Code::Ret;
     }
 }
@@ -152,16 +118,16 @@ private:
     }
     int32_t reg(const Operand& o) { return o.isConst ? poolReg(o.k) : o.reg; }
 
-    /// The destination of an instruction reading `ins`: scalar code may reuse an operand's
-    /// register; batch code never does.
-    int32_t dest(std::initializer_list<const Operand*> ins) {
-        if (batch_) {
-            const int32_t d = newTemp();
-            for (const Operand* o : ins) release(*o);
-            return d;
-        }
+    /// The destination of an instruction reading `ins`, whose temporaries are released: `into`
+    /// when given, else a new temporary, which in scalar code may reuse an operand's register and
+    /// in batch code never does.
+    int32_t dest(std::span<const Operand* const> ins, int32_t into = -1) {
+        const int32_t d = into < 0 && batch_ ? newTemp() : into;
         for (const Operand* o : ins) release(*o);
-        return newTemp();
+        return d >= 0 ? d : newTemp();
+    }
+    int32_t dest(std::initializer_list<const Operand*> ins, int32_t into = -1) {
+        return dest(std::span<const Operand* const>(ins.begin(), ins.size()), into);
     }
 
     int32_t push(const VInstr& v) {
@@ -210,16 +176,7 @@ private:
             const Operand& other = m == &a ? b : a;
             const int32_t rc = reg(other);
             const VInstr mul = code[m->def];
-            int32_t d = into;
-            if (d < 0 && batch_) d = newTemp();
-            if (d < 0) {  // scalar: operands' registers may be reused
-                release(*m);
-                release(other);
-                d = newTemp();
-            } else {
-                release(*m);
-                release(other);
-            }
+            const int32_t d = dest({m, &other}, into);
             if (batch_ && (d == mul.a || d == mul.b || d == rc)) {
                 // A fresh batch register that aliases the multiply's operands: keep them apart.
                 VInstr plain = instr(binaryCode(op), d, m == &a ? m->reg : rc, m == &a ? rc : m->reg);
@@ -268,11 +225,7 @@ private:
             ra = reg(a);
             rb = reg(b);
         }
-        const int32_t d = into >= 0 ? into : dest({&a, &b});
-        if (into >= 0) {
-            release(a);
-            release(b);
-        }
+        const int32_t d = dest({&a, &b}, into);
         VInstr v = instr(code, d, ra, rb);
         v.k = k;
         const int32_t at = push(v);
@@ -287,15 +240,12 @@ private:
         }
         if (op == Op::Select || op == Op::Cond) {
             int32_t r[4];
-            for (size_t i = 0; i < in.size(); ++i) r[i] = reg(in[i]);
-            int32_t d;
-            if (batch_) {
-                d = newTemp();
-                for (const Operand& o : in) release(o);
-            } else {
-                for (const Operand& o : in) release(o);
-                d = newTemp();
+            const Operand* ins[4];
+            for (size_t i = 0; i < in.size(); ++i) {
+                r[i] = reg(in[i]);
+                ins[i] = &in[i];
             }
+            const int32_t d = dest(std::span<const Operand* const>(ins, in.size()));
             VInstr v = instr(op == Op::Cond ? Code::Cond : in.size() == 3 ? Code::Select3 : Code::Select4, d, r[0],
                              r[1], r[2]);
             if (in.size() == 4) v.aux = static_cast<uint32_t>(r[3]);

@@ -1,7 +1,8 @@
-// The machine's two loops. Each opcode's arithmetic is written once (RAYS_FN_LANE_OPS) and
-// expanded into both the scalar loop (one register = one double) and the batch loop (one
-// register = kBatch lanes, one instruction = one loop over the lanes, restrict pointers so the
-// compiler vectorises it: batch code never writes a register it reads, fn/emit.cpp).
+// The machine's two loops. Each opcode's arithmetic is written once (RAYS_FN_LANE_OPS, the ops'
+// from fn/ops.h) and expanded into both the scalar loop (one register = one double) and the
+// batch loop (one register = kBatch lanes, one instruction = one loop over the lanes, restrict
+// pointers so the compiler vectorises it: batch code never writes a register it reads,
+// fn/emit.cpp).
 #include "rays/fn/machine.h"
 
 #include <algorithm>
@@ -35,51 +36,14 @@ using ops::minOf;
 using ops::toInt;
 using ops::truth;
 
-// X(code, expression of A, B, C (registers a, b, c), D (register aux) and K (the immediate)).
+// X(code, expression of A, B, C (registers a, b, c), D (register aux) and K (the immediate)):
+// the ops of fn/ops.h and the machine's own forms.
 #define RAYS_FN_LANE_OPS(X)                          \
     X(Mov, A)                                        \
     X(Const, K)                                      \
-    X(Neg, -A)                                       \
-    X(Not, truth(A == 0))                            \
-    X(Abs, std::fabs(A))                             \
-    X(Acos, std::acos(A))                            \
-    X(Acosh, std::acosh(A))                          \
-    X(Asin, std::asin(A))                            \
-    X(Asinh, std::asinh(A))                          \
-    X(Atan, std::atan(A))                            \
-    X(Atanh, std::atanh(A))                          \
-    X(Ceil, std::ceil(A))                            \
-    X(Cos, std::cos(A))                              \
-    X(Cosh, std::cosh(A))                            \
-    X(Exp, std::exp(A))                              \
-    X(Floor, std::floor(A))                          \
-    X(Sin, std::sin(A))                              \
-    X(Sinh, std::sinh(A))                            \
-    X(Sqrt, std::sqrt(A))                            \
-    X(Tan, std::tan(A))                              \
-    X(Tanh, std::tanh(A))                            \
-    X(Int, toInt(A))                                 \
-    X(Ln, std::log(A))                               \
-    X(Log, std::log10(A))                            \
+    RAYS_FN_UNARY_OPS(X)                             \
     X(Sqr, A * A)                                    \
-    X(Add, A + B)                                    \
-    X(Sub, A - B)                                    \
-    X(Mul, A * B)                                    \
-    X(Div, A / B)                                    \
-    X(Lt, truth(A < B))                              \
-    X(Le, truth(A <= B))                             \
-    X(Gt, truth(!(A <= B)))                          \
-    X(Ge, truth(!(A < B)))                           \
-    X(Eq, truth(A == B))                             \
-    X(Ne, truth(!(A == B)))                          \
-    X(And, truth(A != 0 && B != 0))                  \
-    X(Or, truth(A != 0 || B != 0))                   \
-    X(Atan2, std::atan2(A, B))                       \
-    X(Mod, std::fmod(A, B))                          \
-    X(Pow, std::pow(A, B))                           \
-    X(IntDiv, toInt(A / B))                          \
-    X(Max, maxOf(A, B))                              \
-    X(Min, minOf(A, B))                              \
+    RAYS_FN_BINARY_OPS(X)                            \
     X(AddK, A + K)                                   \
     X(SubK, A - K)                                   \
     X(KSub, K - A)                                   \

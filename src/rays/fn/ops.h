@@ -21,58 +21,44 @@ inline double select4(double a, double b, double c, double d) { return a < 0 ? b
 inline constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 inline constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
+// The ops that run as one machine instruction of the same name (Code::Neg, ...), each with its
+// arithmetic on A (and B), listed once: unary() and binary() below, the machine's loops
+// (fn/machine.cpp), the opcodes (fn/program.h) and the emitter's op → code maps (fn/emit.cpp)
+// expand these lists.
+#define RAYS_FN_UNARY_OPS(X)                                                                       \
+    X(Neg, -A) X(Not, truth(A == 0)) X(Abs, std::fabs(A)) X(Acos, std::acos(A))                    \
+    X(Acosh, std::acosh(A)) X(Asin, std::asin(A)) X(Asinh, std::asinh(A)) X(Atan, std::atan(A))    \
+    X(Atanh, std::atanh(A)) X(Ceil, std::ceil(A)) X(Cos, std::cos(A)) X(Cosh, std::cosh(A))        \
+    X(Exp, std::exp(A)) X(Floor, std::floor(A)) X(Sin, std::sin(A)) X(Sinh, std::sinh(A))          \
+    X(Sqrt, std::sqrt(A)) X(Tan, std::tan(A)) X(Tanh, std::tanh(A)) X(Int, toInt(A))               \
+    X(Ln, std::log(A)) X(Log, std::log10(A))
+#define RAYS_FN_BINARY_OPS(X)                                                                      \
+    X(Add, A + B) X(Sub, A - B) X(Mul, A * B) X(Div, A / B) X(Lt, truth(A < B))                    \
+    X(Le, truth(A <= B)) X(Gt, truth(!(A <= B))) X(Ge, truth(!(A < B))) X(Eq, truth(A == B))       \
+    X(Ne, truth(!(A == B))) X(And, truth(A != 0 && B != 0)) X(Or, truth(A != 0 || B != 0))         \
+    X(Atan2, std::atan2(A, B)) X(Mod, std::fmod(A, B)) X(Pow, std::pow(A, B))                      \
+    X(IntDiv, toInt(A / B)) X(Max, maxOf(A, B)) X(Min, minOf(A, B))
+
 /// The value of a one-child op.
-inline double unary(Op op, double a) {
+inline double unary(Op op, double A) {
     switch (op) {
-        case Op::Neg: return -a;
-        case Op::Not: return truth(a == 0);
-        case Op::Abs: return std::fabs(a);
-        case Op::Acos: return std::acos(a);
-        case Op::Acosh: return std::acosh(a);
-        case Op::Asin: return std::asin(a);
-        case Op::Asinh: return std::asinh(a);
-        case Op::Atan: return std::atan(a);
-        case Op::Atanh: return std::atanh(a);
-        case Op::Ceil: return std::ceil(a);
-        case Op::Cos: return std::cos(a);
-        case Op::Cosh: return std::cosh(a);
-        case Op::Exp: return std::exp(a);
-        case Op::Floor: return std::floor(a);
-        case Op::Sin: return std::sin(a);
-        case Op::Sinh: return std::sinh(a);
-        case Op::Sqrt: return std::sqrt(a);
-        case Op::Tan: return std::tan(a);
-        case Op::Tanh: return std::tanh(a);
-        case Op::Degrees: return a * kDegreesPerRadian;
-        case Op::Radians: return a * kRadiansPerDegree;
-        case Op::Int: return toInt(a);
-        case Op::Ln: return std::log(a);
-        case Op::Log: return std::log10(a);
+#define RAYS_FN_UNARY_CASE(name, expr) \
+    case Op::name: return (expr);
+        RAYS_FN_UNARY_OPS(RAYS_FN_UNARY_CASE)
+#undef RAYS_FN_UNARY_CASE
+        case Op::Degrees: return A * kDegreesPerRadian;
+        case Op::Radians: return A * kRadiansPerDegree;
         default: return std::nan("");
     }
 }
 
 /// The value of a two-child op (Max/Min: of two values).
-inline double binary(Op op, double a, double b) {
+inline double binary(Op op, double A, double B) {
     switch (op) {
-        case Op::Add: return a + b;
-        case Op::Sub: return a - b;
-        case Op::Mul: return a * b;
-        case Op::Div: return a / b;
-        case Op::Lt: return truth(a < b);
-        case Op::Le: return truth(a <= b);
-        case Op::Gt: return truth(!(a <= b));
-        case Op::Ge: return truth(!(a < b));
-        case Op::Eq: return truth(a == b);
-        case Op::Ne: return truth(!(a == b));
-        case Op::And: return truth(a != 0 && b != 0);
-        case Op::Or: return truth(a != 0 || b != 0);
-        case Op::Atan2: return std::atan2(a, b);
-        case Op::Mod: return std::fmod(a, b);
-        case Op::Pow: return std::pow(a, b);
-        case Op::IntDiv: return toInt(a / b);
-        case Op::Max: return maxOf(a, b);
-        case Op::Min: return minOf(a, b);
+#define RAYS_FN_BINARY_CASE(name, expr) \
+    case Op::name: return (expr);
+        RAYS_FN_BINARY_OPS(RAYS_FN_BINARY_CASE)
+#undef RAYS_FN_BINARY_CASE
         default: return std::nan("");
     }
 }

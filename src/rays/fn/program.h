@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "rays/fn/expr.h"
+#include "rays/fn/ops.h"
 
 namespace rays::fn {
 
@@ -31,32 +32,28 @@ struct HostFunction {
     int outputs = 1;
 };
 
-/// Machine opcodes (listed once in RAYS_FN_CODES). Fields: d destination, a/b/c operand
-/// registers, k an immediate constant, aux a jump target, a callee or an internal number; `list`
-/// an offset into Program::lists.
+/// Machine opcodes. Fields: d destination, a/b/c operand registers, k an immediate constant, aux
+/// a jump target, a callee or an internal number; `list` an offset into Program::lists.
 ///   Ret: return r[a]. Mov: d = a. Const: d = k.
-///   Neg .. Sqr: d = f(a) (Sqr: a*a). Add .. Min: d = a op b. AddK .. PowK: d = a op k (K first:
-///   d = k op a). MulAdd, MulSub: d = a*b ± c, rounded twice as the separate ops.
+///   Neg .. Log (RAYS_FN_UNARY_OPS, fn/ops.h): d = f(a). Sqr: d = a*a. Add .. Min
+///   (RAYS_FN_BINARY_OPS): d = a op b. AddK .. PowK: d = a op k (K first: d = k op a).
+///   MulAdd, MulSub: d = a*b ± c, rounded twice as the separate ops.
 ///   Select3: d = a < 0 ? b : c. Select4: d = a < 0 ? b : a == 0 ? c : r[aux]. Cond: d = a != 0 ? b : c.
 ///   Jump: go to aux. JumpIfZero: if a == 0. JumpIfNotNeg: if !(a < 0). JumpIfNotZero: if !(a == 0).
 ///   JumpIfNotLe: if !(a <= b) (the sum/prod loop test).
 ///   Call: d = compiled callee aux of the c arguments listed at `list`. Host: d = member b of host
 ///   function aux of those arguments. Internal: d = internal function aux of those arguments.
-#define RAYS_FN_CODES(X)                                                                              \
-    X(Ret) X(Mov) X(Const)                                                                            \
-    X(Neg) X(Not) X(Abs) X(Acos) X(Acosh) X(Asin) X(Asinh) X(Atan) X(Atanh) X(Ceil) X(Cos) X(Cosh)    \
-    X(Exp) X(Floor) X(Sin) X(Sinh) X(Sqrt) X(Tan) X(Tanh) X(Int) X(Ln) X(Log) X(Sqr)                 \
-    X(Add) X(Sub) X(Mul) X(Div) X(Lt) X(Le) X(Gt) X(Ge) X(Eq) X(Ne) X(And) X(Or) X(Atan2) X(Mod)      \
-    X(Pow) X(IntDiv) X(Max) X(Min)                                                                    \
-    X(AddK) X(SubK) X(KSub) X(MulK) X(DivK) X(KDiv) X(MaxK) X(KMax) X(MinK) X(KMin) X(PowK)          \
-    X(MulAdd) X(MulSub) X(Select3) X(Select4) X(Cond)                                                 \
-    X(Jump) X(JumpIfZero) X(JumpIfNotNeg) X(JumpIfNotZero) X(JumpIfNotLe)                             \
-    X(Call) X(Host) X(Internal)
-
 enum class Code : uint16_t {
-#define RAYS_FN_CODE_ENUM(name) name,
-    RAYS_FN_CODES(RAYS_FN_CODE_ENUM)
+    Ret, Mov, Const,
+#define RAYS_FN_CODE_ENUM(name, expr) name,
+    RAYS_FN_UNARY_OPS(RAYS_FN_CODE_ENUM)
+    Sqr,
+    RAYS_FN_BINARY_OPS(RAYS_FN_CODE_ENUM)
 #undef RAYS_FN_CODE_ENUM
+    AddK, SubK, KSub, MulK, DivK, KDiv, MaxK, KMax, MinK, KMin, PowK,
+    MulAdd, MulSub, Select3, Select4, Cond,
+    Jump, JumpIfZero, JumpIfNotNeg, JumpIfNotZero, JumpIfNotLe,
+    Call, Host, Internal,
 };
 
 struct Instr {
