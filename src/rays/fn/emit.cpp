@@ -300,7 +300,7 @@ private:
                 letStage(stack, vals, owned);
                 continue;
             }
-            if ((op == Op::Cond || op == Op::Select) && n.op != IrOp::Host && branches_ && jumpWorthy(n)) {
+            if ((op == Op::Cond || op == Op::Select) && branches_ && jumpWorthy(n)) {
                 branchStage(stack, vals);
                 continue;
             }
@@ -318,14 +318,11 @@ private:
     }
 
     Operand leaf(const IrNode& n) {
-        switch (n.op) {
-            case IrOp::Bound: {
-                Operand o = bound_[n.id];
-                o.temp = false;
-                o.def = -1;
-                return o;
-            }
-            default: break;
+        if (n.op == IrOp::Bound) {
+            Operand o = bound_[n.id];
+            o.temp = false;
+            o.def = -1;
+            return o;
         }
         const Op op = static_cast<Op>(n.op);
         if (op == Op::Const) return constOperand(n.value);

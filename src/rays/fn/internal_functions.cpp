@@ -26,8 +26,6 @@ const InternalFunction* internalFunction(int number) {
     return &kTable[number];
 }
 
-int internalFunctionCount() { return kCount; }
-
 int internalNumber(std::string_view name) {
     for (int i = 0; i < kCount; ++i)
         if (kTable[i].fn && kTable[i].name == name) return i;

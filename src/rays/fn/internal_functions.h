@@ -18,9 +18,6 @@ struct InternalFunction {
 /// internal(number), or nullptr when POV-Ray 3.7 defines no such number (77 is unused).
 const InternalFunction* internalFunction(int number);
 
-/// One more than the largest internal number.
-int internalFunctionCount();
-
 /// The internal number of a functions.inc name ("f_sphere" → 61), or -1.
 int internalNumber(std::string_view name);
 

@@ -169,8 +169,6 @@ private:
                 for (size_t i = 1; i < kids.size(); ++i) r = ops::binary(o, r, val(i));
                 return constant(r, loc);
             }
-            case Op::Select:  // constant condition handled above
-            case Op::Cond: return -1;
             case Op::Internal: {
                 double args[kMaxParams + 16];
                 for (size_t i = 0; i < kids.size(); ++i) args[i] = val(i);
