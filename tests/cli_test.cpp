@@ -514,6 +514,26 @@ TEST(CliDebugCommands, FirstHitPrintsDistanceAndType) {
     EXPECT_EQ(listDir(tmp.path()), std::vector<std::string>{"s.pov"});
 }
 
+// A POV-Ray scene whose camera's aspect comes from image_width / image_height.
+const std::string kAspectScene =
+    "#version 3.7;\n"
+    "camera { location <0,0,-10> look_at <0,0,0> right x*image_width/image_height }\n"
+    "sphere { 0, 1 pigment { rgb 1 } }\n";
+
+TEST(CliDebugCommands, PixelRaySeesTheImageSizeAsRenderDoes) {
+    TempDir tmp("rays-cli-");
+    ASSERT_FALSE(tmp.path().empty());
+    writeFile(tmp.path() / "s.pov", kAspectScene);
+    // 200x100: right = 2, so the left column's centre ray has x/z = (0.5/200 − 0.5)·2 = −0.995
+    // (with the default 640x480 the camera would be 4:3 and x/z −0.663).
+    const std::vector<std::string> args = {"pixelray", "s.pov", "200", "100", "0", "50"};
+    const ProcessResult r = runRays(tmp.path(), args);
+    ASSERT_TRUE(r.ok()) << describeRun(args, r);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(-> \{(\S+) (\S+) (\S+)\})"))) << r.out;
+    EXPECT_NEAR(std::stod(m[1]) / std::stod(m[3]), -0.995, 0.002) << r.out;
+}
+
 TEST(CliDebugCommands, PixelOutsideTheImageFails) {
     TempDir tmp("rays-cli-");
     ASSERT_FALSE(tmp.path().empty());

@@ -241,9 +241,10 @@ int run(int argc, char** argv) {
         return cli::runRender(job);
     }
 
-    const Scene sc = cli::loadSceneWithObj(scene, "", job.rotation);
+    // The scene is loaded as render loads it, with the command's image size (image_width and
+    // image_height; sceneinfo has none and sees render's default).
     if (sceneinfo->parsed()) {
-        printSceneInfo(std::cout, sc);
+        printSceneInfo(std::cout, cli::loadJobScene(job));
         return 0;
     }
     cli::checkImageSize(width, height);
@@ -252,6 +253,7 @@ int run(int argc, char** argv) {
                     std::to_string(width) + "x" + std::to_string(height) + " image");
     s.width = width;
     s.height = height;
+    const Scene sc = cli::loadJobScene(job);
     if (pixelray->parsed()) {
         printPixelRay(std::cout, sc, s, px, py);
         return 0;
