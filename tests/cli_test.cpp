@@ -534,6 +534,40 @@ TEST(CliDebugCommands, PixelRaySeesTheImageSizeAsRenderDoes) {
     EXPECT_NEAR(std::stod(m[1]) / std::stod(m[3]), -0.995, 0.002) << r.out;
 }
 
+// Lit by its ambient term alone: the traced colour is 0.2, the image's sRGB(0.2) = 124 of 255.
+const std::string kAmbientPovScene =
+    "#version 3.7;\n"
+    "global_settings { assumed_gamma 1 }\n"
+    "camera { location <0,0,-10> look_at <0,0,0> }\n"
+    "sphere { 0, 3 pigment { rgb 0.2 } finish { ambient 1 diffuse 0 } }\n";
+
+TEST(CliDebugCommands, PixelColorOfAPovSceneIsTheImagesColour) {
+    TempDir tmp("rays-cli-");
+    ASSERT_FALSE(tmp.path().empty());
+    writeFile(tmp.path() / "s.pov", kAmbientPovScene);
+    const std::vector<std::string> args = {"pixelcolor", "s.pov", "8", "6", "4", "3"};
+    const ProcessResult r = runRays(tmp.path(), args);
+    ASSERT_TRUE(r.ok()) << describeRun(args, r);
+    const std::vector<std::string> lines = splitLines(r.out);
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "BRDF: POV-Ray 3.7"), lines.end()) << r.out;
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "Color: (124, 124, 124)"), lines.end()) << r.out;
+
+    // The same pixel of the rendered image (row 3 from the bottom is file row 2).
+    const std::vector<std::string> render = {"render", "s.pov", "8", "6", "-o", "out.png", "-q"};
+    const ProcessResult rr = runRays(tmp.path(), render);
+    ASSERT_TRUE(rr.ok()) << describeRun(render, rr);
+    const RgbImage img = loadPngRgb((tmp.path() / "out.png").string());
+    ASSERT_EQ(img.width, 8);
+    const Rgb p = pixelAt(img, 4, 2);
+    const std::string imageColor = "Color: (" + std::to_string(p.r) + ", " + std::to_string(p.g) + ", " + std::to_string(p.b) + ")";
+    EXPECT_NE(std::find(lines.begin(), lines.end(), imageColor), lines.end()) << r.out << "image: " << imageColor;
+
+    const std::vector<std::string> tree = {"printrays", "s.pov", "8", "6", "4", "3"};
+    const ProcessResult pr = runRays(tmp.path(), tree);
+    ASSERT_TRUE(pr.ok()) << describeRun(tree, pr);
+    EXPECT_TRUE(startsWith(pr.out, "Pixel: [4, 3] Color: (124, 124, 124)\n")) << pr.out;
+}
+
 TEST(CliDebugCommands, PixelOutsideTheImageFails) {
     TempDir tmp("rays-cli-");
     ASSERT_FALSE(tmp.path().empty());
