@@ -11,6 +11,7 @@
 
 #include "pov_option_table.h"
 #include "rays/error.h"
+#include "rays/sdl/declare_value.h"
 
 namespace rays::cli {
 namespace {
@@ -374,9 +375,7 @@ void PovOptionReader::setDeclare(const Value& v) {
     const size_t eq = v.text.find('=');
     const std::string id = eq == std::string::npos ? v.text : trim(v.text.substr(0, eq));
     const std::string value = eq == std::string::npos ? std::string() : trim(v.text.substr(eq + 1));
-    double ignored = 0;
-    const bool isString = value.size() >= 2 && value.front() == '"' && value.back() == '"';
-    if (!isIdentifier(id) || !(isString || parseDouble(value, ignored)))
+    if (!isIdentifier(id) || !sdl::parseDeclareValue(value))
         failAt(v.where, "Declare needs NAME=VALUE with VALUE a number or a string in double quotes, got '" + v.text + "'");
     auto same = std::find_if(o_.declares.begin(), o_.declares.end(), [&](const sdl::Declare& d) { return d.name == id; });
     if (same != o_.declares.end()) same->value = value;  // a later declaration of the name wins
