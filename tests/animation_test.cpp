@@ -9,6 +9,7 @@
 #include "../apps/rays/animation.cpp"
 #include "../apps/rays/frame_plan.cpp"
 #include "../apps/rays/interrupt.cpp"
+#include "../apps/rays/paths.cpp"  // frame_plan and pov_options (pov_options_test) use it
 
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "paths.h"
 #include "rays/error.h"
 
 namespace rays::cli {
@@ -85,10 +86,8 @@ FramePlan planFrames(const AnimationOptions& a) {
 }
 
 std::string frameFileName(const std::string& output, int frame, int digits) {
-    const size_t slash = output.find_last_of('/');
-    size_t dot = output.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == slash + 1)
-        dot = output.size();  // no extension (a leading dot names a hidden file, not an extension)
+    size_t dot = extensionDot(output);
+    if (dot == std::string::npos) dot = output.size();  // no extension: the number goes at the end
     char number[32];
     std::snprintf(number, sizeof number, "%0*d", digits, frame);
     return output.substr(0, dot) + number + output.substr(dot);

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "paths.h"
 #include "pov_option_table.h"
 #include "rays/error.h"
 #include "rays/sdl/declare_value.h"
@@ -43,30 +44,19 @@ std::string unquote(const std::string& v) {
     return v;
 }
 
-bool hasExtension(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    const size_t dot = path.find_last_of('.');
-    return dot != std::string::npos && (slash == std::string::npos || dot > slash + 1);
-}
-
 std::string folderOf(const std::string& path) {
     return fs::path(path).parent_path().string();
-}
-
-bool exists(const std::string& path) {
-    std::error_code ec;
-    return fs::exists(path, ec);
 }
 
 // A relative name from an INI file: as POV-Ray 3.7 does, relative to the current folder; when no
 // such file exists there but one does next to the INI file, that one (so `rays dir/scene.ini`
 // works from anywhere).
 std::string besideIni(const std::string& name, const std::vector<std::string>& iniStack) {
-    if (name.empty() || name[0] == '/' || iniStack.empty() || exists(name)) return name;
+    if (name.empty() || name[0] == '/' || iniStack.empty() || fileExists(name)) return name;
     const std::string folder = folderOf(iniStack.back());
     if (folder.empty()) return name;
     const std::string beside = folder + "/" + name;
-    return exists(beside) ? beside : name;
+    return fileExists(beside) ? beside : name;
 }
 
 bool isIdentifier(const std::string& s) {
@@ -277,7 +267,7 @@ void PovOptionReader::readSwitch(const std::string& sw, const Where& where) {
 
 std::string PovOptionReader::resolveScene(const std::string& name, const Where& where) const {
     if (name == "-") failAt(where, "reading the scene from standard input (+I-) is not supported");
-    std::string path = hasExtension(name) ? name : name + ".pov";  // ".pov is assumed" (reference 3.2.5.2)
+    std::string path = extensionDot(name) != std::string::npos ? name : name + ".pov";  // ".pov is assumed" (reference 3.2.5.2)
     return where.file.empty() ? path : besideIni(path, iniStack_);
 }
 
@@ -404,7 +394,7 @@ void PovOptionReader::setOther(const Value& v) {
 }
 
 void PovOptionReader::readIniFile(const std::string& path, const std::string& section, const std::string& from) {
-    std::string name = hasExtension(path) ? path : path + ".ini";  // ".ini is assumed" (tutorial 2.2.8.2)
+    std::string name = extensionDot(path) != std::string::npos ? path : path + ".ini";  // ".ini is assumed" (tutorial 2.2.8.2)
     name = besideIni(name, iniStack_);
     const std::string origin = from.empty() ? std::string() : " (named " + from + ")";
     if (iniStack_.size() >= 10)

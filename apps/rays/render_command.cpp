@@ -21,6 +21,7 @@
 #include "rays/npr/stencil_pass.h"
 #include "rays/render/renderer.h"
 #include "interrupt.h"
+#include "paths.h"
 #include "render_budget.h"
 
 namespace rays::cli {
@@ -51,13 +52,6 @@ void appendObj(Scene& scene, const std::string& path) {
     scene.meshes.push_back(std::move(mesh));
     prepareObject(o, Transform{});
     scene.objects.push_back(o);
-}
-
-// Refuses to overwrite an input file with the image.
-void checkOutputIsNotInput(const std::string& output, const std::string& input) {
-    std::error_code ec;
-    if (!input.empty() && std::filesystem::exists(output, ec) && std::filesystem::equivalent(output, input, ec))
-        failFile(output, "output would overwrite the input file '" + input + "'");
 }
 
 // Refuses to overwrite an image the scene reads (image_map, normal_map, bump_map).
