@@ -34,7 +34,7 @@ FramePlan stillPlan(const AnimationOptions& a) {
 // A subset bound as a frame number. A fraction f (below 1) of an animation of `count` frames is
 // frame initial − 1 + ⌊f·count⌋: POV-Ray 3.7 computes ⌊f·count⌋ alone, which is the same for the
 // usual Initial_Frame=1 (and ignores Initial_Frame otherwise); a value from 1 on is a frame number.
-int subsetFrame(const FrameBound& b, int initial, int count) {
+int subsetFrame(const PovBound& b, int initial, int count) {
     if (b.value < 1) return initial - 1 + int(std::floor(b.value * count));
     return int(b.value);
 }
