@@ -231,10 +231,7 @@ void PovOptionReader::warnOnce(const std::string& key, const std::string& messag
 void PovOptionReader::readArgument(const std::string& arg) {
     const Where where{"", 0, arg};
     if (isPovSwitch(arg)) return readSwitch(arg, where);
-    if (isPovSetting(arg)) {
-        const size_t eq = arg.find('=');
-        return set(trim(arg.substr(0, eq)), unquote(trim(arg.substr(eq + 1))), where);
-    }
+    if (isPovSetting(arg)) return setKeyValue(arg, where);
     if (isSceneArgument(arg)) {
         o_.inputFile = resolveScene(arg, where);
         return;
@@ -269,6 +266,11 @@ std::string PovOptionReader::resolveScene(const std::string& name, const Where& 
     if (name == "-") failAt(where, "reading the scene from standard input (+I-) is not supported");
     std::string path = extensionDot(name) != std::string::npos ? name : name + ".pov";  // ".pov is assumed" (reference 3.2.5.2)
     return where.file.empty() ? path : besideIni(path, iniStack_);
+}
+
+void PovOptionReader::setKeyValue(const std::string& text, const Where& where) {
+    const size_t eq = text.find('=');
+    set(trim(text.substr(0, eq)), unquote(trim(text.substr(eq + 1))), where);
 }
 
 void PovOptionReader::set(const std::string& keyName, const std::string& value, const Where& where) {
@@ -434,15 +436,13 @@ void PovOptionReader::readIniText(const std::string& text, const std::string& pa
                 if (isPovSwitch(word)) {
                     readSwitch(word, at);
                 } else if (isPovSetting(word)) {  // `+kc declare=fp=0` (animations/splinefollow.ini)
-                    const size_t eq = word.find('=');
-                    set(trim(word.substr(0, eq)), unquote(trim(word.substr(eq + 1))), at);
+                    setKeyValue(word, at);
                 } else {
                     warnOnce(word, "unknown option '" + word + "'", at);
                 }
             }
         } else if (line.find('=') != std::string::npos) {
-            const size_t eq = line.find('=');
-            set(trim(line.substr(0, eq)), unquote(trim(line.substr(eq + 1))), where);
+            setKeyValue(line, where);
         } else {
             std::string name, sub;
             splitSection(line, name, sub);

@@ -81,6 +81,8 @@ private:
     struct Value;
     void readSwitch(const std::string& sw, const Where& where);
     void set(const std::string& key, const std::string& value, const Where& where);
+    /// KEY=VALUE (text holds an '='): set with the trimmed key and the trimmed, unquoted value.
+    void setKeyValue(const std::string& text, const Where& where);
     static Value readValue(const pov::KeyInfo& info, const std::string& text, const Where& where);
     bool setAnimation(const Value& v);
     bool setAntialias(const Value& v);
