@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "arg_text.h"
 #include "paths.h"
 #include "pov_option_table.h"
 #include "rays/error.h"
@@ -21,11 +22,6 @@ namespace fs = std::filesystem;
 using pov::Form;
 using pov::Key;
 using pov::Kind;
-
-std::string lower(std::string s) {
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
 
 std::string trim(const std::string& s) {
     const size_t a = s.find_first_not_of(" \t\r\n");
