@@ -18,15 +18,18 @@
 #include <string>
 #include <vector>
 
+#include "support/files.h"
 #include "support/image_compare.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
 using rays::test::loadPngRgb;
 using rays::test::ProcessResult;
+using rays::test::readFile;
 using rays::test::RgbImage;
 using rays::test::runProcess;
 using rays::test::TempDir;
+using rays::test::writeFile;
 
 namespace {
 
@@ -55,20 +58,6 @@ const std::string kGlassScene =
     "  finish { ambient 0.1 diffuse 0.2 ior 1.5 refraction 1.0 } }\n";
 
 // ---- small helpers -----------------------------------------------------------------------------
-
-void writeFile(const fs::path& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
-    out.close();
-    ASSERT_TRUE(out) << "cannot write " << path;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 /// Sorted names of the entries of dir.
 std::vector<std::string> listDir(const fs::path& dir) {
