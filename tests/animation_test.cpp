@@ -9,6 +9,7 @@
 #include "../apps/rays/animation.cpp"
 #include "../apps/rays/frame_plan.cpp"
 #include "../apps/rays/interrupt.cpp"
+#include "../apps/rays/paths.cpp"  // frame_plan and pov_options (pov_options_test) use it
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "rays/error.h"
+#include "support/files.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
@@ -29,6 +31,7 @@ using rays::cli::FramePlan;
 using rays::cli::frameFileName;
 using rays::cli::planFrames;
 using rays::cli::RenderJob;
+using rays::test::readFile;
 using rays::test::TempDir;
 
 namespace {
@@ -273,13 +276,6 @@ struct Recorder {
     }
 };
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 RenderJob baseJob(const fs::path& dir) {
     RenderJob job;
     job.outputPath = (dir / "out.png").string();
@@ -300,7 +296,7 @@ TEST(AnimationLoop, EachFrameGetsItsClockAndNumberedFile) {
         EXPECT_DOUBLE_EQ(job.language.animation.clock, 0.5 * i);
         EXPECT_TRUE(job.language.animation.clockOn);
         EXPECT_FALSE(job.summary);  // the loop prints its own line
-        EXPECT_EQ(readText(job.outputPath), "frame " + std::to_string(i + 1));
+        EXPECT_EQ(readFile(job.outputPath), "frame " + std::to_string(i + 1));
     }
 }
 
@@ -321,7 +317,7 @@ TEST(AnimationLoop, WrittenFramesAreRenderedAgainUnlessResuming) {
     Recorder again;
     rays::cli::runFrames(baseJob(dir.path()), plan, false, again.renderer());
     EXPECT_EQ(again.jobs.size(), 3u);
-    EXPECT_EQ(readText(dir.path() / "out2.png"), "frame 2");
+    EXPECT_EQ(readFile(dir.path() / "out2.png"), "frame 2");
 
     std::ofstream(dir.path() / "out2.png") << "old";
     fs::remove(dir.path() / "out3.png");
@@ -329,7 +325,7 @@ TEST(AnimationLoop, WrittenFramesAreRenderedAgainUnlessResuming) {
     rays::cli::runFrames(baseJob(dir.path()), plan, true, resumed.renderer());
     ASSERT_EQ(resumed.jobs.size(), 1u);  // out1 and out2 exist
     EXPECT_EQ(resumed.jobs[0].language.animation.frameNumber, 3);
-    EXPECT_EQ(readText(dir.path() / "out2.png"), "old");
+    EXPECT_EQ(readFile(dir.path() / "out2.png"), "old");
 
     std::ofstream(dir.path() / "out.png") << "still";
     Recorder still;

@@ -14,14 +14,17 @@
 #include <string>
 #include <vector>
 
+#include "support/files.h"
 #include "support/image_compare.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
 using rays::test::loadPngRgb;
 using rays::test::ProcessResult;
+using rays::test::readFile;
 using rays::test::runProcess;
 using rays::test::TempDir;
+using rays::test::writeFile;
 
 namespace {
 
@@ -32,19 +35,6 @@ const std::string kBall =
     "camera { location <0,0,14> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
     "light_source { <10,10,10> color rgb <1,1,1> }\n"
     "sphere { <0,0,0>, 2 pigment { color rgb <1,0,0> } finish { ambient 0.2 diffuse 0.6 } }\n";
-
-void writeFile(const fs::path& path, const std::string& bytes) {
-    fs::create_directories(path.parent_path());
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 /// Sorted names of the entries of dir.
 std::vector<std::string> listDir(const fs::path& dir) {

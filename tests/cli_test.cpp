@@ -18,15 +18,18 @@
 #include <string>
 #include <vector>
 
+#include "support/files.h"
 #include "support/image_compare.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
 using rays::test::loadPngRgb;
 using rays::test::ProcessResult;
+using rays::test::readFile;
 using rays::test::RgbImage;
 using rays::test::runProcess;
 using rays::test::TempDir;
+using rays::test::writeFile;
 
 namespace {
 
@@ -55,20 +58,6 @@ const std::string kGlassScene =
     "  finish { ambient 0.1 diffuse 0.2 ior 1.5 refraction 1.0 } }\n";
 
 // ---- small helpers -----------------------------------------------------------------------------
-
-void writeFile(const fs::path& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << bytes;
-    out.close();
-    ASSERT_TRUE(out) << "cannot write " << path;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 /// Sorted names of the entries of dir.
 std::vector<std::string> listDir(const fs::path& dir) {
@@ -512,6 +501,60 @@ TEST(CliDebugCommands, FirstHitPrintsDistanceAndType) {
     EXPECT_NE(std::find(lines.begin(), lines.end(), "T = 12.0001"), lines.end()) << r.out;
     EXPECT_NE(std::find(lines.begin(), lines.end(), "Object Type: Sphere"), lines.end()) << r.out;
     EXPECT_EQ(listDir(tmp.path()), std::vector<std::string>{"s.pov"});
+}
+
+// A POV-Ray scene whose camera's aspect comes from image_width / image_height.
+const std::string kAspectScene =
+    "#version 3.7;\n"
+    "camera { location <0,0,-10> look_at <0,0,0> right x*image_width/image_height }\n"
+    "sphere { 0, 1 pigment { rgb 1 } }\n";
+
+TEST(CliDebugCommands, PixelRaySeesTheImageSizeAsRenderDoes) {
+    TempDir tmp("rays-cli-");
+    ASSERT_FALSE(tmp.path().empty());
+    writeFile(tmp.path() / "s.pov", kAspectScene);
+    // 200x100: right = 2, so the left column's centre ray has x/z = (0.5/200 − 0.5)·2 = −0.995
+    // (with the default 640x480 the camera would be 4:3 and x/z −0.663).
+    const std::vector<std::string> args = {"pixelray", "s.pov", "200", "100", "0", "50"};
+    const ProcessResult r = runRays(tmp.path(), args);
+    ASSERT_TRUE(r.ok()) << describeRun(args, r);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(-> \{(\S+) (\S+) (\S+)\})"))) << r.out;
+    EXPECT_NEAR(std::stod(m[1]) / std::stod(m[3]), -0.995, 0.002) << r.out;
+}
+
+// Lit by its ambient term alone: the traced colour is 0.2, the image's sRGB(0.2) = 124 of 255.
+const std::string kAmbientPovScene =
+    "#version 3.7;\n"
+    "global_settings { assumed_gamma 1 }\n"
+    "camera { location <0,0,-10> look_at <0,0,0> }\n"
+    "sphere { 0, 3 pigment { rgb 0.2 } finish { ambient 1 diffuse 0 } }\n";
+
+TEST(CliDebugCommands, PixelColorOfAPovSceneIsTheImagesColour) {
+    TempDir tmp("rays-cli-");
+    ASSERT_FALSE(tmp.path().empty());
+    writeFile(tmp.path() / "s.pov", kAmbientPovScene);
+    const std::vector<std::string> args = {"pixelcolor", "s.pov", "8", "6", "4", "3"};
+    const ProcessResult r = runRays(tmp.path(), args);
+    ASSERT_TRUE(r.ok()) << describeRun(args, r);
+    const std::vector<std::string> lines = splitLines(r.out);
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "BRDF: POV-Ray 3.7"), lines.end()) << r.out;
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "Color: (124, 124, 124)"), lines.end()) << r.out;
+
+    // The same pixel of the rendered image (row 3 from the bottom is file row 2).
+    const std::vector<std::string> render = {"render", "s.pov", "8", "6", "-o", "out.png", "-q"};
+    const ProcessResult rr = runRays(tmp.path(), render);
+    ASSERT_TRUE(rr.ok()) << describeRun(render, rr);
+    const RgbImage img = loadPngRgb((tmp.path() / "out.png").string());
+    ASSERT_EQ(img.width, 8);
+    const Rgb p = pixelAt(img, 4, 2);
+    const std::string imageColor = "Color: (" + std::to_string(p.r) + ", " + std::to_string(p.g) + ", " + std::to_string(p.b) + ")";
+    EXPECT_NE(std::find(lines.begin(), lines.end(), imageColor), lines.end()) << r.out << "image: " << imageColor;
+
+    const std::vector<std::string> tree = {"printrays", "s.pov", "8", "6", "4", "3"};
+    const ProcessResult pr = runRays(tmp.path(), tree);
+    ASSERT_TRUE(pr.ok()) << describeRun(tree, pr);
+    EXPECT_TRUE(startsWith(pr.out, "Pixel: [4, 3] Color: (124, 124, 124)\n")) << pr.out;
 }
 
 TEST(CliDebugCommands, PixelOutsideTheImageFails) {

@@ -16,10 +16,12 @@
 
 #include "rays/image/image.h"
 #include "rays/io/image_io.h"
+#include "support/files.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
 using rays::test::ProcessResult;
+using rays::test::readFile;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
@@ -45,13 +47,6 @@ mesh2 {
   pigment { color rgb <0.6, 0.3, 0.8> } finish { ambient 0.2 diffuse 0.6 specular 0.4 roughness 0.1 }
   translate <-0.5, -1, -4> }
 )";
-
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 struct Mode {
     std::string name;

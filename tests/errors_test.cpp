@@ -20,10 +20,12 @@
 
 #include "rays/image/image.h"
 #include "rays/io/image_io.h"
+#include "support/files.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
 using rays::test::ProcessResult;
+using rays::test::readFile;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
@@ -328,13 +330,6 @@ std::vector<BadInput> catalogue() {
                  {"render", "scene.pov", "16", "12", "-o", "out.png", "-q", "--strict"}, 2,
                  "scene.pov:4:1: error: not rendered yet: torus (--strict)"});
     return t;
-}
-
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
 }
 
 std::string replaceAll(std::string s, const std::string& from, const std::string& to) {

@@ -20,6 +20,7 @@
 #include "rays/error.h"
 #include "rays/image/filter.h"
 #include "rays/io/image_io.h"
+#include "support/files.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
@@ -27,16 +28,10 @@ using rays::Error;
 using rays::Image8;
 using rays::cli::runFilterCommand;
 
+using rays::test::readFile;
+using rays::test::writeFile;
+
 namespace {
-
-std::string readBytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-void writeBytes(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary) << bytes; }
 
 std::vector<std::string> listDir(const fs::path& dir) {
     std::vector<std::string> names;
@@ -67,7 +62,7 @@ protected:
     // Runs the command expecting failure: returns the message; checks `out` was not touched and
     // that no temporary file was left.
     std::string failure(const std::vector<std::string>& args) {
-        writeBytes(out, "previous output");
+        writeFile(out, "previous output");
         const auto before = listDir(dir.path());
         std::string msg = "(no error)";
         try {
@@ -76,7 +71,7 @@ protected:
         } catch (const Error& e) {
             msg = e.what();
         }
-        EXPECT_EQ(readBytes(out), "previous output") << msg;
+        EXPECT_EQ(readFile(out), "previous output") << msg;
         EXPECT_EQ(listDir(dir.path()), before) << msg;
         EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
         return msg;
@@ -128,7 +123,7 @@ TEST_F(FilterCli, FormatsAlphaAndCustomKernels) {
     EXPECT_EQ(rays::readImage(path("o.jpg")).channels, 3);
     ASSERT_EQ(runFilterCommand({path("o.jpg"), path("o2.png"), "median_3", "-q"}), 0);
     // A custom kernel file.
-    writeBytes(path("k.txt"), "# identity\n0 0 0\n0 1 0\n0 0 0\n");
+    writeFile(path("k.txt"), "# identity\n0 0 0\n0 1 0\n0 0 0\n");
     ASSERT_EQ(runFilterCommand({in, out, "kernel:" + path("k.txt"), "-q"}), 0);
     EXPECT_EQ(rays::readImage(out).pixels, rays::readImage(in).pixels);
 }
@@ -156,13 +151,13 @@ TEST_F(FilterCli, BadKernelSizesAndNames) {
 }
 
 TEST_F(FilterCli, BadCustomKernelFiles) {
-    writeBytes(path("ragged.txt"), "1 1 1\n1 1\n1 1 1\n");
+    writeFile(path("ragged.txt"), "1 1 1\n1 1\n1 1 1\n");
     EXPECT_EQ(failure({in, out, "kernel:" + path("ragged.txt")}),
               path("ragged.txt") + ":2:1: error: ragged kernel: this row has 2 values but the first row (line 1) has 3");
-    writeBytes(path("even.txt"), "# 2x2\n1 1\n1 1\n");
+    writeFile(path("even.txt"), "# 2x2\n1 1\n1 1\n");
     EXPECT_EQ(failure({in, out, "kernel:" + path("even.txt")}),
               path("even.txt") + ":2:1: error: kernel rows have 2 values; the width must be odd");
-    writeBytes(path("rows.txt"), "1 1 1\n1 1 1\n");
+    writeFile(path("rows.txt"), "1 1 1\n1 1 1\n");
     EXPECT_EQ(failure({in, out, "kernel:" + path("rows.txt")}),
               path("rows.txt") + ":2:1: error: kernel has 2 rows; the number of rows must be odd");
     EXPECT_EQ(failure({in, out, "kernel:" + path("nope.txt")}),
@@ -172,9 +167,9 @@ TEST_F(FilterCli, BadCustomKernelFiles) {
 TEST_F(FilterCli, UnreadableOrUnsupportedImages) {
     const std::string missing = path("missing.png");
     EXPECT_TRUE(startsWith(failure({missing, out, "sobel"}), missing + ": error: cannot read image"));
-    writeBytes(path("text.png"), "this is not a PNG file");
+    writeFile(path("text.png"), "this is not a PNG file");
     EXPECT_TRUE(startsWith(failure({path("text.png"), out, "sobel"}), path("text.png") + ": error: cannot read image"));
-    writeBytes(path("pic.gif"), "GIF89a....");
+    writeFile(path("pic.gif"), "GIF89a....");
     EXPECT_TRUE(startsWith(failure({path("pic.gif"), out, "sobel"}), path("pic.gif") + ": error: cannot read image"));
 }
 

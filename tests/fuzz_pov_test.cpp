@@ -17,9 +17,12 @@
 #include "rays/error.h"
 #include "rays/pov/load_pov.h"
 #include "rays/pov/pov_host.h"
+#include "support/files.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
+
+using rays::test::readFile;
 
 namespace {
 
@@ -33,13 +36,6 @@ std::string povError(std::string text) {
         return e.what();
     }
     return "";
-}
-
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
 }
 
 TEST(FuzzPovHarness, IncludeFilesDefineColoursTexturesAndMacros) {
@@ -92,8 +88,8 @@ TEST(FuzzPovHarness, StrictModeOnOddSizesOnly) {
 }
 
 TEST(FuzzPovDictionary, ListsEveryKeywordAndDirective) {
-    const std::string def = readText(fs::path(RAYS_SOURCE_DIR) / "src/rays/sdl/keywords.def");
-    const std::string dict = readText(fs::path(RAYS_SOURCE_DIR) / "fuzz/dict/pov.dict");
+    const std::string def = readFile(fs::path(RAYS_SOURCE_DIR) / "src/rays/sdl/keywords.def");
+    const std::string dict = readFile(fs::path(RAYS_SOURCE_DIR) / "fuzz/dict/pov.dict");
     ASSERT_FALSE(def.empty());
     ASSERT_FALSE(dict.empty());
     std::set<std::string> entries;

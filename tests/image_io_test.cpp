@@ -12,9 +12,12 @@
 #include <string>
 
 #include "rays/error.h"
+#include "support/files.h"
 
 namespace fs = std::filesystem;
 using rays::Image8;
+
+using rays::test::writeFile;
 
 namespace {
 
@@ -82,11 +85,6 @@ Image8 firstChannels(const Image8& img, int channels) {
         for (int c = 0; c < channels; ++c) out.pixels[i * size_t(channels) + size_t(c)] =
             img.pixels[i * size_t(img.channels) + size_t(c)];
     return out;
-}
-
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream f(path, std::ios::binary);
-    f << text;
 }
 
 std::string messageOf(const std::function<void()>& f) {
@@ -316,7 +314,7 @@ TEST(ImageIoWrite, TargetIsADirectoryThrowsAndLeavesNoTemporary) {
 TEST(ImageIoWrite, OverwriteReplacesAtomically) {
     TempDir dir;
     const std::string path = dir.file("out.png");
-    writeText(path, "old contents that are not an image");
+    writeFile(path, "old contents that are not an image");
     const Image8 first = pattern(16, 16, 3);
     rays::writeImage(path, first);
     expectSame(rays::readImage(path), first);
@@ -342,18 +340,18 @@ TEST(ImageIoRead, MissingFileThrowsWithPath) {
 TEST(ImageIoRead, GarbageFileThrowsWithPath) {
     TempDir dir;
     const std::string path = dir.file("garbage.png");
-    writeText(path, "this is certainly not an image file, just some text\n");
+    writeFile(path, "this is certainly not an image file, just some text\n");
     const std::string msg = messageOf([&] { rays::readImage(path); });
     EXPECT_TRUE(startsWith(msg, path + ": error: cannot read image: ")) << msg;
 
     const std::string empty = dir.file("empty.jpg");
-    writeText(empty, "");
+    writeFile(empty, "");
     EXPECT_TRUE(startsWith(messageOf([&] { rays::readImage(empty); }), empty + ": error: cannot read image: "));
 
     // A truncated PNG.
     const std::string cut = dir.file("cut.png");
     const std::vector<uint8_t> png = rays::encodeImage("png", pattern(64, 64, 3));
-    writeText(cut, std::string(png.begin(), png.begin() + long(png.size() / 2)));
+    writeFile(cut, std::string(png.begin(), png.begin() + long(png.size() / 2)));
     EXPECT_TRUE(startsWith(messageOf([&] { rays::readImage(cut); }), cut + ": error: cannot read image: "));
 
     // A directory.

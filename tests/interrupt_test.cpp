@@ -20,9 +20,11 @@
 #include <vector>
 
 #include "rays/io/image_io.h"
+#include "support/files.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
+using rays::test::readFile;
 using rays::test::TempDir;
 
 namespace {
@@ -43,13 +45,6 @@ struct SignalledRun {
     bool finishedBeforeSignal = false;
     std::string err;      ///< stderr
 };
-
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 /// Runs `rays args` in dir (stderr to a log outside it), sends `sig` after `delay` (and again after
 /// secondSignalAfter, when that is not negative), waits at most `limit` for the exit (then kills it).

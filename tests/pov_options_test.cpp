@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "rays/error.h"
+#include "support/files.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
@@ -25,6 +26,7 @@ using rays::Error;
 using rays::cli::PovOptionReader;
 using rays::cli::PovOptions;
 using rays::test::TempDir;
+using rays::test::writeFile;
 
 namespace {
 
@@ -48,8 +50,6 @@ std::string errorOf(const std::vector<std::string>& args) {
     }
     return "";
 }
-
-void writeText(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 /// Changes the working directory for one test and restores it.
 class InDirectory {
@@ -270,7 +270,7 @@ TEST(PovOptionsSetting, LaterSettingsWinAndOrderIsKept) {
 TEST(PovOptionsIni, CommentsSwitchLinesAndSettings) {
     TempDir dir;
     const fs::path ini = dir.path() / "opts.ini";
-    writeText(ini,
+    writeFile(ini,
               "; a comment line\n"
               "\n"
               "Width = 80   ; a trailing comment\n"
@@ -292,7 +292,7 @@ TEST(PovOptionsIni, SettingsOnASwitchLineAndEmptyValues) {
     // animations/splinefollow.ini: `+kf0.1666 +kff20 +kc declare=fp=0`; benchmark.ini: `All_File=`.
     TempDir dir;
     const fs::path ini = dir.path() / "anim.ini";
-    writeText(ini, "+kff20 +kc declare=fp=0\nOutput_File_Name=\nAll_File=\n");
+    writeFile(ini, "+kff20 +kc declare=fp=0\nOutput_File_Name=\nAll_File=\n");
     const Read r = readArgs({ini.string()});
     EXPECT_EQ(r.o.animation.finalFrame, 20);
     EXPECT_TRUE(r.o.animation.cyclic);
@@ -305,7 +305,7 @@ TEST(PovOptionsIni, SettingsOnASwitchLineAndEmptyValues) {
 
 TEST(PovOptionsIni, TheExtensionIsAssumedAndTheIniIsReadInPlace) {
     TempDir dir;
-    writeText(dir.path() / "res.ini", "Width=100\nHeight=50\n");
+    writeFile(dir.path() / "res.ini", "Width=100\nHeight=50\n");
     const std::string res = (dir.path() / "res").string();
     // "povray myopts +V other": in order, so options before the INI file lose and after it win.
     const Read r = readArgs({"+W10", "+H10", res, "+H20"});
@@ -329,7 +329,7 @@ const char* kResIni =
 
 TEST(PovOptionsIni, OnlyTheTopPartWithoutASection) {
     TempDir dir;
-    writeText(dir.path() / "res.ini", kResIni);
+    writeFile(dir.path() / "res.ini", kResIni);
     const PovOptions o = readArgs({(dir.path() / "res.ini").string()}).o;
     EXPECT_EQ(o.width, 120);
     EXPECT_EQ(o.height, 100);
@@ -338,7 +338,7 @@ TEST(PovOptionsIni, OnlyTheTopPartWithoutASection) {
 
 TEST(PovOptionsIni, ANamedSectionAfterTheTopPart) {
     TempDir dir;
-    writeText(dir.path() / "res.ini", "Antialias=on\n" + std::string(kResIni));
+    writeFile(dir.path() / "res.ini", "Antialias=on\n" + std::string(kResIni));
     const std::string res = (dir.path() / "res").string();
     const PovOptions med = readArgs({res + "[Med]"}).o;
     EXPECT_EQ(med.width, 320);
@@ -352,7 +352,7 @@ TEST(PovOptionsIni, ANamedSectionAfterTheTopPart) {
 
 TEST(PovOptionsIni, AMissingSectionWarnsAndKeepsTheTopPart) {
     TempDir dir;
-    writeText(dir.path() / "res.ini", kResIni);
+    writeFile(dir.path() / "res.ini", kResIni);
     const std::string path = (dir.path() / "res.ini").string();
     const Read r = readArgs({path + "[Huge]"});
     EXPECT_EQ(r.o.width, 120);
@@ -361,8 +361,8 @@ TEST(PovOptionsIni, AMissingSectionWarnsAndKeepsTheTopPart) {
 
 TEST(PovOptionsIni, NestedIniFilesWithSections) {
     TempDir dir;
-    writeText(dir.path() / "res.ini", kResIni);
-    writeText(dir.path() / "main.ini", "Width=1\nres[Low]  ; a nested INI file with a section\nHeight=7\n");
+    writeFile(dir.path() / "res.ini", kResIni);
+    writeFile(dir.path() / "main.ini", "Width=1\nres[Low]  ; a nested INI file with a section\nHeight=7\n");
     const PovOptions o = readArgs({(dir.path() / "main.ini").string()}).o;
     EXPECT_EQ(o.width, 80);  // read in place: res.ini's settings replace Width=1
     EXPECT_EQ(o.height, 7);
@@ -370,7 +370,7 @@ TEST(PovOptionsIni, NestedIniFilesWithSections) {
 
 TEST(PovOptionsIni, NestingDeeperThanTenIsAnError) {
     TempDir dir;
-    writeText(dir.path() / "loop.ini", "loop\n");  // includes itself (next to it, found from the INI's folder)
+    writeFile(dir.path() / "loop.ini", "loop\n");  // includes itself (next to it, found from the INI's folder)
     const std::string message = errorOf({(dir.path() / "loop.ini").string()});
     EXPECT_NE(message.find("INI files nested more than 10 deep"), std::string::npos) << message;
 }
@@ -379,7 +379,7 @@ TEST(PovOptionsIni, AMissingIniFileIsAnErrorNamingWhereItWasAsked) {
     TempDir dir;
     EXPECT_EQ(errorOf({(dir.path() / "none").string()}),
               "rays: error: cannot open INI file '" + (dir.path() / "none.ini").string() + "' (named on the command line)");
-    writeText(dir.path() / "a.ini", "Width=2\nmissing\n");
+    writeFile(dir.path() / "a.ini", "Width=2\nmissing\n");
     const std::string a = (dir.path() / "a.ini").string();
     EXPECT_EQ(errorOf({a}), "rays: error: cannot open INI file 'missing.ini' (named " + a + ":2)");
 }
@@ -387,15 +387,15 @@ TEST(PovOptionsIni, AMissingIniFileIsAnErrorNamingWhereItWasAsked) {
 TEST(PovOptionsIni, ErrorsAndWarningsNameTheFileAndLine) {
     TempDir dir;
     InDirectory cd(dir.path());
-    writeText("scene.ini", "; settings\nInput_File_Name=scene.pov\nFoo=1\nWidth=abc\n");
+    writeFile("scene.ini", "; settings\nInput_File_Name=scene.pov\nFoo=1\nWidth=abc\n");
     EXPECT_EQ(errorOf({"scene.ini"}), "rays: error: scene.ini:4: Width must be a positive integer, got 'abc'");
-    writeText("warn.ini", "Foo=1\n+Zap\nfoo=2\n[Sec]\nBar=3\n");
+    writeFile("warn.ini", "Foo=1\n+Zap\nfoo=2\n[Sec]\nBar=3\n");
     const Read r = readArgs({"warn.ini"});
     EXPECT_EQ(r.warnings, (std::vector<std::string>{"warn.ini:1: warning: unknown option 'Foo'",
                                                      "warn.ini:2: warning: unknown option '+Zap'"}));
-    writeText("label.ini", "[Open\n");
+    writeFile("label.ini", "[Open\n");
     EXPECT_EQ(errorOf({"label.ini"}), "rays: error: label.ini:1: section label without ']': '[Open'");
-    writeText("sw.ini", "+W10 +Hx\n");
+    writeFile("sw.ini", "+W10 +Hx\n");
     EXPECT_EQ(errorOf({"sw.ini"}), "rays: error: sw.ini:1: Height must be a positive integer, got 'x'");
 }
 
@@ -403,18 +403,18 @@ TEST(PovOptionsIni, RelativeSceneNamesFromTheCurrentFolderThenTheIniFolder) {
     TempDir dir;
     InDirectory cd(dir.path());
     fs::create_directory("sub");
-    writeText("sub/scene.pov", "");
-    writeText("sub/here.ini", "Input_File_Name=scene.pov\n");
+    writeFile("sub/scene.pov", "");
+    writeFile("sub/here.ini", "Input_File_Name=scene.pov\n");
     // Not in the current folder: the one next to the INI file.
     EXPECT_EQ(readArgs({"sub/here.ini"}).o.inputFile, "sub/scene.pov");
     // In the current folder (POV-Ray 3.7 reads names relative to it): that one.
-    writeText("scene.pov", "");
+    writeFile("scene.pov", "");
     EXPECT_EQ(readArgs({"sub/here.ini"}).o.inputFile, "scene.pov");
     // On the command line names are never moved.
     EXPECT_EQ(readArgs({"+Inone.pov"}).o.inputFile, "none.pov");
     // A nested INI file is found the same way.
-    writeText("sub/outer.ini", "inner\n");
-    writeText("sub/inner.ini", "Width=33\n");
+    writeFile("sub/outer.ini", "inner\n");
+    writeFile("sub/inner.ini", "Width=33\n");
     EXPECT_EQ(readArgs({"sub/outer.ini"}).o.width, 33);
 }
 

@@ -19,9 +19,12 @@
 #include "rays/io/image_io.h"
 #include "rays/io/obj_loader.h"
 #include "rays/io/scene_parser.h"
+#include "support/files.h"
 #include "support/process.h"
 
 namespace fs = std::filesystem;
+
+using rays::test::readFile;
 
 namespace {
 
@@ -78,13 +81,6 @@ std::vector<Regression> regressions() {
     };
 }
 
-std::string readBytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 std::string prefixOf(const std::string& file) { return file.substr(0, file.find('-')); }
 
 /// The message of the Error the target's reader throws for the bytes ("" when it accepts them).
@@ -113,7 +109,7 @@ class Regressions : public ::testing::TestWithParam<Regression> {};
 
 TEST_P(Regressions, SameEntryPointAsTheFuzzerEndsNormally) {
     const Regression& r = GetParam();
-    const std::string bytes = readBytes(kDir / r.file);
+    const std::string bytes = readFile(kDir / r.file);
     ASSERT_FALSE(bytes.empty()) << "missing " << (kDir / r.file);
     const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
     const std::string target = prefixOf(r.file);
@@ -128,7 +124,7 @@ TEST_P(Regressions, SameEntryPointAsTheFuzzerEndsNormally) {
 TEST_P(Regressions, ReaderRefusesItWithItsMessage) {
     const Regression& r = GetParam();
     rays::test::TempDir dir;
-    const std::string msg = errorOf(prefixOf(r.file), readBytes(kDir / r.file), dir.path());
+    const std::string msg = errorOf(prefixOf(r.file), readFile(kDir / r.file), dir.path());
     EXPECT_NE(msg.find(r.message), std::string::npos) << "message: " << msg;
     EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
 }

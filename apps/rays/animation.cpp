@@ -2,18 +2,13 @@
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
 #include "interrupt.h"
+#include "paths.h"
 
 namespace rays::cli {
 namespace {
-
-bool fileExists(const std::string& path) {
-    std::error_code ec;
-    return std::filesystem::exists(path, ec);
-}
 
 // "frame 2 of 3 (frame_number 2, clock 0.5)"
 std::string frameLabel(const FramePlan& plan, size_t i) {

@@ -3,33 +3,19 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 
 #include "rays/error.h"
 #include "rays/image/compare.h"
 #include "rays/io/image_io.h"
+#include "paths.h"
 #include "subcommand_args.h"
 
 namespace rays::cli {
 namespace {
 
-namespace fs = std::filesystem;
-
-// True when a and b name the same file (an existing file by identity, otherwise by normalised path).
-bool samePath(const std::string& a, const std::string& b) {
-    std::error_code ec;
-    if (fs::exists(a, ec) && fs::exists(b, ec)) {
-        const bool same = fs::equivalent(a, b, ec);
-        if (!ec) return same;
-    }
-    return fs::weakly_canonical(fs::absolute(a, ec), ec) == fs::weakly_canonical(fs::absolute(b, ec), ec);
-}
-
 // Refuses a diff path that would overwrite an input or that has no image format.
 void checkDiffPath(const std::string& diff, const std::string& a, const std::string& b) {
-    for (const std::string& input : {a, b})
-        if (samePath(diff, input))
-            failFile(diff, "output would overwrite the input file '" + input + "'");
+    for (const std::string& input : {a, b}) checkOutputIsNotInput(diff, input);
     if (!isSupportedImageExtension(diff))
         failFile(diff, "unsupported diff image format (use .png, .jpg, .jpeg, .bmp, .tga or .ppm)");
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "paths.h"
 #include "rays/error.h"
 
 namespace rays::cli {
@@ -33,7 +34,7 @@ FramePlan stillPlan(const AnimationOptions& a) {
 // A subset bound as a frame number. A fraction f (below 1) of an animation of `count` frames is
 // frame initial − 1 + ⌊f·count⌋: POV-Ray 3.7 computes ⌊f·count⌋ alone, which is the same for the
 // usual Initial_Frame=1 (and ignores Initial_Frame otherwise); a value from 1 on is a frame number.
-int subsetFrame(const FrameBound& b, int initial, int count) {
+int subsetFrame(const PovBound& b, int initial, int count) {
     if (b.value < 1) return initial - 1 + int(std::floor(b.value * count));
     return int(b.value);
 }
@@ -85,10 +86,8 @@ FramePlan planFrames(const AnimationOptions& a) {
 }
 
 std::string frameFileName(const std::string& output, int frame, int digits) {
-    const size_t slash = output.find_last_of('/');
-    size_t dot = output.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == slash + 1)
-        dot = output.size();  // no extension (a leading dot names a hidden file, not an extension)
+    size_t dot = extensionDot(output);
+    if (dot == std::string::npos) dot = output.size();  // no extension: the number goes at the end
     char number[32];
     std::snprintf(number, sizeof number, "%0*d", digits, frame);
     return output.substr(0, dot) + number + output.substr(dot);

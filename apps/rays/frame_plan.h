@@ -9,9 +9,10 @@
 
 namespace rays::cli {
 
-/// A subset frame bound as POV-Ray writes it (Subset_Start_Frame, +SF): below 1 a fraction of the
-/// animation, from 1 on a frame number.
-struct FrameBound {
+/// A bound as POV-Ray writes it: below 1 a fraction, from 1 on a 1-based number. A subset frame
+/// (Subset_Start_Frame, +SF: of the animation, a frame number) or a row or column (Start_Row, +SR,
+/// …: of the image, a pixel number; pov_options.h).
+struct PovBound {
     bool given = false;
     double value = 0;
 };
@@ -25,8 +26,8 @@ struct AnimationOptions {
     bool clockGiven = false;   ///< Clock, +K was given (a still's clock; clock_on becomes true)
     double clock = 0;          ///< Clock, +K
     bool cyclic = false;       ///< Cyclic_Animation, +KC
-    FrameBound subsetStart;    ///< Subset_Start_Frame, +SF
-    FrameBound subsetEnd;      ///< Subset_End_Frame, +EF
+    PovBound subsetStart;    ///< Subset_Start_Frame, +SF
+    PovBound subsetEnd;      ///< Subset_End_Frame, +EF
     int frameStep = 1;         ///< Frame_Step, +STP
 };
 

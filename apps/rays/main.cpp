@@ -17,6 +17,7 @@
 #include "rays/error.h"
 #include "rays/render/course_commands.h"
 #include "animation.h"
+#include "arg_text.h"
 #include "compare_command.h"
 #include "filter_command.h"
 #include "frame_plan.h"
@@ -34,15 +35,8 @@ using namespace rays;
 
 namespace {
 
-bool isInteger(const std::string& s) {
-    if (s.empty()) return false;
-    for (char c : s)
-        if (c < '0' || c > '9') return false;
-    return true;
-}
-
 int toInt(const std::string& s, const char* what) {
-    if (!isInteger(s) || s.size() > 9) throw Error(std::string("rays: error: ") + what + " must be a non-negative integer, got '" + s + "'");
+    if (!cli::isDigits(s) || s.size() > 9) throw Error(std::string("rays: error: ") + what + " must be a non-negative integer, got '" + s + "'");
     return std::stoi(s);
 }
 
@@ -74,7 +68,7 @@ int run(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "compare")
         return cli::runCompareCommand(std::vector<std::string>(argv + 2, argv + argc));
     std::vector<std::string> args = cli::normaliseCourseFlags(argc, argv);
-    if (!args.empty() && isInteger(args[0])) return runPositional(args);
+    if (!args.empty() && cli::isDigits(args[0])) return runPositional(args);
     static const std::vector<std::string> kCommands = {"render", "raycast", "sceneinfo", "pixelray", "firsthit", "pixelcolor", "printrays", "scenes", "assets", "filter", "compare"};
     const bool povForm = cli::isPovForm(args, kCommands);
     if (!povForm && !args.empty() && args[0][0] != '-' &&
@@ -241,9 +235,10 @@ int run(int argc, char** argv) {
         return cli::runRender(job);
     }
 
-    const Scene sc = cli::loadSceneWithObj(scene, "", job.rotation);
+    // The scene is loaded as render loads it, with the command's image size (image_width and
+    // image_height; sceneinfo has none and sees render's default).
     if (sceneinfo->parsed()) {
-        printSceneInfo(std::cout, sc);
+        printSceneInfo(std::cout, cli::loadJobScene(job));
         return 0;
     }
     cli::checkImageSize(width, height);
@@ -252,6 +247,7 @@ int run(int argc, char** argv) {
                     std::to_string(width) + "x" + std::to_string(height) + " image");
     s.width = width;
     s.height = height;
+    const Scene sc = cli::loadJobScene(job);
     if (pixelray->parsed()) {
         printPixelRay(std::cout, sc, s, px, py);
         return 0;

@@ -4,15 +4,15 @@
 #include <cctype>
 #include <map>
 
+#include "arg_text.h"
 #include "rays/error.h"
 #include "scene_library.h"
 
 namespace rays::cli {
 namespace {
 
-bool isWholeNumber(const std::string& s) {
-    return !s.empty() && s.size() <= 9 && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
+// A POV-Ray switch written with '+' ("+W640"): in `rays render` always POV-Ray's.
+bool isPlusSwitch(const std::string& arg) { return isPovSwitch(arg) && arg[0] == '+'; }
 
 // True when the option named by arg ("--spp", "-o", "--spp=4", "-o5") is one of render's and
 // takes its value from the next argument.
@@ -25,7 +25,7 @@ bool takesNextArgument(const std::string& arg, const CLI::App& render) {
 }
 
 bool isRenderPovArgument(const std::string& arg) {
-    if (arg.size() >= 2 && arg[0] == '+' && std::isalpha(static_cast<unsigned char>(arg[1]))) return true;
+    if (isPlusSwitch(arg)) return true;
     if (arg.size() >= 2 && arg[0] == '-' && std::isupper(static_cast<unsigned char>(arg[1])) && arg[1] != 'W' && arg[1] != 'H')
         return true;
     return (arg.empty() || arg[0] != '-') && (isPovSetting(arg) || isIniArgument(arg));
@@ -46,8 +46,7 @@ bool isPovForm(const std::vector<std::string>& args, const std::vector<std::stri
     if (std::find(commands.begin(), commands.end(), args[0]) != commands.end()) return false;
     if (isSceneArgument(args[0])) return true;  // povray scene.pov
     return std::any_of(args.begin(), args.end(), [](const std::string& a) {
-        return (a.size() >= 2 && a[0] == '+' && std::isalpha(static_cast<unsigned char>(a[1]))) || isPovSetting(a) ||
-               isIniArgument(a);
+        return isPlusSwitch(a) || isPovSetting(a) || isIniArgument(a);
     });
 }
 
@@ -78,7 +77,7 @@ void readInOrder(const CLI::App& render, const SharedOptions& shared, PovOptionR
     std::map<const CLI::Option*, size_t> seen;
     for (const CLI::Option* opt : render.parse_order())
         if (opt == shared.scene || opt == shared.width || opt == shared.height) positionals.push_back(opt->results()[seen[opt]++]);
-    const bool sizeFirst = !positionals.empty() && isWholeNumber(positionals[0]);
+    const bool sizeFirst = !positionals.empty() && isDigits(positionals[0]) && positionals[0].size() <= 9;
     if (positionals.size() > (sizeFirst ? 2u : 3u))
         throw Error("rays: error: too many positional arguments: '" + positionals.back() +
                     "' (render takes SCENE W H; see rays render --help)");

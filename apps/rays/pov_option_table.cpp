@@ -1,6 +1,6 @@
 #include "pov_option_table.h"
 
-#include <cctype>
+#include "arg_text.h"
 
 namespace rays::cli::pov {
 namespace {
@@ -183,11 +183,6 @@ const SwitchInfo kSwitches[] = {
     {"RFO", "Radiosity_To_File", Form::Toggle},
     {"RVP", "Radiosity_Vain_Pretrace", Form::Toggle},
 };
-
-std::string lower(std::string s) {
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
 
 }  // namespace
 

@@ -9,8 +9,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "arg_text.h"
+#include "paths.h"
 #include "pov_option_table.h"
 #include "rays/error.h"
+#include "rays/sdl/declare_value.h"
 
 namespace rays::cli {
 namespace {
@@ -19,11 +22,6 @@ namespace fs = std::filesystem;
 using pov::Form;
 using pov::Key;
 using pov::Kind;
-
-std::string lower(std::string s) {
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
 
 std::string trim(const std::string& s) {
     const size_t a = s.find_first_not_of(" \t\r\n");
@@ -42,30 +40,19 @@ std::string unquote(const std::string& v) {
     return v;
 }
 
-bool hasExtension(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    const size_t dot = path.find_last_of('.');
-    return dot != std::string::npos && (slash == std::string::npos || dot > slash + 1);
-}
-
 std::string folderOf(const std::string& path) {
     return fs::path(path).parent_path().string();
-}
-
-bool exists(const std::string& path) {
-    std::error_code ec;
-    return fs::exists(path, ec);
 }
 
 // A relative name from an INI file: as POV-Ray 3.7 does, relative to the current folder; when no
 // such file exists there but one does next to the INI file, that one (so `rays dir/scene.ini`
 // works from anywhere).
 std::string besideIni(const std::string& name, const std::vector<std::string>& iniStack) {
-    if (name.empty() || name[0] == '/' || iniStack.empty() || exists(name)) return name;
+    if (name.empty() || name[0] == '/' || iniStack.empty() || fileExists(name)) return name;
     const std::string folder = folderOf(iniStack.back());
     if (folder.empty()) return name;
     const std::string beside = folder + "/" + name;
-    return exists(beside) ? beside : name;
+    return fileExists(beside) ? beside : name;
 }
 
 bool isIdentifier(const std::string& s) {
@@ -240,10 +227,7 @@ void PovOptionReader::warnOnce(const std::string& key, const std::string& messag
 void PovOptionReader::readArgument(const std::string& arg) {
     const Where where{"", 0, arg};
     if (isPovSwitch(arg)) return readSwitch(arg, where);
-    if (isPovSetting(arg)) {
-        const size_t eq = arg.find('=');
-        return set(trim(arg.substr(0, eq)), unquote(trim(arg.substr(eq + 1))), where);
-    }
+    if (isPovSetting(arg)) return setKeyValue(arg, where);
     if (isSceneArgument(arg)) {
         o_.inputFile = resolveScene(arg, where);
         return;
@@ -276,8 +260,13 @@ void PovOptionReader::readSwitch(const std::string& sw, const Where& where) {
 
 std::string PovOptionReader::resolveScene(const std::string& name, const Where& where) const {
     if (name == "-") failAt(where, "reading the scene from standard input (+I-) is not supported");
-    std::string path = hasExtension(name) ? name : name + ".pov";  // ".pov is assumed" (reference 3.2.5.2)
+    std::string path = extensionDot(name) != std::string::npos ? name : name + ".pov";  // ".pov is assumed" (reference 3.2.5.2)
     return where.file.empty() ? path : besideIni(path, iniStack_);
+}
+
+void PovOptionReader::setKeyValue(const std::string& text, const Where& where) {
+    const size_t eq = text.find('=');
+    set(trim(text.substr(0, eq)), unquote(trim(text.substr(eq + 1))), where);
 }
 
 void PovOptionReader::set(const std::string& keyName, const std::string& value, const Where& where) {
@@ -374,9 +363,7 @@ void PovOptionReader::setDeclare(const Value& v) {
     const size_t eq = v.text.find('=');
     const std::string id = eq == std::string::npos ? v.text : trim(v.text.substr(0, eq));
     const std::string value = eq == std::string::npos ? std::string() : trim(v.text.substr(eq + 1));
-    double ignored = 0;
-    const bool isString = value.size() >= 2 && value.front() == '"' && value.back() == '"';
-    if (!isIdentifier(id) || !(isString || parseDouble(value, ignored)))
+    if (!isIdentifier(id) || !sdl::parseDeclareValue(value))
         failAt(v.where, "Declare needs NAME=VALUE with VALUE a number or a string in double quotes, got '" + v.text + "'");
     auto same = std::find_if(o_.declares.begin(), o_.declares.end(), [&](const sdl::Declare& d) { return d.name == id; });
     if (same != o_.declares.end()) same->value = value;  // a later declaration of the name wins
@@ -405,7 +392,7 @@ void PovOptionReader::setOther(const Value& v) {
 }
 
 void PovOptionReader::readIniFile(const std::string& path, const std::string& section, const std::string& from) {
-    std::string name = hasExtension(path) ? path : path + ".ini";  // ".ini is assumed" (tutorial 2.2.8.2)
+    std::string name = extensionDot(path) != std::string::npos ? path : path + ".ini";  // ".ini is assumed" (tutorial 2.2.8.2)
     name = besideIni(name, iniStack_);
     const std::string origin = from.empty() ? std::string() : " (named " + from + ")";
     if (iniStack_.size() >= 10)
@@ -445,15 +432,13 @@ void PovOptionReader::readIniText(const std::string& text, const std::string& pa
                 if (isPovSwitch(word)) {
                     readSwitch(word, at);
                 } else if (isPovSetting(word)) {  // `+kc declare=fp=0` (animations/splinefollow.ini)
-                    const size_t eq = word.find('=');
-                    set(trim(word.substr(0, eq)), unquote(trim(word.substr(eq + 1))), at);
+                    setKeyValue(word, at);
                 } else {
                     warnOnce(word, "unknown option '" + word + "'", at);
                 }
             }
         } else if (line.find('=') != std::string::npos) {
-            const size_t eq = line.find('=');
-            set(trim(line.substr(0, eq)), unquote(trim(line.substr(eq + 1))), where);
+            setKeyValue(line, where);
         } else {
             std::string name, sub;
             splitSection(line, name, sub);

@@ -18,13 +18,6 @@ namespace pov {
 struct KeyInfo;  // pov_option_table.h
 }
 
-/// A row or column bound (Start_Row, +SR, …): below 1 a fraction of the image, from 1 on a
-/// 1-based pixel number.
-struct PixelBound {
-    bool given = false;
-    double value = 0;
-};
-
 /// POV-Ray's anti-aliasing options (reference 3.2.8.7).
 struct PovAntialias {
     bool given = false;        ///< set by a POV-Ray option after any of render's own --spp, --aa, -ss
@@ -43,7 +36,7 @@ struct PovOptions {
     int width = -1, height = -1;  ///< Width, Height, +W, +H (and render's W H, -W, -H); -1: not given
     PovAntialias antialias;
     AnimationOptions animation;
-    PixelBound startRow, endRow, startColumn, endColumn;  ///< Start_Row … End_Column, +SR +ER +SC +EC
+    PovBound startRow, endRow, startColumn, endColumn;  ///< Start_Row … End_Column, +SR +ER +SC +EC
     char fileType = 0;         ///< Output_File_Type, +Fx: 'N' 'P' 'T' 'C' 'J' 'B' 'S'; 0: not given (PNG)
     int jpegQuality = 0;       ///< Compression (0 or 1 mean POV-Ray's 85) or --jpeg-quality; 0: not given
     std::vector<std::string> libraryPaths;  ///< Library_Path, +L, render's --library: in order, each once
@@ -88,6 +81,8 @@ private:
     struct Value;
     void readSwitch(const std::string& sw, const Where& where);
     void set(const std::string& key, const std::string& value, const Where& where);
+    /// KEY=VALUE (text holds an '='): set with the trimmed key and the trimmed, unquoted value.
+    void setKeyValue(const std::string& text, const Where& where);
     static Value readValue(const pov::KeyInfo& info, const std::string& text, const Where& where);
     bool setAnimation(const Value& v);
     bool setAntialias(const Value& v);

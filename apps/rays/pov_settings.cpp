@@ -24,10 +24,10 @@ std::string sceneName(const std::string& input) {
 
 // A row or column bound as a 0-based pixel index: a fraction f of n pixels is ⌊f·n⌋ for a start
 // and ⌈f·n⌉ − 1 for an end; a number k from 1 on is pixel k − 1.
-int startIndex(const PixelBound& b, int n) { return b.value < 1 ? int(std::floor(b.value * n)) : int(b.value) - 1; }
+int startIndex(const PovBound& b, int n) { return b.value < 1 ? int(std::floor(b.value * n)) : int(b.value) - 1; }
 // An end bound of exactly 1 is 100 % (POV-Ray 3.7 renders rows 1 to h with End_Row=1, as
 // advanced/benchmark/benchmark.ini asks); a start bound of 1 is the first pixel.
-int endIndex(const PixelBound& b, int n) { return b.value <= 1 ? int(std::ceil(b.value * n)) - 1 : int(b.value) - 1; }
+int endIndex(const PovBound& b, int n) { return b.value <= 1 ? int(std::ceil(b.value * n)) - 1 : int(b.value) - 1; }
 
 }  // namespace
 

@@ -21,6 +21,7 @@
 #include "rays/npr/stencil_pass.h"
 #include "rays/render/renderer.h"
 #include "interrupt.h"
+#include "paths.h"
 #include "render_budget.h"
 
 namespace rays::cli {
@@ -51,13 +52,6 @@ void appendObj(Scene& scene, const std::string& path) {
     scene.meshes.push_back(std::move(mesh));
     prepareObject(o, Transform{});
     scene.objects.push_back(o);
-}
-
-// Refuses to overwrite an input file with the image.
-void checkOutputIsNotInput(const std::string& output, const std::string& input) {
-    std::error_code ec;
-    if (!input.empty() && std::filesystem::exists(output, ec) && std::filesystem::equivalent(output, input, ec))
-        failFile(output, "output would overwrite the input file '" + input + "'");
 }
 
 // Refuses to overwrite an image the scene reads (image_map, normal_map, bump_map).
@@ -177,15 +171,16 @@ void checkImageSize(int width, int height) {
                     " is too large (at most 65536 per side and 268435456 pixels)");
 }
 
-Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation,
-                       int threads, const sdl::LanguageOptions& language) {
+Scene loadJobScene(const RenderJob& job) {
     ParseOptions opt;
-    opt.rotation = rotation;
-    opt.threads = threads;
-    opt.language = language;
+    opt.rotation = job.rotation;
+    opt.threads = job.settings.threads;
+    opt.language = job.language;
+    opt.language.imageWidth = job.settings.width;
+    opt.language.imageHeight = job.settings.height;
     opt.checkInterrupt = [] { throwIfInterrupted(); };  // Ctrl-C stops a long parse
-    Scene scene = loadScene(scenePath, opt);
-    if (!objPath.empty()) appendObj(scene, objPath);
+    Scene scene = loadScene(job.scenePath, opt);
+    if (!job.objPath.empty()) appendObj(scene, job.objPath);
     return scene;
 }
 
@@ -197,10 +192,7 @@ int runRender(const RenderJob& job) {
     if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
 
     auto t0 = Clock::now();
-    sdl::LanguageOptions language = job.language;
-    language.imageWidth = s.width;
-    language.imageHeight = s.height;
-    const Scene scene = loadSceneWithObj(job.scenePath, job.objPath, job.rotation, s.threads, language);
+    const Scene scene = loadJobScene(job);
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
                                     std::to_string(scene.cameras.size()) + ")");

@@ -46,10 +46,10 @@ struct RenderJob {
 /// Returns the process exit status (0).
 int runRender(const RenderJob& job);
 
-/// Loads the scene (big files on two threads unless threads is 1: ParseOptions::threads) with the
-/// scene-language options and, when objPath is set, appends its triangles.
-Scene loadSceneWithObj(const std::string& scenePath, const std::string& objPath, RotationOrder rotation,
-                       int threads = 0, const sdl::LanguageOptions& language = {});
+/// Loads the job's scene as every command does: the scene language sees job.language with the
+/// image size set from job.settings (`image_width`, `image_height`); big files are parsed on two
+/// threads unless settings.threads is 1 (ParseOptions::threads); objPath's triangles are appended.
+Scene loadJobScene(const RenderJob& job);
 
 /// Throws Error when w×h is not a sensible image size.
 void checkImageSize(int width, int height);

@@ -19,7 +19,8 @@ struct ParseOptions {
     RotationOrder rotation = RotationOrder::Course;
     /// Receives each warning line ("FILE:LINE:COL: warning: ..."); default prints to stderr.
     std::function<void(const std::string&)> warn;
-    /// Called now and then during a long parse; throws to stop it (Ctrl-C).
+    /// POV-Ray dialect only: called now and then while the scene language runs; throws to stop it
+    /// (Ctrl-C). A course-dialect file is read without calling it.
     std::function<void()> checkInterrupt;
     /// Threads for a big file (256 KiB or more): with 0 (all hardware threads) or 2 and more, it is
     /// parsed in two pieces at once when it can be cut between two top-level items; the scene,

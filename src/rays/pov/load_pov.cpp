@@ -8,6 +8,7 @@
 #include "rays/pov/not_rendered.h"
 #include "rays/pov/pov_host.h"
 #include "rays/pov/scene_builder.h"
+#include "rays/sdl/declare_value.h"
 #include "rays/sdl/interpreter.h"
 
 namespace rays::pov {
@@ -28,17 +29,10 @@ Scene parsePovText(std::string_view text, const std::string& shownName, const st
     d.checkInterrupt = options.checkInterrupt;
     sdl::Interpreter in(options.language, host, d, limits);
     for (const sdl::Declare& decl : options.language.declares) {
-        if (!decl.value.empty() && decl.value.front() == '"') {
-            std::string v = decl.value.substr(1);
-            if (!v.empty() && v.back() == '"') v.pop_back();
-            in.declareGlobal(decl.name, sdl::Value::string(v));
-        } else {
-            char* end = nullptr;
-            const double v = std::strtod(decl.value.c_str(), &end);
-            if (end == decl.value.c_str() || *end != '\0')
-                throw Error("rays: error: Declare=" + decl.name + "=" + decl.value + ": the value must be a number or a quoted string");
-            in.declareGlobal(decl.name, sdl::Value::number(v));
-        }
+        const std::optional<sdl::DeclareValue> v = sdl::parseDeclareValue(decl.value);
+        if (!v)
+            throw Error("rays: error: Declare=" + decl.name + "=" + decl.value + ": the value must be a number or a quoted string");
+        in.declareGlobal(decl.name, v->isString ? sdl::Value::string(v->text) : sdl::Value::number(v->number));
     }
     in.runText(text, shownName, folder);
     NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);

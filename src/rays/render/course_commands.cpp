@@ -4,6 +4,7 @@
 #include <string>
 
 #include "rays/image/image.h"
+#include "rays/render/pov_output.h"
 #include "rays/render/tracer.h"
 #include "rays/scene/mesh.h"
 
@@ -21,6 +22,18 @@ std::string vec(Vec3 v) { return "{" + num(v.x) + " " + num(v.y) + " " + num(v.z
 std::string bytes(Vec3 c) {
     return "(" + std::to_string(toByte(c.x)) + ", " + std::to_string(toByte(c.y)) + ", " +
            std::to_string(toByte(c.z)) + ")";
+}
+
+// A pixel's colour as the rendered image has it: POV-Ray scenes are encoded on output
+// (sRGB of c^assumed_gamma, pov_output.h), course scenes are written as traced.
+Vec3 imageColor(const Scene& scene, Vec3 c) {
+    return scene.pov.enabled ? povOutputColor(c, scene.pov.assumedGamma) : c;
+}
+
+// The lighting model the pixel was shaded with: POV-Ray scenes are lit as POV-Ray 3.7 lights them
+// (docs/povray-lighting.md) whatever the shading option says.
+const char* lightingName(const Scene& scene, const RenderSettings& s) {
+    return scene.pov.enabled ? "POV-Ray 3.7" : shadingName(s.shading);
 }
 
 Ray pixelRay(const Scene& scene, const RenderSettings& s, int x, int y) {
@@ -142,8 +155,8 @@ void printPixelColor(std::ostream& out, const Scene& scene, const Bvh& bvh, cons
     const Vec3 c = tracer.tracePrimary(r, ctx);
     out << "T = " << num(h.t) << "\n";
     out << "Object Type: " << shapeName(scene.objects[size_t(h.object)].type) << "\n";
-    out << "BRDF: " << shadingName(s.shading) << "\n";
-    out << "Color: " << bytes(c) << "\n";
+    out << "BRDF: " << lightingName(scene, s) << "\n";
+    out << "Color: " << bytes(imageColor(scene, c)) << "\n";
 }
 
 void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y) {
@@ -151,7 +164,7 @@ void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const Rend
     std::vector<TraceRecord> log;
     TraceContext ctx;
     const Vec3 c = Tracer(scene, bvh, s).tracePrimary(r, ctx, &log);
-    out << "Pixel: [" << x << ", " << y << "] Color: " << bytes(c) << "\n";
+    out << "Pixel: [" << x << ", " << y << "] Color: " << bytes(imageColor(scene, c)) << "\n";
     for (const TraceRecord& rec : log) {
         out << "----\n";
         field(out, "Iteration type:", kindName(rec.kind));

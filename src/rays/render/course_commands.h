@@ -1,5 +1,7 @@
 // The course's debugging commands (sceneinfo, pixelray, firsthit, pixelcolor, printrays), printing
 // exactly the course reference's text: numbers fixed with 4 decimals, colours as round(c·255).
+// A POV-Ray scene's pixel colours are those its image has (encoded as pov_output.h says) and its
+// lighting model is named "POV-Ray 3.7".
 #pragma once
 #include <ostream>
 
@@ -18,10 +20,11 @@ void printPixelRay(std::ostream& out, const Scene& scene, const RenderSettings& 
 /// The pixel ray plus t, object type and pigment colour of the first hit (or "No Hit").
 void printFirstHit(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y);
 
-/// The first hit plus the shading model and the shaded colour.
+/// The first hit plus the shading model ("BRDF: ...") and the shaded colour as the image has it.
 void printPixelColor(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y);
 
-/// The whole ray tree of the pixel's centre ray with per-term contributions.
+/// The pixel's colour as the image has it and the whole ray tree of its centre ray with per-term
+/// contributions (the tree in working-space colours).
 void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y);
 
 }  // namespace rays
