@@ -306,3 +306,22 @@ TEST(PovCsgRender, PixelsMatchPovRay) {
 
 }  // namespace
 }  // namespace rays
+
+namespace rays {
+namespace {
+
+TEST(PovCsgParseTime, InsideAndTraceAnswerForCsgObjects) {
+    const Scene s = build(
+        "#declare D = difference { sphere { 0, 1 } box { <-2, -2, -2>, <2, 2, 0> } }\n"
+        "#if (inside(D, <0, 0, 0.5>)) sphere { <5, 0, 0>, 1 } #end\n"      // kept half: inside
+        "#if (inside(D, <0, 0, -0.5>)) sphere { <-5, 0, 0>, 1 } #end\n"    // cut away: outside
+        "#declare N = <0, 0, 0>;\n"
+        "#declare P = trace(D, <0.3, 0.2, -5>, z, N);\n"
+        "sphere { P + <0, 10, 0>, 0.5 }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_TRUE(near(s.objects[0].p0, {5, 0, 0}));
+    EXPECT_TRUE(near(s.objects[1].p0, {0.3, 10.2, 0}));  // the cut face at z = 0
+}
+
+}  // namespace
+}  // namespace rays
