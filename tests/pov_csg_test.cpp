@@ -325,3 +325,33 @@ TEST(PovCsgParseTime, InsideAndTraceAnswerForCsgObjects) {
 
 }  // namespace
 }  // namespace rays
+
+namespace rays {
+namespace {
+
+ImageF renderSmall(const Scene& s) {
+    RenderSettings settings;
+    settings.width = 32;
+    settings.height = 24;
+    settings.threads = 1;
+    const Bvh bvh(s.objects);
+    TraceStats stats;
+    return render(s, bvh, settings, stats);
+}
+
+TEST(PovCsgShadows, LightPassesThroughATransparentChildOfAnOpaqueOnesCsg) {
+    const std::string base =
+        "camera { location <0, 1, -5> look_at 0 }\n"
+        "light_source { <0, 10, 0> color rgb 1 }\n"
+        "plane { y, 0 pigment { rgb 1 } }\n";
+    const Scene open = build(base + "sphere { <-3, 2, 0>, 0.5 pigment { rgb 1 } }");
+    // The first child is opaque, the one over the floor's middle lets all light through.
+    const Scene glass = build(base + "merge { sphere { <-3, 2, 0>, 0.5 pigment { rgb 1 } }\n"
+                                     "  sphere { <0, 2, 0>, 1 pigment { rgbf <1, 1, 1, 1> } } }");
+    const Vec3 lit = renderSmall(open).at(16, 12), through = renderSmall(glass).at(16, 12);
+    EXPECT_GT(lit.x, 0.5);
+    EXPECT_NEAR(through.x, lit.x, 1e-6);
+}
+
+}  // namespace
+}  // namespace rays

@@ -35,11 +35,16 @@ bool Tracer::usesPovPath(const Scene& scene, const RenderSettings& settings) {
 }
 
 bool Tracer::anyPovTransparent(const Scene& scene) {
-    for (const Object& o : scene.objects) {
-        const Material& m = o.material;
+    auto transparent = [&](const Material& m) {
         const PovSurface& s = m.pov >= 0 && size_t(m.pov) < scene.povSurfaces.size() ? scene.povSurfaces[size_t(m.pov)]
                                                                                     : kDefaultSurface;
-        if (letsLightThrough(m, s)) return true;
+        return letsLightThrough(m, s);
+    };
+    for (const Object& o : scene.objects) {
+        if (transparent(o.material)) return true;
+        if (o.type == ShapeType::Csg)  // each child of a CSG keeps its own material
+            for (const Object& leaf : o.csg->leaves)
+                if (transparent(leaf.material)) return true;
     }
     return false;
 }
