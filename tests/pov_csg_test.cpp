@@ -155,8 +155,10 @@ TEST(PovCsgHits, NestedCsgFollowsEachLevelsTransforms) {
 TEST(PovCsgHits, UnionInsideCsgKeepsInnerSurfacesAndMergeRemovesThem) {
     const std::string spheres = "sphere { <-0.5, 0, 0>, 1 } sphere { <0.5, 0, 0>, 1 }";
     const Scene u = build("intersection { union { " + spheres + " } box { -10, 10 } }");
-    const Scene m = build("merge { " + spheres + " }");
+    const Scene m = build("merge { " + spheres + " pigment { rgbf <1, 1, 1, 0.5> } }");
     ASSERT_EQ(m.objects.size(), 1u);
+    // An opaque merge looks as a union does: its children are objects of their own.
+    EXPECT_EQ(build("merge { " + spheres + " }").objects.size(), 2u);
     EXPECT_EQ(allHits(u, {-5, 0, 0}, {1, 0, 0}).size(), 4u);
     const std::vector<double> merged = allHits(m, {-5, 0, 0}, {1, 0, 0});
     ASSERT_EQ(merged.size(), 2u);

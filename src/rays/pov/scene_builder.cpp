@@ -426,6 +426,17 @@ void SceneBuilder::finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at) {
             notes_.note(std::string(sdl::keywordName(kind)) + " of triangles or meshes", at, "(left out)");
             return;
         }
+    // An opaque merge looks as a union does (its inner surfaces are hidden): its children become
+    // objects of their own, in the scene's BVH.
+    bool unionLike = true;
+    for (const CsgNode& n : tree.nodes)
+        unionLike = unionLike && !n.inverse && (n.op == CsgOp::Leaf || n.op == CsgOp::Union || n.op == CsgOp::Merge);
+    for (const Object& leaf : tree.leaves)
+        unionLike = unionLike && leaf.material.filter == 0 && scene_.povSurfaces[size_t(leaf.material.pov)].transmit == 0;
+    if (unionLike) {
+        for (const Object& leaf : tree.leaves) scene_.objects.push_back(leaf);
+        return;
+    }
     tree.finish();
     if (tree.boundsEmpty()) return;
     Object o;
