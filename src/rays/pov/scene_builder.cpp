@@ -333,10 +333,18 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     const Appearance* own = look.set ? &look : inherited;
     // Intersection, difference, merge and clipped objects become one CSG object (csg.h); unions
     // outside them are flattened into their children.
-    Csg* started = nullptr;
     Csg tree;
-    if (!csg_ && (kind == Kw::difference || kind == Kw::intersection || kind == Kw::merge || !clips.empty())) {
-        started = csg_ = &tree;
+    const bool started =
+        !csg_ && (kind == Kw::difference || kind == Kw::intersection || kind == Kw::merge || !clips.empty());
+    struct Reset {  // the builder forgets the tree when an error leaves the object half made
+        SceneBuilder& b;
+        bool on;
+        ~Reset() {
+            if (on) b.csg_ = nullptr, b.csgParent_ = -1;
+        }
+    } reset{*this, started};
+    if (started) {
+        csg_ = &tree;
         csgParent_ = -1;
     }
     const int outer = csgParent_;
