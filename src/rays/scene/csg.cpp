@@ -154,7 +154,17 @@ bool onSurface(const Csg& c, int k, Vec3 q, bool& flip) {
 void Csg::finish() {
     bounds = nodes.empty() ? Bounds{} : nodeBounds(*this, 0);
     hasSurface.resize(leaves.size());
-    for (size_t k = 0; k < leaves.size(); ++k) hasSurface[k] = leafHasSurface(*this, int(k));
+    leafBox.resize(leaves.size());
+    for (size_t k = 0; k < leaves.size(); ++k) {
+        hasSurface[k] = leafHasSurface(*this, int(k));
+        Bounds b = leaves[k].type == ShapeType::Plane ? allSpace() : worldBounds(leaves[k]);
+        if (!b.empty()) {  // room for the rounding of the slab test
+            Vec3 pad;
+            for (int a = 0; a < 3; ++a) pad[a] = 1e-9 * (std::fabs(b.lo[a]) + std::fabs(b.hi[a])) + 1e-12;
+            b = Bounds{b.lo - pad, b.hi + pad};
+        }
+        leafBox[k] = b;
+    }
 }
 
 bool Csg::boundsEmpty() const {
@@ -208,15 +218,38 @@ bool insideCsg(const Csg& c, int n, Vec3 q) {
     return in != node.inverse;
 }
 
+namespace {
+
+// Whether the ray may meet box b with t in [tMin, tMax] (slab test; an undecided NaN counts as a
+// meeting).
+bool meetsBox(const Bounds& b, const Ray& r, Vec3 invDir, double tMin, double tMax) {
+    for (int a = 0; a < 3; ++a) {
+        double n = (b.lo[a] - r.origin[a]) * invDir[a], f = (b.hi[a] - r.origin[a]) * invDir[a];
+        if (n > f) std::swap(n, f);
+        if (n > tMin) tMin = n;
+        if (f < tMax) tMax = f;
+        if (tMin > tMax) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeHit* hit) {
     const int n = int(c.leaves.size());
     const int cached = std::min(n, kCsgCachedLeaves);
+    const bool boxTest = n >= kCsgBoxTestLeaves;
+    const Vec3 invDir{1 / ray.dir.x, 1 / ray.dir.y, 1 / ray.dir.z};
+    // Whether leaf i can have a surface hit in (from, to).
+    auto candidate = [&](int i, double from, double to) {
+        return c.hasSurface[size_t(i)] && (!boxTest || meetsBox(c.leafBox[size_t(i)], ray, invDir, from, to));
+    };
     double nextT[kCsgCachedLeaves];  // leaf i's nearest hit after from[i] (infinite: none)
     double from[kCsgCachedLeaves];
     ShapeHit sh;
     for (int i = 0; i < cached; ++i) {
         from[i] = tMin;
-        nextT[i] = c.hasSurface[size_t(i)] && intersect(c.leaves[size_t(i)], ray, tMin, tMax, sh) ? sh.t : kInfinity;
+        nextT[i] = candidate(i, tMin, tMax) && intersect(c.leaves[size_t(i)], ray, tMin, tMax, sh) ? sh.t : kInfinity;
     }
     double tLast = tMin;  // the hits taken so far lie at or before it
     for (;;) {
@@ -225,7 +258,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
         for (int i = 0; i < cached; ++i)
             if (nextT[i] < bestT) best = i, bestT = nextT[i];
         for (int i = cached; i < n; ++i)  // beyond the cache: recomputed (a tie with a taken hit is lost)
-            if (c.hasSurface[size_t(i)] && intersect(c.leaves[size_t(i)], ray, tLast, bestT, sh))
+            if (candidate(i, tLast, bestT) && intersect(c.leaves[size_t(i)], ray, tLast, bestT, sh))
                 best = i, bestT = sh.t;
         if (best < 0) return false;
         if (best < cached) bestFrom = from[best];

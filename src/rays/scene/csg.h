@@ -44,6 +44,7 @@ struct Csg {
     std::vector<Object> leaves;   ///< primitives in world space (prepared), with their materials
     std::vector<int32_t> leafNode;  ///< node of each leaf
     std::vector<unsigned char> hasSurface;  ///< per leaf: may its surface be seen (not a clipping object)
+    std::vector<Bounds> leafBox;  ///< per leaf: its world box, slightly widened (all space for planes)
     Bounds bounds;                ///< world bounds; components may be infinite (planes)
 
     /// Appends a node under parent (-1: the root) and returns its index.
@@ -66,6 +67,8 @@ struct Csg {
 /// Leaves whose next hits the walk keeps on the stack; the hits of further leaves are recomputed
 /// at every step of the walk (correct, slower).
 constexpr int kCsgCachedLeaves = 128;
+/// From this many leaves on, a leaf is intersected only when the ray meets its box.
+constexpr int kCsgBoxTestLeaves = 6;
 
 /// Whether world point q is strictly inside solid primitive o: 1 or 0; -1 when o has no inside
 /// (triangles, meshes). A plane's inside is the side its normal points away from; open cones
