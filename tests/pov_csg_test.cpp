@@ -152,6 +152,23 @@ TEST(PovCsgHits, NestedCsgFollowsEachLevelsTransforms) {
     EXPECT_TRUE(near(rim.normal, normalize(Vec3{-std::sqrt(1.44 - 0.49), 0.7, 0})));
 }
 
+TEST(PovCsgHits, ABarWithEightHolesTestsItsLeavesBoxes) {
+    // Nine leaves: past kCsgBoxTestLeaves, leaves are tried only where the ray meets their box.
+    const Scene s = build(
+        "difference { box { <-5, -1, -1>, <5, 1, 1> }\n"
+        "  #for (i, 0, 7) cylinder { <-4 + i * 1.1, -2, 0>, <-4 + i * 1.1, 2, 0>, 0.3 } #end }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    ASSERT_EQ(s.objects[0].csg->leaves.size(), 9u);
+    for (int i = 0; i < 8; ++i) {
+        const double x = -4 + i * 1.1;
+        EXPECT_FALSE(shoot(s, {x + 0.2, 5, 0}, {0, -1, 0}).valid()) << i;  // through hole i
+        EXPECT_NEAR(shoot(s, {x + 0.55, 5, 0}, {0, -1, 0}).t, 4, 1e-9) << i;  // the bar between holes
+        const Hit wall = shoot(s, {x, 0, 0}, {1, 0, 0});  // from the hole's axis into its wall
+        EXPECT_NEAR(wall.t, 0.3, 1e-9) << i;
+        EXPECT_TRUE(near(wall.normal, {-1, 0, 0})) << i;  // facing into the hole
+    }
+}
+
 TEST(PovCsgHits, UnionInsideCsgKeepsInnerSurfacesAndMergeRemovesThem) {
     const std::string spheres = "sphere { <-0.5, 0, 0>, 1 } sphere { <0.5, 0, 0>, 1 }";
     const Scene u = build("intersection { union { " + spheres + " } box { -10, 10 } }");
