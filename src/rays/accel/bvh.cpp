@@ -32,6 +32,7 @@ void take(Hit& best, uint32_t id, const ShapeHit& sh) {
     best.u = sh.u;
     best.v = sh.v;
     best.dpdu = sh.dpdu;
+    best.part = sh.part;
 }
 
 // The object BVH's entry for o: its world box and, for spheres intersected in world space, the
@@ -166,6 +167,7 @@ private:
         best_.t = t;
         best_.object = int(id);
         best_.hasUV = false;
+        best_.part = nullptr;
         sphere_ = nullptr;
         triangle_ = nullptr;
     }
@@ -211,6 +213,7 @@ Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, do
             best.t = th.t;
             best.object = int(id);
             best.hasUV = false;
+            best.part = nullptr;
             best.geomNormal = normalize(cross(o.p1 - o.p0, o.p2 - o.p0));
             best.normal = o.smooth ? normalize((1 - th.u - th.v) * o.n0 + th.u * o.n1 + th.v * o.n2) : best.geomNormal;
             if (dot(best.normal, best.geomNormal) < 0) best.normal = -best.normal;

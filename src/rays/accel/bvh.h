@@ -23,8 +23,14 @@ struct Hit {
     bool hasUV = false;   ///< meshes with texture coordinates:
     double u = 0, v = 0;  ///< the uv at the hit
     Vec3 dpdu;            ///< and the object-space tangent dP/du
+    const Object* part = nullptr;  ///< CSG objects: the leaf hit (material, texture space)
     bool valid() const { return object >= 0; }
 };
+
+/// The object whose material and texture space shade hit h: the CSG leaf hit, or the object.
+inline const Object& shadedObject(const std::vector<Object>& objects, const Hit& h) {
+    return h.part ? *h.part : objects[size_t(h.object)];
+}
 
 class Bvh {
 public:

@@ -90,32 +90,6 @@ PovHost::TraceResult PovHost::trace(const sdl::ItemRef& object, const double ori
     return r;
 }
 
-namespace {
-// Whether world point q is inside solid object o (POV-Ray: a plane's inside is the side its
-// normal points away from). Triangles and meshes are not solids: -1.
-int insideObject(const Object& o, Vec3 q) {
-    const Vec3 p = o.localSpace ? o.toObject.point(q) : q;
-    switch (o.type) {
-        case ShapeType::Sphere: {
-            const Vec3 c = o.localSpace ? o.p0 : o.p1;
-            const double r = o.localSpace ? o.r0 : o.r1;
-            return dot(p - c, p - c) < r * r;
-        }
-        case ShapeType::Box:
-            return p.x > o.p0.x && p.x < o.p1.x && p.y > o.p0.y && p.y < o.p1.y && p.z > o.p0.z && p.z < o.p1.z;
-        case ShapeType::Cone: {  // the canonical frame: axis along z from 0 to p2.x, radius r0 + p2.y·z
-            if (p.z < 0 || p.z > o.p2.x) return 0;
-            const double r = o.r0 + o.p2.y * p.z;
-            return p.x * p.x + p.y * p.y < r * r;
-        }
-        case ShapeType::Plane:
-            return dot(o.p0, p) < o.r0;
-        default:
-            return -1;
-    }
-}
-}  // namespace
-
 // inside(): inside any part of the object (a union's parts, as POV-Ray's union is inside where
 // any child is).
 int PovHost::inside(const sdl::ItemRef& object, const double point[3]) {
@@ -123,7 +97,7 @@ int PovHost::inside(const sdl::ItemRef& object, const double point[3]) {
     if (!p.complete || p.scene.objects.empty()) return -1;
     const Vec3 q{point[0], point[1], point[2]};
     for (const Object& o : p.scene.objects) {
-        const int in = insideObject(o, q);
+        const int in = insideShape(o, q);
         if (in < 0) return -1;
         if (in) return 1;
     }

@@ -295,7 +295,9 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     Appearance look;
     std::vector<const Value*> args;
     std::vector<const Item*> children;
-    bool leftOut = false;
+    std::vector<Clip> clips;
+    const Entry* bounds = nullptr;
+    bool inverse = false, open = false;
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
         if (e.positional()) {
@@ -315,42 +317,160 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             continue;
         }
         switch (k) {
-            case Kw::clipped_by: notes_.note("clipped_by", e.loc, "(objects clipped are left out)"); leftOut = true; break;
+            case Kw::clipped_by: clips.push_back(Clip{&e, local}); break;
+            case Kw::bounded_by: bounds = &e; break;  // a speed hint only
+            case Kw::inverse: inverse = true; break;
             case Kw::no_shadow: notes_.note("no_shadow", e.loc, "(the object casts shadows)"); break;
             case Kw::no_image: notes_.note("no_image", e.loc); break;
             case Kw::no_reflection: notes_.note("no_reflection", e.loc); break;
             case Kw::double_illuminate: break;
-            case Kw::open:
-                if (kind == Kw::cone || kind == Kw::cylinder) notes_.note("open cone and cylinder", e.loc, "(drawn closed)");
-                break;
-            default: break;  // hollow, sturm, hierarchy, photons, radiosity, bounded_by: no visible change
+            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder; break;
+            default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
     }
-    if (leftOut) return;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
     const Appearance* own = look.set ? &look : inherited;
+    // Intersection, difference, merge and clipped objects become one CSG object (csg.h); unions
+    // outside them are flattened into their children.
+    Csg tree;
+    const bool started =
+        !csg_ && (kind == Kw::difference || kind == Kw::intersection || kind == Kw::merge || !clips.empty());
+    struct Reset {  // the builder forgets the tree when an error leaves the object half made
+        SceneBuilder& b;
+        bool on;
+        ~Reset() {
+            if (on) b.csg_ = nullptr, b.csgParent_ = -1;
+        }
+    } reset{*this, started};
+    if (started) {
+        csg_ = &tree;
+        csgParent_ = -1;
+    }
+    const int outer = csgParent_;
+    const int clipNode = csg_ && !clips.empty() ? csg_->add(outer, CsgOp::Clip, false) : -1;
+    if (clipNode >= 0) csgParent_ = clipNode;
     switch (kind) {
-        case Kw::union_: case Kw::merge: case Kw::light_group:
+        case Kw::union_: case Kw::merge: case Kw::light_group: case Kw::difference: case Kw::intersection:
+            if (csg_) {
+                addCsgChildren(kind, inverse, children, toWorld, own, depth);
+                break;
+            }
             for (const Item* c : children) addObject(*c, toWorld, own, depth + 1);
-            return;
-        case Kw::difference: case Kw::intersection:
-            notes_.note(std::string(sdl::keywordName(kind)), item.loc, "(left out)");
-            return;
+            break;
         case Kw::mesh: case Kw::mesh2: {
             Item m;
             m.kind = kind;
             m.loc = item.loc;
             for (const Entry* e : entries) m.entries.push_back(*e);
-            return addMesh(m, toWorld, own ? *own : fallback_);
+            addMesh(m, toWorld, own ? *own : fallback_, inverse);
+            break;
         }
         default:
-            return addPrimitive(kind, args, item.loc, toWorld, own ? *own : fallback_);
+            addPrimitive(kind, args, item.loc, toWorld, own ? *own : fallback_, open, inverse);
+    }
+    if (clipNode >= 0) {
+        // The clipping objects follow the transformations written after clipped_by.
+        if (csg_->childCount(clipNode) == 0) csg_->nodes[size_t(clipNode)].op = CsgOp::Empty;
+        for (const Clip& c : clips) addClippers(*c.entry, bounds, parent * local * c.before.inverse(), depth);
+    }
+    csgParent_ = outer;
+    if (started) {
+        csg_ = nullptr;
+        finishCsg(std::move(tree), kind, item.loc);
     }
 }
 
+// The children of a CSG node (op from kind) under csgParent_. A child not rendered leaves an
+// intersection empty, and a difference whose first child it is; a union or merge, or a
+// difference losing a subtracted child, is drawn without it.
+void SceneBuilder::addCsgChildren(Kw kind, bool inverse, const std::vector<const Item*>& children,
+                                  const Transform& toWorld, const Appearance* own, int depth) {
+    const CsgOp op = kind == Kw::difference ? CsgOp::Difference
+                     : kind == Kw::intersection ? CsgOp::Intersection
+                     : kind == Kw::merge        ? CsgOp::Merge
+                                                : CsgOp::Union;
+    const int node = csg_->add(csgParent_, op, inverse);
+    const int outer = csgParent_;
+    bool empty = false;
+    for (size_t i = 0; i < children.size(); ++i) {
+        csgParent_ = node;
+        const int before = csg_->childCount(node);
+        addObject(*children[i], toWorld, own, depth + 1);
+        const bool lost = csg_->childCount(node) == before;
+        empty = empty || (lost && (op == CsgOp::Intersection || (op == CsgOp::Difference && i == 0)));
+    }
+    csgParent_ = outer;
+    if (empty) csg_->nodes[size_t(node)].op = CsgOp::Empty;
+}
+
+// The objects of a clipped_by block under csgParent_ (the clip node); `clipped_by { bounded_by }`
+// takes the objects of the bounded_by block.
+void SceneBuilder::addClippers(const Entry& clip, const Entry* bounds, const Transform& toWorld, int depth) {
+    const int node = csgParent_;
+    for (const Value& v : clip.args) {
+        if (v.type != VType::Item) continue;
+        for (const Entry& e : v.item().entries) {
+            if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::bounded_by && bounds && bounds != &clip) {
+                addClippers(*bounds, nullptr, toWorld, depth);
+                continue;
+            }
+            for (const Value& a : e.args)
+                if (a.type == VType::Item && isObjectKind(a.item().kind)) {
+                    csgParent_ = node;
+                    addObject(a.item(), toWorld, nullptr, depth + 1);
+                }
+        }
+    }
+    csgParent_ = node;
+}
+
+// A finished CSG tree becomes one object, unless it needs the inside of a triangle or mesh (they
+// have none) or can never be seen.
+void SceneBuilder::finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at) {
+    if (tree.leaves.empty()) return;
+    for (size_t k = 0; k < tree.leaves.size(); ++k)
+        if (insideShape(tree.leaves[k], Vec3{}) < 0 && tree.needsInside(int(k))) {
+            notes_.note(std::string(sdl::keywordName(kind)) + " of triangles or meshes", at, "(left out)");
+            return;
+        }
+    // An opaque merge looks as a union does (its inner surfaces are hidden): its children become
+    // objects of their own, in the scene's BVH.
+    bool unionLike = true;
+    for (const CsgNode& n : tree.nodes)
+        unionLike = unionLike && !n.inverse && (n.op == CsgOp::Leaf || n.op == CsgOp::Union || n.op == CsgOp::Merge);
+    for (const Object& leaf : tree.leaves)
+        unionLike = unionLike && leaf.material.filter == 0 && scene_.povSurfaces[size_t(leaf.material.pov)].transmit == 0;
+    if (unionLike) {
+        for (const Object& leaf : tree.leaves) scene_.objects.push_back(leaf);
+        return;
+    }
+    tree.finish();
+    if (tree.boundsEmpty()) return;
+    Object o;
+    o.type = ShapeType::Csg;
+    o.line = int(at.line);
+    o.col = int(at.col);
+    o.material = tree.leaves[0].material;
+    for (size_t k = 0; k < tree.leaves.size(); ++k)
+        if (tree.hasSurface[k]) {
+            o.material = tree.leaves[k].material;  // the interior a ray inside it is in
+            break;
+        }
+    scene_.csgs.push_back(std::make_unique<Csg>(std::move(tree)));
+    o.csg = scene_.csgs.back().get();
+    prepareObject(o, Transform{});
+    scene_.objects.push_back(o);
+}
+
+// A finished object: into the CSG tree being built, or into the scene.
+void SceneBuilder::emit(const Object& o, bool inverse) {
+    if (csg_) csg_->addLeaf(csgParent_, o, inverse);
+    else scene_.objects.push_back(o);
+}
+
 void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, const sdl::Loc& at,
-                                const Transform& toWorld, const Appearance& look) {
+                                const Transform& toWorld, const Appearance& look, bool open, bool inverse) {
     auto need = [&](size_t n) {
         if (a.size() < n)
             throw Error(notes_.where(at) + ": error: " + std::string(sdl::keywordName(kind)) + " needs " +
@@ -423,12 +543,13 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             notes_.note(std::string(sdl::keywordName(kind)), at, "(left out)");
             return;
     }
+    o.open = open && o.type == ShapeType::Cone;
     o.material = material(look);
     prepareObject(o, toWorld);
-    scene_.objects.push_back(o);
+    emit(o, inverse);
 }
 
-void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appearance& look) {
+void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appearance& look, bool inverse) {
     std::string problem;
     std::unique_ptr<Mesh> mesh = meshFromItem(m, problem);
     if (!mesh) throw Error(notes_.where(m.loc) + ": error: " + problem);
@@ -450,7 +571,7 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     o.material = material(look);
     prepareObject(o, toWorld);
     scene_.meshes.push_back(std::move(mesh));
-    scene_.objects.push_back(o);
+    emit(o, inverse);
 }
 
 // ---- global settings -------------------------------------------------------------------------

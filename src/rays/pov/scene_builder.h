@@ -33,8 +33,20 @@ private:
     void addLight(const Item& light, const Transform& toWorld);
     void addObject(const Item& object, const Transform& parent, const Appearance* inherited, int depth);
     void addPrimitive(Kw kind, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
-                      const Appearance& look);
-    void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look);
+                      const Appearance& look, bool open, bool inverse);
+    void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look, bool inverse);
+    /// CSG trees (scene/csg.h): the children of a node, the objects of a clipped_by block, the
+    /// finished tree as one object, and a finished object put into the tree or the scene.
+    void addCsgChildren(Kw kind, bool inverse, const std::vector<const Item*>& children, const Transform& toWorld,
+                        const Appearance* own, int depth);
+    void addClippers(const Entry& clip, const Entry* bounds, const Transform& toWorld, int depth);
+    void finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at);
+    void emit(const Object& o, bool inverse);
+    /// A clipped_by entry and the object's transformation written before it.
+    struct Clip {
+        const Entry* entry;
+        Transform before;
+    };
     void globalSettings(const Item& g);
     Material material(const Appearance& look);
     /// Counts n more objects made at `at`; throws past maxObjects_.
@@ -43,6 +55,8 @@ private:
     NotRendered& notes_;
     Scene scene_;
     Appearance fallback_;      ///< the default texture of the item being added
+    Csg* csg_ = nullptr;       ///< the CSG tree being built (objects go into it), or none
+    int csgParent_ = -1;       ///< the node of csg_ new objects go under
     double version_ = 3.7;
     bool gammaSet_ = false;
     bool backgroundSet_ = false;

@@ -75,6 +75,8 @@ void printObject(std::ostream& out, const Object& o) {
         case ShapeType::Mesh:
             out << "- Triangles: " << o.mesh->triangleCount() << "\n";
             break;
+        case ShapeType::Csg:
+            break;
         case ShapeType::Cone:
             out << "- Base: " << vec(o.p0) << "\n- Base Radius: " << num(o.r0) << "\n- Cap: " << vec(o.p1)
                 << "\n- Cap Radius: " << num(o.r1) << "\n";
@@ -135,7 +137,7 @@ void printFirstHit(std::ostream& out, const Scene& scene, const Bvh& bvh, const 
         out << "No Hit\n";
         return;
     }
-    const Object& o = scene.objects[size_t(h.object)];
+    const Object& o = shadedObject(scene.objects, h);
     out << "T = " << num(h.t) << "\n";
     out << "Object Type: " << shapeName(o.type) << "\n";
     out << "Color: " << num(o.material.color.x) << " " << num(o.material.color.y) << " " << num(o.material.color.z)

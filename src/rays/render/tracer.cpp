@@ -237,7 +237,7 @@ void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followS
     const Hit hit = firstHit(ray);
     out.push(hit.object);
     if (!hit.valid()) return;
-    const Object& o = scene_.objects[size_t(hit.object)];
+    const Object& o = shadedObject(scene_.objects, hit);
     const Vec3 P = ray.at(hit.t);
     const bool entering = dot(ray.dir, hit.geomNormal) < 0;
     const Vec3 N = entering ? hit.normal : -hit.normal;
@@ -306,7 +306,7 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     if (info) info->push(hit.object);
     if (!hit.valid()) return {};
 
-    const Object& o = scene_.objects[size_t(hit.object)];
+    const Object& o = shadedObject(scene_.objects, hit);
     const Vec3 P = ray.at(hit.t);
     const Vec3 V = -ray.dir;
     const bool entering = dot(ray.dir, hit.geomNormal) < 0;

@@ -35,11 +35,16 @@ bool Tracer::usesPovPath(const Scene& scene, const RenderSettings& settings) {
 }
 
 bool Tracer::anyPovTransparent(const Scene& scene) {
-    for (const Object& o : scene.objects) {
-        const Material& m = o.material;
+    auto transparent = [&](const Material& m) {
         const PovSurface& s = m.pov >= 0 && size_t(m.pov) < scene.povSurfaces.size() ? scene.povSurfaces[size_t(m.pov)]
                                                                                     : kDefaultSurface;
-        if (letsLightThrough(m, s)) return true;
+        return letsLightThrough(m, s);
+    };
+    for (const Object& o : scene.objects) {
+        if (transparent(o.material)) return true;
+        if (o.type == ShapeType::Csg)  // each child of a CSG keeps its own material
+            for (const Object& leaf : o.csg->leaves)
+                if (transparent(leaf.material)) return true;
     }
     return false;
 }
@@ -71,7 +76,7 @@ Tracer::Result Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& c
 
 Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                       PathInfo* info) const {
-    const Object& o = scene_.objects[size_t(hit.object)];
+    const Object& o = shadedObject(scene_.objects, hit);
     PovPoint pt;
     pt.object = hit.object;
     pt.material = &o.material;
@@ -242,7 +247,7 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
     for (int step = 0; step < kMaxShadowSurfaces; ++step) {
         const Hit h = bvh_.closest(scene_.objects, shadow, tMin, tMax);
         if (!h.valid()) return tint;  // interiors not left before the light do not fade it (measured)
-        const Object& o = scene_.objects[size_t(h.object)];
+        const Object& o = shadedObject(scene_.objects, h);
         const PovSurface& s = povSurfaceOf(o.material);
         if (!letsLightThrough(o.material, s)) return {};
         Vec3 C = o.material.color;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rays/geometry/sphere_hit.h"
+#include "rays/scene/csg.h"
 #include "rays/scene/mesh.h"
 
 namespace rays {
@@ -15,6 +16,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Box: return "Box";
         case ShapeType::Cone: return "Cone";
         case ShapeType::Mesh: return "Mesh";
+        case ShapeType::Csg: return "CSG";
     }
     return "Object";
 }
@@ -163,7 +165,7 @@ bool hitCone(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& 
         side(-C / B);
     }
     // Caps.
-    if (D.z != 0) {
+    if (D.z != 0 && !o.open) {
         const double capR[2] = {o.r0, o.r1};
         const double capZ[2] = {0, height};
         for (int i = 0; i < 2; ++i) {
@@ -181,6 +183,7 @@ bool hitCone(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& 
 bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     bool found = false;
     h.hasUV = false;  // h may be reused across objects
+    h.part = nullptr;
     switch (o.type) {
         case ShapeType::Sphere: found = hitSphere(o, r, tMin, tMax, h); break;
         case ShapeType::Plane: found = hitPlane(o, r, tMin, tMax, h); break;
@@ -199,6 +202,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         }
         case ShapeType::Box: found = hitBox(o, r, tMin, tMax, h); break;
         case ShapeType::Cone: found = hitCone(o, r, tMin, tMax, h); break;
+        case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
     return found;
@@ -223,6 +227,9 @@ Bounds localBounds(const Object& o) {
             break;
         case ShapeType::Mesh:
             b = o.mesh->bounds;
+            break;
+        case ShapeType::Csg:
+            b = o.csg->bounds;
             break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);
@@ -304,6 +311,7 @@ bool intersect(const Object& o, const Ray& worldRay, double tMin, double tMax, S
 }
 
 bool occludes(const Object& o, const Ray& worldRay, double tMin, double tMax) {
+    if (o.type == ShapeType::Csg) return intersectCsg(*o.csg, worldRay, tMin, tMax, nullptr);
     if (o.type == ShapeType::Mesh) {
         if (!usesLocalSpace(o)) return occludesMesh(*o.mesh, worldRay, tMin, tMax);
         return occludesMesh(*o.mesh, Ray{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)}, tMin, tMax);

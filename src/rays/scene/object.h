@@ -9,11 +9,12 @@
 
 namespace rays {
 
-enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh };
+enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg };
 
 struct Mesh;
+struct Csg;
 
-/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone").
+/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone", "Mesh", "CSG").
 std::string_view shapeName(ShapeType t);
 
 struct Object {
@@ -23,12 +24,15 @@ struct Object {
     //            (p1, r1: the sphere actually intersected — in world space when the transform
     //            is a similarity, so the ray needs no mapping — set by prepareObject)
     //   Triangle p0 p1 p2 vertices             Box    p0 min corner, p1 max corner
-    //   Cone     p0 base, r0 base radius, p1 cap, r1 cap radius (closed by flat caps)
+    //   Cone     p0 base, r0 base radius, p1 cap, r1 cap radius (closed by flat caps unless open)
+    //   Csg      csg: the tree, its leaves in world space (no transform of its own)
     Vec3 p0, p1, p2;
     double r0 = 0, r1 = 0;
     bool smooth = false;  ///< Triangle only: interpolate the vertex normals n0, n1, n2
     Vec3 n0, n1, n2;
+    bool open = false;    ///< Cone only: no caps (POV-Ray's `open`)
     const Mesh* mesh = nullptr;  ///< Mesh only: the geometry (owned by the Scene)
+    const Csg* csg = nullptr;    ///< Csg only: the tree (owned by the Scene)
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
     bool localSpace = false;   ///< rays are mapped through toObject before intersecting
@@ -50,7 +54,8 @@ Bounds worldBounds(const Object& o);
 
 /// Object hit record: t along the ray, the outward world-space unit shading normal and the
 /// geometric normal (they differ only for smooth triangles and meshes; both on the same side),
-/// and for meshes with texture coordinates the uv and the object-space tangent dP/du.
+/// and for meshes with texture coordinates the uv and the object-space tangent dP/du; for CSG
+/// objects the leaf hit (its material and texture space).
 struct ShapeHit {
     double t = kInfinity;
     Vec3 normal;
@@ -58,6 +63,7 @@ struct ShapeHit {
     bool hasUV = false;
     double u = 0, v = 0;
     Vec3 dpdu;
+    const Object* part = nullptr;
 };
 
 /// Möller–Trumbore test of a Triangle object in the ray's space: t in (tMin, tMax) and the

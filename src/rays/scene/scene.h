@@ -6,6 +6,7 @@
 
 #include "rays/npr/edge_settings.h"
 #include "rays/scene/camera.h"
+#include "rays/scene/csg.h"
 #include "rays/scene/light.h"
 #include "rays/scene/mesh.h"
 #include "rays/scene/object.h"
@@ -21,6 +22,7 @@ struct Scene {
     std::vector<Object> objects;  ///< course object ID = index + 1
     std::vector<Texture> textures;  ///< image, normal and bump maps referenced by materials
     std::vector<std::unique_ptr<Mesh>> meshes;  ///< geometry of Mesh objects (stable addresses)
+    std::vector<std::unique_ptr<Csg>> csgs;     ///< trees of Csg objects (stable addresses)
     /// Transforms written inside pigment / normal blocks: texture space → object space (M) and back.
     struct TextureTransform {
         Transform toObject, toTexture;

@@ -1,0 +1,86 @@
+// Constructive solid geometry of POV-Ray scenes (reference 3.4.5.4 "Constructive Solid Geometry",
+// 3.4.5.5.1 "Clipped By"): a tree of union, merge, intersection, difference and clip nodes over
+// primitive objects (leaves), each with its own world transform and material. A scene object of
+// type ShapeType::Csg points at one tree (owned by the Scene).
+//
+// A ray's hits are found exactly by walking the leaves' surface hits along the ray in order (each
+// leaf's next hit is cached, so every leaf is intersected once per hit it contributes) and keeping
+// the first that lies on the tree's surface: going up from the hit leaf, a union keeps every
+// surface of its children (POV-Ray keeps a union's inner surfaces), a merge keeps those outside
+// its other children, an intersection those inside all of them, a difference those of its first
+// child outside the rest and those of the rest inside the first and outside the others, a clip
+// node those of its object inside all its clipping objects (the clipping objects have no
+// surface of their own). No heap allocation or virtual call per ray: the walk keeps the next hits
+// of the first kCachedLeaves leaves on the stack and recomputes those of the others at each step;
+// the inside tests recurse at most as deep as the tree.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "rays/scene/object.h"
+
+namespace rays {
+
+enum class CsgOp : unsigned char {
+    Leaf,          ///< one primitive object (Csg::leaves[leaf])
+    Union,         ///< inside any child; every child surface is kept
+    Merge,         ///< inside any child; surfaces inside another child are removed
+    Intersection,  ///< inside all children
+    Difference,    ///< inside the first child and outside the others
+    Clip,          ///< the first child's surface where it is inside all other children (clipped_by)
+    Empty,         ///< nothing (a CSG whose needed child was not rendered)
+};
+
+struct CsgNode {
+    CsgOp op = CsgOp::Leaf;
+    bool inverse = false;      ///< `inverse`: inside and outside swapped
+    int32_t parent = -1;       ///< -1 for the root (node 0)
+    int32_t firstChild = -1, lastChild = -1, nextSibling = -1;
+    int32_t leaf = -1;         ///< Leaf only: index into Csg::leaves
+};
+
+struct Csg {
+    std::vector<CsgNode> nodes;   ///< node 0 is the root
+    std::vector<Object> leaves;   ///< primitives in world space (prepared), with their materials
+    std::vector<int32_t> leafNode;  ///< node of each leaf
+    std::vector<unsigned char> hasSurface;  ///< per leaf: may its surface be seen (not a clipping object)
+    std::vector<Bounds> leafBox;  ///< per leaf: its world box, slightly widened (all space for planes)
+    Bounds bounds;                ///< world bounds; components may be infinite (planes)
+
+    /// Appends a node under parent (-1: the root) and returns its index.
+    int add(int parent, CsgOp op, bool inverse);
+    /// Appends leaf object o (prepared, world space) under parent; returns its node.
+    int addLeaf(int parent, const Object& o, bool inverse);
+    /// True when the tree asks whether a point is inside leaf k (some ancestor other than a union
+    /// or, for the clipped object, a clip node).
+    bool needsInside(int k) const;
+    /// Number of children of node n.
+    int childCount(int n) const;
+    /// Call once the tree is complete: sets hasSurface and the bounds (intersection → the
+    /// children's boxes intersected, difference → the first child's, union and merge → their
+    /// union, axis-aligned planes → half-spaces, anything inverted → all space).
+    void finish();
+    /// True when the bounds hold no point (the object can never be seen).
+    bool boundsEmpty() const;
+};
+
+/// Leaves whose next hits the walk keeps on the stack; the hits of further leaves are recomputed
+/// at every step of the walk (correct, slower).
+constexpr int kCsgCachedLeaves = 128;
+/// From this many leaves on, a leaf is intersected only when the ray meets its box.
+constexpr int kCsgBoxTestLeaves = 6;
+
+/// Whether world point q is strictly inside solid primitive o: 1 or 0; -1 when o has no inside
+/// (triangles, meshes). A plane's inside is the side its normal points away from; open cones
+/// and cylinders keep the inside of the closed solid.
+int insideShape(const Object& o, Vec3 q);
+
+/// Whether world point q is inside node n of c.
+bool insideCsg(const Csg& c, int n, Vec3 q);
+
+/// Nearest hit of the world ray on c's surface with t in (tMin, tMax); the hit's normal is the
+/// CSG's outward normal there (a leaf's normal flipped for subtracted or inverted parts) and
+/// hit.part the leaf. hit may be null (shadow rays: no normal).
+bool intersectCsg(const Csg& c, const Ray& worldRay, double tMin, double tMax, ShapeHit* hit);
+
+}  // namespace rays
