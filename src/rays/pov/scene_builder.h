@@ -36,6 +36,7 @@ private:
                       const Appearance& look);
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look);
     void globalSettings(const Item& g);
+    void addFog(const Item& fog);
     Material material(const Appearance& look);
     /// Counts n more objects made at `at`; throws past maxObjects_.
     void countObjects(uint64_t n, const sdl::Loc& at);
@@ -46,6 +47,7 @@ private:
     double version_ = 3.7;
     bool gammaSet_ = false;
     bool backgroundSet_ = false;
+    bool noShadow_ = false;    ///< the objects being added cast no shadow (no_shadow, looks_like)
     uint64_t maxObjects_, objects_ = 0;
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries

@@ -34,9 +34,11 @@ bool Tracer::usesPovPath(const Scene& scene, const RenderSettings& settings) {
     return scene.pov.enabled && settings.shading != ShadingModel::Flat && settings.shading != ShadingModel::Normals;
 }
 
-bool Tracer::anyPovTransparent() const {
-    for (const Object& o : scene_.objects)
-        if (letsLightThrough(o.material, povSurfaceOf(o.material))) return true;
+bool Tracer::povShadowsWalk() const {
+    for (const Object& o : scene_.objects) {
+        const PovSurface& s = povSurfaceOf(o.material);
+        if (letsLightThrough(o.material, s) || s.noShadow) return true;
+    }
     return false;
 }
 
@@ -59,7 +61,10 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
         const PovInterior& in = povSurfaceOf(scene_.objects[size_t(r.interior)].material).interior;
         if (povFades(in)) fade = povFade(in, hit.t);
     }
-    return fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : scene_.pov.background);
+    const Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : scene_.pov.background);
+    // Fog fills the space outside objects (measured: on every ray, reflected ones included).
+    if (scene_.pov.fogs.empty() || r.interior >= 0) return seen;
+    return povFog(scene_.pov.fogs, seen, ray, hit.t);
 }
 
 Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
@@ -166,14 +171,19 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
         const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
-        color += opacity * t.diffuse + t.highlight;
+        color += opacity * t.diffuse;
+        if (!light.shadowless) color += t.highlight;  // shadowless lights make no highlights (the manual; measured)
     }
     return blocked;
 }
 
 Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, double dist, Vec3 Nl,
                               bool intoSurface, TraceContext& ctx) const {
-    const Vec3 color = light.color;
+    // Spotlights, cylindrical lights and fading dim the light before anything blocks it.
+    Vec3 color = light.color;
+    if (light.spot != Light::Spot::None) color *= povSpotFactor(light, P - light.position);
+    if (light.fadeDistance > 0) color *= povLightFade(light, length(P - light.position));
+    if (light.shadowless || color == Vec3{}) return color;
     const Vec3 origin = P + kSurfaceOffset * Nl;
     if (light.parallel) {
         // Shadow rays end at the plane through the light's position across its direction; points
@@ -217,7 +227,7 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, 
 Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
                            const FromLight* fromLight) const {
     if (!shadowed(shadow, tMax, light, ctx, intoSurface, fromLight)) return Vec3(1.0);
-    if (!povTransparent_) return {};
+    if (!povShadowsWalk_) return {};
     return povTransmittance(shadow, tMax);
 }
 
@@ -235,6 +245,10 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
         if (!h.valid()) return tint;  // interiors not left before the light do not fade it (measured)
         const Object& o = scene_.objects[size_t(h.object)];
         const PovSurface& s = povSurfaceOf(o.material);
+        if (s.noShadow) {  // no_shadow: not there for shadow rays
+            tMin = h.t + kTMin;
+            continue;
+        }
         if (!letsLightThrough(o.material, s)) return {};
         Vec3 C = o.material.color;
         if (o.material.pigmentMap >= 0) {
