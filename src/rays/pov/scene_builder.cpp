@@ -304,7 +304,6 @@ Material SceneBuilder::material(const Appearance& look) {
     Material m;
     m.color = look.pigment.rgb;
     m.filter = std::clamp(look.pigment.filter, 0.0, 1.0);
-    m.shading = int(ShadingModel::Povray);
     m.ambient = look.finish.ambient.x;
     m.diffuse = look.finish.diffuse;
     m.specular = look.finish.specular;
