@@ -72,8 +72,8 @@ TEST(PovNoShadow, ObjectsWithNoShadowCastNone) {
 
 TEST(PovNoShadow, HoldsForAUnionsChildrenAndTheObjectIsStillSeen) {
     // Measured .50054 under a union { box sphere no_shadow }.
-    const Loaded u = load(kLight60 + kFloor +
-                          "union { box { <1,-5,-1.01>, <5,5,-1> } sphere { <3,0,-5>, 0.1 } pigment { rgb 1 } no_shadow }");
+    const Loaded u = load(kLight60 + kFloor + "union { box { <1,-5,-1.01>, <5,5,-1> } sphere { <3,0,-5>, 0.1 }" +
+                          " pigment { rgb 1 } no_shadow }");
     expectColor(seen(u.scene, kCx, kCy), Vec3(0.50054));
     // The box itself: ambient .1 of its white and the light at 60°·0.6 diffuse (its face −z).
     const Vec3 box = seen(u.scene, 2, 0);
@@ -175,7 +175,8 @@ TEST(PovFog, ConstantFogMixesByDistanceWithFilterAndTransmit) {
 }
 
 TEST(PovFog, SeveralFogsMultiplyTheirSharesAndAddTheirColours) {
-    const Loaded l = load(kWallAmbient + "fog { distance 2 color rgb <.2,.4,.8> } fog { distance 4 color rgb <1,0,0> }");
+    const Loaded l =
+        load(kWallAmbient + "fog { distance 2 color rgb <.2,.4,.8> } fog { distance 4 color rgb <1,0,0> }");
     expectColor(seen(l.scene, kCx, kCy), {0.73570, 0.37399, 0.69527});
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "rays/render/absorption.h"
+
 namespace rays {
 
 namespace {
@@ -48,7 +50,9 @@ double groundFogDepth(const PovFog& f, const Ray& ray, double t) {
         return density == 0 ? 0.0 : t * density;
     }
     const double h1 = std::isfinite(t) ? h0 + du * t : (du > 0 ? kInfinity : -kInfinity);
-    const double top = std::isfinite(h1) ? groundFogIntegral(f, h1) : h1 > 0 ? (f.alt > 0 ? f.alt * std::numbers::pi / 2 : 0.0) : -kInfinity;
+    double top = -kInfinity;  // a ray going down for ever stays in the fog below the offset
+    if (std::isfinite(h1)) top = groundFogIntegral(f, h1);
+    else if (h1 > 0) top = f.alt > 0 ? f.alt * std::numbers::pi / 2 : 0.0;
     return (top - groundFogIntegral(f, h0)) / du;
 }
 
@@ -125,14 +129,7 @@ Vec3 povReflectionExponent(Vec3 reflected, double exponent) {
 Vec3 povFade(const PovInterior& in, double distance) {
     if (!povFades(in)) return Vec3(1.0);
     const double q = distance / in.fadeDistance;
-    if (in.fadePower >= 1000) {
-        Vec3 out;
-        for (int i = 0; i < 3; ++i) {
-            const double k = 1.0 - in.fadeColor[i];
-            out[i] = k == 0 ? 1.0 : std::exp(-k * q);
-        }
-        return out;
-    }
+    if (in.fadePower >= 1000) return beerAbsorption(Vec3(1.0) - in.fadeColor, q);
     const double a = std::isinf(q) ? 0.0 : 1.0 / (1.0 + std::pow(q, in.fadePower));
     return Vec3(a) + (1.0 - a) * in.fadeColor;
 }

@@ -238,9 +238,9 @@ private:
     /// 1 when nothing lies on the shadow ray before tMax, else what the objects on it let through.
     Vec3 povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
                        const FromLight* fromLight) const;
-    /// Walks the surfaces on the shadow ray before tMax, passing no_shadow objects: each tints by filter·C + transmit, interiors
-    /// with fading fade over the length inside (from the ray's start for one it began in, none for
-    /// one it does not leave); an opaque surface (or too many) blocks.
+    /// Walks the surfaces on the shadow ray before tMax, passing no_shadow objects: each tints by
+    /// filter·C + transmit, interiors with fading fade over the length inside (from the ray's start
+    /// for one it began in, none for one it does not leave); an opaque surface (or too many) blocks.
     Vec3 povTransmittance(const Ray& shadow, double tMax) const;
     const PovSurface& povSurfaceOf(const Material& m) const;
 
