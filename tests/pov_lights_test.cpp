@@ -135,6 +135,12 @@ TEST(PovSpotlight, CylindricalLightsShineAlongTheirAxisWithinADistance) {
                  {0.51562, 0.19185}, {0.64062, 0}});
 }
 
+TEST(PovSpotlight, CylindricalLightsTightnessSharpensWithTheDistanceFromTheAxis) {
+    // Measured (x, red) along the strip: (1 − r/falloff)^tightness times the curve.
+    expectFloor("<0,0,-1>, rgb 1 cylinder point_at 0 radius 0.3 falloff 0.6 tightness 3",
+                {{0.07812, 0.65219}, {0.20312, 0.28809}, {0.32812, 0.09030}, {0.45312, 0.00705}, {0.64062, 0}});
+}
+
 TEST(PovSpotlight, CylindricalLightsCastShadowsAlongTheAxis) {
     // A strip at x 0.1..0.2, 1 in front of the floor, light 2 in front: povray's floor is dark at
     // x .11 .14 .17 and lit at .2 and beyond (a point light shades .2 to .39).
@@ -253,9 +259,10 @@ TEST(PovLooksLike, TheObjectSitsAtTheLightAndCastsNoShadow) {
 }
 
 TEST(PovLights, UnrenderedLightOptionsKeepTheirNotes) {
-    const Loaded l = load(kFloor + "light_source { <0,0,-1>, rgb 1 cylinder point_at 0 tightness 10 }\n");
+    const Loaded l = load("#declare P = sphere { 0, 1 }\n" + kFloor +
+                          "light_source { <0,0,-1>, rgb 1 projected_through { P } }\n");
     ASSERT_EQ(l.warnings.size(), 1u);
-    EXPECT_EQ(l.warnings[0], "scene.pov:4:1: warning: not rendered yet: cylindrical light tightness");
+    EXPECT_EQ(l.warnings[0], "scene.pov:5:32: warning: not rendered yet: projected_through");
 }
 
 }  // namespace

@@ -270,7 +270,6 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
         } else {
             l.spotRadius = radius < 0 ? 0.75 : radius;
             l.spotFalloff = falloff < 0 ? 1 : falloff;
-            if (l.tightness != 0) notes_.note("cylindrical light tightness", item.loc);
             // Cylindrical lights shine and cast shadows along their axis (measured).
             parallel = true;
             pointAt = pointAtSet ? pointAt : Vec3{};

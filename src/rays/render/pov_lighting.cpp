@@ -139,9 +139,10 @@ double povSpotFactor(const Light& light, Vec3 toPoint) {
     const double along = dot(toPoint, light.direction);
     if (light.spot == Light::Spot::Cylinder) {
         const double r = length(toPoint - along * light.direction);
-        if (r <= light.spotRadius) return 1.0;
         if (r >= light.spotFalloff) return 0.0;
-        return smooth((light.spotFalloff - r) / (light.spotFalloff - light.spotRadius));
+        const double k =
+            r <= light.spotRadius ? 1.0 : smooth((light.spotFalloff - r) / (light.spotFalloff - light.spotRadius));
+        return light.tightness == 0 ? k : k * std::pow(1.0 - r / light.spotFalloff, light.tightness);
     }
     const double len = length(toPoint);
     if (len == 0) return 1.0;

@@ -73,7 +73,8 @@ inline bool povFades(const PovInterior& in) { return in.fadeDistance > 0; }
 /// toPoint: 1 within the radius cone, 0 beyond the falloff cone, 3s² − 2s³ between them with
 /// s = (c − cos falloff)/(cos radius − cos falloff); times c^tightness. Cylinder, with r the
 /// distance from the axis: 1 within radius, 0 beyond falloff, the same curve over (falloff − r)/
-/// (falloff − radius) between. Measured with povray 3.7 (docs/povray-lighting.md).
+/// (falloff − radius) between; times (1 − r/falloff)^tightness. Measured with povray 3.7
+/// (docs/povray-lighting.md).
 double povSpotFactor(const Light& light, Vec3 toPoint);
 
 /// Light fading at a distance from the light: 2/(1 + (distance/fade_distance)^fade_power), 1

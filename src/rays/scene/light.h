@@ -29,7 +29,7 @@ struct Light {
     enum class Spot : unsigned char { None, Cone, Cylinder };
     /// Cone: a spotlight from position along direction, radius and falloff as cosines of their
     /// half angles. Cylinder: light along direction (parallel is then true) within the distances
-    /// radius and falloff of the axis through position.
+    /// radius and falloff of the axis through position. Both sharpened by tightness.
     Spot spot = Spot::None;
     double spotRadius = 0, spotFalloff = 0, tightness = 0;
     bool shadowless = false;  ///< no shadow rays (nothing blocks it) and no highlights
