@@ -62,6 +62,8 @@ strip('<0,0,-1>, rgb 1 cylinder point_at 0 radius 0.3 falloff 0.6',
       lambda r, c: 1 if r <= .3 else 0 if r >= .6 else smooth((.6 - r) / .3))
 strip('<0,0,-3>, rgb 1 cylinder point_at 0 radius 0.3 falloff 0.6',
       lambda r, c: 1 if r <= .3 else 0 if r >= .6 else smooth((.6 - r) / .3), z=3)
+strip('<0,0,-1>, rgb 1 cylinder point_at 0 radius 0.3 falloff 0.6 tightness 3',
+      lambda r, c: (1 if r <= .3 else 0 if r >= .6 else smooth((.6 - r) / .3)) * max(0, 1 - r / .6) ** 3)
 # ... and cast shadows along the axis (a strip at x .1 .. .2 shades x .1 .. .2 only).
 got = render(STRIP + FLOOR + 'box { <0.1,-1,-1.01>, <0.2,1,-1> pigment { rgb 1 } no_image }\n'
              'light_source { <0,0,-2>, rgb 1 cylinder point_at 0 radius 0.9 falloff 1 }', W=64, H=2,
