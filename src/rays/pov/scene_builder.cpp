@@ -56,6 +56,15 @@ Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
     return kind;
 }
 
+// The object of a looks_like block (nullptr when it holds none).
+const Item* lookedLikeObject(const Entry& e) {
+    if (e.args.empty() || e.args[0].type != VType::Item) return nullptr;
+    for (const Entry& inner : e.args[0].item().entries)
+        for (const Value& v : inner.args)
+            if (v.type == VType::Item && isObjectKind(v.item().kind)) return &v.item();
+    return nullptr;
+}
+
 }  // namespace
 
 void SceneBuilder::add(const ParsedScene::Top& top) {
@@ -79,7 +88,7 @@ void SceneBuilder::add(const ParsedScene::Top& top) {
             if (!backgroundSet_) scene_.pov.background = c.rgb;
             return;
         }
-        case Kw::fog: return notes_.note("fog", item.loc);
+        case Kw::fog: return addFog(item);
         case Kw::rainbow: return notes_.note("rainbow", item.loc);
         case Kw::media: return notes_.note("atmospheric media", item.loc);
         default:
@@ -202,7 +211,9 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
     l.color = p.size() > 1 ? toColor(*p[1]).rgb : Vec3{1, 1, 1};
     Transform m;
     Vec3 pointAt{0, 0, 1};
-    bool parallel = false;
+    bool parallel = false, pointAtSet = false;
+    double radius = -1, falloff = -1;  // < 0: the light type's default
+    const Item* looksLike = nullptr;
     for (const Entry& e : item.entries) {
         if (e.positional()) continue;
         if (isTransformEntry(e)) {
@@ -210,11 +221,17 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             continue;
         }
         switch (e.kw()) {
-            case Kw::spotlight: notes_.note("spotlight", e.loc, "(lit as a point light)"); break;
-            case Kw::cylinder: notes_.note("cylindrical light", e.loc, "(lit as a point light)"); break;
+            case Kw::spotlight: l.spot = Light::Spot::Cone; break;
+            case Kw::cylinder: l.spot = Light::Spot::Cylinder; break;
             case Kw::parallel: parallel = true; break;
-            case Kw::point_at: pointAt = toVec3(e.args[0]); break;
-            case Kw::shadowless: notes_.note("shadowless light", e.loc, "(casts shadows)"); break;
+            case Kw::point_at:
+                pointAt = toVec3(e.args[0]);
+                pointAtSet = true;
+                break;
+            case Kw::radius: radius = toFloat(e.args[0]); break;
+            case Kw::falloff: falloff = toFloat(e.args[0]); break;
+            case Kw::tightness: l.tightness = std::max(0.0, toFloat(e.args[0])); break;
+            case Kw::shadowless: l.shadowless = true; break;
             case Kw::area_light:
                 if (e.args.size() == 4) {
                     l.area = true;
@@ -228,8 +245,9 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             case Kw::adaptive: l.adaptive = clampedInt(toFloat(e.args[0]), -1, 1000); break;
             case Kw::circular: l.circular = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::orient: l.orient = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::fade_distance: case Kw::fade_power: notes_.note("light fading", e.loc); break;
-            case Kw::looks_like: notes_.note("looks_like", e.loc); break;
+            case Kw::fade_distance: l.fadeDistance = std::max(0.0, toFloat(e.args[0])); break;
+            case Kw::fade_power: l.fadePower = toFloat(e.args[0]); break;
+            case Kw::looks_like: looksLike = lookedLikeObject(e); break;
             case Kw::projected_through: notes_.note("projected_through", e.loc); break;
             default: break;
         }
@@ -238,6 +256,25 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
     l.position = world.point(pos);
     l.axis1 = world.vector(l.axis1);
     l.axis2 = world.vector(l.axis2);
+    if (l.spot != Light::Spot::None) {
+        // The manual's defaults: spotlights radius 30 and falloff 45 degrees (cosines kept);
+        // cylindrical lights 0.75 and 1, measured to be distances from the axis.
+        const Vec3 d = world.point(pointAtSet ? pointAt : Vec3{}) - l.position;
+        if (length(d) == 0) {
+            l.spot = Light::Spot::None;
+        } else if (l.spot == Light::Spot::Cone) {
+            auto cosDeg = [](double deg) { return std::cos(std::clamp(deg, 0.0, 180.0) * std::numbers::pi / 180); };
+            l.spotRadius = cosDeg(radius < 0 ? 30 : radius);
+            l.spotFalloff = cosDeg(falloff < 0 ? 45 : falloff);
+            l.direction = normalize(d);
+        } else {
+            l.spotRadius = radius < 0 ? 0.75 : radius;
+            l.spotFalloff = falloff < 0 ? 1 : falloff;
+            // Cylindrical lights shine and cast shadows along their axis (measured).
+            parallel = true;
+            pointAt = pointAtSet ? pointAt : Vec3{};
+        }
+    }
     if (parallel) {
         const Vec3 d = world.point(pointAt) - l.position;
         if (length(d) > 0) {
@@ -245,10 +282,19 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             l.area = false;
             l.pointAt = world.point(pointAt);
             l.direction = normalize(d);
+        } else if (l.spot == Light::Spot::Cylinder) {
+            l.spot = Light::Spot::None;
         }
     }
     if (l.area && (length(cross(l.axis1, l.axis2)) == 0)) l.area = false;
     scene_.lights.push_back(l);
+    // looks_like: the object, moved to the light's place, is seen but casts no shadow (the manual).
+    if (looksLike) {
+        const bool saved = noShadow_;
+        noShadow_ = true;
+        addObject(*looksLike, world * Transform::translate(pos), nullptr, 0);
+        noShadow_ = saved;
+    }
 }
 
 // ---- objects ---------------------------------------------------------------------------------
@@ -257,7 +303,6 @@ Material SceneBuilder::material(const Appearance& look) {
     Material m;
     m.color = look.pigment.rgb;
     m.filter = std::clamp(look.pigment.filter, 0.0, 1.0);
-    m.shading = int(ShadingModel::Povray);
     m.ambient = look.finish.ambient.x;
     m.diffuse = look.finish.diffuse;
     m.specular = look.finish.specular;
@@ -267,6 +312,7 @@ Material SceneBuilder::material(const Appearance& look) {
     s.finish = look.finish;
     s.interior = look.interior;
     s.transmit = look.pigment.transmit;
+    s.noShadow = noShadow_;
     m.pov = int(scene_.povSurfaces.size());
     scene_.povSurfaces.push_back(s);
     return m;
@@ -297,7 +343,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     std::vector<const Item*> children;
     std::vector<Clip> clips;
     const Entry* bounds = nullptr;
-    bool inverse = false, open = false;
+    bool inverse = false, open = false, noShadow = false;
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
         if (e.positional()) {
@@ -320,7 +366,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::clipped_by: clips.push_back(Clip{&e, local}); break;
             case Kw::bounded_by: bounds = &e; break;  // a speed hint only
             case Kw::inverse: inverse = true; break;
-            case Kw::no_shadow: notes_.note("no_shadow", e.loc, "(the object casts shadows)"); break;
+            case Kw::no_shadow: noShadow = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_image: notes_.note("no_image", e.loc); break;
             case Kw::no_reflection: notes_.note("no_reflection", e.loc); break;
             case Kw::double_illuminate: break;
@@ -328,6 +374,13 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
     }
+    // no_shadow holds for the object and everything inside it.
+    struct KeepNoShadow {
+        bool& flag;
+        bool saved;
+        ~KeepNoShadow() { flag = saved; }
+    } keep{noShadow_, noShadow_};
+    noShadow_ = noShadow_ || noShadow;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
     const Appearance* own = look.set ? &look : inherited;
@@ -572,6 +625,53 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     prepareObject(o, toWorld);
     scene_.meshes.push_back(std::move(mesh));
     emit(o, inverse);
+}
+
+// ---- atmosphere -----------------------------------------------------------------------------
+
+// POV-Ray 3.7 reference, "Fog": fog_type 1 (constant) and 2 (ground fog along up), distance and
+// the colour with filter and transmit; transformations turn up. A fog identifier's items come
+// first. distance 0 turns the fog off (the manual).
+void SceneBuilder::addFog(const Item& item) {
+    PovFog f;
+    bool turbulent = false;
+    Transform m;
+    std::function<void(const Item&)> read = [&](const Item& it) {
+        for (const Entry& e : it.entries) {
+            if (e.positional()) {
+                for (const Value& v : e.args) {
+                    if (v.type == VType::Item && v.item().kind == Kw::fog) {
+                        read(v.item());
+                    } else {
+                        const Rgbft c = toColor(v);
+                        f.color = c.rgb;
+                        f.filter = c.filter;
+                        f.transmit = c.transmit;
+                    }
+                }
+                continue;
+            }
+            if (isTransformEntry(e)) {
+                applyTransform(e, m);
+                continue;
+            }
+            switch (e.kw()) {
+                case Kw::fog_type: f.ground = toFloat(e.args[0]) == 2; break;
+                case Kw::distance: f.distance = toFloat(e.args[0]); break;
+                case Kw::fog_offset: f.offset = toFloat(e.args[0]); break;
+                case Kw::fog_alt: f.alt = toFloat(e.args[0]); break;
+                case Kw::up: f.up = toVec3(e.args[0]); break;
+                case Kw::turbulence: turbulent = turbulent || length(toVec3(e.args[0])) > 0; break;
+                default: break;  // turb_depth, omega, lambda, octaves: only with turbulence
+            }
+        }
+    };
+    read(item);
+    if (turbulent) notes_.note("fog turbulence", item.loc, "(the fog is drawn smooth)");
+    f.up = m.vector(f.up);
+    if (f.distance <= 0 || length(f.up) == 0) return;
+    f.up = normalize(f.up);
+    scene_.pov.fogs.push_back(f);
 }
 
 // ---- global settings -------------------------------------------------------------------------

@@ -48,6 +48,7 @@ private:
         Transform before;
     };
     void globalSettings(const Item& g);
+    void addFog(const Item& fog);
     Material material(const Appearance& look);
     /// Counts n more objects made at `at`; throws past maxObjects_.
     void countObjects(uint64_t n, const sdl::Loc& at);
@@ -60,6 +61,7 @@ private:
     double version_ = 3.7;
     bool gammaSet_ = false;
     bool backgroundSet_ = false;
+    bool noShadow_ = false;    ///< the objects being added cast no shadow (no_shadow, looks_like)
     uint64_t maxObjects_, objects_ = 0;
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "rays/render/absorption.h"
+
 namespace rays {
 
 namespace {
@@ -25,6 +27,33 @@ Vec3 highlights(const PovFinish& f, Vec3 C, Vec3 N, Vec3 L, Vec3 V, double nl, V
     }
     if (amount == 0) return {};
     return amount * lightColor * povMetallicTint(f.metallic, C, nl);
+}
+
+// 3s² − 2s³ for s in [0, 1]: the spotlight's curve between its cones.
+double smooth(double s) { return s * s * (3 - 2 * s); }
+
+// Integral of a ground fog's density from its offset up to height h (negative below the offset,
+// where the density is 1): alt·atan((h − offset)/alt) above it.
+double groundFogIntegral(const PovFog& f, double h) {
+    const double u = h - f.offset;
+    if (u <= 0) return u;
+    if (f.alt <= 0) return 0;  // no fog above the offset
+    return f.alt * std::atan(u / f.alt);
+}
+
+// Optical length of a ray segment in ground fog: the density integrated along the segment.
+double groundFogDepth(const PovFog& f, const Ray& ray, double t) {
+    const double h0 = dot(ray.origin, f.up), du = dot(ray.dir, f.up);
+    if (std::fabs(du) < 1e-12 || (std::isfinite(t) && std::fabs(du * t) < 1e-9)) {
+        const double u = h0 - f.offset;
+        const double density = u <= 0 ? 1.0 : f.alt <= 0 ? 0.0 : 1.0 / (1.0 + (u / f.alt) * (u / f.alt));
+        return density == 0 ? 0.0 : t * density;
+    }
+    const double h1 = std::isfinite(t) ? h0 + du * t : (du > 0 ? kInfinity : -kInfinity);
+    double top = -kInfinity;  // a ray going down for ever stays in the fog below the offset
+    if (std::isfinite(h1)) top = groundFogIntegral(f, h1);
+    else if (h1 > 0) top = f.alt > 0 ? f.alt * std::numbers::pi / 2 : 0.0;
+    return (top - groundFogIntegral(f, h0)) / du;
 }
 
 // cosine^brilliance, without pow for the default brilliance 1.
@@ -100,16 +129,47 @@ Vec3 povReflectionExponent(Vec3 reflected, double exponent) {
 Vec3 povFade(const PovInterior& in, double distance) {
     if (!povFades(in)) return Vec3(1.0);
     const double q = distance / in.fadeDistance;
-    if (in.fadePower >= 1000) {
-        Vec3 out;
-        for (int i = 0; i < 3; ++i) {
-            const double k = 1.0 - in.fadeColor[i];
-            out[i] = k == 0 ? 1.0 : std::exp(-k * q);
-        }
-        return out;
-    }
+    if (in.fadePower >= 1000) return beerAbsorption(Vec3(1.0) - in.fadeColor, q);
     const double a = std::isinf(q) ? 0.0 : 1.0 / (1.0 + std::pow(q, in.fadePower));
     return Vec3(a) + (1.0 - a) * in.fadeColor;
+}
+
+double povSpotFactor(const Light& light, Vec3 toPoint) {
+    if (light.spot == Light::Spot::None) return 1.0;
+    const double along = dot(toPoint, light.direction);
+    if (light.spot == Light::Spot::Cylinder) {
+        const double r = length(toPoint - along * light.direction);
+        if (r >= light.spotFalloff) return 0.0;
+        const double k =
+            r <= light.spotRadius ? 1.0 : smooth((light.spotFalloff - r) / (light.spotFalloff - light.spotRadius));
+        return light.tightness == 0 ? k : k * std::pow(1.0 - r / light.spotFalloff, light.tightness);
+    }
+    const double len = length(toPoint);
+    if (len == 0) return 1.0;
+    const double c = along / len;
+    if (c <= 0) return 0.0;
+    double k = 1.0;
+    if (c < light.spotRadius) {
+        if (c <= light.spotFalloff) return 0.0;
+        k = smooth((c - light.spotFalloff) / (light.spotRadius - light.spotFalloff));
+    }
+    return light.tightness == 0 ? k : k * std::pow(c, light.tightness);
+}
+
+double povLightFade(const Light& light, double distance) {
+    if (light.fadeDistance <= 0) return 1.0;
+    return 2.0 / (1.0 + std::pow(distance / light.fadeDistance, light.fadePower));
+}
+
+Vec3 povFog(const std::vector<PovFog>& fogs, Vec3 behind, const Ray& ray, double t) {
+    Vec3 keep(1.0), add;
+    for (const PovFog& f : fogs) {
+        const double depth = f.ground ? groundFogDepth(f, ray, t) : t;
+        const double a = std::max(std::exp(-depth / f.distance), f.transmit);
+        keep *= a * (Vec3(1.0 - f.filter) + f.filter * f.color);
+        add += (1.0 - a) * f.color;
+    }
+    return keep * behind + add;
 }
 
 }  // namespace rays

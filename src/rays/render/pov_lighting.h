@@ -3,7 +3,11 @@
 // (docs/povray-lighting.md; the scenes are in tests/data/povray/shading). Pure functions: the
 // tracer (tracer_povray.cpp) finds the lights, rays and colours they combine.
 #pragma once
+#include <vector>
+
+#include "rays/geometry/ray.h"
 #include "rays/math/vec3.h"
+#include "rays/scene/light.h"
 #include "rays/scene/pov_surface.h"
 
 namespace rays {
@@ -63,5 +67,24 @@ Vec3 povFade(const PovInterior& in, double distance);
 
 /// True when the interior fades light at all (fade_distance > 0).
 inline bool povFades(const PovInterior& in) { return in.fadeDistance > 0; }
+
+/// Share of a spotlight's or cylindrical light's light that reaches a point at toPoint from the
+/// light's position (1 for other lights). Spotlight, with c the cosine between direction and
+/// toPoint: 1 within the radius cone, 0 beyond the falloff cone, 3s² − 2s³ between them with
+/// s = (c − cos falloff)/(cos radius − cos falloff); times c^tightness. Cylinder, with r the
+/// distance from the axis: 1 within radius, 0 beyond falloff, the same curve over (falloff − r)/
+/// (falloff − radius) between; times (1 − r/falloff)^tightness. Measured with povray 3.7
+/// (docs/povray-lighting.md).
+double povSpotFactor(const Light& light, Vec3 toPoint);
+
+/// Light fading at a distance from the light: 2/(1 + (distance/fade_distance)^fade_power), 1
+/// without fade_distance (the manual, "Light Fading"; measured).
+double povLightFade(const Light& light, double distance);
+
+/// The colour behind a ray segment from ray.origin to ray.at(t) (t may be infinite; ray.dir
+/// unit) seen through the fogs: each keeps a·(1 − filter + filter·color) of it and adds
+/// (1 − a)·color, a as PovFog says (measured: several fogs multiply their shares and add their
+/// colours).
+Vec3 povFog(const std::vector<PovFog>& fogs, Vec3 behind, const Ray& ray, double t);
 
 }  // namespace rays

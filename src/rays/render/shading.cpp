@@ -67,7 +67,6 @@ const char* shadingName(ShadingModel m) {
         case ShadingModel::OrenNayar: return "Oren-Nayar";
         case ShadingModel::Lambert: return "Lambert";
         case ShadingModel::Flat: return "Flat";
-        case ShadingModel::Povray: return "POV-Ray";
         case ShadingModel::Normals: return "Normals";
     }
     return "?";

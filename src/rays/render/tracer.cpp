@@ -6,6 +6,7 @@
 #include "rays/geometry/refract.h"
 #include "rays/image/parallel.h"
 #include "rays/math/sampling.h"
+#include "rays/render/absorption.h"
 #include "rays/render/area_light.h"
 #include "rays/render/shading.h"
 #include "rays/render/texturing.h"
@@ -17,14 +18,7 @@ constexpr double kSurfaceOffset = Tracer::kSurfaceOffset;
 constexpr double kTMin = Tracer::kMinHitT;
 
 // Beer's law tint exp(−(1 − C)·0.15·d); an infinite distance absorbs every channel below 1.
-Vec3 beerTint(Vec3 c, double d) {
-    Vec3 out;
-    for (int i = 0; i < 3; ++i) {
-        const double a = (1.0 - c[i]) * 0.15;
-        out[i] = a == 0 ? 1.0 : (std::isinf(d) ? 0.0 : std::exp(-a * d));
-    }
-    return out;
-}
+Vec3 beerTint(Vec3 c, double d) { return beerAbsorption((Vec3(1.0) - c) * 0.15, d); }
 
 // Course weights of a hit: local (1−f)(1−r), reflection (1−f)·r + f·F, transmission f·(1−F);
 // under total internal reflection the transmitted weight goes to the reflection. T is the

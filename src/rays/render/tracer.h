@@ -106,7 +106,7 @@ public:
     /// settings ask for the flat or normals views.
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
-          povTransparent_(povPath_ && anyPovTransparent(scene)) {}
+          povShadowsWalk_(povPath_ && povShadowsWalk()) {}
 
     /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
     /// primarySamples: the render's camera samples (each buffer is queried about that often).
@@ -195,12 +195,14 @@ private:
     };
     /// True when the scene is traced by POV-Ray's rules: pov.enabled, and not the flat or normals view.
     static bool usesPovPath(const Scene& scene, const RenderSettings& settings);
-    /// True when some object lets light through (filter or transmit): shadow rays then walk.
-    static bool anyPovTransparent(const Scene& scene);
+    /// True when some object lets light through (filter or transmit) or casts no shadow
+    /// (no_shadow): blocked shadow rays then walk the surfaces on their way.
+    bool povShadowsWalk() const;
     /// tracePrimary of POV-Ray scenes (a camera ray at level 1, weight 1, in no interior).
     Vec3 tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const;
-    /// Colour along a ray (the background when it misses), faded by the interior it travels in.
-    Result tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const;
+    /// Colour along a ray (the background when it misses), faded by the interior it travels in or
+    /// seen through the scene's fogs outside objects.
+    Vec3 tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const;
     /// A surface point being shaded: the object and its surface, position, normal facing the
     /// viewer (maps applied), pigment colour, which side the ray came from, the interior the point
     /// lies in (−1: none) and how much the viewing rays faded in it on the way to the point.
@@ -227,16 +229,18 @@ private:
     /// when countBlocked).
     int povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& ctx, Vec3& color,
                   bool countBlocked) const;
-    /// The light of one light that reaches P (its colour tinted by transparent objects on the way,
-    /// times the visible share of an area light's samples); shadow rays leave P on side Nl.
-    Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
+    /// The light of one light that reaches P: its colour dimmed by a spotlight's cone and light
+    /// fading (shadowless lights: nothing more), tinted by transparent objects on the way, times the
+    /// visible share of an area light's samples; L (unit, towards the light) and dist
+    /// as povLights found them; shadow rays leave P on side Nl.
+    Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, double dist, Vec3 Nl, bool intoSurface,
                           TraceContext& ctx) const;
     /// 1 when nothing lies on the shadow ray before tMax, else what the objects on it let through.
     Vec3 povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
                        const FromLight* fromLight) const;
-    /// Walks the surfaces on the shadow ray before tMax: each tints by filter·C + transmit, interiors
-    /// with fading fade over the length inside (from the ray's start for one it began in, none for
-    /// one it does not leave); an opaque surface (or too many) blocks.
+    /// Walks the surfaces on the shadow ray before tMax, passing no_shadow objects: each tints by
+    /// filter·C + transmit, interiors with fading fade over the length inside (from the ray's start
+    /// for one it began in, none for one it does not leave); an opaque surface (or too many) blocks.
     Vec3 povTransmittance(const Ray& shadow, double tMax) const;
     const PovSurface& povSurfaceOf(const Material& m) const;
 
@@ -245,7 +249,7 @@ private:
     const RenderSettings& settings_;
     const SharedOrigins* origins_;
     bool povPath_;         ///< the scene is traced by POV-Ray's rules
-    bool povTransparent_;  ///< and some of its objects let light through
+    bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
 };
 
 }  // namespace rays

@@ -34,17 +34,16 @@ bool Tracer::usesPovPath(const Scene& scene, const RenderSettings& settings) {
     return scene.pov.enabled && settings.shading != ShadingModel::Flat && settings.shading != ShadingModel::Normals;
 }
 
-bool Tracer::anyPovTransparent(const Scene& scene) {
-    auto transparent = [&](const Material& m) {
-        const PovSurface& s = m.pov >= 0 && size_t(m.pov) < scene.povSurfaces.size() ? scene.povSurfaces[size_t(m.pov)]
-                                                                                    : kDefaultSurface;
-        return letsLightThrough(m, s);
+bool Tracer::povShadowsWalk() const {
+    auto walks = [&](const Material& m) {
+        const PovSurface& s = povSurfaceOf(m);
+        return letsLightThrough(m, s) || s.noShadow;
     };
-    for (const Object& o : scene.objects) {
-        if (transparent(o.material)) return true;
+    for (const Object& o : scene_.objects) {
+        if (walks(o.material)) return true;
         if (o.type == ShapeType::Csg)  // each child of a CSG keeps its own material
             for (const Object& leaf : o.csg->leaves)
-                if (transparent(leaf.material)) return true;
+                if (walks(leaf.material)) return true;
     }
     return false;
 }
@@ -57,21 +56,21 @@ const PovSurface& Tracer::povSurfaceOf(const Material& m) const {
 Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const {
     PovRay r;
     r.primary = true;
-    return tracePov(ray, r, ctx, info).color;
+    return tracePov(ray, r, ctx, info);
 }
 
-Tracer::Result Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const {
-    const Hit hit = firstHit(ray);
+Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const {
+    const Hit hit = firstHit(ray);  // hit.t is infinite for a miss
     if (info) info->push(hit.object);
-    Result res;
-    res.t = hit.t;  // infinite for a miss
     Vec3 fade(1.0);
     if (r.fades && r.interior >= 0) {
         const PovInterior& in = povSurfaceOf(scene_.objects[size_t(r.interior)].material).interior;
-        if (povFades(in)) fade = povFade(in, res.t);
+        if (povFades(in)) fade = povFade(in, hit.t);
     }
-    res.color = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : scene_.pov.background);
-    return res;
+    const Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : scene_.pov.background);
+    // Fog fills the space outside objects (measured: on every ray, reflected ones included).
+    if (scene_.pov.fogs.empty() || r.interior >= 0) return seen;
+    return povFog(scene_.pov.fogs, seen, ray, hit.t);
 }
 
 Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
@@ -121,7 +120,7 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
     if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
     auto trace = [&](Vec3 dir, const PovRay& child) {
         ++ctx.stats.secondaryRays;
-        return tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, child, ctx, info).color;
+        return tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, child, ctx, info);
     };
 
     Vec3 color;
@@ -173,41 +172,44 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         const double nl = dot(N, L);
         const bool useful = nl > 0 ? front : (nl < 0 && back);
         if (!useful && !countBlocked) continue;
-        const Vec3 arriving = povLightReaching(light, li, P, nl >= 0 ? N : -N, nl < 0, ctx);
+        const Vec3 arriving = povLightReaching(light, li, P, L, dist, nl >= 0 ? N : -N, nl < 0, ctx);
         if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
         const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
-        color += opacity * t.diffuse + t.highlight;
+        color += opacity * t.diffuse;
+        if (!light.shadowless) color += t.highlight;  // shadowless lights make no highlights (the manual; measured)
     }
     return blocked;
 }
 
-Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
-                              TraceContext& ctx) const {
+Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, double dist, Vec3 Nl,
+                              bool intoSurface, TraceContext& ctx) const {
+    // Spotlights, cylindrical lights and fading dim the light before anything blocks it.
+    Vec3 color = light.color;
+    if (light.spot != Light::Spot::None) color *= povSpotFactor(light, P - light.position);
+    if (light.fadeDistance > 0) color *= povLightFade(light, length(P - light.position));
+    if (light.shadowless || color == Vec3{}) return color;
     const Vec3 origin = P + kSurfaceOffset * Nl;
     if (light.parallel) {
         // Shadow rays end at the plane through the light's position across its direction; points
         // beyond that plane are lit unshadowed (the manual, "Parallel Lights"; measured).
         const double tMax = dot(light.position - origin, -light.direction);
-        if (tMax <= 0) return light.color;
-        return light.color * povShadowTint(Ray{origin, -light.direction}, tMax, index, ctx, intoSurface, nullptr);
+        if (tMax <= 0) return color;
+        return color * povShadowTint(Ray{origin, -light.direction}, tMax, index, ctx, intoSurface, nullptr);
     }
     if (!light.area) {
-        const Vec3 toLight = light.position - P;
-        const double dist = length(toLight);
-        const FromLight fromLight{-toLight, dist};
-        return light.color *
-               povShadowTint(Ray{origin, toLight / dist}, dist - kSurfaceOffset, index, ctx, intoSurface, &fromLight);
+        const FromLight fromLight{-dist * L, dist};
+        return color * povShadowTint(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, intoSurface, &fromLight);
     }
     // Area light: the shading uses its centre (measured); its samples only decide how much of the
     // light arrives, each tinted by what lies on its shadow ray.
     const AreaGrid grid = areaGrid(light, settings_.areaSamples, P);
     auto sampleTint = [&](Vec3 pos) {
         const Vec3 toLight = pos - P;
-        const double dist = length(toLight);
-        if (dist == 0) return Vec3(1.0);
-        return povShadowTint(Ray{origin, toLight / dist}, dist - kSurfaceOffset, index, ctx, intoSurface, nullptr);
+        const double d = length(toLight);
+        if (d == 0) return Vec3(1.0);
+        return povShadowTint(Ray{origin, toLight / d}, d - kSurfaceOffset, index, ctx, intoSurface, nullptr);
     };
     const int count = grid.n1 * grid.n2;
     // adaptive: four corners that agree on all-or-nothing decide for the whole light.
@@ -220,18 +222,18 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
             dark += t == Vec3{};
         }
         if (dark == 4) return {};
-        if (lit == 4) return light.color;
+        if (lit == 4) return color;
     }
     Vec3 sum;
     for (int v = 0; v < grid.n2; ++v)
         for (int u = 0; u < grid.n1; ++u) sum += sampleTint(areaSample(light, grid, u, v, ctx.rng));
-    return light.color * sum / double(count);
+    return color * sum / double(count);
 }
 
 Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
                            const FromLight* fromLight) const {
     if (!shadowed(shadow, tMax, light, ctx, intoSurface, fromLight)) return Vec3(1.0);
-    if (!povTransparent_) return {};
+    if (!povShadowsWalk_) return {};
     return povTransmittance(shadow, tMax);
 }
 
@@ -249,6 +251,10 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
         if (!h.valid()) return tint;  // interiors not left before the light do not fade it (measured)
         const Object& o = shadedObject(scene_.objects, h);
         const PovSurface& s = povSurfaceOf(o.material);
+        if (s.noShadow) {  // no_shadow: not there for shadow rays
+            tMin = h.t + kTMin;
+            continue;
+        }
         if (!letsLightThrough(o.material, s)) return {};
         Vec3 C = o.material.color;
         if (o.material.pigmentMap >= 0) {

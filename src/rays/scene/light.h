@@ -1,5 +1,6 @@
 // Light sources: point lights (the course), POV-Ray's area lights (a rectangle or disc sampled by an
-// n1 × n2 grid of point lights) and parallel (directional) lights.
+// n1 × n2 grid of point lights), parallel (directional) lights, spotlights, cylindrical lights,
+// shadowless lights and light fading (POV-Ray 3.7 reference, "Light Source").
 #pragma once
 #include "rays/math/vec3.h"
 
@@ -23,6 +24,17 @@ struct Light {
     bool parallel = false;
     Vec3 pointAt{0, 0, 0};
     Vec3 direction{0, 0, -1};  ///< unit; set by the parser from point_at − position
+
+    // POV-Ray only (render/pov_lighting.h, povSpotFactor and povLightFade):
+    enum class Spot : unsigned char { None, Cone, Cylinder };
+    /// Cone: a spotlight from position along direction, radius and falloff as cosines of their
+    /// half angles. Cylinder: light along direction (parallel is then true) within the distances
+    /// radius and falloff of the axis through position. Both sharpened by tightness.
+    Spot spot = Spot::None;
+    double spotRadius = 0, spotFalloff = 0, tightness = 0;
+    bool shadowless = false;  ///< no shadow rays (nothing blocks it) and no highlights
+    double fadeDistance = 0;  ///< > 0: light fading 2/(1 + (d/fadeDistance)^fadePower)
+    double fadePower = 0;
 };
 
 }  // namespace rays

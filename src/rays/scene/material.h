@@ -18,7 +18,7 @@ struct Material {
     double refraction = 0;   ///< accepted and ignored (course): refraction follows filter
     double sigma = 20;       ///< Oren-Nayar surface roughness σ in degrees (finish { sigma S })
     int shading = -1;        ///< ShadingModel of this object (`shading NAME`), −1 = the render's
-    int pov = -1;            ///< POV-Ray scenes: index into Scene::povSurfaces (shading is then Povray)
+    int pov = -1;            ///< POV-Ray scenes: index into Scene::povSurfaces (lit by POV-Ray's model)
 
     // Texture maps (indices into Scene::textures, −1 = none).
     int pigmentMap = -1;     ///< image_map: replaces the pigment colour

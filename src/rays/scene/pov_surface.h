@@ -2,6 +2,8 @@
 // "Interior"): finish and interior values, and the colour's transmit, kept apart from the course
 // Material (which stays small for the course's big scenes) and referenced by Material::pov.
 #pragma once
+#include <vector>
+
 #include "rays/math/vec3.h"
 
 namespace rays {
@@ -34,6 +36,21 @@ struct PovSurface {
     PovInterior interior;
     double transmit = 0;        ///< the pigment's transmit (its filter is Material::filter)
     bool doubleIlluminate = false;
+    bool noShadow = false;      ///< the object casts no shadow (POV-Ray's no_shadow; looks_like objects)
+};
+
+/// A fog layer (POV-Ray 3.7 reference, "Fog"; the details measured, docs/povray-lighting.md).
+/// A ray segment of length d keeps a = max(exp(−D/distance), transmit) of the colour behind,
+/// filtered by 1 − filter + filter·color, and adds (1 − a)·color, where D is d (constant fog) or,
+/// for ground fog, the integral along the segment of the density 1 below offset and
+/// 1/(1 + ((h − offset)/alt)²) above it, h the height along up.
+struct PovFog {
+    bool ground = false;  ///< fog_type 2
+    double distance = 0;
+    Vec3 color;
+    double filter = 0, transmit = 0;
+    double offset = 0, alt = 0;
+    Vec3 up{0, 1, 0};  ///< unit
 };
 
 /// Scene-wide settings of POV-Ray scenes (global_settings, background).
@@ -49,6 +66,7 @@ struct PovGlobals {
     int maxTraceLevel = 5;
     double adcBailout = 1.0 / 255.0;
     Vec3 background{0, 0, 0};
+    std::vector<PovFog> fogs;  ///< applied together to every ray outside objects
 };
 
 }  // namespace rays

@@ -4,9 +4,9 @@
 namespace rays {
 
 /// Numbers as in the original system's positional form: 0 Blinn-Phong, 1 Cook-Torrance,
-/// 2 Oren-Nayar, 3 Lambert, 4 flat, 5 normals. Povray (6) is POV-Ray's own lighting model, used
-/// by the objects of POV-Ray scenes (Material::pov); it is not chosen on the command line.
-enum class ShadingModel { BlinnPhong = 0, CookTorrance = 1, OrenNayar = 2, Lambert = 3, Flat = 4, Normals = 5, Povray = 6 };
+/// 2 Oren-Nayar, 3 Lambert, 4 flat, 5 normals. (POV-Ray scenes are lit by POV-Ray's own model,
+/// render/tracer_povray.cpp, whatever their materials' shading says.)
+enum class ShadingModel { BlinnPhong = 0, CookTorrance = 1, OrenNayar = 2, Lambert = 3, Flat = 4, Normals = 5 };
 
 /// Name printed by the course commands ("Blinn-Phong", "Cook-Torrance", ...).
 const char* shadingName(ShadingModel m);

@@ -4,15 +4,11 @@
 import math, os, sys
 sys.dont_write_bytecode = True  # no __pycache__ in the checkout
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pv import render, fmt, ORTHO
+from pv import render, fmt, ORTHO, row
 
 C = (0.5, 0.6, 0.7)
 PIG = 'rgb <.5,.6,.7>'
 
-
-def row(name, got, want):
-    err = max(abs(a - b) for a, b in zip(got, want))
-    print('%-44s povray %s  model %s  %s' % (name, fmt(got), fmt(want), 'ok' if err < 3e-5 else 'DIFF %.5f' % err))
 
 
 def rot_y(v, deg):

@@ -3,14 +3,10 @@
 import os, sys
 sys.dont_write_bytecode = True  # no __pycache__ in the checkout
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pv import render, fmt
+from pv import render, fmt, row
 
 CAM = 'camera { orthographic location -1*z look_at 0 right x up y }\n'
 
-
-def row(name, got, want):
-    err = max(abs(a - b) for a, b in zip(got, want))
-    print('%-52s povray %s  model %s  %s' % (name, fmt(got), fmt(want), 'ok' if err < 3e-5 else 'DIFF %.5f' % err))
 
 
 def mirrors(gs, refl='.5', bg='rgb 1'):

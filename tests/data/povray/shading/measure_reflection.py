@@ -4,16 +4,12 @@
 import math, os, sys
 sys.dont_write_bytecode = True  # no __pycache__ in the checkout
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pv import render, fmt, ORTHO
+from pv import render, fmt, ORTHO, row
 
 C = (0.5, 0.6, 0.7)
 B = (0.2, 0.5, 0.9)
 BG = 'background { rgb <.2,.5,.9> }\n'
 
-
-def row(name, got, want):
-    err = max(abs(a - b) for a, b in zip(got, want))
-    print('%-52s povray %s  model %s  %s' % (name, fmt(got), fmt(want), 'ok' if err < 3e-5 else 'DIFF %.5f' % err))
 
 
 def fresnel(cosi, eta):

@@ -4,16 +4,12 @@
 import math, os, sys
 sys.dont_write_bytecode = True  # no __pycache__ in the checkout
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pv import render, fmt, ORTHO
+from pv import render, fmt, ORTHO, row
 
 C = (0.5, 0.6, 0.7)
 L60 = 'light_source { <0.866025,0,-0.5>*100, rgb 1 parallel point_at 0 }\n'
 FLOOR = 'plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n'
 
-
-def row(name, got, want):
-    err = max(abs(a - b) for a, b in zip(got, want))
-    print('%-50s povray %s  model %s  %s' % (name, fmt(got), fmt(want), 'ok' if err < 3e-5 else 'DIFF %.5f' % err))
 
 
 # A thin box beside the view, crossed twice by the floor's shadow ray (cos 60 = .5 unshadowed).

@@ -63,3 +63,10 @@ def render(body, gs='', W=4, H=4, pts=None, raw=False, head=None):
 
 def fmt(v):
     return ' '.join('%.5f' % c for c in v)
+
+
+def row(name, got, want, tol=3e-5):
+    """Prints a measured value beside the model's, ending in ok or DIFF and the largest difference."""
+    got, want = list(got), list(want)
+    err = max(abs(a - b) for a, b in zip(got, want))
+    print('%-58s povray %s  model %s  %s' % (name, fmt(got), fmt(want), 'ok' if err < tol else 'DIFF %.5f' % err))

@@ -1,0 +1,269 @@
+// POV-Ray lights and atmosphere read from POV text and traced: no_shadow, shadowless lights,
+// spotlights, cylindrical lights, light fading, fog, looks_like. The expected values were measured
+// with povray 3.7.0.10 (16-bit PPM, sRGB decoded, assumed_gamma 1: the scenes as written here,
+// tests/data/povray/shading/measure_lights.py); they hold to 1e-4 unless a test says otherwise.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "rays/accel/bvh.h"
+#include "rays/error.h"
+#include "rays/pov/load_pov.h"
+#include "rays/render/tracer.h"
+
+namespace rays {
+namespace {
+
+constexpr double kMeasured = 1e-4;  // povray's 16-bit output, decoded
+
+struct Loaded {
+    Scene scene;
+    std::vector<std::string> warnings;
+};
+
+Loaded load(const std::string& body) {
+    Loaded l;
+    ParseOptions o;
+    o.warn = [&](const std::string& w) { l.warnings.push_back(w); };
+    o.language.installedIncludeDir.clear();
+    l.scene = pov::parsePovText("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n" + body, "scene.pov", ".", o);
+    return l;
+}
+
+// The working-space colour seen along the ray of an orthographic camera at z = −3 looking along +z
+// through (x, y) (POV-Ray's `camera { orthographic location -3*z look_at 0 ... }`).
+Vec3 seen(const Scene& s, double x, double y, double z = -3) {
+    const Bvh bvh(s.objects);
+    const RenderSettings rs;
+    TraceContext ctx;
+    return Tracer(s, bvh, rs).tracePrimary(Ray{{x, y, z}, {0, 0, 1}}, ctx);
+}
+
+void expectColor(Vec3 got, Vec3 want, double tol = kMeasured) {
+    EXPECT_NEAR(got.x, want.x, tol);
+    EXPECT_NEAR(got.y, want.y, tol);
+    EXPECT_NEAR(got.z, want.z, tol);
+}
+
+// A white floor facing the camera lit by diffuse 1 only.
+const std::string kFloor = "plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n";
+// A point light far off at 60° from the floor's normal, and a thin box beside the view on its way.
+const std::string kLight60 = "light_source { <0.866025,0,-0.5>*100, rgb 1 }\n";
+std::string sideBox(const std::string& pigment, const std::string& modifiers) {
+    return "box { <1,-5,-1.01>, <5,5,-1> pigment { " + pigment + " } finish { ambient 0 diffuse 0 } " + modifiers +
+           " }\n";
+}
+
+// Centre pixel of povray's 4×4 render of that camera (right x, up y).
+constexpr double kCx = 0.125, kCy = -0.125;
+
+TEST(PovNoShadow, ObjectsWithNoShadowCastNone) {
+    for (const char* pigment : {"rgb <.5,.6,.7>", "rgbf <.5,.6,.7,.5>", "rgbt <.5,.6,.7,.5>"}) {
+        SCOPED_TRACE(pigment);
+        // Measured: 0, .03129/.04505/.06131, .12513 with shadows; .50054 with no_shadow.
+        const Loaded plain = load(kLight60 + kFloor + sideBox(pigment, ""));
+        EXPECT_LT(seen(plain.scene, kCx, kCy).x, 0.2);
+        const Loaded ns = load(kLight60 + kFloor + sideBox(pigment, "no_shadow"));
+        EXPECT_TRUE(ns.warnings.empty()) << ns.warnings[0];
+        expectColor(seen(ns.scene, kCx, kCy), Vec3(0.50054));
+    }
+}
+
+TEST(PovNoShadow, HoldsForAUnionsChildrenAndTheObjectIsStillSeen) {
+    // Measured .50054 under a union { box sphere no_shadow }.
+    const Loaded u = load(kLight60 + kFloor + "union { box { <1,-5,-1.01>, <5,5,-1> } sphere { <3,0,-5>, 0.1 }" +
+                          " pigment { rgb 1 } no_shadow }");
+    expectColor(seen(u.scene, kCx, kCy), Vec3(0.50054));
+    // The box itself: ambient .1 of its white and the light at 60°·0.6 diffuse (its face −z).
+    const Vec3 box = seen(u.scene, 2, 0);
+    EXPECT_GT(box.x, 0.3);
+}
+
+// The floor lit head-on through a wall that hides it from the light: pigment <.5,.6,.7>, diffuse .5.
+const std::string kLitFloor = "plane { -z, 0 pigment { rgb <.5,.6,.7> } finish { ambient 0 diffuse 0.5 %s } }\n";
+std::string litFloor(const std::string& finish) {
+    std::string s = kLitFloor;
+    return s.replace(s.find("%s"), 2, finish);
+}
+TEST(PovShadowless, LightsWithoutHighlights) {
+    // Measured: .25 .3 .35 in all three cases; a plain light with phong 1 gives 1 1 1.
+    const std::string light = "light_source { <0,0,-100>, rgb 1 shadowless }\n";
+    expectColor(seen(load(light + litFloor("")).scene, kCx, kCy), {0.25, 0.3, 0.35});
+    expectColor(seen(load(light + litFloor("phong 1")).scene, kCx, kCy), {0.25, 0.3, 0.35});
+    expectColor(seen(load(light + litFloor("specular 1")).scene, kCx, kCy), {0.25, 0.3, 0.35});
+    const std::string plain = "light_source { <0,0,-100>, rgb 1 }\n";
+    EXPECT_GT(seen(load(plain + litFloor("phong 1")).scene, kCx, kCy).x, 0.9);
+}
+
+TEST(PovShadowless, NothingBlocksTheLight) {
+    // Measured: a shadowless light behind an opaque wall (no_image) lights the floor as if the
+    // wall were not there; here the box beside the view, as in PovNoShadow (.50054 unblocked).
+    const std::string light = "light_source { <0.866025,0,-0.5>*100, rgb 1 shadowless }\n";
+    expectColor(seen(load(light + kFloor + sideBox("rgb 1", "")).scene, kCx, kCy), Vec3(0.50054));
+    EXPECT_EQ(seen(load(kLight60 + kFloor + sideBox("rgb 1", "")).scene, kCx, kCy), Vec3{});
+}
+
+struct Sample {
+    double x, value;  // a floor point (x, 0.015625) and the red channel povray gave there
+};
+
+void expectFloor(const std::string& light, const std::vector<Sample>& samples) {
+    const Loaded l = load(kFloor + "light_source { " + light + " }\n");
+    EXPECT_TRUE(l.warnings.empty()) << l.warnings[0];
+    for (const Sample& s : samples) EXPECT_NEAR(seen(l.scene, s.x, 0.015625).x, s.value, kMeasured) << "x " << s.x;
+}
+
+TEST(PovSpotlight, RadiusFalloffAndTightnessShapeTheCone) {
+    // The floor 1 below the light: full light within 10°, the curve between 10° and 30°, none beyond.
+    expectFloor("<0,0,-1>, rgb 1 spotlight point_at 0 radius 10 falloff 30",
+                {{0.07812, 0.99684}, {0.26562, 0.90378}, {0.32812, 0.75365}, {0.39062, 0.53532},
+                 {0.45312, 0.29025}, {0.51562, 0.08491}, {0.64062, 0}});
+    expectFloor("<0,0,-1>, rgb 1 spotlight point_at 0 radius 10 falloff 40 tightness 10",
+                {{0.07812, 0.96581}, {0.26562, 0.67264}, {0.39062, 0.38883}, {0.51562, 0.16135},
+                 {0.64062, 0.04186}, {0.76562, 0.00353}, {0.82812, 0.00006}});
+    // The defaults: radius 30, falloff 45.
+    expectFloor("<0,0,-1>, rgb 1 spotlight point_at 0",
+                {{0.07812, 0.99684}, {0.51562, 0.88873}, {0.64062, 0.78988}, {0.70312, 0.63877},
+                 {0.76562, 0.45210}, {0.82812, 0.26734}});
+}
+
+TEST(PovSpotlight, CylindricalLightsShineAlongTheirAxisWithinADistance) {
+    // radius and falloff are distances from the axis; N·L is the axis's (1 on this floor).
+    expectFloor("<0,0,-1>, rgb 1 cylinder point_at 0 radius 0.3 falloff 0.6",
+                {{0.07812, 1}, {0.26562, 1}, {0.32812, 0.97464}, {0.39062, 0.78005}, {0.45312, 0.48304},
+                 {0.51562, 0.19185}, {0.64062, 0}});
+}
+
+TEST(PovSpotlight, CylindricalLightsTightnessSharpensWithTheDistanceFromTheAxis) {
+    // Measured (x, red) along the strip: (1 − r/falloff)^tightness times the curve.
+    expectFloor("<0,0,-1>, rgb 1 cylinder point_at 0 radius 0.3 falloff 0.6 tightness 3",
+                {{0.07812, 0.65219}, {0.20312, 0.28809}, {0.32812, 0.09030}, {0.45312, 0.00705}, {0.64062, 0}});
+}
+
+TEST(PovSpotlight, CylindricalLightsCastShadowsAlongTheAxis) {
+    // A strip at x 0.1..0.2, 1 in front of the floor, light 2 in front: povray's floor is dark at
+    // x .11 .14 .17 and lit at .2 and beyond (a point light shades .2 to .39).
+    const Loaded l = load(kFloor + "box { <0.1,-1,-1.01>, <0.2,1,-1> pigment { rgb 1 } no_image }\n" +
+                          "light_source { <0,0,-2>, rgb 1 cylinder point_at 0 radius 0.9 falloff 1 }\n");
+    // Looked at from between the strip and the floor (Rays has no no_image yet).
+    EXPECT_NEAR(seen(l.scene, 0.14, 0.015625, -0.5).x, 0, 1e-9);
+    EXPECT_NEAR(seen(l.scene, 0.3, 0.015625, -0.5).x, 1, kMeasured);
+}
+
+TEST(PovLightFading, TwoOverOnePlusDistanceOverFadeDistanceToThePower) {
+    expectFloor("<0,0,-2>, rgb 1 fade_distance 1 fade_power 2",
+                {{0.07812, 0.39917}, {0.39062, 0.38093}, {0.64062, 0.35202}, {0.82812, 0.32498}});
+    expectFloor("<0,0,-2>, rgb 1 fade_distance 0.5 fade_power 1",
+                {{0.07812, 0.39943}, {0.39062, 0.38671}, {0.82812, 0.34672}});
+}
+
+// A wall of pigment <.5,.6,.7> at z = 0 lit by its ambient 1 alone: 3 from the camera.
+const std::string kWallAmbient = "plane { -z, 0 pigment { rgb <.5,.6,.7> } finish { ambient 1 diffuse 0 } }\n";
+
+TEST(PovFog, ConstantFogMixesByDistanceWithFilterAndTransmit) {
+    struct Case {
+        const char* color;
+        Vec3 wall, background;
+    } cases[] = {{"rgb <.2,.4,.8>", {0.26693, 0.44462, 0.77768}, {0.2, 0.4, 0.8}},
+                 {"rgbf <.2,.4,.8,.5>", {0.22232, 0.40447, 0.76206}, {0.2, 0.4, 0.8}},
+                 {"rgbt <.2,.4,.8,.3>", {0.29, 0.46, 0.77}, {0.44, 0.43, 0.63501}},
+                 {"rgbft <.2,.4,.8,.5,.3>", {0.23, 0.40601, 0.74901}, {0.31999, 0.385, 0.6275}},
+                 {"rgbt <.2,.4,.8,.1>", {0.26693, 0.44462, 0.77768}, {0.28, 0.41, 0.745}}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.color);
+        const std::string fog = std::string("fog { distance 2 color ") + c.color + " }\n";
+        const Loaded l = load(kWallAmbient + fog);
+        EXPECT_TRUE(l.warnings.empty()) << l.warnings[0];
+        expectColor(seen(l.scene, kCx, kCy), c.wall);
+        expectColor(seen(load("background { rgb <1,.5,.25> }\n" + fog).scene, kCx, kCy), c.background);
+    }
+}
+
+TEST(PovFog, SeveralFogsMultiplyTheirSharesAndAddTheirColours) {
+    const Loaded l =
+        load(kWallAmbient + "fog { distance 2 color rgb <.2,.4,.8> } fog { distance 4 color rgb <1,0,0> }");
+    expectColor(seen(l.scene, kCx, kCy), {0.73570, 0.37399, 0.69527});
+}
+
+TEST(PovFog, ReflectedRaysGoThroughFogToo) {
+    // A mirror at z = 0 facing the camera sees the wall behind it at z = −4: 3 + 4 in fog.
+    const Loaded l = load("plane { -z, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection 1 } }\n"
+                          "plane { z, -4 pigment { rgb <.5,.6,.7> } finish { ambient 1 diffuse 0 } }\n"
+                          "fog { distance 2 color rgb <.2,.4,.8> }");
+    expectColor(seen(l.scene, kCx, kCy), {0.20905, 0.40605, 0.79697});
+}
+
+TEST(PovFog, GroundFogThinsAboveItsOffset) {
+    // Horizontal rays at height −.125: the density is 1/(1 + ((h − offset)/alt)²) there.
+    struct Level {
+        double offset, alt;
+        Vec3 want;
+    } levels[] = {{-1.125, 1, {0.34171, 0.49447, 0.75277}},
+                  {-0.625, 0.5, {0.34171, 0.49447, 0.75277}},
+                  {0, 1, {0.26693, 0.44462, 0.77768}},
+                  {-3.125, 0.5, {0.48809, 0.59205, 0.70398}}};
+    for (const Level& v : levels) {
+        const Loaded l = load(kWallAmbient + "fog { fog_type 2 fog_offset " + std::to_string(v.offset) + " fog_alt " +
+                              std::to_string(v.alt) + " distance 2 color rgb <.2,.4,.8> }");
+        expectColor(seen(l.scene, kCx, kCy), v.want);
+    }
+    // up x, or the fog turned so that its up is x: heights along x (0.125).
+    for (const char* turn : {"up x", "rotate -90*z"}) {
+        const Loaded l = load(kWallAmbient + "fog { fog_type 2 fog_offset 0 fog_alt 1 " + turn +
+                              " distance 2 color rgb <.2,.4,.8> }");
+        expectColor(seen(l.scene, kCx, kCy), {0.26849, 0.44568, 0.77717});
+    }
+}
+
+TEST(PovFog, GroundFogIntegratesTheDensityAlongASlantedRay) {
+    // The ray from <0,3,-3> to the floor y = 0 at the origin (povray: a 1×1 orthographic render).
+    struct Level {
+        double offset, alt;
+        Vec3 want;
+    } levels[] = {{0, 1, {0.32404, 0.48270, 0.75866}},
+                  {1, 1, {0.26761, 0.44507, 0.77747}},
+                  {1, 0.5, {0.29257, 0.46170, 0.76913}},
+                  {-1, 2, {0.32076, 0.48050, 0.75976}}};
+    for (const Level& v : levels) {
+        const Loaded l = load("plane { y, 0 pigment { rgb <.5,.6,.7> } finish { ambient 1 diffuse 0 } }\n"
+                              "fog { fog_type 2 fog_offset " + std::to_string(v.offset) + " fog_alt " +
+                              std::to_string(v.alt) + " distance 2 color rgb <.2,.4,.8> }");
+        const Bvh bvh(l.scene.objects);
+        const RenderSettings rs;
+        TraceContext ctx;
+        const Vec3 got = Tracer(l.scene, bvh, rs).tracePrimary(Ray{{0, 3, -3}, normalize(Vec3{0, -3, 3})}, ctx);
+        expectColor(got, v.want);
+    }
+}
+
+TEST(PovFog, TurbulenceIsNotedAndDistanceZeroIsNoFog) {
+    const Loaded t = load(kWallAmbient + "fog { distance 2 color rgb <.2,.4,.8> turbulence 0.5 }");
+    ASSERT_EQ(t.warnings.size(), 1u);
+    EXPECT_EQ(t.warnings[0], "scene.pov:4:1: warning: not rendered yet: fog turbulence (the fog is drawn smooth)");
+    expectColor(seen(t.scene, kCx, kCy), {0.26693, 0.44462, 0.77768});
+    // Measured: distance 0 leaves the wall as it is.
+    expectColor(seen(load(kWallAmbient + "fog { distance 0 color rgb 1 }").scene, kCx, kCy), {0.5, 0.6, 0.7});
+}
+
+TEST(PovLooksLike, TheObjectSitsAtTheLightAndCastsNoShadow) {
+    // 8×8 render of a 1×1 view: pixel (6,3) at (.3125, .0625) sees the red sphere around the light
+    // at (.5, 0, −1); pixel (5,3) at (.1875, .0625) the floor, lit unshadowed: .95280.
+    const Loaded l = load(kFloor +
+                          "light_source { <0.5,0,-1>, rgb 1 looks_like { sphere { 0, 0.2 pigment { rgb <1,0,0> } "
+                          "finish { ambient 1 diffuse 0 } } } }\n");
+    EXPECT_TRUE(l.warnings.empty()) << l.warnings[0];
+    expectColor(seen(l.scene, 0.3125, 0.0625), {1, 0, 0});
+    expectColor(seen(l.scene, 0.1875, 0.0625), Vec3(0.95280));
+    expectColor(seen(l.scene, -0.3125, 0.3125), Vec3(0.75424));  // pixel (1,1)
+}
+
+TEST(PovLights, UnrenderedLightOptionsKeepTheirNotes) {
+    const Loaded l = load("#declare P = sphere { 0, 1 }\n" + kFloor +
+                          "light_source { <0,0,-1>, rgb 1 projected_through { P } }\n");
+    ASSERT_EQ(l.warnings.size(), 1u);
+    EXPECT_EQ(l.warnings[0], "scene.pov:5:32: warning: not rendered yet: projected_through");
+}
+
+}  // namespace
+}  // namespace rays
