@@ -123,6 +123,12 @@ TEST(SdlArrays, ArraysOfArraysAndFreshArraysKeepPovRaysCopyRules) {
     EXPECT_EQ(dbg("#declare A = array[2] {1, 2}; #declare B = array[1]; #declare B[0] = A; #declare B[0][1] = 8;"
                   "#debug concat(str(A[1],0,0), str(B[0][1],0,0)) #if (defined(B[0][1])) #debug \"d\" #end"),
               "28d");
+    // An element of an inner array starts the expression after it (POV-Ray 3.7.0: 3, 7, 11, 5,7,9).
+    const std::string g = "#declare G = array[2] { array[2] {1, 2}, array[2] {3, 4} };"
+                          "#declare H = array[1] { array[2] {<1,2,3>, <4,5,6>} };";
+    EXPECT_EQ(dbg(g + "#declare A = G[0][1] + 1; #declare B = G[1][0] * 2 + G[0][0]; #declare C = H[0][1].y * 2 + 1;"
+                      "#declare D = H[0][0] + H[0][1]; #debug concat(str(A,0,0), str(B,0,0), str(C,0,0), vstr(3,D,\",\",0,0))"),
+              "37115,7,9");
     EXPECT_NE(err("#declare A = array[2] {1, 2}; #declare G = array[1] {A}; #declare G[0][2] = 1;").find("out of range 0..1"),
               std::string::npos);
 }

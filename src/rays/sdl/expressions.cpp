@@ -205,7 +205,12 @@ Num Interpreter::fullNum() {
 // Binary operators by precedence, left-associative (one loop instead of a function per level):
 // 1 `&` `|` and 2 the comparisons (full expressions only: inside parentheses), 3 `+` `-`, 4 `*` `/`.
 Num Interpreter::binary(int minPrec, bool full, bool colorCtx) {
-    Num a = full && minPrec <= 2 && atStringStart() ? stringComparison() : unary(colorCtx);
+    return binaryAfter(full && minPrec <= 2 && atStringStart() ? stringComparison() : unary(colorCtx), minPrec, full,
+                       colorCtx);
+}
+
+// The operators after a first operand already read (a), as binary's loop.
+Num Interpreter::binaryAfter(Num a, int minPrec, bool full, bool colorCtx) {
     for (;;) {
         const Token& t = tok();
         if (t.kind != Tk::Symbol) return a;

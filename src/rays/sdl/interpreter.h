@@ -302,6 +302,7 @@ private:
     Num stringComparison();
     Num logical() { return binary(1, true, false); }
     Num additive(bool colorCtx) { return binary(3, false, colorCtx); }
+    Num binaryAfter(Num a, int minPrec, bool full, bool colorCtx);
     Num unary(bool colorCtx);
     Num factor(bool colorCtx);
     Num postfix(Num v);

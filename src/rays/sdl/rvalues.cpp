@@ -51,7 +51,15 @@ Value Interpreter::parseRValue() {
                 if (isNumericType(e)) return parseNumeric(e == VType::Color);
                 if (e == VType::String) return Value::string(parseString());
                 next();
-                return arrayElement(arr, false, nullptr);
+                const Value el = arrayElement(arr, false, nullptr);
+                if (!el.isNumeric()) return el;
+                // A number of an array of arrays (G[0][1]) starts the expression that follows it,
+                // as an identifier would: G[0][1] + 1.
+                const bool color = el.type == VType::Color;
+                const Num first = postfix(color ? colorComponents(Num::of(el)) : Num::of(el));
+                Num v = binaryAfter(first, 3, false, color);
+                if (color && v.type == VType::Color) v = colorComponents(v);
+                return v.value();
             }
             case VType::Function: case VType::Spline: {
                 if (peekRawSymAfterName('(')) return parseNumeric(false);
