@@ -101,7 +101,7 @@ void SceneBuilder::updateDefaults(const ParsedScene::Top& top) {
         added.kind = Kw::texture;
         added.entries.assign(top.defaults->begin() + std::ptrdiff_t(defaultsApplied_),
                              top.defaults->begin() + std::ptrdiff_t(top.defaultsCount));
-        applyTexture(added, defaultsLook_, notes_);
+        applyTexture(added, defaultsLook_, notes_, &pigments_);
         defaultsApplied_ = top.defaultsCount;
     }
     fallback_ = defaultsLook_;
@@ -267,6 +267,8 @@ Material SceneBuilder::material(const Appearance& look) {
     s.finish = look.finish;
     s.interior = look.interior;
     s.transmit = look.pigment.transmit;
+    s.pigment = pigmentRoot(look);
+    if (s.pigment >= 0) s.pigmentTransparent = scene_.pigments.mayLetLightThrough(look.pigmentNode);
     m.pov = int(scene_.povSurfaces.size());
     scene_.povSurfaces.push_back(s);
     return m;
@@ -305,9 +307,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (e.key == kMapEntry) continue;
         if (isTransformEntry(e)) {
             applyTransform(e, local);
+            if (look.set) applyTransform(e, look.pigmentToObject);  // transformations after the texture move it
             continue;
         }
-        if (applyAppearanceEntry(e, look, fallback_, notes_)) continue;
+        if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
         const Kw k = e.kw();
         if ((kind == Kw::union_ || kind == Kw::merge || kind == Kw::light_group || kind == Kw::difference ||
              kind == Kw::intersection) && isObjectKind(k)) {
@@ -329,6 +332,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     if (leftOut) return;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
+    if (look.set) look.pigmentToObject = parent * look.pigmentToObject;  // texture space → world
     const Appearance* own = look.set ? &look : inherited;
     switch (kind) {
         case Kw::union_: case Kw::merge: case Kw::light_group:

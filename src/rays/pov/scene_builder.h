@@ -37,11 +37,15 @@ private:
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look);
     void globalSettings(const Item& g);
     Material material(const Appearance& look);
+    /// The scene's pigment root for a look with a pattern (its texture space completed to world
+    /// space by SceneBuilder::addObject), or -1.
+    int pigmentRoot(const Appearance& look);
     /// Counts n more objects made at `at`; throws past maxObjects_.
     void countObjects(uint64_t n, const sdl::Loc& at);
 
     NotRendered& notes_;
     Scene scene_;
+    PigmentCompiler pigments_{scene_.pigments, notes_};  ///< pigment patterns → scene_.pigments
     Appearance fallback_;      ///< the default texture of the item being added
     double version_ = 3.7;
     bool gammaSet_ = false;

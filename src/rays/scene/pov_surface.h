@@ -34,6 +34,10 @@ struct PovSurface {
     PovInterior interior;
     double transmit = 0;        ///< the pigment's transmit (its filter is Material::filter)
     bool doubleIlluminate = false;
+    /// The pigment pattern: a root of Scene::pigments, or -1 for the flat colour (Material::color,
+    /// Material::filter and transmit above; with a pattern those hold its mean colour).
+    int pigment = -1;
+    bool pigmentTransparent = false;  ///< some colour of the pattern filters or transmits
 };
 
 /// Scene-wide settings of POV-Ray scenes (global_settings, background).

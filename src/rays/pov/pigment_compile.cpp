@@ -1,0 +1,234 @@
+#include "rays/pov/pigment_compile.h"
+
+#include <cmath>
+#include <string>
+
+#include "rays/pattern/default_maps.h"
+#include "rays/pov/grammar.h"
+#include "rays/pov/specs.h"
+
+namespace rays::pov {
+
+using pattern::MapEntry;
+using pattern::PatternKind;
+using pattern::WaveType;
+using sdl::VType;
+
+namespace {
+
+constexpr int kMaxDepth = 64;
+
+// The pattern kinds Rays renders, from their keywords; false for the others.
+bool patternKind(Kw k, PatternKind& out) {
+    switch (k) {
+        case Kw::checker: out = PatternKind::Checker; return true;
+        case Kw::hexagon: out = PatternKind::Hexagon; return true;
+        case Kw::brick: out = PatternKind::Brick; return true;
+        case Kw::gradient: out = PatternKind::Gradient; return true;
+        case Kw::radial: out = PatternKind::Radial; return true;
+        case Kw::onion: out = PatternKind::Onion; return true;
+        case Kw::spherical: out = PatternKind::Spherical; return true;
+        case Kw::cylindrical: out = PatternKind::Cylindrical; return true;
+        case Kw::planar: out = PatternKind::Planar; return true;
+        case Kw::boxed: out = PatternKind::Boxed; return true;
+        case Kw::leopard: out = PatternKind::Leopard; return true;
+        case Kw::bozo: case Kw::spotted: case Kw::bumps: out = PatternKind::Bozo; return true;
+        case Kw::granite: out = PatternKind::Granite; return true;
+        case Kw::marble: out = PatternKind::Marble; return true;
+        case Kw::wood: out = PatternKind::Wood; return true;
+        case Kw::agate: out = PatternKind::Agate; return true;
+        case Kw::wrinkles: out = PatternKind::Wrinkles; return true;
+        case Kw::crackle: out = PatternKind::Crackle; return true;
+        case Kw::average: out = PatternKind::Average; return true;
+        default: return false;
+    }
+}
+
+pattern::Rgbft toPatternColor(const Value& v) {
+    const Rgbft c = toColor(v);
+    return {c.rgb, c.filter, c.transmit};
+}
+
+}  // namespace
+
+// What a pigment's entries have set so far.
+struct PigmentCompiler::State {
+    pattern::PigmentNode node;
+    bool pattern = false;      ///< a rendered pattern was given
+    bool unrendered = false;   ///< a pattern Rays does not render was given (the pigment stays flat)
+    bool mapSet = false;
+    std::vector<MapEntry> map;   ///< colour map or pigment map
+    std::vector<MapEntry> list;  ///< a block pattern's colours or pigments, in order
+    Transform transform;         ///< pattern space → the enclosing space
+    bool transformed = false;
+    bool waveSet = false;
+};
+
+int PigmentCompiler::compile(const Item& pigment) {
+    if (const auto it = done_.find(&pigment); it != done_.end()) return it->second;
+    State s;
+    read(pigment, s, 0);
+    const int n = s.pattern && !s.unrendered ? emit(s) : -1;
+    done_.emplace(&pigment, n);
+    return n;
+}
+
+// A pigment inside a map or list: always a node (a flat colour becomes a Solid node).
+int PigmentCompiler::nested(const Item& pigment, int depth) {
+    State s;
+    read(pigment, s, depth + 1);
+    if (s.unrendered) s.pattern = false;
+    return emit(s);
+}
+
+void PigmentCompiler::readColorMap(const Item& map, State& s, int depth) {
+    s.map.clear();
+    s.mapSet = true;
+    std::vector<const Item*> parts{&map};
+    // A map written as an identifier inside another map's braces: its entries come first.
+    for (const Entry& e : map.entries)
+        if (e.positional())
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && depth < kMaxDepth) readColorMap(v.item(), s, depth + 1);
+    for (const Entry& e : map.entries) {
+        if (e.key != kMapEntry || e.args.empty()) continue;
+        const double a = e.args[0].type == VType::Undefined ? 0 : toFloat(e.args[0]);
+        // Old style `[a b color C1 color C2]`: C1 at a, C2 at b.
+        if (e.args.size() >= 4 && e.args[1].type == VType::Float) {
+            s.map.push_back(MapEntry{a, toPatternColor(e.args[2]), -1});
+            s.map.push_back(MapEntry{toFloat(e.args[1]), toPatternColor(e.args[3]), -1});
+            continue;
+        }
+        if (e.args.size() >= 2) s.map.push_back(MapEntry{a, toPatternColor(e.args[1]), -1});
+    }
+}
+
+void PigmentCompiler::readPigmentMap(const Item& map, State& s, int depth) {
+    s.map.clear();
+    s.mapSet = true;
+    for (const Entry& e : map.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::pigment_map && depth < kMaxDepth)
+                    readPigmentMap(v.item(), s, depth + 1);
+            continue;
+        }
+        if (e.key != kMapEntry || e.args.size() < 2 || e.args[1].type != VType::Item) continue;
+        // An average's entries may leave their weight out: 1.
+        const double v = e.args[0].type == VType::Undefined ? 1 : toFloat(e.args[0]);
+        s.map.push_back(MapEntry{v, {}, nested(e.args[1].item(), depth)});
+    }
+}
+
+void PigmentCompiler::read(const Item& p, State& s, int depth) {
+    if (depth > kMaxDepth) return;
+    for (const Entry& e : p.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args) {
+                if (v.type == VType::Item) {
+                    const Kw k = v.item().kind;
+                    if (k == Kw::pigment) read(v.item(), s, depth + 1);  // the base pigment
+                    else if (k == Kw::color_map || k == Kw::colour_map) readColorMap(v.item(), s, depth);
+                    else if (k == Kw::pigment_map) readPigmentMap(v.item(), s, depth);
+                } else if (v.isNumeric()) {
+                    if (s.pattern || s.unrendered) {
+                        s.list.push_back(MapEntry{0, toPatternColor(v), -1});
+                    } else {
+                        s.node.kind = PatternKind::Solid;
+                        s.node.color = toPatternColor(v);
+                    }
+                }
+            }
+            continue;
+        }
+        if (e.key == kMapEntry) continue;
+        if (isTransformEntry(e)) {
+            Transform t;
+            applyTransform(e, t);
+            s.transform = t * s.transform;
+            s.transformed = true;
+            continue;
+        }
+        const Kw k = e.kw();
+        const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
+        PatternKind kind;
+        if (patternKind(k, kind)) {
+            s.pattern = true;
+            s.unrendered = false;
+            s.node.kind = kind;
+            s.list.clear();
+            if (kind == PatternKind::Gradient) {
+                const Vec3 d = toVec3(e.args[0]);
+                s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
+            }
+            if (!s.waveSet)
+                s.node.wave.type = kind == PatternKind::Wood || kind == PatternKind::Marble ? WaveType::Triangle
+                                                                                            : WaveType::Ramp;
+            continue;
+        }
+        if (isPatternType(k) || k == Kw::image_map) {
+            s.unrendered = true;
+            s.pattern = false;
+            notes_.note(std::string("pigment pattern ") + std::string(sdl::keywordName(k)), e.loc,
+                        "(drawn in its mean colour)");
+            continue;
+        }
+        pattern::PatternParams& pp = s.node.params;
+        switch (k) {
+            case Kw::color_map: case Kw::colour_map: readColorMap(e.args[0].item(), s, depth); break;
+            case Kw::pigment_map: readPigmentMap(e.args[0].item(), s, depth); break;
+            case Kw::pigment: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
+            case Kw::turbulence: pp.turbulence.amount = toVec3(e.args[0]); break;
+            case Kw::octaves: pp.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
+            case Kw::omega: pp.turbulence.omega = num(0); break;
+            case Kw::lambda: pp.turbulence.lambda = num(0); break;
+            case Kw::frequency: s.node.wave.frequency = num(0); break;
+            case Kw::phase: s.node.wave.phase = num(0); break;
+            case Kw::ramp_wave: s.node.wave.type = WaveType::Ramp; s.waveSet = true; break;
+            case Kw::triangle_wave: s.node.wave.type = WaveType::Triangle; s.waveSet = true; break;
+            case Kw::sine_wave: s.node.wave.type = WaveType::Sine; s.waveSet = true; break;
+            case Kw::scallop_wave: s.node.wave.type = WaveType::Scallop; s.waveSet = true; break;
+            case Kw::cubic_wave: s.node.wave.type = WaveType::Cubic; s.waveSet = true; break;
+            case Kw::poly_wave:
+                s.node.wave.type = WaveType::Poly;
+                s.node.wave.exponent = e.args.empty() ? 1.0 : num(0);
+                s.waveSet = true;
+                break;
+            case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
+            case Kw::mortar: pp.mortar = num(0); break;
+            case Kw::agate_turb: pp.agateTurb = num(0); break;
+            case Kw::warp: notes_.note("warp", e.loc, "(the pattern is drawn unwarped)"); break;
+            default: break;
+        }
+    }
+}
+
+int PigmentCompiler::emit(State& s) {
+    pattern::PigmentNode node = s.node;
+    if (!s.pattern) {
+        node.kind = PatternKind::Solid;
+        node.mapCount = 0;
+    } else {
+        std::vector<MapEntry> entries;
+        if (pattern::isBlockPattern(node.kind)) {
+            // The list's colours or pigments replace the built-in ones from the first on.
+            entries = pattern::defaultMap(node.kind);
+            for (size_t i = 0; i < s.list.size() && i < entries.size(); ++i) entries[i] = s.list[i];
+        } else if (s.mapSet && !s.map.empty()) {
+            entries = s.map;
+        } else {
+            entries = pattern::defaultMap(node.kind);
+        }
+        node.mapBegin = int(table_.entries.size());
+        node.mapCount = int(entries.size());
+        table_.entries.insert(table_.entries.end(), entries.begin(), entries.end());
+        if (s.transformed && s.transform.determinant() != 0) {
+            node.transformed = true;
+            node.toPattern = s.transform.inverse();
+        }
+    }
+    table_.nodes.push_back(node);
+    return int(table_.nodes.size()) - 1;
+}
+
+}  // namespace rays::pov
