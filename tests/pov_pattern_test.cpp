@@ -6,7 +6,10 @@
 
 #include <string>
 
+#include "rays/accel/bvh.h"
 #include "rays/error.h"
+#include "rays/render/renderer.h"
+#include "rays/render/tracer.h"
 #include "rays/pattern/wave.h"
 #include "rays/pov/load_pov.h"
 
@@ -216,6 +219,58 @@ TEST(PovPattern, NoisePatternsStayInRangeAndRepeat) {
         EXPECT_LE(hi, 1) << p;
         EXPECT_GT(hi - lo, 0.2) << p;  // varies
     }
+}
+
+// The colour (working space) the POV-Ray tracer sees along a ray.
+Vec3 traceColor(const Scene& s, const Ray& ray) {
+    const Bvh bvh(s.objects);
+    const RenderSettings rs;
+    TraceContext ctx;
+    return Tracer(s, bvh, rs).tracePrimary(ray, ctx, nullptr, nullptr);
+}
+
+TEST(PovPatternRender, ACheckerPlaneShowsBothColoursWhereExpected) {
+    const Built b = build("plane { y, 0 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> scale 2 } "
+                          "finish { ambient 1 diffuse 0 } translate <0.5, 0, 0> }");
+    const Vec3 down{0, -1, 0};
+    // Squares 2 units wide, moved 0.5 along x: [0.5, 2.5) is the first colour, [2.5, 4.5) the second.
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{1, 5, 1}, down}) - Vec3{1, 0, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{3, 5, 1}, down}) - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{0, 5, 1}, down}) - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{1, 5, -1}, down}) - Vec3{0, 0, 1}), 0, 1e-9);
+    // A whole render: both colours appear, in about equal shares.
+    const Built view = build("camera { location <0, 10, 0> look_at 0 angle 60 }\n"
+                             "plane { y, 0 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> } finish { ambient 1 diffuse 0 } }");
+    RenderSettings rs;
+    rs.width = 32;
+    rs.height = 24;
+    rs.threads = 1;
+    const Bvh bvh(view.scene.objects);
+    TraceStats stats;
+    const ImageF img = render(view.scene, bvh, rs, stats);
+    int red = 0, blue = 0;
+    for (int y = 0; y < rs.height; ++y)
+        for (int x = 0; x < rs.width; ++x) {
+            const Vec3 c = img.at(x, y);
+            red += c.x > 0.9 && c.z < 0.1;
+            blue += c.z > 0.9 && c.x < 0.1;
+        }
+    EXPECT_GT(red, 200);
+    EXPECT_GT(blue, 200);
+}
+
+TEST(PovPatternRender, SkySphereIsLookedUpByDirection) {
+    const Built b = build("background { rgb <0, 1, 0> }\n"
+                          "sky_sphere { pigment { gradient y color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } "
+                          "scale 2 translate -1 } rotate z*90 }");
+    EXPECT_TRUE(b.warnings.empty());
+    // Turned 90° about z: +y of the pigment looks along −x.
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{5, 5, 5}, {-1, 0, 0}}) - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{5, 5, 5}, {1, 0, 0}}) - Vec3{1, 0, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{5, 5, 5}, {0, 0, 2}}) - Vec3{0.5, 0, 0.5}), 0, 1e-9);
+    // Layers: a transmitting upper layer lets the one below through; emission scales the sky.
+    const Built l = build("sky_sphere { pigment { rgb <1, 0, 0> } pigment { rgbt <0, 0, 1, 0.25> } emission 2 }");
+    EXPECT_NEAR(length(traceColor(l.scene, Ray{{0, 0, 0}, {0, 1, 0}}) - Vec3{0.5, 0, 1.5}), 0, 1e-9);
 }
 
 }  // namespace

@@ -72,13 +72,7 @@ void SceneBuilder::add(const ParsedScene::Top& top) {
             backgroundSet_ = true;
             return;
         }
-        case Kw::sky_sphere: {
-            Rgbft c{Vec3(0.5), 0, 0};
-            if (const Entry* pig = findEntry(item, Kw::pigment)) applyPigment(pig->args[0].item(), c, notes_);
-            notes_.note("sky_sphere", item.loc, "(drawn as a background of its mean colour)");
-            if (!backgroundSet_) scene_.pov.background = c.rgb;
-            return;
-        }
+        case Kw::sky_sphere: return addSkySphere(item);
         case Kw::fog: return notes_.note("fog", item.loc);
         case Kw::rainbow: return notes_.note("rainbow", item.loc);
         case Kw::media: return notes_.note("atmospheric media", item.loc);

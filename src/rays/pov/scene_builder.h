@@ -40,6 +40,8 @@ private:
     /// The scene's pigment root for a look with a pattern (its texture space completed to world
     /// space by SceneBuilder::addObject), or -1.
     int pigmentRoot(const Appearance& look);
+    /// sky_sphere: its pigments (layers) and transformations → PovGlobals' sky roots.
+    void addSkySphere(const Item& sky);
     /// Counts n more objects made at `at`; throws past maxObjects_.
     void countObjects(uint64_t n, const sdl::Loc& at);
 

@@ -68,7 +68,7 @@ Tracer::Result Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& c
         const PovInterior& in = povSurfaceOf(scene_.objects[size_t(r.interior)].material).interior;
         if (povFades(in)) fade = povFade(in, res.t);
     }
-    res.color = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : scene_.pov.background);
+    res.color = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : povSky(scene_, ray.dir));
     return res;
 }
 

@@ -53,6 +53,10 @@ struct PovGlobals {
     int maxTraceLevel = 5;
     double adcBailout = 1.0 / 255.0;
     Vec3 background{0, 0, 0};
+    /// sky_sphere: its pigments, bottom layer first, as roots [skyFirst, skyFirst + skyCount) of
+    /// Scene::pigments looked up by ray direction; none: the background colour.
+    int skyFirst = -1, skyCount = 0;
+    Vec3 skyEmission{1, 1, 1};  ///< sky_sphere's emission: the sky's colour is multiplied by it
 };
 
 }  // namespace rays
