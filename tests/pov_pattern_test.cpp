@@ -4,6 +4,7 @@
 // `#debug str(F(x, y, z).red, 0, 6)` at the points below.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "rays/accel/bvh.h"
@@ -174,6 +175,18 @@ TEST(PovPattern, PigmentMapsAndAverageNestPigments) {
     EXPECT_EQ(list.at({1.25, 0.5, 0.5}).rgb, (Vec3{1, 0, 0}));
 }
 
+TEST(PovPattern, LayeredTexturesMixTheirPatternsPointByPoint) {
+    // A gradient from clear to red over a white-and-black checker, the checker scaled on its own.
+    const Built b = build("sphere { 0, 1 texture { pigment { checker rgb 1, rgb 0 } scale 2 }\n"
+                          "  texture { pigment { gradient x color_map { [0 rgbt <1, 0, 0, 1>] [1 rgb <1, 0, 0>] } } } }");
+    const pattern::PigmentTable& t = b.scene.pigments;
+    const int root = b.scene.povSurfaces.at(0).pigment;
+    ASSERT_GE(root, 0);
+    // x = 0.25: the layer is red with transmit 0.75 over white; x = 2.25: over black (scaled checker).
+    EXPECT_NEAR(length(t.atRoot(root, {0.25, 0.5, 0.5}).rgb - Vec3{1, 0.75, 0.75}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(root, {2.25, 0.5, 0.5}).rgb - Vec3{0.25, 0, 0}), 0, 1e-9);
+}
+
 TEST(PovPattern, TransformationsMoveThePatternInFileOrder) {
     // Inside the pigment (POV-Ray: scale 2 rotate y*45 translate x; values printed by POV-Ray).
     const Probe t = pigment("checker rgb 1, rgb 0 scale 2 rotate y*45 translate <1, 0, 0>");
@@ -271,6 +284,32 @@ TEST(PovPatternRender, SkySphereIsLookedUpByDirection) {
     // Layers: a transmitting upper layer lets the one below through; emission scales the sky.
     const Built l = build("sky_sphere { pigment { rgb <1, 0, 0> } pigment { rgbt <0, 0, 1, 0.25> } emission 2 }");
     EXPECT_NEAR(length(traceColor(l.scene, Ray{{0, 0, 0}, {0, 1, 0}}) - Vec3{0.5, 0, 1.5}), 0, 1e-9);
+}
+
+// Rays' noise is not POV-Ray's, so noise patterns cannot match point for point; their mean and
+// spread over space can. POV-Ray 3.7's figures over the same 400 points (printed as above).
+TEST(PovPattern, NoisePatternsSpreadAsPovRaysDo) {
+    struct Stat {
+        const char* body;
+        double mean, sd;
+    };
+    const Stat stats[] = {{"bozo", 0.454, 0.133},       {"granite", 0.414, 0.162},
+                          {"wrinkles", 0.451, 0.144},   {"agate", 0.494, 0.346},
+                          {"crackle", 0.180, 0.144},    {"marble turbulence 1", 0.489, 0.297},
+                          {"wood turbulence 0.5", 0.486, 0.280}};
+    for (const Stat& st : stats) {
+        const Probe pr = pigment(std::string(st.body) + kGrey);
+        double sum = 0, sum2 = 0;
+        const int n = 400;
+        for (int i = 0; i < n; ++i) {
+            const double v = pr.at({0.5 + 0.0213 * i, 0.0731 * i, -0.0517 * i}).rgb.x;
+            sum += v;
+            sum2 += v * v;
+        }
+        const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+        EXPECT_NEAR(mean, st.mean, 0.07) << st.body;
+        EXPECT_NEAR(sd, st.sd, 0.04) << st.body;
+    }
 }
 
 }  // namespace

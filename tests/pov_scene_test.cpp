@@ -155,7 +155,7 @@ TEST(PovObjects, TexturesWrittenInARowAreOneLayeredTexture) {
     ASSERT_EQ(b.error, "");
     // One note for the layers, none for "texture at the top level".
     ASSERT_EQ(b.warnings.size(), 1u);
-    EXPECT_EQ(b.warnings[0], "scene.pov:2:3: warning: not rendered yet: layered texture (layers mixed by their transparency)");
+    EXPECT_EQ(b.warnings[0], "scene.pov:2:3: warning: not rendered yet: layered texture (the layers' pigments mixed, lit with one finish)");
     ASSERT_EQ(b.scene.objects.size(), 2u);
     // Half-transmitting red over white: half red, half the white below.
     EXPECT_TRUE(near(b.scene.objects[0].material.color, {1, 0.5, 0.5})) << b.scene.objects[0].material.color.y;

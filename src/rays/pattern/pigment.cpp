@@ -1,5 +1,7 @@
 #include "rays/pattern/pigment.h"
 
+#include <algorithm>
+
 namespace rays::pattern {
 
 Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
@@ -14,6 +16,15 @@ Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
     if (isBlockPattern(node.kind)) {
         const int i = blockIndex(node.kind, node.params, p);
         return entry(i < node.mapCount ? i : node.mapCount - 1);
+    }
+    if (node.kind == PatternKind::Layered) {
+        // The upper layer lets the lower through where it filters (tinted by its colour) or
+        // transmits (POV-Ray 3.7 reference, "Layered Textures").
+        const Rgbft below = entry(0), top = entry(1);
+        const double f = std::clamp(top.filter, 0.0, 1.0), t = std::clamp(top.transmit, 0.0, 1.0);
+        const double through = std::min(1.0, f + t);
+        return {top.rgb * (1 - through) + below.rgb * (Vec3(t) + f * top.rgb), below.filter * through,
+                below.transmit * through};
     }
     if (node.kind == PatternKind::Average) {
         Rgbft sum;

@@ -194,12 +194,14 @@ namespace {
 
 // A layer over the texture below it (POV-Ray 3.7 reference, "Layered Textures"): the lower texture
 // shows through the layer's pigment where it filters (tinted by the layer's colour) or transmits.
-// With flat colours that is a mix of the two colours, light passing only where both let it; the
-// finish is the layer's where it is mostly opaque. Lighting each layer apart is not rendered yet.
+// The pigments are mixed point by point (a Layered pigment node; the flat colour is the mix of the
+// mean colours), light passing only where both let it; the finish is the layer's where it is
+// mostly opaque. Lighting each layer with its own finish is not rendered yet.
 void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
-    notes.note("layered texture", layer.loc, "(layers mixed by their transparency)");
+    notes.note("layered texture", layer.loc, "(the layers' pigments mixed, lit with one finish)");
     const Appearance below = a;
     applyTexture(layer, a, notes, pigments);
+    const Appearance top = a;
     const double f = std::clamp(a.pigment.filter, 0.0, 1.0);
     const double t = std::clamp(a.pigment.transmit, 0.0, 1.0);
     const double through = std::min(1.0, f + t);
@@ -207,17 +209,11 @@ void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCom
     a.pigment.filter = below.pigment.filter * through;
     a.pigment.transmit = below.pigment.transmit * through;
     if (through >= 0.5) a.finish = below.finish;
-    // Patterns: the upper layer's when it hides the lower one everywhere, else the lower's when
-    // the upper is a flat colour; otherwise the mixed mean colour.
-    const bool upperOpaque =
-        a.pigmentNode >= 0 ? !pigments->table().mayLetLightThrough(a.pigmentNode) : through == 0;
-    if (!upperOpaque) {
-        if (a.pigmentNode >= 0 || below.pigmentNode < 0) {
-            a.pigmentNode = -1;
-        } else {
-            a.pigmentNode = below.pigmentNode;
-            a.pigmentToObject = below.pigmentToObject;
-        }
+    // Patterns: the layers are mixed point by point.
+    if (pigments && (a.pigmentNode >= 0 || below.pigmentNode >= 0)) {
+        a.pigmentNode = pigments->layered({below.pigmentNode, below.pigment, below.pigmentToObject},
+                                          {top.pigmentNode, top.pigment, top.pigmentToObject});
+        a.pigmentToObject = Transform{};
     }
 }
 

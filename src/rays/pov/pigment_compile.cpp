@@ -203,6 +203,37 @@ void PigmentCompiler::read(const Item& p, State& s, int depth) {
     }
 }
 
+// A node for p in the enclosing space: a Solid node for a flat colour, the node itself when it is
+// not moved, else a one-entry average that moves the point first.
+int PigmentCompiler::placed(const Placed& p) {
+    pattern::PigmentNode n;
+    if (p.node < 0) {
+        n.color = {p.flat.rgb, p.flat.filter, p.flat.transmit};
+    } else {
+        if (p.toEnclosing.isIdentity()) return p.node;
+        n.kind = PatternKind::Average;
+        n.transformed = p.toEnclosing.determinant() != 0;
+        if (n.transformed) n.toPattern = p.toEnclosing.inverse();
+        n.mapBegin = int(table_.entries.size());
+        n.mapCount = 1;
+        table_.entries.push_back(MapEntry{1, {}, p.node});
+    }
+    table_.nodes.push_back(n);
+    return int(table_.nodes.size()) - 1;
+}
+
+int PigmentCompiler::layered(const Placed& below, const Placed& top) {
+    const int b = placed(below), t = placed(top);
+    pattern::PigmentNode n;
+    n.kind = PatternKind::Layered;
+    n.mapBegin = int(table_.entries.size());
+    n.mapCount = 2;
+    table_.entries.push_back(MapEntry{0, {}, b});
+    table_.entries.push_back(MapEntry{1, {}, t});
+    table_.nodes.push_back(n);
+    return int(table_.nodes.size()) - 1;
+}
+
 int PigmentCompiler::emit(State& s) {
     pattern::PigmentNode node = s.node;
     if (!s.pattern) {

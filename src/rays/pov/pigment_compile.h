@@ -18,6 +18,15 @@ public:
     /// pattern, or with only patterns Rays does not render: those are noted).
     int compile(const Item& pigment);
     const pattern::PigmentTable& table() const { return table_; }
+    /// A pigment seen through a transformation (its texture space → the enclosing one); node -1
+    /// stands for the flat colour.
+    struct Placed {
+        int node = -1;
+        Rgbft flat;
+        Transform toEnclosing;
+    };
+    /// A node drawing texture layer `top` over `below`, both in the enclosing space.
+    int layered(const Placed& below, const Placed& top);
 
 private:
     struct State;
@@ -26,6 +35,7 @@ private:
     void readPigmentMap(const Item& map, State& s, int depth);
     int emit(State& s);
     int nested(const Item& pigment, int depth);
+    int placed(const Placed& p);
 
     pattern::PigmentTable& table_;
     NotRendered& notes_;
