@@ -187,6 +187,25 @@ TEST(PovPattern, LayeredTexturesMixTheirPatternsPointByPoint) {
     EXPECT_NEAR(length(t.atRoot(root, {2.25, 0.5, 0.5}).rgb - Vec3{0.25, 0, 0}), 0, 1e-9);
 }
 
+TEST(PovPattern, PatternedTexturesDrawTheirTexturesPigments) {
+    // The texture's transformations move the pattern and the textures in it.
+    const Built b = build("sphere { 0, 1 texture { checker texture { pigment { rgb <1, 0, 0> } finish { ambient 0.7 } }\n"
+                          "  texture { pigment { gradient x } } scale 2 } }\n"
+                          "sphere { 0, 1 texture { gradient x texture_map { [0.25 pigment { rgb <0, 0, 1> }] "
+                          "[0.75 pigment { rgb <1, 1, 0> }] } } }");
+    ASSERT_EQ(b.scene.objects.size(), 2u);
+    const pattern::PigmentTable& t = b.scene.pigments;
+    const PovSurface& s0 = b.scene.povSurfaces.at(size_t(b.scene.objects[0].material.pov));
+    ASSERT_GE(s0.pigment, 0);
+    EXPECT_NEAR(length(t.atRoot(s0.pigment, {0.5, 0.5, 0.5}).rgb - Vec3{1, 0, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s0.pigment, {2.5, 0.5, 0.5}).rgb - Vec3(0.25)), 0, 1e-9);
+    EXPECT_DOUBLE_EQ(s0.finish.ambient.x, 0.7);  // the first texture's finish
+    const PovSurface& s1 = b.scene.povSurfaces.at(size_t(b.scene.objects[1].material.pov));
+    ASSERT_GE(s1.pigment, 0);
+    EXPECT_NEAR(length(t.atRoot(s1.pigment, {0.5, 0, 0}).rgb - Vec3{0.5, 0.5, 0.5}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s1.pigment, {0.1, 0, 0}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
+}
+
 TEST(PovPattern, TransformationsMoveThePatternInFileOrder) {
     // Inside the pigment (POV-Ray: scale 2 rotate y*45 translate x; values printed by POV-Ray).
     const Probe t = pigment("checker rgb 1, rgb 0 scale 2 rotate y*45 translate <1, 0, 0>");

@@ -219,8 +219,74 @@ void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCom
 
 }  // namespace
 
+namespace {
+
+// A patterned texture (POV-Ray 3.7 reference, "Patterned Textures", "Texture Maps"): the pattern
+// chooses among whole textures; Rays draws their pigments by the pattern and lights them with the
+// first texture's finish. False when the texture is not one (or its pattern is not rendered).
+bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler& pigments) {
+    const Entry* patternAt = nullptr;
+    for (const Entry& e : t.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::texture) return false;  // a base texture
+            continue;
+        }
+        if (e.key != kMapEntry && isPatternKeyword(e.kw())) patternAt = &e;
+    }
+    if (!patternAt) return false;
+    std::vector<PigmentCompiler::Placed> entries;
+    std::vector<double> values;
+    std::vector<Appearance> looks;
+    auto addTexture = [&](const Item& sub, double value) {
+        Appearance look = a;
+        look.pigmentNode = -1;
+        look.pigmentToObject = Transform{};
+        applyTexture(sub, look, notes, &pigments);
+        entries.push_back({look.pigmentNode, look.pigment, look.pigmentToObject});
+        values.push_back(value);
+        looks.push_back(look);
+    };
+    for (const Entry& e : t.entries) {
+        if (e.positional() || e.key == kMapEntry) continue;
+        if (e.kw() == Kw::texture) {
+            // Textures written in a row arrive as one layered item (grammar.cpp); in a pattern's
+            // list they are its entries.
+            const Item& row = e.args[0].item();
+            const bool isRow = row.entries.size() > 1 && std::all_of(row.entries.begin(), row.entries.end(), [](const Entry& r) {
+                return r.positional() && r.args.size() == 1 && r.args[0].type == VType::Item &&
+                       r.args[0].item().kind == Kw::texture;
+            });
+            if (!isRow) addTexture(row, 0);
+            else
+                for (const Entry& r : row.entries) addTexture(r.args[0].item(), 0);
+        }
+        if (e.kw() == Kw::texture_map)
+            for (const Entry& me : e.args[0].item().entries)
+                if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item)
+                    addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 0 : toFloat(me.args[0]));
+    }
+    const int node = pigments.patternedTexture(t, entries, values);
+    if (node < 0) return false;
+    notes.note("texture pattern", patternAt->loc, "(the textures' pigments follow the pattern, lit with one finish)");
+    ColorMean mean;
+    for (const Appearance& l : looks) mean.add(l.pigment);
+    const PovInterior interior = a.interior;
+    const bool interiorSet = a.interiorSet;
+    a = looks[0];
+    a.interior = interior;
+    a.interiorSet = interiorSet;
+    a.pigment = mean.mean();
+    a.pigmentNode = node;
+    a.pigmentToObject = Transform{};
+    return true;
+}
+
+}  // namespace
+
 void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
     a.set = true;
+    if (pigments && applyPatternedTexture(t, a, notes, *pigments)) return;
     bool layered = false;  // a texture item applied already: the next is a layer over it
     for (const Entry& e : t.entries) {
         if (e.positional()) {

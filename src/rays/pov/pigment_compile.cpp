@@ -62,6 +62,7 @@ struct PigmentCompiler::State {
     Transform transform;         ///< pattern space → the enclosing space
     bool transformed = false;
     bool waveSet = false;
+    const char* what = "pigment";  ///< for notes: "pigment pattern X" or "texture pattern X"
 };
 
 int PigmentCompiler::compile(const Item& pigment) {
@@ -84,7 +85,6 @@ int PigmentCompiler::nested(const Item& pigment, int depth) {
 void PigmentCompiler::readColorMap(const Item& map, State& s, int depth) {
     s.map.clear();
     s.mapSet = true;
-    std::vector<const Item*> parts{&map};
     // A map written as an identifier inside another map's braces: its entries come first.
     for (const Entry& e : map.entries)
         if (e.positional())
@@ -122,85 +122,106 @@ void PigmentCompiler::readPigmentMap(const Item& map, State& s, int depth) {
 
 void PigmentCompiler::read(const Item& p, State& s, int depth) {
     if (depth > kMaxDepth) return;
-    for (const Entry& e : p.entries) {
-        if (e.positional()) {
-            for (const Value& v : e.args) {
-                if (v.type == VType::Item) {
-                    const Kw k = v.item().kind;
-                    if (k == Kw::pigment) read(v.item(), s, depth + 1);  // the base pigment
-                    else if (k == Kw::color_map || k == Kw::colour_map) readColorMap(v.item(), s, depth);
-                    else if (k == Kw::pigment_map) readPigmentMap(v.item(), s, depth);
-                } else if (v.isNumeric()) {
-                    if (s.pattern || s.unrendered) {
-                        s.list.push_back(MapEntry{0, toPatternColor(v), -1});
-                    } else {
-                        s.node.kind = PatternKind::Solid;
-                        s.node.color = toPatternColor(v);
-                    }
+    for (const Entry& e : p.entries) readEntry(e, s, depth);
+}
+
+void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
+    if (e.positional()) {
+        for (const Value& v : e.args) {
+            if (v.type == VType::Item) {
+                const Kw k = v.item().kind;
+                if (k == Kw::pigment) read(v.item(), s, depth + 1);  // the base pigment
+                else if (k == Kw::color_map || k == Kw::colour_map) readColorMap(v.item(), s, depth);
+                else if (k == Kw::pigment_map) readPigmentMap(v.item(), s, depth);
+            } else if (v.isNumeric()) {
+                if (s.pattern || s.unrendered) {
+                    s.list.push_back(MapEntry{0, toPatternColor(v), -1});
+                } else {
+                    s.node.kind = PatternKind::Solid;
+                    s.node.color = toPatternColor(v);
                 }
             }
-            continue;
         }
-        if (e.key == kMapEntry) continue;
-        if (isTransformEntry(e)) {
-            Transform t;
-            applyTransform(e, t);
-            s.transform = t * s.transform;
-            s.transformed = true;
-            continue;
-        }
-        const Kw k = e.kw();
-        const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
-        PatternKind kind;
-        if (patternKind(k, kind)) {
-            s.pattern = true;
-            s.unrendered = false;
-            s.node.kind = kind;
-            s.list.clear();
-            if (kind == PatternKind::Gradient) {
-                const Vec3 d = toVec3(e.args[0]);
-                s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
-            }
-            if (!s.waveSet)
-                s.node.wave.type = kind == PatternKind::Wood || kind == PatternKind::Marble ? WaveType::Triangle
-                                                                                            : WaveType::Ramp;
-            continue;
-        }
-        if (isPatternType(k) || k == Kw::image_map) {
-            s.unrendered = true;
-            s.pattern = false;
-            notes_.note(std::string("pigment pattern ") + std::string(sdl::keywordName(k)), e.loc,
-                        "(drawn in its mean colour)");
-            continue;
-        }
-        pattern::PatternParams& pp = s.node.params;
-        switch (k) {
-            case Kw::color_map: case Kw::colour_map: readColorMap(e.args[0].item(), s, depth); break;
-            case Kw::pigment_map: readPigmentMap(e.args[0].item(), s, depth); break;
-            case Kw::pigment: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
-            case Kw::turbulence: pp.turbulence.amount = toVec3(e.args[0]); break;
-            case Kw::octaves: pp.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
-            case Kw::omega: pp.turbulence.omega = num(0); break;
-            case Kw::lambda: pp.turbulence.lambda = num(0); break;
-            case Kw::frequency: s.node.wave.frequency = num(0); break;
-            case Kw::phase: s.node.wave.phase = num(0); break;
-            case Kw::ramp_wave: s.node.wave.type = WaveType::Ramp; s.waveSet = true; break;
-            case Kw::triangle_wave: s.node.wave.type = WaveType::Triangle; s.waveSet = true; break;
-            case Kw::sine_wave: s.node.wave.type = WaveType::Sine; s.waveSet = true; break;
-            case Kw::scallop_wave: s.node.wave.type = WaveType::Scallop; s.waveSet = true; break;
-            case Kw::cubic_wave: s.node.wave.type = WaveType::Cubic; s.waveSet = true; break;
-            case Kw::poly_wave:
-                s.node.wave.type = WaveType::Poly;
-                s.node.wave.exponent = e.args.empty() ? 1.0 : num(0);
-                s.waveSet = true;
-                break;
-            case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
-            case Kw::mortar: pp.mortar = num(0); break;
-            case Kw::agate_turb: pp.agateTurb = num(0); break;
-            case Kw::warp: notes_.note("warp", e.loc, "(the pattern is drawn unwarped)"); break;
-            default: break;
-        }
+        return;
     }
+    if (e.key == kMapEntry) return;
+    if (isTransformEntry(e)) {
+        Transform t;
+        applyTransform(e, t);
+        s.transform = t * s.transform;
+        s.transformed = true;
+        return;
+    }
+    const Kw k = e.kw();
+    const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
+    PatternKind kind;
+    if (patternKind(k, kind)) {
+        s.pattern = true;
+        s.unrendered = false;
+        s.node.kind = kind;
+        s.list.clear();
+        if (kind == PatternKind::Gradient) {
+            const Vec3 d = toVec3(e.args[0]);
+            s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
+        }
+        if (!s.waveSet)
+            s.node.wave.type =
+                kind == PatternKind::Wood || kind == PatternKind::Marble ? WaveType::Triangle : WaveType::Ramp;
+        return;
+    }
+    if (isPatternType(k) || k == Kw::image_map) {
+        s.unrendered = true;
+        s.pattern = false;
+        notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)), e.loc,
+                    "(drawn in its mean colour)");
+        return;
+    }
+    pattern::PatternParams& pp = s.node.params;
+    switch (k) {
+        case Kw::color_map: case Kw::colour_map: readColorMap(e.args[0].item(), s, depth); break;
+        case Kw::pigment_map: readPigmentMap(e.args[0].item(), s, depth); break;
+        case Kw::pigment: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
+        case Kw::turbulence: pp.turbulence.amount = toVec3(e.args[0]); break;
+        case Kw::octaves: pp.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
+        case Kw::omega: pp.turbulence.omega = num(0); break;
+        case Kw::lambda: pp.turbulence.lambda = num(0); break;
+        case Kw::frequency: s.node.wave.frequency = num(0); break;
+        case Kw::phase: s.node.wave.phase = num(0); break;
+        case Kw::ramp_wave: s.node.wave.type = WaveType::Ramp; s.waveSet = true; break;
+        case Kw::triangle_wave: s.node.wave.type = WaveType::Triangle; s.waveSet = true; break;
+        case Kw::sine_wave: s.node.wave.type = WaveType::Sine; s.waveSet = true; break;
+        case Kw::scallop_wave: s.node.wave.type = WaveType::Scallop; s.waveSet = true; break;
+        case Kw::cubic_wave: s.node.wave.type = WaveType::Cubic; s.waveSet = true; break;
+        case Kw::poly_wave:
+            s.node.wave.type = WaveType::Poly;
+            s.node.wave.exponent = e.args.empty() ? 1.0 : num(0);
+            s.waveSet = true;
+            break;
+        case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
+        case Kw::mortar: pp.mortar = num(0); break;
+        case Kw::agate_turb: pp.agateTurb = num(0); break;
+        case Kw::warp: notes_.note("warp", e.loc, "(the pattern is drawn unwarped)"); break;
+        default: break;
+    }
+}
+
+int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Placed>& entries,
+                                      const std::vector<double>& values) {
+    State s;
+    s.what = "texture";
+    for (const Entry& e : texture.entries) {
+        if (e.positional() || e.key == kMapEntry) continue;
+        const Kw k = e.kw();
+        if (k == Kw::texture || k == Kw::texture_map || k == Kw::pigment || k == Kw::normal || k == Kw::finish) continue;
+        readEntry(e, s, 0);
+    }
+    if (!s.pattern || s.unrendered || entries.empty()) return -1;
+    std::vector<MapEntry> list;
+    for (size_t i = 0; i < entries.size(); ++i)
+        list.push_back(MapEntry{i < values.size() ? values[i] : 0.0, {}, placed(entries[i])});
+    if (pattern::isBlockPattern(s.node.kind)) s.list = list;
+    else s.map = list, s.mapSet = true;
+    return emit(s);
 }
 
 // A node for p in the enclosing space: a Solid node for a flat colour, the node itself when it is

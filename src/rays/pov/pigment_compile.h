@@ -27,10 +27,15 @@ public:
     };
     /// A node drawing texture layer `top` over `below`, both in the enclosing space.
     int layered(const Placed& below, const Placed& top);
+    /// A patterned texture (`texture { checker texture { A } texture { B } }`, `texture_map`) as
+    /// a pigment: the texture's pattern and modifiers choosing among the textures' pigments
+    /// (entries, at `values` in a map); -1 when the pattern is not rendered (noted).
+    int patternedTexture(const Item& texture, const std::vector<Placed>& entries, const std::vector<double>& values);
 
 private:
     struct State;
     void read(const Item& pigment, State& s, int depth);
+    void readEntry(const Entry& e, State& s, int depth);
     void readColorMap(const Item& map, State& s, int depth);
     void readPigmentMap(const Item& map, State& s, int depth);
     int emit(State& s);
