@@ -206,6 +206,23 @@ TEST(PovPattern, PatternedTexturesDrawTheirTexturesPigments) {
     EXPECT_NEAR(length(t.atRoot(s1.pigment, {0.1, 0, 0}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
 }
 
+TEST(PovPattern, WarpsApplyInFileOrderWithTheTransformations) {
+    // Values printed by POV-Ray 3.7.
+    expectValues("gradient y warp { repeat 2*x offset <0, 0.25, 0> flip x }",
+                 {{{0.5, 0.1, 0}, 0.1}, {{2.5, 0.1, 0}, 0.35}, {{4.5, 0.1, 0}, 0.6}, {{-1.5, 0.1, 0}, 0.85}});
+    expectValues("gradient x warp { repeat 2*x offset <0, 0.25, 0> flip x }", {{{2.5, 0.1, 0}, 0.5}, {{3.2, 0, 0}, 0.8}});
+    expectValues("gradient x scale 0.5 warp { repeat x } scale 3",
+                 {{{0.5, 0, 0}, 0.333333}, {{2.9, 0, 0}, 0.933333}, {{3.5, 0, 0}, 0.333333}, {{4, 0, 0}, 0.666667}});
+    // A turbulence warp moves the point; unknown warps are noted.
+    const Probe turb = pigment(std::string("gradient x warp { turbulence <0.3, 0, 0> }") + kGrey);
+    int moved = 0;
+    for (int i = 0; i < 20; ++i) moved += std::fabs(turb.at({0.5, 0.37 * i, 0.11 * i}).rgb.x - 0.5) > 1e-3;
+    EXPECT_GT(moved, 15);
+    const Probe hole = pigment("gradient x warp { black_hole <0, 0, 0>, 1 }");
+    ASSERT_EQ(hole.b.warnings.size(), 1u);
+    EXPECT_NE(hole.b.warnings[0].find("warp black_hole"), std::string::npos);
+}
+
 TEST(PovPattern, TransformationsMoveThePatternInFileOrder) {
     // Inside the pigment (POV-Ray: scale 2 rotate y*45 translate x; values printed by POV-Ray).
     const Probe t = pigment("checker rgb 1, rgb 0 scale 2 rotate y*45 translate <1, 0, 0>");

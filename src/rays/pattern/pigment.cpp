@@ -7,7 +7,11 @@ namespace rays::pattern {
 Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
     const PigmentNode& node = nodes[size_t(n)];
     if (node.kind == PatternKind::Solid) return node.color;
-    if (node.transformed) p = node.toPattern.point(p);
+    if (node.warpCount > 0) {
+        for (int i = 0; i < node.warpCount; ++i) p = applyWarp(warps[size_t(node.warpBegin + i)], p);
+    } else if (node.transformed) {
+        p = node.toPattern.point(p);
+    }
     const MapEntry* map = entries.data() + node.mapBegin;
     // Entries that are pigments are evaluated at the point in this pigment's space (the outer
     // pigment's transformations move its map's pigments too).

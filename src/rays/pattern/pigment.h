@@ -9,6 +9,7 @@
 #include "rays/math/transform.h"
 #include "rays/pattern/color_map.h"
 #include "rays/pattern/pattern.h"
+#include "rays/pattern/warp.h"
 #include "rays/pattern/wave.h"
 
 namespace rays::pattern {
@@ -17,6 +18,7 @@ struct PigmentNode {
     PatternKind kind = PatternKind::Solid;
     bool transformed = false;
     Transform toPattern;  ///< the enclosing space → this pigment's pattern space (when transformed)
+    int warpBegin = 0, warpCount = 0;  ///< PigmentTable::warps replacing toPattern when there are warps
     PatternParams params;
     Wave wave;
     int mapBegin = 0, mapCount = 0;  ///< PigmentTable::entries: the map, or a block pattern's list
@@ -33,6 +35,7 @@ struct PigmentTable {
     std::vector<PigmentNode> nodes;
     std::vector<MapEntry> entries;
     std::vector<PigmentRoot> roots;
+    std::vector<WarpStep> warps;  ///< each node's steps, outermost (written last) first
 
     /// The colour of node n at p, p in the space enclosing the node.
     Rgbft evaluate(int n, Vec3 p) const;

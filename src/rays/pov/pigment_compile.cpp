@@ -61,6 +61,8 @@ struct PigmentCompiler::State {
     std::vector<MapEntry> list;  ///< a block pattern's colours or pigments, in order
     Transform transform;         ///< pattern space → the enclosing space
     bool transformed = false;
+    std::vector<pattern::WarpStep> steps;  ///< transformations and warps in file order (when warped)
+    bool warped = false;
     bool waveSet = false;
     const char* what = "pigment";  ///< for notes: "pigment pattern X" or "texture pattern X"
 };
@@ -150,6 +152,13 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         applyTransform(e, t);
         s.transform = t * s.transform;
         s.transformed = true;
+        if (!s.steps.empty() && s.steps.back().kind == pattern::WarpStep::Kind::Transform) {
+            s.steps.back().toInner = t * s.steps.back().toInner;  // forward until emit inverts it
+        } else {
+            pattern::WarpStep step;
+            step.toInner = t;
+            s.steps.push_back(step);
+        }
         return;
     }
     const Kw k = e.kw();
@@ -200,9 +209,48 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
         case Kw::mortar: pp.mortar = num(0); break;
         case Kw::agate_turb: pp.agateTurb = num(0); break;
-        case Kw::warp: notes_.note("warp", e.loc, "(the pattern is drawn unwarped)"); break;
+        case Kw::warp: readWarp(e.args[0].item(), s); break;
         default: break;
     }
+}
+
+// warp { turbulence ... } and warp { repeat ... }; the other warps are noted and left out.
+void PigmentCompiler::readWarp(const Item& warp, State& s) {
+    pattern::WarpStep step;
+    bool known = false;
+    for (const Entry& e : warp.entries) {
+        if (e.positional()) continue;
+        const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
+        switch (e.kw()) {
+            case Kw::turbulence:
+                step.kind = pattern::WarpStep::Kind::Turbulence;
+                step.turbulence.amount = toVec3(e.args[0]);
+                known = true;
+                break;
+            case Kw::octaves: step.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
+            case Kw::omega: step.turbulence.omega = num(0); break;
+            case Kw::lambda: step.turbulence.lambda = num(0); break;
+            case Kw::repeat: {
+                const Vec3 v = toVec3(e.args[0]);
+                step.kind = pattern::WarpStep::Kind::Repeat;
+                step.axis = v.x != 0 ? 0 : (v.y != 0 ? 1 : 2);
+                step.width = std::fabs(v[step.axis]);
+                known = true;
+                break;
+            }
+            case Kw::offset: step.offset = toVec3(e.args[0]); break;
+            case Kw::flip: step.flip = toVec3(e.args[0]); break;
+            case Kw::black_hole: case Kw::cylindrical: case Kw::spherical: case Kw::toroidal: case Kw::planar:
+            case Kw::cubic:
+                notes_.note(std::string("warp ") + std::string(sdl::keywordName(e.kw())), e.loc,
+                            "(the pattern is drawn without it)");
+                return;
+            default: break;
+        }
+    }
+    if (!known) return;
+    s.steps.push_back(step);
+    s.warped = true;
 }
 
 int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Placed>& entries,
@@ -274,7 +322,19 @@ int PigmentCompiler::emit(State& s) {
         node.mapBegin = int(table_.entries.size());
         node.mapCount = int(entries.size());
         table_.entries.insert(table_.entries.end(), entries.begin(), entries.end());
-        if (s.transformed && s.transform.determinant() != 0) {
+        if (s.warped) {
+            // The point meets the steps written last first; transformations are inverted.
+            node.warpBegin = int(table_.warps.size());
+            for (auto it = s.steps.rbegin(); it != s.steps.rend(); ++it) {
+                pattern::WarpStep step = *it;
+                if (step.kind == pattern::WarpStep::Kind::Transform) {
+                    if (step.toInner.determinant() == 0) continue;
+                    step.toInner = step.toInner.inverse();
+                }
+                table_.warps.push_back(step);
+            }
+            node.warpCount = int(table_.warps.size()) - node.warpBegin;
+        } else if (s.transformed && s.transform.determinant() != 0) {
             node.transformed = true;
             node.toPattern = s.transform.inverse();
         }

@@ -36,6 +36,7 @@ private:
     struct State;
     void read(const Item& pigment, State& s, int depth);
     void readEntry(const Entry& e, State& s, int depth);
+    void readWarp(const Item& warp, State& s);
     void readColorMap(const Item& map, State& s, int depth);
     void readPigmentMap(const Item& map, State& s, int depth);
     int emit(State& s);
