@@ -72,6 +72,14 @@ TEST(PovPattern, ContinuousPatternsMatchPovRay) {
     expectValues("marble", {{{0.3, 0.4, 0}, 0.6}, {{0.7, 0, 0}, 0.6}, {{1.2, 0, 0}, 0.39998}});
 }
 
+TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
+    // Values printed by POV-Ray 3.7.
+    expectValues("function { x * x + y }", {{{0.5, 0.1, 0}, 0.35}, {{0.9, 0.5, 0}, 0.31}, {{-0.3, -0.5, 0}, 0.59}});
+    expectValues("function { 1.2 } triangle_wave", {{{0, 0, 0}, 0.4}});
+    expectValues("function { 1 } phase 0.0001", {{{0, 0, 0}, 0.00009}});
+    expectValues("function { 2 } phase 0.0001", {{{0, 0, 0}, 0.0001}});
+}
+
 TEST(PovPattern, WaveTypesFrequencyAndPhaseMatchPovRay) {
     const Vec3 xs[] = {{0.1, 0, 0}, {0.3, 0, 0}, {0.5, 0, 0}, {0.75, 0, 0}, {0.95, 0, 0}, {1, 0, 0}, {-0.25, 0, 0}};
     struct Row {

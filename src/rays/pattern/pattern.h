@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 
+#include "rays/fn/program.h"
 #include "rays/math/vec3.h"
 #include "rays/pattern/noise.h"
 
@@ -14,6 +15,7 @@ enum class PatternKind : uint8_t {
     Checker, Hexagon, Brick,  // block patterns
     Gradient, Radial, Onion, Spherical, Cylindrical, Planar, Boxed, Leopard,
     Bozo, Granite, Marble, Wood, Agate, Wrinkles, Crackle,
+    Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
     Average,  ///< the weighted mean of a pigment_map's pigments
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
 };
@@ -30,6 +32,7 @@ struct PatternParams {
     double mortar = 0.5;           ///< mortar
     double agateTurb = 1;          ///< agate_turb
     Turbulence turbulence;         ///< turbulence, octaves, omega, lambda
+    const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
 };
 
 /// The value of a continuous pattern at p (pattern space), turbulence included, before the wave.

@@ -4,6 +4,7 @@
 // other nodes of the same table. Evaluation is a switch over the node's kind: no virtual calls,
 // no allocation.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "rays/math/transform.h"
@@ -35,6 +36,7 @@ struct PigmentTable {
     std::vector<PigmentNode> nodes;
     std::vector<MapEntry> entries;
     std::vector<PigmentRoot> roots;
+    std::vector<std::shared_ptr<const fn::Program>> programs;  ///< function patterns' programs, kept alive
     std::vector<WarpStep> warps;  ///< each node's steps, outermost (written last) first
 
     /// The colour of node n at p, p in the space enclosing the node.

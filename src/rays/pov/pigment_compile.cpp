@@ -6,6 +6,7 @@
 #include "rays/pattern/default_maps.h"
 #include "rays/pov/grammar.h"
 #include "rays/pov/specs.h"
+#include "rays/sdl/function_value.h"
 
 namespace rays::pov {
 
@@ -40,6 +41,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::wrinkles: out = PatternKind::Wrinkles; return true;
         case Kw::crackle: out = PatternKind::Crackle; return true;
         case Kw::average: out = PatternKind::Average; return true;
+        case Kw::function: out = PatternKind::Function; return true;
         default: return false;
     }
 }
@@ -172,6 +174,18 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         if (kind == PatternKind::Gradient) {
             const Vec3 d = toVec3(e.args[0]);
             s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
+        }
+        if (kind == PatternKind::Function) {
+            const sdl::FunctionValue& f = e.args[0].fn();
+            if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0) {
+                s.pattern = false;
+                s.unrendered = true;
+                notes_.note(std::string(s.what) + " pattern function of a pattern or pigment", e.loc,
+                            "(drawn in its mean colour)");
+                return;
+            }
+            table_.programs.push_back(f.table->shared(f.index));
+            s.node.params.function = table_.programs.back().get();
         }
         if (!s.waveSet)
             s.node.wave.type =
