@@ -137,6 +137,11 @@ TEST(PovPattern, BuiltInMapsMatchPovRay) {
     EXPECT_NEAR(length(marble.at({0.45, 0, 0}).rgb - Vec3{0.9, 0.44, 0.44}), 0, 1e-9);
     EXPECT_NEAR(length(marble.at({0.95, 0, 0}).rgb), 0, 1e-9);
     EXPECT_NEAR(length(pigment("brick").at({7.9, 2.9, 4.4}).rgb - Vec3(0.5)), 0, 1e-9);  // mortar
+    // radial's colour wheel (cyan, yellow at 0.333, magenta at 0.666); gradient's black to white.
+    const Probe radial = pigment("radial");
+    EXPECT_NEAR(length(radial.at({1, 0, 0.3}).rgb - Vec3{0.138883, 0.861117, 1}), 0, 2e-6);
+    EXPECT_NEAR(length(radial.at({-1, 0, 0.2}).rgb - Vec3{1, 0.404155, 0.595845}), 0, 2e-6);
+    EXPECT_NEAR(length(pigment("gradient x").at({0.3, 0, 0}).rgb - Vec3(0.3)), 0, 1e-9);
     EXPECT_NEAR(length(pigment("brick").at({0.1, 0.1, 0.1}).rgb - Vec3{0.6, 0.15, 0.15}), 0, 1e-9);
 }
 

@@ -1,6 +1,6 @@
 // The colours a pattern uses when the pigment gives no map or list (POV-Ray 3.7 reference,
 // "Patterns": checker blue and green, hexagon blue, green and red, brick grey mortar and red
-// bricks, wood, marble, agate and bozo their own maps, the others black to white); the exact
+// bricks, radial a colour wheel, wood, marble, agate and bozo their own maps, the others black to white); the exact
 // entries were measured with POV-Ray 3.7.0.10.
 #pragma once
 #include <vector>
