@@ -46,6 +46,16 @@ bool patternKind(Kw k, PatternKind& out) {
     }
 }
 
+// True when the program or a function it calls calls a pattern or pigment function (those give
+// 0 outside the parse for now).
+bool callsPatternFunction(const fn::Program& p, int depth = 0) {
+    for (const fn::HostFunction& h : p.hosts)
+        if (sdl::isPatternStub(h)) return true;
+    for (const auto& c : p.callees)
+        if (c && depth < 64 && callsPatternFunction(*c, depth + 1)) return true;
+    return false;
+}
+
 pattern::Rgbft toPatternColor(const Value& v) {
     const Rgbft c = toColor(v);
     return {c.rgb, c.filter, c.transmit};
@@ -177,10 +187,11 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         }
         if (kind == PatternKind::Function) {
             const sdl::FunctionValue& f = e.args[0].fn();
-            if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0) {
+            if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0 ||
+                callsPatternFunction(f.table->program(f.index))) {
                 s.pattern = false;
                 s.unrendered = true;
-                notes_.note(std::string(s.what) + " pattern function of a pattern or pigment", e.loc,
+                notes_.note(std::string(s.what) + " pattern function calling a pattern or pigment function", e.loc,
                             "(drawn in its mean colour)");
                 return;
             }
