@@ -86,6 +86,19 @@ TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
     EXPECT_NE(b.warnings[0].find("pattern function calling a pattern or pigment function"), std::string::npos);
 }
 
+TEST(PovPattern, MandelMatchesPovRay) {
+    // Values printed by POV-Ray 3.7.
+    expectValues("mandel 25", {{{0, 0, 0}, 1}, {{1, 1, 0}, 0}, {{-2.5, 0, 0}, 0}, {{0.5, 0.5, 0}, 0.12},
+                               {{0.3, 0.6, 0}, 0.52}, {{-0.75, 0.2, 0}, 0.56}, {{0.38, 0.3, 0}, 0.68}});
+    expectValues("mandel 25 exterior 2, 0.5 interior 1, 2", {{{0.5, 0.5, 0}, 0.642568}, {{0.1, 0.1, 0}, 0.282843}});
+    expectValues("mandel 25 exponent 3", {{{0.5, 0.5, 0}, 1}, {{0.3, 0.4, 0}, 1}});
+    expectValues("mandel 25 exterior 7, 4", {{{0.5, 0.5, 0}, 0.75}, {{0.3, 0.6, 0}, 0.25}});
+    // The built-in map: black outside, magenta to cyan, cyan inside.
+    const Probe m = pigment("mandel 25");
+    EXPECT_NEAR(length(m.at({0.5, 0.5, 0}).rgb - Vec3{0, 1, 1}), 0, 1e-6);
+    EXPECT_NEAR(length(m.at({1, 1, 0}).rgb), 0, 1e-6);
+}
+
 TEST(PovPattern, WaveTypesFrequencyAndPhaseMatchPovRay) {
     const Vec3 xs[] = {{0.1, 0, 0}, {0.3, 0, 0}, {0.5, 0, 0}, {0.75, 0, 0}, {0.95, 0, 0}, {1, 0, 0}, {-0.25, 0, 0}};
     struct Row {

@@ -42,6 +42,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::crackle: out = PatternKind::Crackle; return true;
         case Kw::average: out = PatternKind::Average; return true;
         case Kw::function: out = PatternKind::Function; return true;
+        case Kw::mandel: out = PatternKind::Mandel; return true;
         default: return false;
     }
 }
@@ -185,6 +186,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
             const Vec3 d = toVec3(e.args[0]);
             s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
         }
+        if (kind == PatternKind::Mandel) s.node.params.iterations = int(std::clamp(toFloat(e.args[0]), 0.0, 1e6));
         if (kind == PatternKind::Function) {
             const sdl::FunctionValue& f = e.args[0].fn();
             if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0 ||
@@ -234,6 +236,15 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
         case Kw::mortar: pp.mortar = num(0); break;
         case Kw::agate_turb: pp.agateTurb = num(0); break;
+        case Kw::exponent: pp.exponent = int(std::clamp(num(0), 2.0, 33.0)); break;
+        case Kw::exterior:
+            pp.exterior = int(num(0));
+            pp.exteriorFactor = e.args.size() > 1 ? num(1) : 1;
+            break;
+        case Kw::interior:
+            pp.interior = int(num(0));
+            pp.interiorFactor = e.args.size() > 1 ? num(1) : 1;
+            break;
         case Kw::warp: readWarp(e.args[0].item(), s); break;
         default: break;
     }
