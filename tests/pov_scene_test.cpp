@@ -155,7 +155,7 @@ TEST(PovObjects, TexturesWrittenInARowAreOneLayeredTexture) {
     ASSERT_EQ(b.error, "");
     // One note for the layers, none for "texture at the top level".
     ASSERT_EQ(b.warnings.size(), 1u);
-    EXPECT_EQ(b.warnings[0], "scene.pov:2:3: warning: not rendered yet: layered texture (layers mixed by their transparency)");
+    EXPECT_EQ(b.warnings[0], "scene.pov:2:3: warning: not rendered yet: layered texture (the layers' pigments mixed, lit with one finish)");
     ASSERT_EQ(b.scene.objects.size(), 2u);
     // Half-transmitting red over white: half red, half the white below.
     EXPECT_TRUE(near(b.scene.objects[0].material.color, {1, 0.5, 0.5})) << b.scene.objects[0].material.color.y;
@@ -208,12 +208,12 @@ TEST(PovNotes, UnrenderedFeaturesWarnOnceEachOrFailWithStrict) {
     const std::string text =
         "#declare Unused = isosurface { function { x } }\n"  // declared, never used: no note
         "torus { 1, 0.25 }\ntorus { 2, 0.5 }\n"
-        "sphere { 0, 1 pigment { wood color_map { [0 rgb 0] [1 rgb 1] } } }\n";
+        "sphere { 0, 1 pigment { cells color_map { [0 rgb 0] [1 rgb 1] } } }\n";
     const Built b = build(text);
     ASSERT_EQ(b.error, "");
     ASSERT_EQ(b.warnings.size(), 2u);
     EXPECT_EQ(b.warnings[0], "scene.pov:2:1: warning: not rendered yet: torus (left out)");
-    EXPECT_EQ(b.warnings[1], "scene.pov:4:25: warning: not rendered yet: pigment pattern wood (drawn in its mean colour)");
+    EXPECT_EQ(b.warnings[1], "scene.pov:4:25: warning: not rendered yet: pigment pattern cells (drawn in its mean colour)");
     ASSERT_EQ(b.scene.objects.size(), 1u);
     EXPECT_TRUE(near(b.scene.objects[0].material.color, {0.5, 0.5, 0.5}));
     EXPECT_EQ(build(text, true).error, "scene.pov:2:1: error: not rendered yet: torus (--strict)");

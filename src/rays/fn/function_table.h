@@ -25,6 +25,8 @@ public:
     int size() const { return static_cast<int>(programs_.size()); }
     /// The program of entry i (host entries have a forwarding program).
     const Program& program(int i) const { return *programs_[i]; }
+    /// The same, shared (it stays valid when the table is gone: pigment patterns keep it).
+    std::shared_ptr<const Program> shared(int i) const { return programs_[i]; }
     int params(int i) const { return programs_[i]->params; }
     int outputs(int i) const { return programs_[i]->outputs; }
     bool isHost(int i) const { return programs_[i]->hostWrapper; }

@@ -48,7 +48,18 @@ bool mapAverage(const Item& map, Rgbft& out) {
 
 }  // namespace
 
-void applyPigment(const Item& p, Rgbft& c, NotRendered& notes) {
+namespace {
+
+// The look's pigment becomes p: its flat (mean) colour, and its compiled pattern when there is one.
+void setPigment(const Item& p, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
+    applyPigment(p, a.pigment, notes, pigments == nullptr);
+    a.pigmentNode = pigments ? pigments->compile(p) : -1;
+    a.pigmentToObject = Transform{};
+}
+
+}  // namespace
+
+void applyPigment(const Item& p, Rgbft& c, NotRendered& notes, bool noteUnrendered) {
     const char* pattern = nullptr;
     sdl::Loc patternAt;
     ColorMean list;  // a colour list of checker, hexagon, brick, object, ...
@@ -58,7 +69,7 @@ void applyPigment(const Item& p, Rgbft& c, NotRendered& notes) {
         if (e.positional()) {
             for (const Value& v : e.args) {
                 if (v.type == VType::Item && v.item().kind == Kw::pigment) {
-                    applyPigment(v.item(), c, notes);
+                    applyPigment(v.item(), c, notes, noteUnrendered);
                 } else if (v.type == VType::Item && (v.item().kind == Kw::color_map || v.item().kind == Kw::colour_map)) {
                     fromMap = mapAverage(v.item(), mapColor) || fromMap;
                 } else if (v.isNumeric()) {
@@ -75,12 +86,12 @@ void applyPigment(const Item& p, Rgbft& c, NotRendered& notes) {
             patternAt = e.loc;
         } else if (k == Kw::color_map || k == Kw::colour_map) {
             fromMap = mapAverage(e.args[0].item(), mapColor) || fromMap;
-        } else if (k == Kw::pigment_map) {
+        } else if (k == Kw::pigment_map && noteUnrendered) {
             notes.note("pigment_map", e.loc, "(drawn in one colour)");
         }
     }
     if (!pattern) return;
-    notes.note(std::string("pigment pattern ") + pattern, patternAt, "(drawn in its mean colour)");
+    if (noteUnrendered) notes.note(std::string("pigment pattern ") + pattern, patternAt, "(drawn in its mean colour)");
     if (fromMap) {
         c = mapColor;
     } else if (list.n > 0) {
@@ -183,12 +194,14 @@ namespace {
 
 // A layer over the texture below it (POV-Ray 3.7 reference, "Layered Textures"): the lower texture
 // shows through the layer's pigment where it filters (tinted by the layer's colour) or transmits.
-// With flat colours that is a mix of the two colours, light passing only where both let it; the
-// finish is the layer's where it is mostly opaque. Lighting each layer apart is not rendered yet.
-void applyLayer(const Item& layer, Appearance& a, NotRendered& notes) {
-    notes.note("layered texture", layer.loc, "(layers mixed by their transparency)");
+// The pigments are mixed point by point (a Layered pigment node; the flat colour is the mix of the
+// mean colours), light passing only where both let it; the finish is the layer's where it is
+// mostly opaque. Lighting each layer with its own finish is not rendered yet.
+void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
+    notes.note("layered texture", layer.loc, "(the layers' pigments mixed, lit with one finish)");
     const Appearance below = a;
-    applyTexture(layer, a, notes);
+    applyTexture(layer, a, notes, pigments);
+    const Appearance top = a;
     const double f = std::clamp(a.pigment.filter, 0.0, 1.0);
     const double t = std::clamp(a.pigment.transmit, 0.0, 1.0);
     const double through = std::min(1.0, f + t);
@@ -196,32 +209,108 @@ void applyLayer(const Item& layer, Appearance& a, NotRendered& notes) {
     a.pigment.filter = below.pigment.filter * through;
     a.pigment.transmit = below.pigment.transmit * through;
     if (through >= 0.5) a.finish = below.finish;
+    // Patterns: the layers are mixed point by point.
+    if (pigments && (a.pigmentNode >= 0 || below.pigmentNode >= 0)) {
+        a.pigmentNode = pigments->layered({below.pigmentNode, below.pigment, below.pigmentToObject},
+                                          {top.pigmentNode, top.pigment, top.pigmentToObject});
+        a.pigmentToObject = Transform{};
+    }
 }
 
 }  // namespace
 
-void applyTexture(const Item& t, Appearance& a, NotRendered& notes) {
+namespace {
+
+// A patterned texture (POV-Ray 3.7 reference, "Patterned Textures", "Texture Maps"): the pattern
+// chooses among whole textures; Rays draws their pigments by the pattern and lights them with the
+// first texture's finish. False when the texture is not one (or its pattern is not rendered).
+bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler& pigments) {
+    const Entry* patternAt = nullptr;
+    for (const Entry& e : t.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::texture) return false;  // a base texture
+            continue;
+        }
+        if (e.key != kMapEntry && isPatternKeyword(e.kw())) patternAt = &e;
+    }
+    if (!patternAt) return false;
+    std::vector<PigmentCompiler::Placed> entries;
+    std::vector<double> values;
+    std::vector<Appearance> looks;
+    auto addTexture = [&](const Item& sub, double value) {
+        Appearance look = a;
+        look.pigmentNode = -1;
+        look.pigmentToObject = Transform{};
+        applyTexture(sub, look, notes, &pigments);
+        entries.push_back({look.pigmentNode, look.pigment, look.pigmentToObject});
+        values.push_back(value);
+        looks.push_back(look);
+    };
+    for (const Entry& e : t.entries) {
+        if (e.positional() || e.key == kMapEntry) continue;
+        if (e.kw() == Kw::texture) {
+            // Textures written in a row arrive as one layered item (grammar.cpp); in a pattern's
+            // list they are its entries.
+            const Item& row = e.args[0].item();
+            const bool isRow = row.entries.size() > 1 && std::all_of(row.entries.begin(), row.entries.end(), [](const Entry& r) {
+                return r.positional() && r.args.size() == 1 && r.args[0].type == VType::Item &&
+                       r.args[0].item().kind == Kw::texture;
+            });
+            if (!isRow) addTexture(row, 0);
+            else
+                for (const Entry& r : row.entries) addTexture(r.args[0].item(), 0);
+        }
+        if (e.kw() == Kw::texture_map)
+            for (const Entry& me : e.args[0].item().entries)
+                if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item)
+                    addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 0 : toFloat(me.args[0]));
+    }
+    const int node = pigments.patternedTexture(t, entries, values);
+    if (node < 0) return false;
+    notes.note("texture pattern", patternAt->loc, "(the textures' pigments follow the pattern, lit with one finish)");
+    ColorMean mean;
+    for (const Appearance& l : looks) mean.add(l.pigment);
+    const PovInterior interior = a.interior;
+    const bool interiorSet = a.interiorSet;
+    a = looks[0];
+    a.interior = interior;
+    a.interiorSet = interiorSet;
+    a.pigment = mean.mean();
+    a.pigmentNode = node;
+    a.pigmentToObject = Transform{};
+    return true;
+}
+
+}  // namespace
+
+void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
     a.set = true;
+    if (pigments && applyPatternedTexture(t, a, notes, *pigments)) return;
     bool layered = false;  // a texture item applied already: the next is a layer over it
     for (const Entry& e : t.entries) {
         if (e.positional()) {
             for (const Value& v : e.args) {
                 if (v.type != VType::Item || v.item().kind != Kw::texture) continue;
-                if (layered) applyLayer(v.item(), a, notes);
-                else applyTexture(v.item(), a, notes);
+                if (layered) applyLayer(v.item(), a, notes, pigments);
+                else applyTexture(v.item(), a, notes, pigments);
                 layered = true;
             }
             continue;
         }
         if (e.key == kMapEntry) continue;
+        if (isTransformEntry(e)) {  // moves the texture's pigment (set before it)
+            applyTransform(e, a.pigmentToObject);
+            continue;
+        }
         switch (e.kw()) {
-            case Kw::pigment: applyPigment(e.args[0].item(), a.pigment, notes); break;
+            case Kw::pigment: setPigment(e.args[0].item(), a, notes, pigments); break;
             case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
             case Kw::normal: notes.note("normal", e.loc, "(surfaces drawn smooth)"); break;
             case Kw::texture_map: notes.note("texture_map", e.loc, "(drawn with its first texture)");
                 for (const Entry& me : e.args[0].item().entries)
                     if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item) {
-                        applyTexture(me.args[1].item(), a, notes);
+                        applyTexture(me.args[1].item(), a, notes, pigments);
                         break;
                     }
                 break;
@@ -234,7 +323,8 @@ void applyTexture(const Item& t, Appearance& a, NotRendered& notes) {
     }
 }
 
-bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallback, NotRendered& notes) {
+bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallback, NotRendered& notes,
+                          PigmentCompiler* pigments) {
     if (e.positional() || e.key == kMapEntry) return false;
     const Kw k = e.kw();
     if (k != Kw::texture && k != Kw::pigment && k != Kw::finish && k != Kw::normal && k != Kw::interior &&
@@ -259,9 +349,9 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
     }
     switch (k) {
         case Kw::texture:  // over what is set (textures written in a row arrive as one layered texture)
-            applyTexture(e.args[0].item(), a, notes);
+            applyTexture(e.args[0].item(), a, notes, pigments);
             break;
-        case Kw::pigment: applyPigment(e.args[0].item(), a.pigment, notes); break;
+        case Kw::pigment: setPigment(e.args[0].item(), a, notes, pigments); break;
         case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
         case Kw::normal: notes.note("normal", e.loc, "(surfaces drawn smooth)"); break;
         case Kw::material:
@@ -271,11 +361,11 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
                         if (v.type == VType::Item && v.item().kind == Kw::material) {
                             Entry inner = e;
                             inner.args = {v};
-                            applyAppearanceEntry(inner, a, fallback, notes);
+                            applyAppearanceEntry(inner, a, fallback, notes, pigments);
                         }
                     continue;
                 }
-                applyAppearanceEntry(me, a, fallback, notes);
+                applyAppearanceEntry(me, a, fallback, notes, pigments);
             }
             break;
         default: break;

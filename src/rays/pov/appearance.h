@@ -1,17 +1,23 @@
-// How a POV-Ray object looks, as far as Rays renders it today: a flat pigment colour (rgb,
-// filter, transmit), POV-Ray's finish and interior. Textures, pigments, finishes, interiors and
-// materials of an object are applied to it in file order (POV-Ray 3.7 reference, "Texture",
-// "Default Directive"); patterns, normals and layers are noted as not rendered yet.
+// How a POV-Ray object looks, as far as Rays renders it today: a pigment (a flat colour, or a
+// pattern compiled by PigmentCompiler, with its mean colour kept as the flat one), POV-Ray's
+// finish and interior. Textures, pigments, finishes, interiors and materials of an object are
+// applied to it in file order (POV-Ray 3.7 reference, "Texture", "Default Directive"); normals,
+// texture patterns and some pigment patterns are noted as not rendered yet.
 #pragma once
 #include "rays/pov/item_values.h"
 #include "rays/pov/not_rendered.h"
+#include "rays/pov/pigment_compile.h"
 #include "rays/scene/pov_surface.h"
 
 namespace rays::pov {
 
 struct Appearance {
     bool set = false;     ///< a texture, pigment, finish or material was given
-    Rgbft pigment;        ///< POV-Ray's default pigment is black
+    Rgbft pigment;        ///< POV-Ray's default pigment is black; a pattern's mean colour
+    int pigmentNode = -1; ///< the pattern's node in the scene's PigmentTable; -1: the flat colour
+    /// Texture space → the space the look was given in: the transformations written after the
+    /// pigment (in the texture, then on the object); SceneBuilder completes it to world space.
+    Transform pigmentToObject;
     PovFinish finish;
     PovInterior interior;
     bool interiorSet = false;
@@ -20,11 +26,15 @@ struct Appearance {
 /// Applies an object modifier entry that concerns appearance (texture, pigment, normal, finish,
 /// interior, material); false when the entry is something else. `fallback` is what an unset
 /// appearance starts from (the default texture).
-bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallback, NotRendered& notes);
+/// `pigments` compiles patterns for rendering; without it patterns are drawn in their mean colour.
+bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallback, NotRendered& notes,
+                          PigmentCompiler* pigments = nullptr);
 
-void applyPigment(const Item& pigment, Rgbft& c, NotRendered& notes);
+/// c becomes the pigment's flat colour (a pattern's mean colour); patterns are noted when
+/// `noteUnrendered` (PigmentCompiler notes those it cannot render itself).
+void applyPigment(const Item& pigment, Rgbft& c, NotRendered& notes, bool noteUnrendered = true);
 void applyFinish(const Item& finish, PovFinish& f, NotRendered& notes);
 void applyInterior(const Item& interior, PovInterior& in, NotRendered& notes);
-void applyTexture(const Item& texture, Appearance& a, NotRendered& notes);
+void applyTexture(const Item& texture, Appearance& a, NotRendered& notes, PigmentCompiler* pigments = nullptr);
 
 }  // namespace rays::pov

@@ -81,13 +81,7 @@ void SceneBuilder::add(const ParsedScene::Top& top) {
             backgroundSet_ = true;
             return;
         }
-        case Kw::sky_sphere: {
-            Rgbft c{Vec3(0.5), 0, 0};
-            if (const Entry* pig = findEntry(item, Kw::pigment)) applyPigment(pig->args[0].item(), c, notes_);
-            notes_.note("sky_sphere", item.loc, "(drawn as a background of its mean colour)");
-            if (!backgroundSet_) scene_.pov.background = c.rgb;
-            return;
-        }
+        case Kw::sky_sphere: return addSkySphere(item);
         case Kw::fog: return addFog(item);
         case Kw::rainbow: return notes_.note("rainbow", item.loc);
         case Kw::media: return notes_.note("atmospheric media", item.loc);
@@ -110,7 +104,7 @@ void SceneBuilder::updateDefaults(const ParsedScene::Top& top) {
         added.kind = Kw::texture;
         added.entries.assign(top.defaults->begin() + std::ptrdiff_t(defaultsApplied_),
                              top.defaults->begin() + std::ptrdiff_t(top.defaultsCount));
-        applyTexture(added, defaultsLook_, notes_);
+        applyTexture(added, defaultsLook_, notes_, &pigments_);
         defaultsApplied_ = top.defaultsCount;
     }
     fallback_ = defaultsLook_;
@@ -313,6 +307,8 @@ Material SceneBuilder::material(const Appearance& look) {
     s.interior = look.interior;
     s.transmit = look.pigment.transmit;
     s.noShadow = noShadow_;
+    s.pigment = pigmentRoot(look);
+    if (s.pigment >= 0) s.pigmentTransparent = scene_.pigments.mayLetLightThrough(look.pigmentNode);
     m.pov = int(scene_.povSurfaces.size());
     scene_.povSurfaces.push_back(s);
     return m;
@@ -353,9 +349,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (e.key == kMapEntry) continue;
         if (isTransformEntry(e)) {
             applyTransform(e, local);
+            if (look.set) applyTransform(e, look.pigmentToObject);  // transformations after the texture move it
             continue;
         }
-        if (applyAppearanceEntry(e, look, fallback_, notes_)) continue;
+        if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
         const Kw k = e.kw();
         if ((kind == Kw::union_ || kind == Kw::merge || kind == Kw::light_group || kind == Kw::difference ||
              kind == Kw::intersection) && isObjectKind(k)) {
@@ -383,6 +380,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     noShadow_ = noShadow_ || noShadow;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
+    if (look.set) look.pigmentToObject = parent * look.pigmentToObject;  // texture space → world
     const Appearance* own = look.set ? &look : inherited;
     // Intersection, difference, merge and clipped objects become one CSG object (csg.h); unions
     // outside them are flattened into their children.

@@ -50,11 +50,17 @@ private:
     void globalSettings(const Item& g);
     void addFog(const Item& fog);
     Material material(const Appearance& look);
+    /// The scene's pigment root for a look with a pattern (its texture space completed to world
+    /// space by SceneBuilder::addObject), or -1.
+    int pigmentRoot(const Appearance& look);
+    /// sky_sphere: its pigments (layers) and transformations → PovGlobals' sky roots.
+    void addSkySphere(const Item& sky);
     /// Counts n more objects made at `at`; throws past maxObjects_.
     void countObjects(uint64_t n, const sdl::Loc& at);
 
     NotRendered& notes_;
     Scene scene_;
+    PigmentCompiler pigments_{scene_.pigments, notes_};  ///< pigment patterns → scene_.pigments
     Appearance fallback_;      ///< the default texture of the item being added
     Csg* csg_ = nullptr;       ///< the CSG tree being built (objects go into it), or none
     int csgParent_ = -1;       ///< the node of csg_ new objects go under

@@ -213,6 +213,7 @@ private:
         const Material* material = nullptr;
         const PovSurface* surface = nullptr;
         Vec3 P, N, C;
+        double filter = 0, transmit = 0;  ///< the pigment's at P
         bool entering = true;
         int interior = -1;
         Vec3 viewFade{1, 1, 1};

@@ -8,6 +8,7 @@
 #include "rays/geometry/refract.h"
 #include "rays/render/area_light.h"
 #include "rays/render/pov_lighting.h"
+#include "rays/render/pov_pigment.h"
 #include "rays/render/texturing.h"
 #include "rays/render/tracer.h"
 
@@ -26,7 +27,9 @@ const PovSurface kDefaultSurface{};
 
 double maxAbsComponent(Vec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
-bool letsLightThrough(const Material& m, const PovSurface& s) { return m.filter != 0 || s.transmit != 0; }
+bool letsLightThrough(const Material& m, const PovSurface& s) {
+    return m.filter != 0 || s.transmit != 0 || s.pigmentTransparent;
+}
 
 }  // namespace
 
@@ -67,7 +70,7 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
         const PovInterior& in = povSurfaceOf(scene_.objects[size_t(r.interior)].material).interior;
         if (povFades(in)) fade = povFade(in, hit.t);
     }
-    const Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : scene_.pov.background);
+    const Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : povSky(scene_, ray.dir));
     // Fog fills the space outside objects (measured: on every ray, reflected ones included).
     if (scene_.pov.fogs.empty() || r.interior >= 0) return seen;
     return povFog(scene_.pov.fogs, seen, ray, hit.t);
@@ -84,6 +87,12 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     pt.entering = dot(ray.dir, hit.geomNormal) < 0;
     pt.N = pt.entering ? hit.normal : -hit.normal;  // faces the viewer
     pt.C = o.material.color;
+    pt.filter = o.material.filter;
+    pt.transmit = pt.surface->transmit;
+    if (pt.surface->pigment >= 0) {
+        const PovPigmentSample c = povPigmentAt(scene_, *pt.surface, pt.P);
+        pt.C = c.color, pt.filter = c.filter, pt.transmit = c.transmit;
+    }
     if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0)
         applyMaps(scene_, o, pt.P, SurfaceUV{hit.hasUV, hit.u, hit.v, hit.dpdu}, pt.C, pt.N);
     pt.interior = r.interior;
@@ -91,7 +100,7 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
 
     // The surface's own colour, weighted by its opacity; highlights are not (measured).
     const PovSurface& s = *pt.surface;
-    const double opacity = povOpacity(pt.C, o.material.filter, s.transmit, scene_.pov.version);
+    const double opacity = povOpacity(pt.C, pt.filter, pt.transmit, scene_.pov.version);
     Vec3 color = opacity * povAmbient(s.finish, pt.C, scene_.pov.ambientLight);
     ctx.surfaceObject = hit.object;
     const int blocked = povLights(pt, opacity, -ray.dir, ctx, color, info && r.primary);
@@ -111,7 +120,7 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
     const double ior = s.interior.ior;
     const double eta = pt.entering ? 1.0 / ior : ior;
     const Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), eta);
-    Vec3 T = povFilterTint(pt.C, pt.material->filter, s.transmit);
+    Vec3 T = povFilterTint(pt.C, pt.filter, pt.transmit);
     if (s.finish.conserveEnergy) T *= Vec3(1.0) - R;
     // A reflected ray stays on this side of the surface, a transmitted one crosses it. Only
     // transmitted rays fade over their path inside an interior: reflected ones (total internal
@@ -257,11 +266,16 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
         }
         if (!letsLightThrough(o.material, s)) return {};
         Vec3 C = o.material.color;
+        double filter = o.material.filter, transmit = s.transmit;
+        if (s.pigment >= 0) {
+            const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t));
+            C = c.color, filter = c.filter, transmit = c.transmit;
+        }
         if (o.material.pigmentMap >= 0) {
             Vec3 N = h.normal;
             applyMaps(scene_, o, shadow.at(h.t), SurfaceUV{h.hasUV, h.u, h.v, h.dpdu}, C, N);
         }
-        tint *= povFilterTint(C, o.material.filter, s.transmit);
+        tint *= povFilterTint(C, filter, transmit);
         if (povFades(s.interior)) {
             if (dot(shadow.dir, h.geomNormal) < 0) {
                 if (openCount < kMaxOpenInteriors) open[openCount++] = Entry{h.object, h.t};

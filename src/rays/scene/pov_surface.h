@@ -37,6 +37,10 @@ struct PovSurface {
     double transmit = 0;        ///< the pigment's transmit (its filter is Material::filter)
     bool doubleIlluminate = false;
     bool noShadow = false;      ///< the object casts no shadow (POV-Ray's no_shadow; looks_like objects)
+    /// The pigment pattern: a root of Scene::pigments, or -1 for the flat colour (Material::color,
+    /// Material::filter and transmit above; with a pattern those hold its mean colour).
+    int pigment = -1;
+    bool pigmentTransparent = false;  ///< some colour of the pattern filters or transmits
 };
 
 /// A fog layer (POV-Ray 3.7 reference, "Fog"; the details measured, docs/povray-lighting.md).
@@ -67,6 +71,10 @@ struct PovGlobals {
     double adcBailout = 1.0 / 255.0;
     Vec3 background{0, 0, 0};
     std::vector<PovFog> fogs;  ///< applied together to every ray outside objects
+    /// sky_sphere: its pigments, bottom layer first, as roots [skyFirst, skyFirst + skyCount) of
+    /// Scene::pigments looked up by ray direction; none: the background colour.
+    int skyFirst = -1, skyCount = 0;
+    Vec3 skyEmission{1, 1, 1};  ///< sky_sphere's emission: the sky's colour is multiplied by it
 };
 
 }  // namespace rays

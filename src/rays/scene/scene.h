@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rays/npr/edge_settings.h"
+#include "rays/pattern/pigment.h"
 #include "rays/scene/camera.h"
 #include "rays/scene/csg.h"
 #include "rays/scene/light.h"
@@ -32,6 +33,7 @@ struct Scene {
     /// POV-Ray scenes: surfaces referenced by Material::pov, and the scene-wide settings.
     std::vector<PovSurface> povSurfaces;
     PovGlobals pov;
+    pattern::PigmentTable pigments;  ///< POV-Ray pigment patterns referenced by PovSurface::pigment
 };
 
 }  // namespace rays

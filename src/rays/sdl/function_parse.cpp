@@ -16,6 +16,13 @@
 
 namespace rays::sdl {
 
+// Pattern and pigment functions are evaluated by the renderer; while parsing they give 0.
+void evalZero(const void*, const double*, double* out) {
+    for (int i = 0; i < 5; ++i) out[i] = 0;
+}
+
+bool isPatternStub(const fn::HostFunction& h) { return h.fn == evalZero; }
+
 namespace {
 
 struct TransformData {
@@ -31,10 +38,6 @@ void evalSpline(const void* data, const double* in, double* out) {
     const auto& s = *static_cast<const Spline*>(data);
     const std::array<double, 5> p = evaluateSpline(s, s.type, in[0]);
     for (int i = 0; i < s.dim; ++i) out[i] = p[size_t(i)];
-}
-// Pattern and pigment functions are evaluated by the renderer; while parsing they give 0.
-void evalZero(const void*, const double*, double* out) {
-    for (int i = 0; i < 5; ++i) out[i] = 0;
 }
 
 class BodyReader {

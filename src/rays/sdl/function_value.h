@@ -25,4 +25,7 @@ struct FunctionValue {
     Value spline;                             ///< Spline
 };
 
+/// True for the host function standing in for a pattern or pigment function (it gives 0).
+bool isPatternStub(const fn::HostFunction& h);
+
 }  // namespace rays::sdl

@@ -1,0 +1,47 @@
+// Pattern types (POV-Ray 3.7 reference, "Patterns"): each maps a point of pattern space to a value
+// in [0, 1] (before the wave), or, for the block patterns checker, hexagon and brick, to the index
+// of one of their two or three colours or pigments.
+#pragma once
+#include <cstdint>
+
+#include "rays/fn/program.h"
+#include "rays/math/vec3.h"
+#include "rays/pattern/noise.h"
+
+namespace rays::pattern {
+
+enum class PatternKind : uint8_t {
+    Solid,  ///< no pattern: one colour
+    Checker, Hexagon, Brick,  // block patterns
+    Gradient, Radial, Onion, Spherical, Cylindrical, Planar, Boxed, Leopard,
+    Bozo, Granite, Marble, Wood, Agate, Wrinkles, Crackle,
+    Mandel,    ///< the Mandelbrot set in the x-y plane (exponent, exterior and interior colouring)
+    Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
+    Average,  ///< the weighted mean of a pigment_map's pigments
+    Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
+};
+
+/// True for checker, hexagon and brick (a list of 2 or 3 colours, no wave, no map).
+constexpr bool isBlockPattern(PatternKind k) {
+    return k == PatternKind::Checker || k == PatternKind::Hexagon || k == PatternKind::Brick;
+}
+
+/// The modifiers some patterns read.
+struct PatternParams {
+    Vec3 vector{1, 0, 0};          ///< gradient's direction, normalised
+    Vec3 brickSize{8, 3, 4.5};     ///< brick_size
+    double mortar = 0.5;           ///< mortar
+    double agateTurb = 1;          ///< agate_turb
+    Turbulence turbulence;         ///< turbulence, octaves, omega, lambda
+    int iterations = 0, exponent = 2;  ///< mandel
+    int exterior = 1, interior = 0;    ///< mandel's colouring types (0..8, 0..6)
+    double exteriorFactor = 1, interiorFactor = 1;
+    const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
+};
+
+/// The value of a continuous pattern at p (pattern space), turbulence included, before the wave.
+double patternValue(PatternKind kind, const PatternParams& params, Vec3 p);
+/// The list index (0, 1 or 2) of a block pattern at p, turbulence included.
+int blockIndex(PatternKind kind, const PatternParams& params, Vec3 p);
+
+}  // namespace rays::pattern

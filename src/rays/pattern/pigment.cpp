@@ -1,0 +1,65 @@
+#include "rays/pattern/pigment.h"
+
+#include <algorithm>
+
+namespace rays::pattern {
+
+Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
+    const PigmentNode& node = nodes[size_t(n)];
+    if (node.kind == PatternKind::Solid) return node.color;
+    if (node.warpCount > 0) {
+        for (int i = 0; i < node.warpCount; ++i) p = applyWarp(warps[size_t(node.warpBegin + i)], p);
+    } else if (node.transformed) {
+        p = node.toPattern.point(p);
+    }
+    const MapEntry* map = entries.data() + node.mapBegin;
+    // Entries that are pigments are evaluated at the point in this pigment's space (the outer
+    // pigment's transformations move its map's pigments too).
+    auto entry = [&](int i) { return map[i].pigment >= 0 ? evaluate(map[i].pigment, p) : map[i].color; };
+    if (node.mapCount == 0) return node.color;
+    if (isBlockPattern(node.kind)) {
+        const int i = blockIndex(node.kind, node.params, p);
+        return entry(i < node.mapCount ? i : node.mapCount - 1);
+    }
+    if (node.kind == PatternKind::Layered) {
+        // The upper layer lets the lower through where it filters (tinted by its colour) or
+        // transmits (POV-Ray 3.7 reference, "Layered Textures").
+        const Rgbft below = entry(0), top = entry(1);
+        const double f = std::clamp(top.filter, 0.0, 1.0), t = std::clamp(top.transmit, 0.0, 1.0);
+        const double through = std::min(1.0, f + t);
+        return {top.rgb * (1 - through) + below.rgb * (Vec3(t) + f * top.rgb), below.filter * through,
+                below.transmit * through};
+    }
+    if (node.kind == PatternKind::Average) {
+        Rgbft sum;
+        double weights = 0;
+        for (int i = 0; i < node.mapCount; ++i) {
+            const Rgbft c = entry(i);
+            const double w = map[i].value;
+            sum.rgb += c.rgb * w;
+            sum.filter += c.filter * w;
+            sum.transmit += c.transmit * w;
+            weights += w;
+        }
+        if (weights == 0) return sum;
+        return {sum.rgb / weights, sum.filter / weights, sum.transmit / weights};
+    }
+    const double v = applyWave(node.wave, patternValue(node.kind, node.params, p));
+    const MapPlace at = placeInMap({map, size_t(node.mapCount)}, v);
+    if (at.lo == at.hi || at.t == 0) return entry(at.lo);
+    if (at.t == 1) return entry(at.hi);
+    return mix(entry(at.lo), entry(at.hi), at.t);
+}
+
+bool PigmentTable::mayLetLightThrough(int n) const {
+    const PigmentNode& node = nodes[size_t(n)];
+    if (node.color.filter != 0 || node.color.transmit != 0) return true;
+    for (int i = 0; i < node.mapCount; ++i) {
+        const MapEntry& e = entries[size_t(node.mapBegin + i)];
+        if (e.pigment >= 0 ? mayLetLightThrough(e.pigment) : (e.color.filter != 0 || e.color.transmit != 0))
+            return true;
+    }
+    return false;
+}
+
+}  // namespace rays::pattern

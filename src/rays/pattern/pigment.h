@@ -1,0 +1,53 @@
+// Pigments compiled for rendering: flat, immutable nodes built once with the scene (POV-Ray 3.7
+// reference, "Pigment", "Color Maps", "Pigment Maps", "Average"). A node is a pattern with its
+// transformation, turbulence, wave and map (or block-pattern list); map entries are colours or
+// other nodes of the same table. Evaluation is a switch over the node's kind: no virtual calls,
+// no allocation.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "rays/math/transform.h"
+#include "rays/pattern/color_map.h"
+#include "rays/pattern/pattern.h"
+#include "rays/pattern/warp.h"
+#include "rays/pattern/wave.h"
+
+namespace rays::pattern {
+
+struct PigmentNode {
+    PatternKind kind = PatternKind::Solid;
+    bool transformed = false;
+    Transform toPattern;  ///< the enclosing space → this pigment's pattern space (when transformed)
+    int warpBegin = 0, warpCount = 0;  ///< PigmentTable::warps replacing toPattern when there are warps
+    PatternParams params;
+    Wave wave;
+    int mapBegin = 0, mapCount = 0;  ///< PigmentTable::entries: the map, or a block pattern's list
+    Rgbft color;                     ///< Solid's colour
+};
+
+/// A pigment as an object uses it: world space → texture space, then the node.
+struct PigmentRoot {
+    Transform worldToTexture;
+    int node = -1;
+};
+
+struct PigmentTable {
+    std::vector<PigmentNode> nodes;
+    std::vector<MapEntry> entries;
+    std::vector<PigmentRoot> roots;
+    std::vector<std::shared_ptr<const fn::Program>> programs;  ///< function patterns' programs, kept alive
+    std::vector<WarpStep> warps;  ///< each node's steps, outermost (written last) first
+
+    /// The colour of node n at p, p in the space enclosing the node.
+    Rgbft evaluate(int n, Vec3 p) const;
+    /// The colour of root r at the world point p.
+    Rgbft atRoot(int r, Vec3 world) const {
+        const PigmentRoot& root = roots[size_t(r)];
+        return evaluate(root.node, root.worldToTexture.point(world));
+    }
+    /// True when some colour of node n filters or transmits.
+    bool mayLetLightThrough(int n) const;
+};
+
+}  // namespace rays::pattern

@@ -1,0 +1,382 @@
+#include "rays/pov/pigment_compile.h"
+
+#include <cmath>
+#include <string>
+
+#include "rays/pattern/default_maps.h"
+#include "rays/pov/grammar.h"
+#include "rays/pov/specs.h"
+#include "rays/sdl/function_value.h"
+
+namespace rays::pov {
+
+using pattern::MapEntry;
+using pattern::PatternKind;
+using pattern::WaveType;
+using sdl::VType;
+
+namespace {
+
+constexpr int kMaxDepth = 64;
+
+// The pattern kinds Rays renders, from their keywords; false for the others.
+bool patternKind(Kw k, PatternKind& out) {
+    switch (k) {
+        case Kw::checker: out = PatternKind::Checker; return true;
+        case Kw::hexagon: out = PatternKind::Hexagon; return true;
+        case Kw::brick: out = PatternKind::Brick; return true;
+        case Kw::gradient: out = PatternKind::Gradient; return true;
+        case Kw::radial: out = PatternKind::Radial; return true;
+        case Kw::onion: out = PatternKind::Onion; return true;
+        case Kw::spherical: out = PatternKind::Spherical; return true;
+        case Kw::cylindrical: out = PatternKind::Cylindrical; return true;
+        case Kw::planar: out = PatternKind::Planar; return true;
+        case Kw::boxed: out = PatternKind::Boxed; return true;
+        case Kw::leopard: out = PatternKind::Leopard; return true;
+        case Kw::bozo: case Kw::spotted: case Kw::bumps: out = PatternKind::Bozo; return true;
+        case Kw::granite: out = PatternKind::Granite; return true;
+        case Kw::marble: out = PatternKind::Marble; return true;
+        case Kw::wood: out = PatternKind::Wood; return true;
+        case Kw::agate: out = PatternKind::Agate; return true;
+        case Kw::wrinkles: out = PatternKind::Wrinkles; return true;
+        case Kw::crackle: out = PatternKind::Crackle; return true;
+        case Kw::average: out = PatternKind::Average; return true;
+        case Kw::function: out = PatternKind::Function; return true;
+        case Kw::mandel: out = PatternKind::Mandel; return true;
+        default: return false;
+    }
+}
+
+// True when the program or a function it calls calls a pattern or pigment function (those give
+// 0 outside the parse for now).
+bool callsPatternFunction(const fn::Program& p, int depth = 0) {
+    for (const fn::HostFunction& h : p.hosts)
+        if (sdl::isPatternStub(h)) return true;
+    for (const auto& c : p.callees)
+        if (c && depth < 64 && callsPatternFunction(*c, depth + 1)) return true;
+    return false;
+}
+
+pattern::Rgbft toPatternColor(const Value& v) {
+    const Rgbft c = toColor(v);
+    return {c.rgb, c.filter, c.transmit};
+}
+
+}  // namespace
+
+// What a pigment's entries have set so far.
+struct PigmentCompiler::State {
+    pattern::PigmentNode node;
+    bool pattern = false;      ///< a rendered pattern was given
+    bool unrendered = false;   ///< a pattern Rays does not render was given (the pigment stays flat)
+    bool mapSet = false;
+    std::vector<MapEntry> map;   ///< colour map or pigment map
+    std::vector<MapEntry> list;  ///< a block pattern's colours or pigments, in order
+    Transform transform;         ///< pattern space → the enclosing space
+    bool transformed = false;
+    std::vector<pattern::WarpStep> steps;  ///< transformations and warps in file order (when warped)
+    bool warped = false;
+    bool waveSet = false;
+    const char* what = "pigment";  ///< for notes: "pigment pattern X" or "texture pattern X"
+};
+
+int PigmentCompiler::compile(const Item& pigment) {
+    if (const auto it = done_.find(&pigment); it != done_.end()) return it->second;
+    State s;
+    read(pigment, s, 0);
+    const int n = s.pattern && !s.unrendered ? emit(s) : -1;
+    done_.emplace(&pigment, n);
+    return n;
+}
+
+// A pigment inside a map or list: always a node (a flat colour becomes a Solid node).
+int PigmentCompiler::nested(const Item& pigment, int depth) {
+    State s;
+    read(pigment, s, depth + 1);
+    if (s.unrendered) s.pattern = false;
+    return emit(s);
+}
+
+void PigmentCompiler::readColorMap(const Item& map, State& s, int depth) {
+    s.map.clear();
+    s.mapSet = true;
+    // A map written as an identifier inside another map's braces: its entries come first.
+    for (const Entry& e : map.entries)
+        if (e.positional())
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && depth < kMaxDepth) readColorMap(v.item(), s, depth + 1);
+    for (const Entry& e : map.entries) {
+        if (e.key != kMapEntry || e.args.empty()) continue;
+        const double a = e.args[0].type == VType::Undefined ? 0 : toFloat(e.args[0]);
+        // Old style `[a b color C1 color C2]`: C1 at a, C2 at b.
+        if (e.args.size() >= 4 && e.args[1].type == VType::Float) {
+            s.map.push_back(MapEntry{a, toPatternColor(e.args[2]), -1});
+            s.map.push_back(MapEntry{toFloat(e.args[1]), toPatternColor(e.args[3]), -1});
+            continue;
+        }
+        if (e.args.size() >= 2) s.map.push_back(MapEntry{a, toPatternColor(e.args[1]), -1});
+    }
+}
+
+void PigmentCompiler::readPigmentMap(const Item& map, State& s, int depth) {
+    s.map.clear();
+    s.mapSet = true;
+    for (const Entry& e : map.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::pigment_map && depth < kMaxDepth)
+                    readPigmentMap(v.item(), s, depth + 1);
+            continue;
+        }
+        if (e.key != kMapEntry || e.args.size() < 2 || e.args[1].type != VType::Item) continue;
+        // An average's entries may leave their weight out: 1.
+        const double v = e.args[0].type == VType::Undefined ? 1 : toFloat(e.args[0]);
+        s.map.push_back(MapEntry{v, {}, nested(e.args[1].item(), depth)});
+    }
+}
+
+void PigmentCompiler::read(const Item& p, State& s, int depth) {
+    if (depth > kMaxDepth) return;
+    for (const Entry& e : p.entries) readEntry(e, s, depth);
+}
+
+void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
+    if (e.positional()) {
+        for (const Value& v : e.args) {
+            if (v.type == VType::Item) {
+                const Kw k = v.item().kind;
+                if (k == Kw::pigment) read(v.item(), s, depth + 1);  // the base pigment
+                else if (k == Kw::color_map || k == Kw::colour_map) readColorMap(v.item(), s, depth);
+                else if (k == Kw::pigment_map) readPigmentMap(v.item(), s, depth);
+            } else if (v.isNumeric()) {
+                if (s.pattern || s.unrendered) {
+                    s.list.push_back(MapEntry{0, toPatternColor(v), -1});
+                } else {
+                    s.node.kind = PatternKind::Solid;
+                    s.node.color = toPatternColor(v);
+                }
+            }
+        }
+        return;
+    }
+    if (e.key == kMapEntry) return;
+    if (isTransformEntry(e)) {
+        Transform t;
+        applyTransform(e, t);
+        s.transform = t * s.transform;
+        s.transformed = true;
+        if (!s.steps.empty() && s.steps.back().kind == pattern::WarpStep::Kind::Transform) {
+            s.steps.back().toInner = t * s.steps.back().toInner;  // forward until emit inverts it
+        } else {
+            pattern::WarpStep step;
+            step.toInner = t;
+            s.steps.push_back(step);
+        }
+        return;
+    }
+    const Kw k = e.kw();
+    const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
+    PatternKind kind;
+    if (patternKind(k, kind)) {
+        s.pattern = true;
+        s.unrendered = false;
+        s.node.kind = kind;
+        s.list.clear();
+        if (kind == PatternKind::Gradient) {
+            const Vec3 d = toVec3(e.args[0]);
+            s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
+        }
+        if (kind == PatternKind::Mandel) s.node.params.iterations = int(std::clamp(toFloat(e.args[0]), 0.0, 1e6));
+        if (kind == PatternKind::Function) {
+            const sdl::FunctionValue& f = e.args[0].fn();
+            if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0 ||
+                callsPatternFunction(f.table->program(f.index))) {
+                s.pattern = false;
+                s.unrendered = true;
+                notes_.note(std::string(s.what) + " pattern function calling a pattern or pigment function", e.loc,
+                            "(drawn in its mean colour)");
+                return;
+            }
+            table_.programs.push_back(f.table->shared(f.index));
+            s.node.params.function = table_.programs.back().get();
+        }
+        if (!s.waveSet)
+            s.node.wave.type =
+                kind == PatternKind::Wood || kind == PatternKind::Marble ? WaveType::Triangle : WaveType::Ramp;
+        return;
+    }
+    if (isPatternType(k) || k == Kw::image_map) {
+        s.unrendered = true;
+        s.pattern = false;
+        notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)), e.loc,
+                    "(drawn in its mean colour)");
+        return;
+    }
+    pattern::PatternParams& pp = s.node.params;
+    switch (k) {
+        case Kw::color_map: case Kw::colour_map: readColorMap(e.args[0].item(), s, depth); break;
+        case Kw::pigment_map: readPigmentMap(e.args[0].item(), s, depth); break;
+        case Kw::pigment: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
+        case Kw::turbulence: pp.turbulence.amount = toVec3(e.args[0]); break;
+        case Kw::octaves: pp.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
+        case Kw::omega: pp.turbulence.omega = num(0); break;
+        case Kw::lambda: pp.turbulence.lambda = num(0); break;
+        case Kw::frequency: s.node.wave.frequency = num(0); break;
+        case Kw::phase: s.node.wave.phase = num(0); break;
+        case Kw::ramp_wave: s.node.wave.type = WaveType::Ramp; s.waveSet = true; break;
+        case Kw::triangle_wave: s.node.wave.type = WaveType::Triangle; s.waveSet = true; break;
+        case Kw::sine_wave: s.node.wave.type = WaveType::Sine; s.waveSet = true; break;
+        case Kw::scallop_wave: s.node.wave.type = WaveType::Scallop; s.waveSet = true; break;
+        case Kw::cubic_wave: s.node.wave.type = WaveType::Cubic; s.waveSet = true; break;
+        case Kw::poly_wave:
+            s.node.wave.type = WaveType::Poly;
+            s.node.wave.exponent = e.args.empty() ? 1.0 : num(0);
+            s.waveSet = true;
+            break;
+        case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
+        case Kw::mortar: pp.mortar = num(0); break;
+        case Kw::agate_turb: pp.agateTurb = num(0); break;
+        case Kw::exponent: pp.exponent = int(std::clamp(num(0), 2.0, 33.0)); break;
+        case Kw::exterior:
+            pp.exterior = int(num(0));
+            pp.exteriorFactor = e.args.size() > 1 ? num(1) : 1;
+            break;
+        case Kw::interior:
+            pp.interior = int(num(0));
+            pp.interiorFactor = e.args.size() > 1 ? num(1) : 1;
+            break;
+        case Kw::warp: readWarp(e.args[0].item(), s); break;
+        default: break;
+    }
+}
+
+// warp { turbulence ... } and warp { repeat ... }; the other warps are noted and left out.
+void PigmentCompiler::readWarp(const Item& warp, State& s) {
+    pattern::WarpStep step;
+    bool known = false;
+    for (const Entry& e : warp.entries) {
+        if (e.positional()) continue;
+        const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
+        switch (e.kw()) {
+            case Kw::turbulence:
+                step.kind = pattern::WarpStep::Kind::Turbulence;
+                step.turbulence.amount = toVec3(e.args[0]);
+                known = true;
+                break;
+            case Kw::octaves: step.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
+            case Kw::omega: step.turbulence.omega = num(0); break;
+            case Kw::lambda: step.turbulence.lambda = num(0); break;
+            case Kw::repeat: {
+                const Vec3 v = toVec3(e.args[0]);
+                step.kind = pattern::WarpStep::Kind::Repeat;
+                step.axis = v.x != 0 ? 0 : (v.y != 0 ? 1 : 2);
+                step.width = std::fabs(v[step.axis]);
+                known = true;
+                break;
+            }
+            case Kw::offset: step.offset = toVec3(e.args[0]); break;
+            case Kw::flip: step.flip = toVec3(e.args[0]); break;
+            case Kw::black_hole: case Kw::cylindrical: case Kw::spherical: case Kw::toroidal: case Kw::planar:
+            case Kw::cubic:
+                notes_.note(std::string("warp ") + std::string(sdl::keywordName(e.kw())), e.loc,
+                            "(the pattern is drawn without it)");
+                return;
+            default: break;
+        }
+    }
+    if (!known) return;
+    s.steps.push_back(step);
+    s.warped = true;
+}
+
+int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Placed>& entries,
+                                      const std::vector<double>& values) {
+    State s;
+    s.what = "texture";
+    for (const Entry& e : texture.entries) {
+        if (e.positional() || e.key == kMapEntry) continue;
+        const Kw k = e.kw();
+        if (k == Kw::texture || k == Kw::texture_map || k == Kw::pigment || k == Kw::normal || k == Kw::finish) continue;
+        readEntry(e, s, 0);
+    }
+    if (!s.pattern || s.unrendered || entries.empty()) return -1;
+    std::vector<MapEntry> list;
+    for (size_t i = 0; i < entries.size(); ++i)
+        list.push_back(MapEntry{i < values.size() ? values[i] : 0.0, {}, placed(entries[i])});
+    if (pattern::isBlockPattern(s.node.kind)) s.list = list;
+    else s.map = list, s.mapSet = true;
+    return emit(s);
+}
+
+// A node for p in the enclosing space: a Solid node for a flat colour, the node itself when it is
+// not moved, else a one-entry average that moves the point first.
+int PigmentCompiler::placed(const Placed& p) {
+    pattern::PigmentNode n;
+    if (p.node < 0) {
+        n.color = {p.flat.rgb, p.flat.filter, p.flat.transmit};
+    } else {
+        if (p.toEnclosing.isIdentity()) return p.node;
+        n.kind = PatternKind::Average;
+        n.transformed = p.toEnclosing.determinant() != 0;
+        if (n.transformed) n.toPattern = p.toEnclosing.inverse();
+        n.mapBegin = int(table_.entries.size());
+        n.mapCount = 1;
+        table_.entries.push_back(MapEntry{1, {}, p.node});
+    }
+    table_.nodes.push_back(n);
+    return int(table_.nodes.size()) - 1;
+}
+
+int PigmentCompiler::layered(const Placed& below, const Placed& top) {
+    const int b = placed(below), t = placed(top);
+    pattern::PigmentNode n;
+    n.kind = PatternKind::Layered;
+    n.mapBegin = int(table_.entries.size());
+    n.mapCount = 2;
+    table_.entries.push_back(MapEntry{0, {}, b});
+    table_.entries.push_back(MapEntry{1, {}, t});
+    table_.nodes.push_back(n);
+    return int(table_.nodes.size()) - 1;
+}
+
+int PigmentCompiler::emit(State& s) {
+    pattern::PigmentNode node = s.node;
+    if (!s.pattern) {
+        node.kind = PatternKind::Solid;
+        node.mapCount = 0;
+    } else {
+        std::vector<MapEntry> entries;
+        if (pattern::isBlockPattern(node.kind)) {
+            // The list's colours or pigments replace the built-in ones from the first on.
+            entries = pattern::defaultMap(node.kind);
+            for (size_t i = 0; i < s.list.size() && i < entries.size(); ++i) entries[i] = s.list[i];
+        } else if (s.mapSet && !s.map.empty()) {
+            entries = s.map;
+        } else {
+            entries = pattern::defaultMap(node.kind);
+        }
+        node.mapBegin = int(table_.entries.size());
+        node.mapCount = int(entries.size());
+        table_.entries.insert(table_.entries.end(), entries.begin(), entries.end());
+        if (s.warped) {
+            // The point meets the steps written last first; transformations are inverted.
+            node.warpBegin = int(table_.warps.size());
+            for (auto it = s.steps.rbegin(); it != s.steps.rend(); ++it) {
+                pattern::WarpStep step = *it;
+                if (step.kind == pattern::WarpStep::Kind::Transform) {
+                    if (step.toInner.determinant() == 0) continue;
+                    step.toInner = step.toInner.inverse();
+                }
+                table_.warps.push_back(step);
+            }
+            node.warpCount = int(table_.warps.size()) - node.warpBegin;
+        } else if (s.transformed && s.transform.determinant() != 0) {
+            node.transformed = true;
+            node.toPattern = s.transform.inverse();
+        }
+    }
+    table_.nodes.push_back(node);
+    return int(table_.nodes.size()) - 1;
+}
+
+}  // namespace rays::pov

@@ -1,0 +1,51 @@
+// POV-Ray pigment items → the scene's pattern::PigmentTable (POV-Ray 3.7 reference, "Pigment",
+// "Patterns", "Pattern Modifiers", "Color Maps", "Pigment Maps"): a pigment's entries in file
+// order (a base pigment identifier first, then the pattern, its colour list, map, modifiers and
+// transformations). Each pigment item is compiled once; objects that share it share its nodes.
+#pragma once
+#include <unordered_map>
+
+#include "rays/pattern/pigment.h"
+#include "rays/pov/item_values.h"
+#include "rays/pov/not_rendered.h"
+
+namespace rays::pov {
+
+class PigmentCompiler {
+public:
+    PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes) : table_(table), notes_(notes) {}
+    /// The node of a pigment with a rendered pattern, or -1 for a flat colour (a pigment with no
+    /// pattern, or with only patterns Rays does not render: those are noted).
+    int compile(const Item& pigment);
+    const pattern::PigmentTable& table() const { return table_; }
+    /// A pigment seen through a transformation (its texture space → the enclosing one); node -1
+    /// stands for the flat colour.
+    struct Placed {
+        int node = -1;
+        Rgbft flat;
+        Transform toEnclosing;
+    };
+    /// A node drawing texture layer `top` over `below`, both in the enclosing space.
+    int layered(const Placed& below, const Placed& top);
+    /// A patterned texture (`texture { checker texture { A } texture { B } }`, `texture_map`) as
+    /// a pigment: the texture's pattern and modifiers choosing among the textures' pigments
+    /// (entries, at `values` in a map); -1 when the pattern is not rendered (noted).
+    int patternedTexture(const Item& texture, const std::vector<Placed>& entries, const std::vector<double>& values);
+
+private:
+    struct State;
+    void read(const Item& pigment, State& s, int depth);
+    void readEntry(const Entry& e, State& s, int depth);
+    void readWarp(const Item& warp, State& s);
+    void readColorMap(const Item& map, State& s, int depth);
+    void readPigmentMap(const Item& map, State& s, int depth);
+    int emit(State& s);
+    int nested(const Item& pigment, int depth);
+    int placed(const Placed& p);
+
+    pattern::PigmentTable& table_;
+    NotRendered& notes_;
+    std::unordered_map<const Item*, int> done_;  ///< pigment items compiled (-1: flat)
+};
+
+}  // namespace rays::pov

@@ -1,0 +1,66 @@
+// SceneBuilder's pigment pieces (kept apart from scene_builder.cpp, which is about objects): a
+// look's compiled pattern placed in the world, and the sky_sphere's pigments.
+#include "rays/pov/scene_builder.h"
+
+namespace rays::pov {
+
+using sdl::VType;
+
+int SceneBuilder::pigmentRoot(const Appearance& look) {
+    if (look.pigmentNode < 0 || look.pigmentToObject.determinant() == 0) return -1;
+    scene_.pigments.roots.push_back(pattern::PigmentRoot{look.pigmentToObject.inverse(), look.pigmentNode});
+    return int(scene_.pigments.roots.size()) - 1;
+}
+
+namespace {
+
+// A sky_sphere's entries with `sky_sphere { Base ... }` unrolled: the base's first.
+void skyEntries(const Item& sky, std::vector<const Entry*>& out, int depth) {
+    for (const Entry& e : sky.entries) {
+        if (e.positional()) {
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::sky_sphere && depth < 64)
+                    skyEntries(v.item(), out, depth + 1);
+            continue;
+        }
+        out.push_back(&e);
+    }
+}
+
+}  // namespace
+
+// POV-Ray 3.7 reference, "Sky Sphere": the pigments are looked up at the ray's direction (a point
+// of the unit sphere), the last pigment on top; the transformations turn the sky; emission scales it.
+void SceneBuilder::addSkySphere(const Item& sky) {
+    std::vector<const Entry*> entries;
+    skyEntries(sky, entries, 0);
+    std::vector<int> nodes;
+    Transform turn;
+    Vec3 emission{1, 1, 1};
+    for (const Entry* e : entries) {
+        if (isTransformEntry(*e)) {
+            applyTransform(*e, turn);
+            continue;
+        }
+        if (e->kw() == Kw::emission) emission = toColor(e->args[0]).rgb;
+        if (e->kw() != Kw::pigment) continue;
+        const Item& p = e->args[0].item();
+        int node = pigments_.compile(p);
+        if (node < 0) {  // a flat colour (or a pattern drawn in its mean colour)
+            Rgbft c{Vec3(0.5), 0, 0};
+            applyPigment(p, c, notes_, false);
+            pattern::PigmentNode flat;
+            flat.color = {c.rgb, c.filter, c.transmit};
+            scene_.pigments.nodes.push_back(flat);
+            node = int(scene_.pigments.nodes.size()) - 1;
+        }
+        nodes.push_back(node);
+    }
+    if (nodes.empty() || turn.determinant() == 0) return;
+    scene_.pov.skyFirst = int(scene_.pigments.roots.size());
+    scene_.pov.skyCount = int(nodes.size());
+    scene_.pov.skyEmission = emission;
+    for (int n : nodes) scene_.pigments.roots.push_back(pattern::PigmentRoot{turn.inverse(), n});
+}
+
+}  // namespace rays::pov

@@ -1,0 +1,384 @@
+// POV-Ray pigment patterns rendered (src/rays/pattern, pov/pigment_compile): pattern values, wave
+// types, colour and pigment maps, block patterns and transformations. Expected values were printed
+// by POV-Ray 3.7.0.10 itself: `#declare F = function { pigment { P } }` and
+// `#debug str(F(x, y, z).red, 0, 6)` at the points below.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "rays/accel/bvh.h"
+#include "rays/error.h"
+#include "rays/render/renderer.h"
+#include "rays/render/tracer.h"
+#include "rays/pattern/wave.h"
+#include "rays/pov/load_pov.h"
+
+namespace rays {
+namespace {
+
+struct Built {
+    Scene scene;
+    std::vector<std::string> warnings;
+};
+
+Built build(const std::string& text) {
+    Built b;
+    ParseOptions o;
+    o.warn = [&](const std::string& w) { b.warnings.push_back(w); };
+    o.language.installedIncludeDir.clear();
+    b.scene = pov::parsePovText("#version 3.7;\n" + text, "scene.pov", ".", o);
+    return b;
+}
+
+// The pigment of the first object of a scene, evaluated at world points.
+struct Probe {
+    Built b;
+    const PovSurface& surface() const {
+        return b.scene.povSurfaces.at(size_t(b.scene.objects.at(0).material.pov));
+    }
+    pattern::Rgbft at(Vec3 p) const { return b.scene.pigments.atRoot(surface().pigment, p); }
+};
+
+Probe pigment(const std::string& body, const std::string& object = "sphere { 0, 1 ", const std::string& after = "") {
+    return Probe{build(object + "pigment { " + body + " } " + after + "}")};
+}
+
+const char* kGrey = " color_map { [0 rgb 0] [1 rgb 1] }";
+
+struct Sample {
+    Vec3 p;
+    double value;
+};
+
+void expectValues(const std::string& body, std::initializer_list<Sample> samples, double tol = 1e-6) {
+    const Probe pr = pigment(body + kGrey);
+    ASSERT_GE(pr.surface().pigment, 0) << body;
+    for (const Sample& s : samples) EXPECT_NEAR(pr.at(s.p).rgb.x, s.value, tol) << body << " at " << s.p.x << " " << s.p.y << " " << s.p.z;
+}
+
+TEST(PovPattern, ContinuousPatternsMatchPovRay) {
+    expectValues("gradient x", {{{0.3, 0.2, 0.1}, 0.3}, {{-0.7, 0.25, 0.6}, 0.3}, {{2.5, 3.5, -1.2}, 0.5}, {{1, 0, 0}, 1}, {{2, 0, 0}, 0}});
+    expectValues("gradient <1, 1, 0>", {{{0.3, 0.2, 0.1}, 0.353553}, {{1.3, 0.5, -0.4}, 0.272792}, {{-0.7, 0.25, 0.6}, 0.681802}});
+    expectValues("radial", {{{0.3, 0.2, 0.1}, 0.948792}, {{1.3, 0.5, -0.4}, 0.047498}, {{-0.7, 0.25, 0.6}, 0.612781}, {{0.1, 0, -0.9}, 0.232378}});
+    expectValues("onion", {{{0.3, 0.2, 0.1}, 0.374166}, {{1.3, 0.5, -0.4}, 0.449138}, {{2.5, 3.5, -1.2}, 0.465423}});
+    expectValues("spherical", {{{0.3, 0.2, 0.1}, 0.625834}, {{-0.7, 0.25, 0.6}, 0.044751}, {{1.3, 0.5, -0.4}, 0}});
+    expectValues("cylindrical", {{{0.3, 0.2, 0.1}, 0.683772}, {{-0.7, 0.25, 0.6}, 0.078046}, {{2.5, 3.5, -1.2}, 0}});
+    expectValues("planar", {{{0.3, 0.2, 0.1}, 0.8}, {{-0.7, 0.25, 0.6}, 0.75}, {{2.5, 3.5, -1.2}, 0}});
+    expectValues("boxed", {{{0.3, 0.2, 0.1}, 0.7}, {{-0.7, 0.25, 0.6}, 0.3}, {{0.1, 0, -0.9}, 0.1}});
+    expectValues("leopard", {{{0.3, 0.2, 0.1}, 0.039207}, {{1.3, 0.5, -0.4}, 0.123333}, {{2.5, 3.5, -1.2}, 0.052037}});
+    // wood without turbulence: rings round the z-axis, triangle wave by default.
+    expectValues("wood", {{{0.3, 0.4, 0}, 1}, {{0.3, 0.4, 5}, 1}, {{0.1, 0, 0}, 0.2}, {{0.7, 0, 0}, 0.6}, {{1.2, 0, 0}, 0.39998}});
+    expectValues("marble", {{{0.3, 0.4, 0}, 0.6}, {{0.7, 0, 0}, 0.6}, {{1.2, 0, 0}, 0.39998}});
+}
+
+TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
+    // Values printed by POV-Ray 3.7.
+    expectValues("function { x * x + y }", {{{0.5, 0.1, 0}, 0.35}, {{0.9, 0.5, 0}, 0.31}, {{-0.3, -0.5, 0}, 0.59}});
+    expectValues("function { 1.2 } triangle_wave", {{{0, 0, 0}, 0.4}});
+    expectValues("function { 1 } phase 0.0001", {{{0, 0, 0}, 0.00009}});
+    expectValues("function { 2 } phase 0.0001", {{{0, 0, 0}, 0.0001}});
+    // Pigment functions give 0 outside the parse for now: a function calling one is noted.
+    const Built b = build("#declare P = function { pigment { checker } }\n"
+                          "sphere { 0, 1 pigment { function { P(x, y, z).x } } }");
+    EXPECT_EQ(b.scene.povSurfaces.at(0).pigment, -1);
+    ASSERT_EQ(b.warnings.size(), 1u);
+    EXPECT_NE(b.warnings[0].find("pattern function calling a pattern or pigment function"), std::string::npos);
+}
+
+TEST(PovPattern, MandelMatchesPovRay) {
+    // Values printed by POV-Ray 3.7.
+    expectValues("mandel 25", {{{0, 0, 0}, 1}, {{1, 1, 0}, 0}, {{-2.5, 0, 0}, 0}, {{0.5, 0.5, 0}, 0.12},
+                               {{0.3, 0.6, 0}, 0.52}, {{-0.75, 0.2, 0}, 0.56}, {{0.38, 0.3, 0}, 0.68}});
+    expectValues("mandel 25 exterior 2, 0.5 interior 1, 2", {{{0.5, 0.5, 0}, 0.642568}, {{0.1, 0.1, 0}, 0.282843}});
+    expectValues("mandel 25 exponent 3", {{{0.5, 0.5, 0}, 1}, {{0.3, 0.4, 0}, 1}});
+    expectValues("mandel 25 exterior 7, 4", {{{0.5, 0.5, 0}, 0.75}, {{0.3, 0.6, 0}, 0.25}});
+    // The built-in map: black outside, magenta to cyan, cyan inside.
+    const Probe m = pigment("mandel 25");
+    EXPECT_NEAR(length(m.at({0.5, 0.5, 0}).rgb - Vec3{0, 1, 1}), 0, 1e-6);
+    EXPECT_NEAR(length(m.at({1, 1, 0}).rgb), 0, 1e-6);
+}
+
+TEST(PovPattern, WaveTypesFrequencyAndPhaseMatchPovRay) {
+    const Vec3 xs[] = {{0.1, 0, 0}, {0.3, 0, 0}, {0.5, 0, 0}, {0.75, 0, 0}, {0.95, 0, 0}, {1, 0, 0}, {-0.25, 0, 0}};
+    struct Row {
+        const char* mods;
+        double v[7];
+    };
+    const Row rows[] = {
+        {"triangle_wave", {0.2, 0.6, 1, 0.5, 0.1, 0, 0.5}},
+        {"sine_wave", {0.793893, 0.975528, 0.5, 0, 0.345491, 0.5, 0}},
+        {"scallop_wave", {0.309017, 0.809017, 1, 0.707107, 0.156434, 0, 0.707107}},
+        {"cubic_wave", {0.028, 0.216, 0.5, 0.84375, 0.99275, 1, 0.84375}},
+        {"poly_wave 2", {0.01, 0.09, 0.25, 0.5625, 0.9025, 1, 0.5625}},
+        {"frequency 2", {0.2, 0.6, 1, 0.49999, 0.89999, 0.99999, 0.5}},
+        {"phase 0.3", {0.4, 0.6, 0.8, 0.04999, 0.24999, 0.29999, 0.05}},
+        {"frequency -1", {0.9, 0.7, 0.5, 0.25, 0.05, 0, 0.25}},
+        {"frequency 2 triangle_wave", {0.4, 0.8, 0, 0.99998, 0.20002, 0.00002, 1}},
+        {"frequency 1.5 phase 0.2 cubic_wave", {0.28175, 0.71825, 0.99275, 0.248206, 0.68358, 0.783987, 0.918844}},
+    };
+    for (const Row& r : rows) {
+        const Probe pr = pigment(std::string("gradient x") + kGrey + " " + r.mods);
+        for (int i = 0; i < 7; ++i) EXPECT_NEAR(pr.at(xs[i]).rgb.x, r.v[i], 2e-6) << r.mods << " at x=" << xs[i].x;
+    }
+}
+
+TEST(PovPattern, ColorMapsInterpolateAllFiveComponents) {
+    // Entries at 0.2, 0.6, 0.6 (the first of the two wins at 0.6) and 0.8.
+    const Probe pr = pigment("gradient x color_map { [0.2 rgbft <1, 0, 0, 0.5, 0>] [0.6 rgbft <0, 0, 1, 0, 1>] "
+                             "[0.6 rgb 1] [0.8 rgb 0.5] }");
+    auto expectAt = [&](double x, Vec3 rgb, double f, double t) {
+        const pattern::Rgbft c = pr.at({x, 0, 0});
+        EXPECT_NEAR(length(c.rgb - rgb), 0, 1e-9) << x;
+        EXPECT_NEAR(c.filter, f, 1e-9) << x;
+        EXPECT_NEAR(c.transmit, t, 1e-9) << x;
+    };
+    expectAt(0.1, {1, 0, 0}, 0.5, 0);  // below the first entry
+    expectAt(0.3, {0.75, 0, 0.25}, 0.375, 0.25);
+    expectAt(0.59, {0.025, 0, 0.975}, 0.0125, 0.975);
+    expectAt(0.6, {0, 0, 1}, 0, 1);
+    expectAt(0.61, {0.975, 0.975, 0.975}, 0, 0);
+    expectAt(0.9, {0.5, 0.5, 0.5}, 0, 0);  // above the last
+    // The old form [a b colour c1 colour c2].
+    const Probe old = pigment("gradient x color_map { [0.2 0.6 color rgb <1, 0, 0> color rgb <0, 0, 1>] "
+                              "[0.6 1 color rgb 1 color rgb 0] }");
+    EXPECT_NEAR(length(old.at({0.3, 0, 0}).rgb - Vec3{0.75, 0, 0.25}), 0, 1e-9);
+    EXPECT_NEAR(length(old.at({0.65, 0, 0}).rgb - Vec3(0.875)), 0, 1e-9);
+    // No map: black to white.
+    EXPECT_NEAR(pigment("gradient x").at({0.7, 0, 0}).rgb.y, 0.7, 1e-9);
+}
+
+TEST(PovPattern, BuiltInMapsMatchPovRay) {
+    const Probe wood = pigment("wood ramp_wave");
+    EXPECT_NEAR(length(wood.at({0.3, 0, 0}).rgb - Vec3{0.666, 0.312, 0.2}), 0, 1e-9);
+    EXPECT_NEAR(length(wood.at({0.7, 0, 0}).rgb - Vec3{0.4, 0.1333, 0.066}), 0, 1e-9);
+    const Probe marble = pigment("marble ramp_wave");
+    EXPECT_NEAR(length(marble.at({0.45, 0, 0}).rgb - Vec3{0.9, 0.44, 0.44}), 0, 1e-9);
+    EXPECT_NEAR(length(marble.at({0.95, 0, 0}).rgb), 0, 1e-9);
+    EXPECT_NEAR(length(pigment("brick").at({7.9, 2.9, 4.4}).rgb - Vec3(0.5)), 0, 1e-9);  // mortar
+    // radial's colour wheel (cyan, yellow at 0.333, magenta at 0.666); gradient's black to white.
+    const Probe radial = pigment("radial");
+    EXPECT_NEAR(length(radial.at({1, 0, 0.3}).rgb - Vec3{0.138883, 0.861117, 1}), 0, 2e-6);
+    EXPECT_NEAR(length(radial.at({-1, 0, 0.2}).rgb - Vec3{1, 0.404155, 0.595845}), 0, 2e-6);
+    EXPECT_NEAR(length(pigment("gradient x").at({0.3, 0, 0}).rgb - Vec3(0.3)), 0, 1e-9);
+    EXPECT_NEAR(length(pigment("brick").at({0.1, 0.1, 0.1}).rgb - Vec3{0.6, 0.15, 0.15}), 0, 1e-9);
+}
+
+TEST(PovPattern, BlockPatternsMatchPovRay) {
+    const Probe checker = pigment("checker");  // blue and green by default
+    EXPECT_EQ(checker.at({0.5, 0.5, 0.5}).rgb, (Vec3{0, 0, 1}));
+    EXPECT_EQ(checker.at({1.5, 0.5, 0.5}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(checker.at({0.5, -0.5, 0}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(checker.at({-1e-9, 0.5, 0.5}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(checker.at({-1e-10, 0.5, 0.5}).rgb, (Vec3{0, 0, 1}));  // faces moved a hair (measured)
+    const Probe hex = pigment("hexagon rgb <1, 0, 0>, rgb <0, 1, 0>, rgb <0, 0, 1>");
+    // Rows of the map printed by POV-Ray: colour 1 round the origin, 2 in +z, 3 to the sides.
+    EXPECT_EQ(hex.at({0, 0, 0}).rgb, (Vec3{1, 0, 0}));
+    EXPECT_EQ(hex.at({0.9, 0, 0}).rgb, (Vec3{1, 0, 0}));
+    EXPECT_EQ(hex.at({0, 0, 1.7}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(hex.at({0, 0, -1.7}).rgb, (Vec3{0, 0, 1}));
+    EXPECT_EQ(hex.at({-1.5, 0, 0.9}).rgb, (Vec3{0, 0, 1}));
+    EXPECT_EQ(hex.at({1.5, 0, -0.9}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(hex.at({0.8, 0, 0.4}).rgb, (Vec3{0, 0, 1}));
+    // brick: mortar (colour 1) at the end of each brick; courses shift along x and z.
+    const Probe brick = pigment("brick rgb 1, rgb 0");
+    EXPECT_EQ(brick.at({2, 1, 2}).rgb, Vec3(1));     // course 0: z mortar at 1.75..2.25
+    EXPECT_EQ(brick.at({2, 1, 3}).rgb, Vec3(0));
+    EXPECT_EQ(brick.at({7.6, 1, 3}).rgb, Vec3(1));   // x mortar at 7.5..8
+    EXPECT_EQ(brick.at({3.6, 4, 3}).rgb, Vec3(1));   // course 1: shifted half a brick along x
+    EXPECT_EQ(brick.at({7.6, 4, 3}).rgb, Vec3(0));
+    EXPECT_EQ(brick.at({2, 4, 4.2}).rgb, Vec3(1));   // and not along z
+    EXPECT_EQ(brick.at({1, 2.7, 1}).rgb, Vec3(1));   // y mortar at 2.5..3
+}
+
+TEST(PovPattern, PigmentMapsAndAverageNestPigments) {
+    const Probe pm = pigment("gradient x pigment_map { [0.2 checker] [0.6 gradient y color_map { [0 rgb <1, 0, 0>] "
+                             "[1 rgb <0, 1, 0>] }] }");
+    EXPECT_NEAR(length(pm.at({0.1, 0, 0}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(pm.at({0.4, 0.5, 0}).rgb - Vec3{0.25, 0.25, 0.5}), 0, 1e-9);
+    EXPECT_NEAR(length(pm.at({0.4, 0.5, 1}).rgb - Vec3{0.25, 0.75, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(pm.at({0.8, 0.25, 0}).rgb - Vec3{0.75, 0.25, 0}), 0, 1e-9);
+    const Probe avg = pigment("average pigment_map { [1 rgb <1, 0, 0>] [3 checker rgb 1, rgb 0] [2 gradient x] }");
+    EXPECT_NEAR(length(avg.at({0.5, 0.5, 0.5}).rgb - Vec3{0.833333, 0.666667, 0.666667}), 0, 1e-6);
+    EXPECT_NEAR(length(avg.at({1.5, 0.5, 0.25}).rgb - Vec3{0.333333, 0.166667, 0.166667}), 0, 1e-6);
+    // Pigments in a block pattern's list.
+    const Probe list = pigment("checker pigment { gradient x } pigment { rgb <1, 0, 0> }");
+    EXPECT_NEAR(list.at({0.25, 0.5, 0.5}).rgb.y, 0.25, 1e-9);
+    EXPECT_EQ(list.at({1.25, 0.5, 0.5}).rgb, (Vec3{1, 0, 0}));
+}
+
+TEST(PovPattern, LayeredTexturesMixTheirPatternsPointByPoint) {
+    // A gradient from clear to red over a white-and-black checker, the checker scaled on its own.
+    const Built b = build("sphere { 0, 1 texture { pigment { checker rgb 1, rgb 0 } scale 2 }\n"
+                          "  texture { pigment { gradient x color_map { [0 rgbt <1, 0, 0, 1>] [1 rgb <1, 0, 0>] } } } }");
+    const pattern::PigmentTable& t = b.scene.pigments;
+    const int root = b.scene.povSurfaces.at(0).pigment;
+    ASSERT_GE(root, 0);
+    // x = 0.25: the layer is red with transmit 0.75 over white; x = 2.25: over black (scaled checker).
+    EXPECT_NEAR(length(t.atRoot(root, {0.25, 0.5, 0.5}).rgb - Vec3{1, 0.75, 0.75}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(root, {2.25, 0.5, 0.5}).rgb - Vec3{0.25, 0, 0}), 0, 1e-9);
+}
+
+TEST(PovPattern, PatternedTexturesDrawTheirTexturesPigments) {
+    // The texture's transformations move the pattern and the textures in it.
+    const Built b = build("sphere { 0, 1 texture { checker texture { pigment { rgb <1, 0, 0> } finish { ambient 0.7 } }\n"
+                          "  texture { pigment { gradient x } } scale 2 } }\n"
+                          "sphere { 0, 1 texture { gradient x texture_map { [0.25 pigment { rgb <0, 0, 1> }] "
+                          "[0.75 pigment { rgb <1, 1, 0> }] } } }");
+    ASSERT_EQ(b.scene.objects.size(), 2u);
+    const pattern::PigmentTable& t = b.scene.pigments;
+    const PovSurface& s0 = b.scene.povSurfaces.at(size_t(b.scene.objects[0].material.pov));
+    ASSERT_GE(s0.pigment, 0);
+    EXPECT_NEAR(length(t.atRoot(s0.pigment, {0.5, 0.5, 0.5}).rgb - Vec3{1, 0, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s0.pigment, {2.5, 0.5, 0.5}).rgb - Vec3(0.25)), 0, 1e-9);
+    EXPECT_DOUBLE_EQ(s0.finish.ambient.x, 0.7);  // the first texture's finish
+    const PovSurface& s1 = b.scene.povSurfaces.at(size_t(b.scene.objects[1].material.pov));
+    ASSERT_GE(s1.pigment, 0);
+    EXPECT_NEAR(length(t.atRoot(s1.pigment, {0.5, 0, 0}).rgb - Vec3{0.5, 0.5, 0.5}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s1.pigment, {0.1, 0, 0}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
+}
+
+TEST(PovPattern, WarpsApplyInFileOrderWithTheTransformations) {
+    // Values printed by POV-Ray 3.7.
+    expectValues("gradient y warp { repeat 2*x offset <0, 0.25, 0> flip x }",
+                 {{{0.5, 0.1, 0}, 0.1}, {{2.5, 0.1, 0}, 0.35}, {{4.5, 0.1, 0}, 0.6}, {{-1.5, 0.1, 0}, 0.85}});
+    expectValues("gradient x warp { repeat 2*x offset <0, 0.25, 0> flip x }", {{{2.5, 0.1, 0}, 0.5}, {{3.2, 0, 0}, 0.8}});
+    expectValues("gradient x scale 0.5 warp { repeat x } scale 3",
+                 {{{0.5, 0, 0}, 0.333333}, {{2.9, 0, 0}, 0.933333}, {{3.5, 0, 0}, 0.333333}, {{4, 0, 0}, 0.666667}});
+    // A turbulence warp moves the point; unknown warps are noted.
+    const Probe turb = pigment(std::string("gradient x warp { turbulence <0.3, 0, 0> }") + kGrey);
+    int moved = 0;
+    for (int i = 0; i < 20; ++i) moved += std::fabs(turb.at({0.5, 0.37 * i, 0.11 * i}).rgb.x - 0.5) > 1e-3;
+    EXPECT_GT(moved, 15);
+    const Probe hole = pigment("gradient x warp { black_hole <0, 0, 0>, 1 }");
+    ASSERT_EQ(hole.b.warnings.size(), 1u);
+    EXPECT_NE(hole.b.warnings[0].find("warp black_hole"), std::string::npos);
+}
+
+TEST(PovPattern, TransformationsMoveThePatternInFileOrder) {
+    // Inside the pigment (POV-Ray: scale 2 rotate y*45 translate x; values printed by POV-Ray).
+    const Probe t = pigment("checker rgb 1, rgb 0 scale 2 rotate y*45 translate <1, 0, 0>");
+    EXPECT_EQ(t.at({1, 0.5, 0.5}).rgb, Vec3(0));
+    EXPECT_EQ(t.at({2.5, 0.5, 0.1}).rgb, Vec3(1));
+    EXPECT_EQ(t.at({0, 0.5, 1.6}).rgb, Vec3(0));
+    // The object's transformations after the pigment move it; those before do not.
+    EXPECT_NEAR(pigment("gradient x", "sphere { 0, 1 translate x*10 ").at({10.3, 0, 0}).rgb.x, 0.3, 1e-9);
+    EXPECT_NEAR(pigment("gradient x", "sphere { 0, 1 ", "translate x*0.5 scale 2").at({1.6, 0, 0}).rgb.x, 0.3, 1e-9);
+    // A texture's own transformations, and a union's after its texture reach its members.
+    const Built tex = build("sphere { 0, 1 texture { pigment { gradient x } scale 0.5 } }");
+    EXPECT_NEAR(tex.scene.pigments.atRoot(tex.scene.povSurfaces[0].pigment, {0.7, 0, 0}).rgb.x, 0.4, 1e-9);
+    const Built u = build("union { sphere { 0, 1 translate 5*y } pigment { gradient x } translate x*0.25 }");
+    EXPECT_NEAR(u.scene.pigments.atRoot(u.scene.povSurfaces[0].pigment, {0.5, 5, 0}).rgb.x, 0.25, 1e-9);
+}
+
+TEST(PovPattern, RenderedPatternsAreNotNotedUnrenderedOnesAre) {
+    const Probe flat = pigment("rgb <1, 0, 0>");
+    EXPECT_EQ(flat.surface().pigment, -1);  // flat colours keep the flat path
+    const Probe checker = pigment("checker rgb 1, rgb 0");
+    EXPECT_TRUE(checker.b.warnings.empty());
+    EXPECT_EQ(checker.b.scene.objects[0].material.color, Vec3(0.5));  // the mean stays the flat colour
+    const Probe cells = pigment("cells");
+    EXPECT_EQ(cells.surface().pigment, -1);
+    ASSERT_EQ(cells.b.warnings.size(), 1u);
+    EXPECT_NE(cells.b.warnings[0].find("pigment pattern cells (drawn in its mean colour)"), std::string::npos);
+}
+
+TEST(PovPattern, NoisePatternsStayInRangeAndRepeat) {
+    for (const char* p : {"bozo", "granite", "wrinkles", "agate", "crackle", "marble turbulence 0.5", "wood turbulence 0.3",
+                          "spotted", "bozo turbulence <0.5, 0.2, 0>"}) {
+        const Probe a = pigment(std::string(p) + kGrey);
+        ASSERT_GE(a.surface().pigment, 0) << p;
+        double lo = 1, hi = 0;
+        for (int i = 0; i < 400; ++i) {
+            const Vec3 q{0.137 * i, 0.071 * i, -0.053 * i};
+            const double v = a.at(q).rgb.x;
+            EXPECT_EQ(v, a.at(q).rgb.x);
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        EXPECT_GE(lo, 0) << p;
+        EXPECT_LE(hi, 1) << p;
+        EXPECT_GT(hi - lo, 0.2) << p;  // varies
+    }
+}
+
+// The colour (working space) the POV-Ray tracer sees along a ray.
+Vec3 traceColor(const Scene& s, const Ray& ray) {
+    const Bvh bvh(s.objects);
+    const RenderSettings rs;
+    TraceContext ctx;
+    return Tracer(s, bvh, rs).tracePrimary(ray, ctx, nullptr, nullptr);
+}
+
+TEST(PovPatternRender, ACheckerPlaneShowsBothColoursWhereExpected) {
+    const Built b = build("plane { y, 0 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> scale 2 } "
+                          "finish { ambient 1 diffuse 0 } translate <0.5, 0, 0> }");
+    const Vec3 down{0, -1, 0};
+    // Squares 2 units wide, moved 0.5 along x: [0.5, 2.5) is the first colour, [2.5, 4.5) the second.
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{1, 5, 1}, down}) - Vec3{1, 0, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{3, 5, 1}, down}) - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{0, 5, 1}, down}) - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{1, 5, -1}, down}) - Vec3{0, 0, 1}), 0, 1e-9);
+    // A whole render: both colours appear, in about equal shares.
+    const Built view = build("camera { location <0, 10, 0> look_at 0 angle 60 }\n"
+                             "plane { y, 0 pigment { checker rgb <1, 0, 0>, rgb <0, 0, 1> } finish { ambient 1 diffuse 0 } }");
+    RenderSettings rs;
+    rs.width = 32;
+    rs.height = 24;
+    rs.threads = 1;
+    const Bvh bvh(view.scene.objects);
+    TraceStats stats;
+    const ImageF img = render(view.scene, bvh, rs, stats);
+    int red = 0, blue = 0;
+    for (int y = 0; y < rs.height; ++y)
+        for (int x = 0; x < rs.width; ++x) {
+            const Vec3 c = img.at(x, y);
+            red += c.x > 0.9 && c.z < 0.1;
+            blue += c.z > 0.9 && c.x < 0.1;
+        }
+    EXPECT_GT(red, 200);
+    EXPECT_GT(blue, 200);
+}
+
+TEST(PovPatternRender, SkySphereIsLookedUpByDirection) {
+    const Built b = build("background { rgb <0, 1, 0> }\n"
+                          "sky_sphere { pigment { gradient y color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } "
+                          "scale 2 translate -1 } rotate z*90 }");
+    EXPECT_TRUE(b.warnings.empty());
+    // Turned 90° about z: +y of the pigment looks along −x.
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{5, 5, 5}, {-1, 0, 0}}) - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{5, 5, 5}, {1, 0, 0}}) - Vec3{1, 0, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(traceColor(b.scene, Ray{{5, 5, 5}, {0, 0, 2}}) - Vec3{0.5, 0, 0.5}), 0, 1e-9);
+    // Layers: a transmitting upper layer lets the one below through; emission scales the sky.
+    const Built l = build("sky_sphere { pigment { rgb <1, 0, 0> } pigment { rgbt <0, 0, 1, 0.25> } emission 2 }");
+    EXPECT_NEAR(length(traceColor(l.scene, Ray{{0, 0, 0}, {0, 1, 0}}) - Vec3{0.5, 0, 1.5}), 0, 1e-9);
+}
+
+// Rays' noise is not POV-Ray's, so noise patterns cannot match point for point; their mean and
+// spread over space can. POV-Ray 3.7's figures over the same 400 points (printed as above).
+TEST(PovPattern, NoisePatternsSpreadAsPovRaysDo) {
+    struct Stat {
+        const char* body;
+        double mean, sd;
+    };
+    const Stat stats[] = {{"bozo", 0.454, 0.133},       {"granite", 0.414, 0.162},
+                          {"wrinkles", 0.451, 0.144},   {"agate", 0.494, 0.346},
+                          {"crackle", 0.180, 0.144},    {"marble turbulence 1", 0.489, 0.297},
+                          {"wood turbulence 0.5", 0.486, 0.280}};
+    for (const Stat& st : stats) {
+        const Probe pr = pigment(std::string(st.body) + kGrey);
+        double sum = 0, sum2 = 0;
+        const int n = 400;
+        for (int i = 0; i < n; ++i) {
+            const double v = pr.at({0.5 + 0.0213 * i, 0.0731 * i, -0.0517 * i}).rgb.x;
+            sum += v;
+            sum2 += v * v;
+        }
+        const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+        EXPECT_NEAR(mean, st.mean, 0.07) << st.body;
+        EXPECT_NEAR(sd, st.sd, 0.04) << st.body;
+    }
+}
+
+}  // namespace
+}  // namespace rays
