@@ -155,6 +155,12 @@ TEST(PovOptionsSwitch, OutputTypeThreadsResumeAndDeclare) {
     EXPECT_EQ(d.declares[0].name, "Rad");
     EXPECT_EQ(d.declares[0].value, "1e-3");  // the later declaration of a name wins
     EXPECT_EQ(d.declares[1].value, "\"str\"");
+    // Version= and +MV set the initial #version; POV-Ray reads numbers below 1 as 1.0.
+    EXPECT_EQ(readArgs({}).o.version, 0.0);
+    EXPECT_EQ(readArgs({"+MV3.5"}).o.version, 3.5);
+    EXPECT_EQ(readArgs({"Version=0.5"}).o.version, 1.0);
+    EXPECT_TRUE(readArgs({"Version=3.1"}).warnings.empty());
+    EXPECT_NE(errorOf({"+MVabc"}).find("Version must be a number"), std::string::npos);
 }
 
 TEST(PovOptionsSwitch, HarmlessOptionsAreAcceptedSilently) {

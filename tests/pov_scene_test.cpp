@@ -195,6 +195,10 @@ TEST(PovGlobals, AssumedGammaDefaultsByVersion) {
     EXPECT_DOUBLE_EQ(build("#version 3.6; sphere { 0, 1 }").scene.pov.assumedGamma, 0.0);  // written unchanged
     EXPECT_DOUBLE_EQ(build("#version 3.7; global_settings { assumed_gamma srgb } sphere { 0, 1 }").scene.pov.assumedGamma, 0.0);
     EXPECT_DOUBLE_EQ(build("#version 3.6; sphere { 0, 1 }").scene.pov.version, 3.6);
+    // Without #version POV-Ray 3.7 keeps pre-3.7 rules, while `version` reads 3.7: an include that
+    // saves version and restores it (colors.inc does) switches to 3.7's rules (measured).
+    EXPECT_DOUBLE_EQ(build("sphere { 0, 1 }").scene.pov.assumedGamma, 0.0);
+    EXPECT_DOUBLE_EQ(build("#declare V = version; #version 3.5; #version V; sphere { 0, 1 }").scene.pov.assumedGamma, 1.0);
     const Built b = build("#version 3.7; global_settings { assumed_gamma 2.2 ambient_light rgb 0.5 max_trace_level 7 }\n"
                           "background { rgb <0.1, 0.2, 0.3> }");
     EXPECT_DOUBLE_EQ(b.scene.pov.assumedGamma, 2.2);

@@ -30,6 +30,15 @@ TEST(SdlValues, FloatArithmeticAndPrecedence) {
     EXPECT_EQ(dbg("#debug str(select(-1,1,2),0,0) #debug str(select(0,1,2,3),0,0) #debug str(max(1,5,3),0,0)"), "125");
 }
 
+TEST(SdlValues, VersionReadsPovRaysOwnUntilSet) {
+    // Measured with POV-Ray 3.7.0: 3.70 without #version; +MV / Version= set the start.
+    EXPECT_EQ(dbg("#debug str(version, 0, 2)"), "3.70");
+    EXPECT_EQ(dbg("#version 3.5; #debug str(version, 0, 2)"), "3.50");
+    sdl::LanguageOptions o;
+    o.version = 3.1;
+    EXPECT_EQ(runSdl("#debug str(version, 0, 2)", o).debug, "3.10");
+}
+
 TEST(SdlValues, VectorPromotion) {
     EXPECT_EQ(dbg("#declare V = <1,2> + <1,2,3>; #debug vstr(3,V,\",\",0,0)"), "2,4,3");
     EXPECT_EQ(dbg("#declare V = <1,2,3>*2 + 1; #debug vstr(3,V,\",\",0,0)"), "3,5,7");

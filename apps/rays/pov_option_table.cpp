@@ -99,7 +99,7 @@ const KeyInfo kKeys[] = {
     {"Dither_Method", Key::Warned, Kind::Text, "dithering is not supported"},
     {"File_Gamma", Key::Warned, Kind::Text, "the output gamma is not adjustable"},
     {"Include_Header", Key::Warned, Kind::Text, "an include header is not supported yet"},
-    {"Version", Key::Warned, Kind::Float, "the initial language version is not settable yet"},
+    {"Version", Key::Version, Kind::Float},
     {"Grayscale_Output", Key::Warned, Kind::Bool, "greyscale output is not supported"},
     {"Create_Ini", Key::Warned, Kind::Text, "no INI file is written"},
     {"Debug_File", Key::Warned, Kind::Text, "messages are not copied to files"},

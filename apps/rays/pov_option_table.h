@@ -12,7 +12,7 @@ namespace rays::cli::pov {
 enum class Key {
     InputFileName, OutputFileName, Width, Height,
     Antialias, AntialiasThreshold, AntialiasDepth, SamplingMethod, Jitter, JitterAmount,
-    LibraryPath, Declare,
+    LibraryPath, Declare, Version,
     Clock, InitialFrame, FinalFrame, InitialClock, FinalClock, SubsetStartFrame, SubsetEndFrame, FrameStep, CyclicAnimation,
     StartRow, EndRow, StartColumn, EndColumn,
     OutputToFile, OutputFileType, OutputAlpha, BitsPerColor, Compression, WorkThreads, ContinueTrace,

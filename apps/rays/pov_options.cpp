@@ -377,6 +377,9 @@ void PovOptionReader::setOther(const Value& v) {
             break;
         case Key::LibraryPath: addLibraryPath(v.text); break;
         case Key::Declare: setDeclare(v); break;
+        case Key::Version:
+            o_.version = std::max(1.0, v.number);  // POV-Ray 3.7 takes any number and reads 1.0 below 1 (measured)
+            break;
         case Key::WorkThreads: o_.threads = v.inRange(0, 1024); break;
         case Key::ContinueTrace: o_.continueTrace = v.flag; break;
         case Key::Warned: {

@@ -41,6 +41,7 @@ struct PovOptions {
     int jpegQuality = 0;       ///< Compression (0 or 1 mean POV-Ray's 85) or --jpeg-quality; 0: not given
     std::vector<std::string> libraryPaths;  ///< Library_Path, +L, render's --library: in order, each once
     std::vector<sdl::Declare> declares;     ///< Declare=NAME=VALUE, in order
+    double version = 0;        ///< Version=, +MV: the initial #version; 0: not given
     int threads = -1;          ///< Work_Threads, +WT (0: all cores); -1: not given
     bool continueTrace = false;  ///< Continue_Trace, +C (and render's --resume): keep frames already written
 };

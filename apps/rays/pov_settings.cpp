@@ -98,6 +98,7 @@ void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job) {
     job.outputPath = povOutputPath(o, povForm);
     job.language.libraryPaths = o.libraryPaths;
     job.language.declares = o.declares;
+    job.language.version = o.version;
     checkFullImage(o, s.width, s.height);
 }
 

@@ -55,7 +55,7 @@ void PovHost::topLevel(sdl::Interpreter& in, const sdl::ItemRef& item) {
         for (const sdl::Entry& e : item->entries)
             if (e.key == uint16_t(Kw::assumed_gamma) && !e.args.empty()) in.setAssumedGamma(e.args[0].c[0]);
     }
-    out_.items.push_back(ParsedScene::Top{item, defaults_, defaults_ ? defaults_->size() : 0, in.version()});
+    out_.items.push_back(ParsedScene::Top{item, defaults_, defaults_ ? defaults_->size() : 0, in.compatibilityVersion()});
 }
 
 // Each #default adds to the defaults in force (POV-Ray 3.7 reference, "Default Directive"): the

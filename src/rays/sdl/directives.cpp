@@ -455,6 +455,7 @@ void Interpreter::dirVersion() {
     if (isSym(';')) next();
     else warning(at, "#version should end with ';'");
     version_ = v;
+    versionSet_ = true;
 }
 
 void Interpreter::dirDefault() {

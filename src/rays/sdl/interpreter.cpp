@@ -18,7 +18,12 @@ namespace rays::sdl {
 namespace fs = std::filesystem;
 
 Interpreter::Interpreter(const LanguageOptions& options, ItemHost& host, Diagnostics diagnostics, Limits limits)
-    : options_(options), host_(host), diag_(std::move(diagnostics)), limits_(limits) {}
+    : options_(options), host_(host), diag_(std::move(diagnostics)), limits_(limits) {
+    if (options.version > 0) {
+        version_ = options.version;
+        versionSet_ = true;
+    }
+}
 
 Interpreter::~Interpreter() = default;
 

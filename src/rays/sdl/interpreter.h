@@ -167,6 +167,12 @@ public:
 
     // ---- state the host reads -----------------------------------------------------------------
     double version() const { return version_; }
+    /// The version whose rules the scene follows: version() once a #version directive or the
+    /// Version= option set it; before that POV-Ray 3.7 keeps pre-3.7 compatibility (measured: an
+    /// include that saves `version` and restores it with #version switches a scene without
+    /// #version to 3.7's rules).
+    double compatibilityVersion() const { return versionSet_ ? version_ : kUnversioned; }
+    static constexpr double kUnversioned = 3.62;
     const LanguageOptions& options() const { return options_; }
     ItemHost& host() { return host_; }
     /// `assumed_gamma` as the host read it from global_settings (needed for srgb colours); 0 unset.
@@ -360,7 +366,9 @@ private:
     /// Saves the cursor into the top frame before another frame goes over it.
     void saveTop();
 
-    double version_ = 3.62;
+    /// The version in force: `version`'s value; 3.7 (POV-Ray's own) until a #version or Version=.
+    double version_ = 3.7;
+    bool versionSet_ = false;  ///< a #version directive or the Version= option set version_
     double assumedGamma_ = 0;
     uint32_t nesting_ = 0;
     uint32_t macroDepth_ = 0;  ///< macro frames on the stack

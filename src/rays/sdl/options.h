@@ -40,6 +40,10 @@ struct LanguageOptions {
     AnimationClock animation;
     int imageWidth = 640, imageHeight = 480;  ///< `image_width`, `image_height`
     Dialect dialect = Dialect::Auto;
+    /// Version= / +MV: the language version in force from the start, as if the scene began with
+    /// #version (0: none given: `version` reads 3.7, POV-Ray's own, and the scene gets pre-3.7
+    /// compatibility until a #version directive).
+    double version = 0;
     bool strict = false;  ///< a feature that is parsed but not rendered yet is an error, not a warning
 };
 
