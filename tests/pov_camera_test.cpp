@@ -98,6 +98,30 @@ TEST(PovCamera, UltraWideAngle) {
     expectDir("ultra_wide_angle location 0 direction z right x up y", 0, 0, {-0.62945, 0.62945, 0.45559});
 }
 
+TEST(PovCamera, Omnimax) {
+    // Square: a 180° fisheye with a measured radial curve, cut below the dome's rim.
+    const std::string square = "omnimax location 0 direction z right x up y";
+    expectDir(square, 75, 50, {0.64025, 0, 0.76815});
+    expectDir(square, 100, 50, {0.99979, 0, 0.02083});
+    expectDir(square, 50, 70, {0, -0.52743, 0.84961});
+    expectDir(square, 80, 65, {0.72381, -0.36190, 0.58749});
+    expectDir(square, 30, 62, {-0.51751, -0.31051, 0.79736});
+    EXPECT_TRUE(CameraRays::missed(pixelRay(square, 50, 80)));
+    EXPECT_TRUE(CameraRays::missed(pixelRay(square, 80, 78)));  // inside the circle, below the rim
+    // Wider than high: the frame from 45° below the horizon to the zenith.
+    const std::string wide = "omnimax location 0 direction z right 1.33*x up y";
+    expectDir(wide, 50, 50, {0, 0.30584, 0.95209});
+    expectDir(wide, 75, 50, {0.64968, 0.27971, 0.70687});
+    expectDir(wide, 50, 100, {0, -0.69918, 0.71496});
+    expectDir(wide, 20, 20, {-0.65872, 0.73159, 0.17577});
+    EXPECT_TRUE(CameraRays::missed(pixelRay(wide, 100, 50)));
+    // Higher than wide: the circle stretched vertically.
+    const std::string tall = "omnimax location 0 direction 2*z right 0.75*x up y";
+    expectDir(tall, 75, 30, {0.58871, 0.62795, 0.50906});
+    expectDir(tall, 60, 70, {0.25032, -0.66751, 0.70126});
+    expectDir(tall, 90, 50, {0.91318, 0, 0.40758});
+}
+
 TEST(PovCamera, Panoramic) {
     expectDir("panoramic location 0 direction z right x up y", 85, 15, {0.41082, 0.88602, 0.21498});
     expectDir("panoramic location 0 direction z right 2*x up y", 85, 15, {0.66946, 0.72192, 0.17516});

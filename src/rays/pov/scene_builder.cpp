@@ -156,6 +156,7 @@ void SceneBuilder::addCamera(const Item& cam) {
             case Kw::orthographic: c.projection = Projection::Orthographic; break;
             case Kw::fisheye: c.projection = Projection::Fisheye; break;
             case Kw::ultra_wide_angle: c.projection = Projection::UltraWideAngle; break;
+            case Kw::omnimax: c.projection = Projection::Omnimax; break;
             case Kw::panoramic: c.projection = Projection::Panoramic; break;
             case Kw::spherical: c.projection = Projection::Spherical; break;
             case Kw::cylinder: {
@@ -164,7 +165,7 @@ void SceneBuilder::addCamera(const Item& cam) {
                 c.projection = Projection(int(Projection::Cylinder1) + type - 1);
                 break;
             }
-            case Kw::omnimax: case Kw::mesh_camera:
+            case Kw::mesh_camera:
                 c.projection = Projection::Perspective;
                 notes_.note(std::string("camera type ") + std::string(sdl::keywordName(e.kw())), e.loc,
                             "(rendered as a perspective camera)");
