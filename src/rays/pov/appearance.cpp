@@ -159,7 +159,7 @@ void applyFinish(const Item& f, PovFinish& fin, NotRendered& notes) {
             case Kw::reflection_exponent: fin.reflectionExponent = arg(0); break;
             case Kw::conserve_energy: fin.conserveEnergy = true; break;
             case Kw::irid: notes.note("irid", e.loc); break;
-            case Kw::crand: notes.note("crand", e.loc); break;
+            case Kw::crand: fin.crand = std::max(0.0, arg(0)); break;
             case Kw::subsurface: notes.note("subsurface", e.loc); break;
             case Kw::fresnel: fin.reflectionFresnel = arg(0) != 0; break;
             case Kw::refraction: case Kw::ior: case Kw::caustics: case Kw::fade_distance: case Kw::fade_power:

@@ -118,7 +118,10 @@ void SceneBuilder::updateDefaults(const ParsedScene::Top& top) {
 // the vectors.
 void SceneBuilder::addCamera(const Item& cam) {
     Vec3 loc{0, 0, 0}, dir{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
+    Vec3 lookAt{0, 0, 1};  // POV-Ray's default look_at point (measured: orthographic's window size)
     Camera c;
+    bool rightOrUpSet = false, angleSet = false;
+    double angles[2] = {-1, -1};  // the angle values given (degrees; −1: none)
     std::vector<const Entry*> entries;
     std::function<void(const Item&)> collect = [&](const Item& it) {
         for (const Entry& e : it.entries) {
@@ -136,31 +139,48 @@ void SceneBuilder::addCamera(const Item& cam) {
             Transform m;
             applyTransform(e, m);
             loc = m.point(loc);
+            lookAt = m.point(lookAt);
             dir = m.vector(dir);
             up = m.vector(up);
             right = m.vector(right);
             continue;
         }
         switch (e.kw()) {
-            case Kw::perspective: break;
-            case Kw::orthographic: case Kw::fisheye: case Kw::ultra_wide_angle: case Kw::omnimax: case Kw::panoramic:
-            case Kw::spherical: case Kw::cylinder: case Kw::mesh_camera:
+            case Kw::perspective: c.projection = Projection::Perspective; break;
+            case Kw::orthographic: c.projection = Projection::Orthographic; break;
+            case Kw::fisheye: c.projection = Projection::Fisheye; break;
+            case Kw::ultra_wide_angle: c.projection = Projection::UltraWideAngle; break;
+            case Kw::omnimax: c.projection = Projection::Omnimax; break;
+            case Kw::panoramic: c.projection = Projection::Panoramic; break;
+            case Kw::spherical: c.projection = Projection::Spherical; break;
+            case Kw::cylinder: {
+                const int type = clampedInt(toFloat(e.args[0]), 0, 5);
+                if (type < 1 || type > 4) throw Error(notes_.where(e.loc) + ": error: cylinder camera type must be 1 to 4");
+                c.projection = Projection(int(Projection::Cylinder1) + type - 1);
+                break;
+            }
+            case Kw::mesh_camera:
+                c.projection = Projection::Perspective;
                 notes_.note(std::string("camera type ") + std::string(sdl::keywordName(e.kw())), e.loc,
                             "(rendered as a perspective camera)");
                 break;
             case Kw::location: loc = toVec3(e.args[0]); break;
             case Kw::direction: dir = toVec3(e.args[0]); break;
-            case Kw::up: up = toVec3(e.args[0]); break;
-            case Kw::right: right = toVec3(e.args[0]); break;
+            case Kw::up: up = toVec3(e.args[0]); rightOrUpSet = true; break;
+            case Kw::right: right = toVec3(e.args[0]); rightOrUpSet = true; break;
             case Kw::sky: sky = toVec3(e.args[0]); break;
             case Kw::angle: {
-                const double a = toFloat(e.args[0]);
+                angleSet = true;
+                for (size_t i = 0; i < 2; ++i) angles[i] = i < e.args.size() ? toFloat(e.args[i]) : -1;
+                if (c.projection != Projection::Perspective || e.args.empty()) break;
+                const double a = angles[0];
                 if (a > 0 && a < 180 && length(dir) > 0)
                     dir = normalize(dir) * (0.5 * length(right) / std::tan(a * std::numbers::pi / 360.0));
                 break;
             }
             case Kw::look_at: {
                 const Vec3 at = toVec3(e.args[0]);
+                lookAt = at;
                 const double handed = dot(cross(up, dir), right);
                 const double dl = length(dir), ul = length(up), rl = length(right);
                 if (length(at - loc) == 0) throw Error(notes_.where(e.loc) + ": error: look_at is the camera location");
@@ -192,8 +212,42 @@ void SceneBuilder::addCamera(const Item& cam) {
     c.lookAt = loc + dir;
     c.right = right / dl;
     c.up = up / dl;
+    if (c.projection != Projection::Perspective) finishProjection(c, dir, right, up, lookAt, rightOrUpSet, angleSet, angles);
     if (c.aperture > 0 && c.blurSamples == 0) c.blurSamples = 16;
     scene_.cameras.push_back(c);
+}
+
+// The vectors and angles of the non-perspective projections, as measured from POV-Ray 3.7 renders.
+// Orthographic: the window is right × up as written; with no right and up given, or with angle,
+// it is the view of a perspective camera with the same vectors at the look_at point (whose default
+// is <0,0,1>): right·dist/|direction|, or 2·dist·tan(angle/2) wide keeping up's aspect. The angle
+// projections default to 90° (spherical: 360° × 180°; its vertical angle to half the horizontal).
+void SceneBuilder::finishProjection(Camera& c, Vec3 dir, Vec3 right, Vec3 up, Vec3 lookAt, bool rightOrUpSet,
+                                    bool angleSet, const double angles[2]) {
+    constexpr double kDeg = std::numbers::pi / 180.0;
+    if (c.projection == Projection::Orthographic) {
+        if (angleSet || !rightOrUpSet) {
+            double dist = length(lookAt - c.location);
+            if (dist == 0) dist = 1;
+            const double a = angles[0];
+            if (a > 0 && a < 180) {
+                const double w = 2 * dist * std::tan(0.5 * a * kDeg);
+                up = normalize(up) * (w * length(up) / length(right));
+                right = normalize(right) * w;
+            } else {
+                right = right * (dist / length(dir));
+                up = up * (dist / length(dir));
+            }
+        }
+        c.right = right;
+        c.up = up;
+        return;
+    }
+    c.right = right;
+    c.up = up;
+    const bool spherical = c.projection == Projection::Spherical;
+    c.angleH = (angles[0] > 0 ? angles[0] : spherical ? 360 : 90) * kDeg;
+    c.angleV = angles[1] > 0 ? angles[1] * kDeg : (angles[0] > 0 ? 0.5 * c.angleH : 180 * kDeg);
 }
 
 // ---- lights ----------------------------------------------------------------------------------
@@ -309,6 +363,9 @@ Material SceneBuilder::material(const Appearance& look) {
     s.noShadow = noShadow_;
     s.pigment = pigmentRoot(look);
     if (s.pigment >= 0) s.pigmentTransparent = scene_.pigments.mayLetLightThrough(look.pigmentNode);
+    s.noImage = noImage_;
+    s.noReflection = noReflection_;
+    s.doubleIlluminate = doubleIlluminate_;
     m.pov = int(scene_.povSurfaces.size());
     scene_.povSurfaces.push_back(s);
     return m;
@@ -339,7 +396,8 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     std::vector<const Item*> children;
     std::vector<Clip> clips;
     const Entry* bounds = nullptr;
-    bool inverse = false, open = false, noShadow = false;
+    bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
+         doubleIlluminate = false;
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
         if (e.positional()) {
@@ -364,20 +422,25 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::bounded_by: bounds = &e; break;  // a speed hint only
             case Kw::inverse: inverse = true; break;
             case Kw::no_shadow: noShadow = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::no_image: notes_.note("no_image", e.loc); break;
-            case Kw::no_reflection: notes_.note("no_reflection", e.loc); break;
-            case Kw::double_illuminate: break;
+            case Kw::no_image: noImage = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::double_illuminate: doubleIlluminate = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder; break;
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
     }
-    // no_shadow holds for the object and everything inside it.
-    struct KeepNoShadow {
+    // no_shadow, no_image, no_reflection and double_illuminate hold for the object and everything
+    // inside it.
+    struct KeepFlag {
         bool& flag;
         bool saved;
-        ~KeepNoShadow() { flag = saved; }
-    } keep{noShadow_, noShadow_};
+        ~KeepFlag() { flag = saved; }
+    } keep{noShadow_, noShadow_}, keepImage{noImage_, noImage_}, keepReflection{noReflection_, noReflection_},
+        keepDouble{doubleIlluminate_, doubleIlluminate_};
     noShadow_ = noShadow_ || noShadow;
+    noImage_ = noImage_ || noImage;
+    noReflection_ = noReflection_ || noReflection;
+    doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
     if (look.set) look.pigmentToObject = parent * look.pigmentToObject;  // texture space → world

@@ -30,6 +30,9 @@ public:
 private:
     void updateDefaults(const ParsedScene::Top& top);
     void addCamera(const Item& camera);
+    /// Sets the window or angles of a non-perspective camera from the camera block's vectors.
+    static void finishProjection(Camera& c, Vec3 dir, Vec3 right, Vec3 up, Vec3 lookAt, bool rightOrUpSet,
+                                 bool angleSet, const double angles[2]);
     void addLight(const Item& light, const Transform& toWorld);
     void addObject(const Item& object, const Transform& parent, const Appearance* inherited, int depth);
     void addPrimitive(Kw kind, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
@@ -68,6 +71,9 @@ private:
     bool gammaSet_ = false;
     bool backgroundSet_ = false;
     bool noShadow_ = false;    ///< the objects being added cast no shadow (no_shadow, looks_like)
+    bool noImage_ = false;       ///< the objects being added are hidden from camera rays (no_image)
+    bool noReflection_ = false;  ///< and from reflection rays (no_reflection)
+    bool doubleIlluminate_ = false;  ///< and lit from both sides (double_illuminate)
     uint64_t maxObjects_, objects_ = 0;
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries

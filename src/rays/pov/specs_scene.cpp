@@ -20,6 +20,15 @@ void readAssumedGamma(Interpreter& in, Entry& e) {
     e.args.push_back(Value::number(in.parseFloat()));
 }
 
+// Camera angle [H [[,] V]]: orthographic takes angle with no value (POV-Ray 3.7 reference,
+// "Orthographic projection"); spherical takes a vertical angle after the horizontal one.
+void readCameraAngle(Interpreter& in, Entry& e) {
+    if (!in.atNumericStart()) return;
+    e.args.push_back(in.parseNumeric(false));
+    if (in.isSym(',')) in.next();
+    if (in.atNumericStart()) e.args.push_back(in.parseNumeric(false));
+}
+
 // charset ascii | utf8 | sys.
 void readCharset(Interpreter& in, Entry& e) {
     const Kw k = in.kw();
@@ -35,7 +44,7 @@ void Specs::buildScene() {
                                 flag(Kw::ultra_wide_angle), flag(Kw::omnimax), flag(Kw::panoramic),
                                 flag(Kw::spherical), number(Kw::cylinder), sub(Kw::mesh_camera, meshCamera),
                                 expr(Kw::location), expr(Kw::look_at), expr(Kw::right), expr(Kw::up),
-                                expr(Kw::direction), expr(Kw::sky), list(Kw::angle, 2), expr(Kw::focal_point),
+                                expr(Kw::direction), expr(Kw::sky), custom(Kw::angle, readCameraAngle), expr(Kw::focal_point),
                                 number(Kw::aperture), list(Kw::blur_samples, 2), number(Kw::confidence),
                                 number(Kw::variance), sub(Kw::bokeh, pigmentBody), item(Kw::normal)};
     camera = makeSpec("a camera", Kw::camera, {&cameraRules, &transformRules()}, true);

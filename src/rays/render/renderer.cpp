@@ -123,6 +123,7 @@ ViewSetup resolveView(const Scene& scene, const RenderSettings& s) {
     v.camera = scene.cameras.at(size_t(s.cameraIndex));
     v.rays = CameraRays(v.camera);
     v.aperture = s.aperture >= 0 ? s.aperture : v.camera.aperture;
+    if (v.camera.projection != Projection::Perspective) v.aperture = 0;  // focal blur: perspective only
     v.focalDistance = s.focalDistance > 0 ? s.focalDistance : v.camera.focalDistance();
     if (v.focalDistance <= 0) v.focalDistance = length(v.camera.lookAt - v.camera.location);
     v.samples = sampleCount(s.aa, s.spp);
@@ -165,8 +166,9 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
             ray = Ray{origin, normalize(focus - origin)};
         }
         if (n == 0 && info) *info = PathInfo{};
-        sum += w * tracer.tracePrimary(ray, ctx, nullptr, n == 0 ? info : nullptr);
         weightSum += w;
+        if (CameraRays::missed(ray)) continue;  // outside the projection: black (as POV-Ray)
+        sum += w * tracer.tracePrimary(ray, ctx, nullptr, n == 0 ? info : nullptr);
     }
     return weightSum > 0 ? sum / weightSum : Vec3{};
 }

@@ -106,7 +106,7 @@ public:
     /// settings ask for the flat or normals views.
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
-          povShadowsWalk_(povPath_ && povShadowsWalk()) {}
+          povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()) {}
 
     /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
     /// primarySamples: the render's camera samples (each buffer is queried about that often).
@@ -192,12 +192,18 @@ private:
         bool fades = false;
         Vec3 faded{1, 1, 1};
         bool primary = false;
+        bool reflected = false;  ///< a reflection is on the ray's way from the camera
     };
     /// True when the scene is traced by POV-Ray's rules: pov.enabled, and not the flat or normals view.
     static bool usesPovPath(const Scene& scene, const RenderSettings& settings);
     /// True when some object lets light through (filter or transmit) or casts no shadow
     /// (no_shadow): blocked shadow rays then walk the surfaces on their way.
     bool povShadowsWalk() const;
+    /// True when some object is hidden from camera or reflection rays (no_image, no_reflection).
+    bool povHides() const;
+    /// firstHit, passing the objects hidden from this kind of ray (no_image: camera rays and
+    /// their transmitted rays; no_reflection: rays after a reflection).
+    Hit povFirstHit(const Ray& ray, bool reflected) const;
     /// tracePrimary of POV-Ray scenes (a camera ray at level 1, weight 1, in no interior).
     Vec3 tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const;
     /// Colour along a ray (the background when it misses), faded by the interior it travels in or
@@ -251,6 +257,7 @@ private:
     const SharedOrigins* origins_;
     bool povPath_;         ///< the scene is traced by POV-Ray's rules
     bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
+    bool povHides_;        ///< and some are hidden from camera or reflection rays
 };
 
 }  // namespace rays

@@ -56,6 +56,24 @@ const PovSurface& Tracer::povSurfaceOf(const Material& m) const {
                                                                    : kDefaultSurface;
 }
 
+bool Tracer::povHides() const {
+    for (const PovSurface& s : scene_.povSurfaces)
+        if (s.noImage || s.noReflection) return true;
+    return false;
+}
+
+Hit Tracer::povFirstHit(const Ray& ray, bool reflected) const {
+    Hit hit = firstHit(ray);
+    if (!povHides_) return hit;
+    // The hidden objects are passed by looking further along the same ray.
+    while (hit.valid()) {
+        const PovSurface& s = povSurfaceOf(shadedObject(scene_.objects, hit).material);
+        if (!(reflected ? s.noReflection : s.noImage)) break;
+        hit = bvh_.closest(scene_.objects, ray, hit.t + kMinHitT * std::max(1.0, hit.t), kInfinity);
+    }
+    return hit;
+}
+
 Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const {
     PovRay r;
     r.primary = true;
@@ -63,7 +81,7 @@ Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) 
 }
 
 Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const {
-    const Hit hit = firstHit(ray);  // hit.t is infinite for a miss
+    const Hit hit = povFirstHit(ray, r.reflected);  // hit.t is infinite for a miss
     if (info) info->push(hit.object);
     Vec3 fade(1.0);
     if (r.fades && r.interior >= 0) {
@@ -125,7 +143,10 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
     // A reflected ray stays on this side of the surface, a transmitted one crosses it. Only
     // transmitted rays fade over their path inside an interior: reflected ones (total internal
     // reflection included) do not, but the fade before them still counts for the light (measured).
-    PovRay reflected{.level = r.level + 1, .weight = r.weight, .interior = pt.entering ? r.interior : pt.object};
+    PovRay reflected{.level = r.level + 1,
+                     .weight = r.weight,
+                     .interior = pt.entering ? r.interior : pt.object,
+                     .reflected = true};
     if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
     auto trace = [&](Vec3 dir, const PovRay& child) {
         ++ctx.stats.secondaryRays;
@@ -145,7 +166,8 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
         const PovRay through{.level = level,
                              .weight = r.weight * maxAbsComponent(T),
                              .interior = pt.entering ? pt.object : -1,
-                             .fades = true};
+                             .fades = true,
+                             .reflected = r.reflected};
         if (through.weight >= bailout) color += T * trace(dir, through);
     }
     reflected.weight = r.weight * maxComponent(R);
@@ -186,7 +208,8 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
         const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
-        color += opacity * t.diffuse;
+        const double grain = f.crand != 0 ? 1 - f.crand * ctx.rng.next() : 1.0;  // crand
+        color += (opacity * grain) * t.diffuse;
         if (!light.shadowless) color += t.highlight;  // shadowless lights make no highlights (the manual; measured)
     }
     return blocked;

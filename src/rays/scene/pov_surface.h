@@ -22,6 +22,9 @@ struct PovFinish {
     bool reflectionFresnel = false;
     double reflectionFalloff = 1, reflectionExponent = 1, reflectionMetallic = 0;
     bool conserveEnergy = false;
+    /// Graininess: each light's diffuse term times 1 − crand·U, U uniform in [0, 1) drawn per light
+    /// and pixel sample (the manual, "Crand Graininess"; the distribution measured).
+    double crand = 0;
 };
 
 struct PovInterior {
@@ -37,6 +40,8 @@ struct PovSurface {
     double transmit = 0;        ///< the pigment's transmit (its filter is Material::filter)
     bool doubleIlluminate = false;
     bool noShadow = false;      ///< the object casts no shadow (POV-Ray's no_shadow; looks_like objects)
+    bool noImage = false;       ///< not seen by camera rays nor rays transmitted from them (no_image)
+    bool noReflection = false;  ///< not seen by rays after a reflection (no_reflection)
     /// The pigment pattern: a root of Scene::pigments, or -1 for the flat colour (Material::color,
     /// Material::filter and transmit above; with a pattern those hold its mean colour).
     int pigment = -1;
