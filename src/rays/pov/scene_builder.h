@@ -5,9 +5,14 @@
 // objects of unrendered kinds are left out, unrendered appearance is approximated.
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_map>
 
 #include "rays/pov/appearance.h"
 #include "rays/pov/not_rendered.h"
+#include "rays/io/ttf_font.h"
 #include "rays/pov/pov_host.h"
 #include "rays/scene/scene.h"
 
@@ -22,6 +27,8 @@ public:
     /// Room for about n objects (one per top-level item), so that a scene of many objects does
     /// not grow its arrays step by step.
     void reserve(size_t n);
+    /// How file names in the scene (text's fonts) are found: the path, or "" when none is found.
+    void setFileFinder(std::function<std::string(const std::string&)> find) { findFile_ = std::move(find); }
     /// Adds one top-level item.
     void add(const ParsedScene::Top& top);
     /// The scene, with POV-Ray's default camera when the file has none.
@@ -35,6 +42,8 @@ private:
     void addPrimitive(Kw kind, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
                       const Appearance& look, bool open, bool inverse);
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look, bool inverse);
+    void addText(const Entry* font, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
+                 const Appearance& look, bool inverse);
     /// CSG trees (scene/csg.h): the children of a node, the objects of a clipped_by block, the
     /// finished tree as one object, and a finished object put into the tree or the scene.
     void addCsgChildren(Kw kind, bool inverse, const std::vector<const Item*>& children, const Transform& toWorld,
@@ -66,6 +75,8 @@ private:
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries
     Appearance defaultsLook_;
+    std::function<std::string(const std::string&)> findFile_;
+    std::unordered_map<std::string, std::unique_ptr<TtfFont>> fonts_;  ///< fonts read so far, by path
 };
 
 }  // namespace rays::pov

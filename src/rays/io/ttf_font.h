@@ -1,0 +1,38 @@
+// TrueType (and TrueType collection, first face) fonts through FreeType, and the layout of a
+// string into a TextShape as POV-Ray 3.7 lays out its `text` object (reference 3.4.5.1.16
+// "Text", sizes and places measured with POV-Ray 3.7.0.10's min_extent, max_extent and trace):
+// one unit is the font's EM; the pen starts so that the first glyph's left side bearing is
+// dropped (its outline starts at x = 0); each glyph advances the pen by its advance width plus the
+// font's kerning with the next glyph; glyph i is also moved by i·offset.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "rays/math/vec3.h"
+#include "rays/scene/text_shape.h"
+
+namespace rays {
+
+class TtfFont {
+public:
+    /// Opens the font file; throws Error("PATH: error: ...") when FreeType cannot read it.
+    explicit TtfFont(const std::string& path);
+    ~TtfFont();
+    TtfFont(const TtfFont&) = delete;
+    TtfFont& operator=(const TtfFont&) = delete;
+
+    /// The text of `text` (UTF-8; bytes that are not valid UTF-8 count as Latin-1) laid out as
+    /// POV-Ray does and extruded by thickness, finished.
+    TextShape layout(std::string_view text, double thickness, Vec3 offset);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+/// Code points of s: UTF-8 sequences decoded, other bytes taken as Latin-1.
+std::u32string decodeText(std::string_view s);
+
+}  // namespace rays
