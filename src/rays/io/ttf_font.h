@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 
 #include "rays/math/vec3.h"
 #include "rays/scene/text_shape.h"
@@ -31,6 +32,10 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+/// Fonts read so far, by path (one parse's builders share them: the objects built for trace()
+/// and the extents read the same fonts as the scene).
+using FontCache = std::unordered_map<std::string, std::unique_ptr<TtfFont>>;
 
 /// Code points of s: UTF-8 sequences decoded, other bytes taken as Latin-1.
 std::u32string decodeText(std::string_view s);

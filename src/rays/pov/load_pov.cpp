@@ -40,6 +40,7 @@ Scene parsePovText(std::string_view text, const std::string& shownName, const st
     NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);
     SceneBuilder builder(notes, limits.sceneObjects);
     builder.setFileFinder([&in](const std::string& name) { return in.findFile(name); });
+    builder.setFontCache(host.fontCache());
     builder.reserve(parsed.items.size());
     for (const ParsedScene::Top& top : parsed.items) builder.add(top);
     return builder.finish(shownName);

@@ -33,6 +33,7 @@ const PovHost::Probe& PovHost::probe(const sdl::ItemRef& object) {
         NotRendered quiet(where, nullptr, false);
         SceneBuilder b(quiet);
         b.setFileFinder(findFile_);
+        b.setFontCache(&fonts_);
         b.add(ParsedScene::Top{object, nullptr, 0, 3.7});
         slot->scene = b.finish("");
         slot->complete = quiet.count() == 0;

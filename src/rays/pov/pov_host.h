@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "rays/io/ttf_font.h"
 #include "rays/sdl/host.h"
 #include "rays/sdl/interpreter.h"
 
@@ -40,6 +41,8 @@ public:
     std::array<double, 12> transformMatrix(const sdl::Item& transform) override;
     /// How the objects built for trace() and the extents find files (text's fonts).
     void setFileFinder(std::function<std::string(const std::string&)> find) { findFile_ = std::move(find); }
+    /// The fonts read while parsing, for the scene's builder to reuse.
+    FontCache* fontCache() { return &fonts_; }
     /// How those objects' errors name a place ("FILE:LINE:COL").
     void setWhere(std::function<std::string(const sdl::Loc&)> where) { where_ = std::move(where); }
 
@@ -52,6 +55,7 @@ private:
     std::unordered_map<const sdl::Item*, std::unique_ptr<Probe>> probes_;
     std::function<std::string(const std::string&)> findFile_;
     std::function<std::string(const sdl::Loc&)> where_;
+    FontCache fonts_;
 };
 
 }  // namespace rays::pov

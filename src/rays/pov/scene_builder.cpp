@@ -651,7 +651,7 @@ void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a
     const double thickness = toFloat(*a[1]);
     const Vec3 offset = toVec3(*a[2]);
     if (!(thickness > 0)) return;
-    std::unique_ptr<TtfFont>& f = fonts_[path];
+    std::unique_ptr<TtfFont>& f = (*fonts_)[path];
     try {
         if (!f) f = std::make_unique<TtfFont>(path);
     } catch (const Error& err) {

@@ -10,9 +10,9 @@
 #include <string>
 #include <unordered_map>
 
+#include "rays/io/ttf_font.h"
 #include "rays/pov/appearance.h"
 #include "rays/pov/not_rendered.h"
-#include "rays/io/ttf_font.h"
 #include "rays/pov/pov_host.h"
 #include "rays/scene/scene.h"
 
@@ -29,6 +29,8 @@ public:
     void reserve(size_t n);
     /// How file names in the scene (text's fonts) are found: the path, or "" when none is found.
     void setFileFinder(std::function<std::string(const std::string&)> find) { findFile_ = std::move(find); }
+    /// Reads fonts through cache (kept by the caller, outliving the builder) instead of its own.
+    void setFontCache(FontCache* cache) { fonts_ = cache ? cache : &ownFonts_; }
     /// Adds one top-level item.
     void add(const ParsedScene::Top& top);
     /// The scene, with POV-Ray's default camera when the file has none.
@@ -76,7 +78,8 @@ private:
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries
     Appearance defaultsLook_;
     std::function<std::string(const std::string&)> findFile_;
-    std::unordered_map<std::string, std::unique_ptr<TtfFont>> fonts_;  ///< fonts read so far, by path
+    FontCache ownFonts_;
+    FontCache* fonts_ = &ownFonts_;
 };
 
 }  // namespace rays::pov

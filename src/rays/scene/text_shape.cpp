@@ -45,15 +45,15 @@ int rootsInUnit(double a, double b, double c, double out[2]) {
     return k;
 }
 
-// The ray's parameter interval inside box [lo, hi] (slab test), narrowed from [t0, t1].
-bool slab(const Ray& r, Vec3 lo, Vec3 hi, double& t0, double& t1) {
+// The ray's parameter interval inside box [lo, hi] (slab test with the ray's 1/dir), narrowed
+// from [t0, t1].
+bool slab(const Ray& r, Vec3 invDir, Vec3 lo, Vec3 hi, double& t0, double& t1) {
     for (int a = 0; a < 3; ++a) {
-        const double d = r.dir[a];
-        if (d == 0) {
+        if (r.dir[a] == 0) {
             if (r.origin[a] < lo[a] || r.origin[a] > hi[a]) return false;
             continue;
         }
-        double n = (lo[a] - r.origin[a]) / d, f = (hi[a] - r.origin[a]) / d;
+        double n = (lo[a] - r.origin[a]) * invDir[a], f = (hi[a] - r.origin[a]) * invDir[a];
         if (n > f) std::swap(n, f);
         t0 = std::max(t0, n);
         t1 = std::min(t1, f);
@@ -63,10 +63,13 @@ bool slab(const Ray& r, Vec3 lo, Vec3 hi, double& t0, double& t1) {
 }
 
 // Walls and caps of glyph g: the nearest hit in (tMin, best) lowers best and sets normal.
-bool hitGlyph(const TextShape& s, const TextGlyph& g, const Ray& r, double tMin, double& best, Vec3& normal) {
+// boxTest: whether the ray is first tested against the glyph's box (not needed for a lone glyph:
+// the text's box is its box).
+bool hitGlyph(const TextShape& s, const TextGlyph& g, const Ray& r, Vec3 invDir, bool boxTest, double tMin,
+              double& best, Vec3& normal) {
     const double z1 = g.z0 + s.thickness;
     double t0 = tMin, t1 = best;
-    if (!slab(r, Vec3{g.xMin, g.yMin, g.z0}, Vec3{g.xMax, g.yMax, z1}, t0, t1)) return false;
+    if (boxTest && !slab(r, invDir, Vec3{g.xMin, g.yMin, g.z0}, Vec3{g.xMax, g.yMax, z1}, t0, t1)) return false;
     bool found = false;
     // Caps: the planes z0 (normal −z) and z1 (normal +z) where the point is inside the outline.
     if (r.dir.z != 0) {
@@ -202,13 +205,15 @@ int glyphWinding(const TextShape& s, const TextGlyph& g, double x, double y) {
 
 bool intersectText(const TextShape& s, const Ray& r, double tMin, double tMax, double& t, Vec3& normal) {
     double t0 = tMin, t1 = tMax;
-    if (s.glyphs.empty() || !slab(r, s.bounds.lo, s.bounds.hi, t0, t1)) return false;
+    const Vec3 invDir{1 / r.dir.x, 1 / r.dir.y, 1 / r.dir.z};
+    if (s.glyphs.empty() || !slab(r, invDir, s.bounds.lo, s.bounds.hi, t0, t1)) return false;
     const double xa = r.origin.x + t0 * r.dir.x, xb = r.origin.x + t1 * r.dir.x;
     size_t begin, end;
     glyphRange(s, std::min(xa, xb), std::max(xa, xb), begin, end);
     double best = tMax;
     bool found = false;
-    for (size_t i = begin; i < end; ++i) found = hitGlyph(s, s.glyphs[i], r, tMin, best, normal) || found;
+    const bool boxTest = s.glyphs.size() > 1;
+    for (size_t i = begin; i < end; ++i) found = hitGlyph(s, s.glyphs[i], r, invDir, boxTest, tMin, best, normal) || found;
     if (found) t = best;
     return found;
 }
