@@ -133,6 +133,9 @@ TEST(PovTextLayout, ExtentsMatchPovRay) {
         {"ttf \"timrom.ttf\" \"II\" 0.5, 0.1*x", {0, 0, 0}, {0.738, 0.680, 0.5}},
         {"internal 1 \"II\" 0.5, 0", {0, 0, 0}, {0.638, 0.680, 0.5}},
         {"ttf \"cyrvetic.ttf\" \"Hello\" 0.5, <0.1, 0.2, 0>", {0, 0, 0}, {2.558, 1.334, 0.5}},
+        {"ttf \"timrom.ttf\" \"II\" 1, 0.1", {0, 0, 0}, {0.738, 0.780, 1}},          // a float offset: <0.1, 0.1, 0.1>
+        {"ttf \"timrom.ttf\" \"II\" 1, <0, 0, 0.5>", {0, 0, 0}, {0.638, 0.680, 1}},  // offset's z is not used
+        {"ttf \"timrom.ttf\" \"I\" -1, 0", {0, 0, -1}, {0.296, 0.680, 0}},           // towards -z
         {"ttf \"crystal.ttf\" \"Wave\" 1, 0", {0, -0.00781, 0}, {1.96388, 0.68897, 1}},
         {"ttf \"povlogo.ttf\" \"P\" 1, 0", {0, 0.00195, 0}, {0.66992, 1.00195, 1}},
     };
@@ -164,6 +167,15 @@ TEST(PovTextLayout, LongStringsTestOnlyNearbyGlyphs) {
     ASSERT_TRUE(h.valid());
     EXPECT_NEAR(h.t, 1.0, 1e-9);
     EXPECT_FALSE(shoot(s, {x + 0.1, 0.3, -1}, {0, 0, 1}).valid());
+}
+
+TEST(PovTextHits, FlatTextOfThicknessZeroIsHit) {
+    NEED_FONTS();
+    const Scene s = build("text { ttf \"timrom.ttf\" \"I\" 0, 0 }\n");  // POV-Ray's trace hits it at z = 0
+    const Hit h = shoot(s, {0.15, 0.3, -3}, {0, 0, 1});
+    ASSERT_TRUE(h.valid());
+    EXPECT_NEAR(h.t, 3.0, 1e-9);
+    EXPECT_FALSE(shoot(s, {0.25, 0.3, -3}, {0, 0, 1}).valid());
 }
 
 TEST(PovTextErrors, MissingFontIsAnErrorAtTheTtfKeyword) {

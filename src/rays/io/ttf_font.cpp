@@ -4,6 +4,8 @@
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
 
+#include <algorithm>
+#include <cmath>
 #include <unordered_map>
 #include <vector>
 
@@ -143,7 +145,7 @@ TextShape TtfFont::layout(std::string_view text, double thickness, Vec3 offset) 
     FT_Face face = impl_->face;
     const double scale = 1.0 / double(face->units_per_EM ? face->units_per_EM : 1000);
     TextShape s;
-    s.thickness = thickness;
+    s.thickness = std::fabs(thickness);  // a negative thickness extrudes towards −z (measured)
     const std::u32string codes = decodeText(text);
     double pen = 0;  // font units
     FT_UInt prev = 0;
@@ -158,7 +160,7 @@ TextShape TtfFont::layout(std::string_view text, double thickness, Vec3 offset) 
         const double ox = pen * scale + double(i) * offset.x, oy = double(i) * offset.y;
         TextGlyph tg;
         tg.first = uint32_t(s.segments.size());
-        tg.z0 = double(i) * offset.z;
+        tg.z0 = std::min(thickness, 0.0);  // offset's z is not used (measured)
         s.glyphs.push_back(tg);
         for (const TextSegment& e : cg.segments) {
             if (e.quad)

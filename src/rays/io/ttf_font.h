@@ -3,7 +3,8 @@
 // "Text", sizes and places measured with POV-Ray 3.7.0.10's min_extent, max_extent and trace):
 // one unit is the font's EM; the pen starts so that the first glyph's left side bearing is
 // dropped (its outline starts at x = 0); each glyph advances the pen by its advance width plus the
-// font's kerning with the next glyph; glyph i is also moved by i·offset.
+// font's kerning with the next glyph; glyph i is also moved by i·offset's x and y (its z is not
+// used); the text lies between z = 0 and z = thickness (a negative thickness goes towards −z).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -25,7 +26,7 @@ public:
     TtfFont& operator=(const TtfFont&) = delete;
 
     /// The text of `text` (UTF-8; bytes that are not valid UTF-8 count as Latin-1) laid out as
-    /// POV-Ray does and extruded by thickness, finished.
+    /// POV-Ray does and extruded by thickness (0 gives flat letters), finished.
     TextShape layout(std::string_view text, double thickness, Vec3 offset);
 
 private:

@@ -650,7 +650,7 @@ void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a
                     "\" (looked in the scene's folder, the library paths and " + kInstalledFonts + ")");
     const double thickness = toFloat(*a[1]);
     const Vec3 offset = toVec3(*a[2]);
-    if (!(thickness > 0)) return;
+    if (!std::isfinite(thickness)) return;
     std::unique_ptr<TtfFont>& f = (*fonts_)[path];
     try {
         if (!f) f = std::make_unique<TtfFont>(path);

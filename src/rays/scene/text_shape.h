@@ -27,14 +27,14 @@ struct TextSegment {
 struct TextGlyph {
     uint32_t first = 0, count = 0;
     double xMin = 0, yMin = 0, xMax = 0, yMax = 0;
-    double z0 = 0;  ///< front face (the text's z offset); the back face is z0 + thickness
+    double z0 = 0;  ///< front face; the back face is z0 + thickness
 };
 
 struct TextShape {
     std::vector<TextSegment> segments;
     std::vector<TextGlyph> glyphs;       ///< after finish(): sorted by xMin, empty ones dropped
     std::vector<double> xMaxPrefix;      ///< after finish(): max xMax of glyphs[0..i]
-    double thickness = 1;
+    double thickness = 1;                ///< ≥ 0
     Bounds bounds;                       ///< after finish(): the box of all glyphs
 
     /// Adds a contour segment to the glyph being built (the last of glyphs): lines as given,
