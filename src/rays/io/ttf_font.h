@@ -5,6 +5,7 @@
 // dropped (its outline starts at x = 0); each glyph advances the pen by its advance width plus the
 // font's kerning with the next glyph; glyph i is also moved by i·offset's x and y (its z is not
 // used); the text lies between z = 0 and z = thickness (a negative thickness goes towards −z).
+// Its box is the glyphs' outline boxes and the origins of glyphs without an outline (spaces).
 #pragma once
 #include <cstdint>
 #include <memory>

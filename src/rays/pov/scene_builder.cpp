@@ -658,7 +658,7 @@ void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a
         throw Error(notes_.where(font->loc) + ": " + err.what());
     }
     auto shape = std::make_unique<TextShape>(f->layout(a[0]->str(), thickness, offset));
-    if (shape->glyphs.empty()) return;
+    if (shape->bounds.empty()) return;  // "": nothing (a string of spaces is an empty box, as in POV-Ray)
     Object o;
     o.type = ShapeType::Text;
     o.text = shape.get();

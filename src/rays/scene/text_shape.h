@@ -35,7 +35,7 @@ struct TextShape {
     std::vector<TextGlyph> glyphs;       ///< after finish(): sorted by xMin, empty ones dropped
     std::vector<double> xMaxPrefix;      ///< after finish(): max xMax of glyphs[0..i]
     double thickness = 1;                ///< ≥ 0
-    Bounds bounds;                       ///< after finish(): the box of all glyphs
+    Bounds bounds;                       ///< after finish(): the box of all glyphs (may be widened after)
 
     /// Adds a contour segment to the glyph being built (the last of glyphs): lines as given,
     /// quadratic Béziers split where y turns. Contours must fill to their left.
