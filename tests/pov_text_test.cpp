@@ -12,6 +12,7 @@
 
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
+#include "rays/io/ttf_font.h"
 #include "rays/pov/load_pov.h"
 #include "rays/render/renderer.h"
 #include "rays/scene/csg.h"
@@ -141,6 +142,8 @@ TEST(PovTextLayout, ExtentsMatchPovRay) {
         {"ttf \"timrom.ttf\" \"I\" -1, 0", {0, 0, -1}, {0.296, 0.680, 0}},           // towards -z
         {"ttf \"crystal.ttf\" \"Wave\" 1, 0", {0, -0.00781, 0}, {1.96388, 0.68897, 1}},
         {"ttf \"povlogo.ttf\" \"P\" 1, 0", {0, 0.00195, 0}, {0.66992, 1.00195, 1}},
+        {"internal 7 \"P\" 1, 0", {0, 0.00195, 0}, {0.66992, 1.00195, 1}},  // out of range: font 0, povlogo
+        {"ttf \"cyrvetic\" \"Hello\" 0.5, <0.1, 0.2, 0>", {0, 0, 0}, {2.558, 1.334, 0.5}},  // ".ttf" added
     };
     for (const Case& c : cases) {
         const Scene s = build(std::string("text { ") + c.text + " }\n");
@@ -176,6 +179,12 @@ TEST(PovTextHits, FlatTextOfThicknessZeroIsHit) {
     ASSERT_TRUE(h.valid());
     EXPECT_NEAR(h.t, 3.0, 1e-9);
     EXPECT_FALSE(shoot(s, {0.25, 0.3, -3}, {0, 0, 1}).valid());
+}
+
+TEST(PovTextLayout, StringsAreUtf8WithLatin1Bytes) {
+    EXPECT_EQ(decodeText("A\xC3\xA9z"), (std::u32string{U'A', 0xE9, U'z'}));  // é in UTF-8
+    EXPECT_EQ(decodeText("\xE9t\xE9"), (std::u32string{0xE9, U't', 0xE9}));    // é as a Latin-1 byte
+    EXPECT_EQ(decodeText("\xE2\x82\xAC"), std::u32string{0x20AC});              // €
 }
 
 TEST(PovTextErrors, MissingFontIsAnErrorAtTheTtfKeyword) {
