@@ -28,6 +28,8 @@ Scene parsePovText(std::string_view text, const std::string& shownName, const st
     d.debug = [](const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); };
     d.checkInterrupt = options.checkInterrupt;
     sdl::Interpreter in(options.language, host, d, limits);
+    host.setFileFinder([&in](const std::string& name) { return in.findFile(name); });
+    host.setWhere([&in](const sdl::Loc& at) { return in.where(at); });
     for (const sdl::Declare& decl : options.language.declares) {
         const std::optional<sdl::DeclareValue> v = sdl::parseDeclareValue(decl.value);
         if (!v)
@@ -37,6 +39,8 @@ Scene parsePovText(std::string_view text, const std::string& shownName, const st
     in.runText(text, shownName, folder);
     NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);
     SceneBuilder builder(notes, limits.sceneObjects);
+    builder.setFileFinder([&in](const std::string& name) { return in.findFile(name); });
+    builder.setFontCache(host.fontCache());
     builder.reserve(parsed.items.size());
     for (const ParsedScene::Top& top : parsed.items) builder.add(top);
     return builder.finish(shownName);

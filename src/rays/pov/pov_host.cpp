@@ -28,8 +28,12 @@ const PovHost::Probe& PovHost::probe(const sdl::ItemRef& object) {
     if (!slot) {
         slot = std::make_unique<Probe>();
         slot->object = object;
-        NotRendered quiet([](const sdl::Loc&) { return std::string(); }, nullptr, false);
+        std::function<std::string(const sdl::Loc&)> where = where_;
+        if (!where) where = [](const sdl::Loc&) { return std::string(); };
+        NotRendered quiet(where, nullptr, false);
         SceneBuilder b(quiet);
+        b.setFileFinder(findFile_);
+        b.setFontCache(&fonts_);
         b.add(ParsedScene::Top{object, nullptr, 0, 3.7});
         slot->scene = b.finish("");
         slot->complete = quiet.count() == 0;

@@ -2,10 +2,13 @@
 // (grammar.h, specs.h) and collects the scene's top-level items, each with the default texture
 // in force where it appeared (#default), for the builder (scene_builder.h).
 #pragma once
+#include <functional>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "rays/io/ttf_font.h"
 #include "rays/sdl/host.h"
 #include "rays/sdl/interpreter.h"
 
@@ -36,6 +39,12 @@ public:
     int inside(const sdl::ItemRef& object, const double point[3]) override;
     bool extent(const sdl::ItemRef& object, double lo[3], double hi[3]) override;
     std::array<double, 12> transformMatrix(const sdl::Item& transform) override;
+    /// How the objects built for trace() and the extents find files (text's fonts).
+    void setFileFinder(std::function<std::string(const std::string&)> find) { findFile_ = std::move(find); }
+    /// The fonts read while parsing, for the scene's builder to reuse.
+    FontCache* fontCache() { return &fonts_; }
+    /// How those objects' errors name a place ("FILE:LINE:COL").
+    void setWhere(std::function<std::string(const sdl::Loc&)> where) { where_ = std::move(where); }
 
 private:
     struct Probe;  // an object built alone, for trace() and min_extent() / max_extent()
@@ -44,6 +53,9 @@ private:
     ParsedScene& out_;
     std::shared_ptr<std::vector<sdl::Entry>> defaults_;
     std::unordered_map<const sdl::Item*, std::unique_ptr<Probe>> probes_;
+    std::function<std::string(const std::string&)> findFile_;
+    std::function<std::string(const sdl::Loc&)> where_;
+    FontCache fonts_;
 };
 
 }  // namespace rays::pov

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "rays/error.h"
@@ -398,6 +399,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     const Entry* bounds = nullptr;
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
          doubleIlluminate = false;
+    const Entry* font = nullptr;  // text: its ttf or internal entry
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
         if (e.positional()) {
@@ -426,6 +428,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::double_illuminate: doubleIlluminate = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder; break;
+            case Kw::ttf: case Kw::internal: font = &e; break;
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
     }
@@ -480,6 +483,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             addMesh(m, toWorld, own ? *own : fallback_, inverse);
             break;
         }
+        case Kw::text: addText(font, args, item.loc, toWorld, own ? *own : fallback_, inverse); break;
         default:
             addPrimitive(kind, args, item.loc, toWorld, own ? *own : fallback_, open, inverse);
     }
@@ -660,6 +664,70 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
     o.open = open && o.type == ShapeType::Cone;
     o.material = material(look);
     prepareObject(o, toWorld);
+    emit(o, inverse);
+}
+
+// ---- text -----------------------------------------------------------------------------------
+
+namespace {
+
+// POV-Ray 3.7's built-in fonts by number (reference 3.4.5.1.16 "Text"), out of range → 0; the
+// Debian package fonts-povray holds the same files.
+const char* internalFont(double n) {
+    static const char* const kFonts[] = {"povlogo.ttf", "timrom.ttf", "cyrvetic.ttf", "crystal.ttf"};
+    const int i = std::isnan(n) ? 0 : int(n);
+    return kFonts[i >= 0 && i < 4 ? i : 0];
+}
+
+// Where fonts-povray installs its fonts: searched after the include path.
+constexpr const char* kInstalledFonts = "/usr/share/fonts/truetype/povray";
+
+}  // namespace
+
+// `text { ttf FILE STRING thickness, offset }`: the font file is looked up as `#include` files
+// are (the scene's folder, the library paths, the installed include folder), then in fonts-povray's folder.
+void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a, const sdl::Loc& at,
+                           const Transform& toWorld, const Appearance& look, bool inverse) {
+    if (!font || font->args.empty()) throw Error(notes_.where(at) + ": error: text needs ttf \"FILE\" or internal N");
+    if (a.size() < 3 || a[0]->type != VType::String)
+        throw Error(notes_.where(at) + ": error: text needs a string, a thickness and an offset after the font");
+    std::string name;
+    if (font->kw() == Kw::internal) name = internalFont(toFloat(font->args[0]));
+    else if (font->args[0].type == VType::String) name = font->args[0].str();
+    else throw Error(notes_.where(font->loc) + ": error: ttf needs the font file's name as a string");
+    // A name without an extension is also tried with ".ttf" (POV-Ray's examples write "cyrvetic").
+    std::vector<std::string> names{name};
+    if (!std::filesystem::path(name).has_extension()) names.push_back(name + ".ttf");
+    std::string path;
+    for (const std::string& n : names) {
+        if (path.empty() && findFile_) path = findFile_(n);
+        if (path.empty() && !std::filesystem::path(n).is_absolute()) {
+            const std::string installed = (std::filesystem::path(kInstalledFonts) / n).string();
+            if (std::filesystem::is_regular_file(installed)) path = installed;
+        }
+    }
+    if (path.empty())
+        throw Error(notes_.where(font->loc) + ": error: cannot find the font file \"" + name +
+                    "\" (looked in the scene's folder, the library paths and " + kInstalledFonts + ")");
+    const double thickness = toFloat(*a[1]);
+    const Vec3 offset = toVec3(*a[2]);
+    if (!std::isfinite(thickness)) return;
+    std::unique_ptr<TtfFont>& f = (*fonts_)[path];
+    try {
+        if (!f) f = std::make_unique<TtfFont>(path);
+    } catch (const Error& err) {
+        throw Error(notes_.where(font->loc) + ": " + err.what());
+    }
+    auto shape = std::make_unique<TextShape>(f->layout(a[0]->str(), thickness, offset));
+    if (shape->bounds.empty()) return;  // "": nothing (a string of spaces is an empty box, as in POV-Ray)
+    Object o;
+    o.type = ShapeType::Text;
+    o.text = shape.get();
+    o.line = int(at.line);
+    o.col = int(at.col);
+    o.material = material(look);
+    prepareObject(o, toWorld);
+    scene_.texts.push_back(std::move(shape));
     emit(o, inverse);
 }
 

@@ -5,7 +5,12 @@
 // objects of unrendered kinds are left out, unrendered appearance is approximated.
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_map>
 
+#include "rays/io/ttf_font.h"
 #include "rays/pov/appearance.h"
 #include "rays/pov/not_rendered.h"
 #include "rays/pov/pov_host.h"
@@ -22,6 +27,10 @@ public:
     /// Room for about n objects (one per top-level item), so that a scene of many objects does
     /// not grow its arrays step by step.
     void reserve(size_t n);
+    /// How file names in the scene (text's fonts) are found: the path, or "" when none is found.
+    void setFileFinder(std::function<std::string(const std::string&)> find) { findFile_ = std::move(find); }
+    /// Reads fonts through cache (kept by the caller, outliving the builder) instead of its own.
+    void setFontCache(FontCache* cache) { fonts_ = cache ? cache : &ownFonts_; }
     /// Adds one top-level item.
     void add(const ParsedScene::Top& top);
     /// The scene, with POV-Ray's default camera when the file has none.
@@ -38,6 +47,8 @@ private:
     void addPrimitive(Kw kind, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
                       const Appearance& look, bool open, bool inverse);
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look, bool inverse);
+    void addText(const Entry* font, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
+                 const Appearance& look, bool inverse);
     /// CSG trees (scene/csg.h): the children of a node, the objects of a clipped_by block, the
     /// finished tree as one object, and a finished object put into the tree or the scene.
     void addCsgChildren(Kw kind, bool inverse, const std::vector<const Item*>& children, const Transform& toWorld,
@@ -78,6 +89,9 @@ private:
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries
     Appearance defaultsLook_;
+    std::function<std::string(const std::string&)> findFile_;
+    FontCache ownFonts_;
+    FontCache* fonts_ = &ownFonts_;
 };
 
 }  // namespace rays::pov

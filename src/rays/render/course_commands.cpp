@@ -75,7 +75,7 @@ void printObject(std::ostream& out, const Object& o) {
         case ShapeType::Mesh:
             out << "- Triangles: " << o.mesh->triangleCount() << "\n";
             break;
-        case ShapeType::Csg:
+        case ShapeType::Csg: case ShapeType::Text:
             break;
         case ShapeType::Cone:
             out << "- Base: " << vec(o.p0) << "\n- Base Radius: " << num(o.r0) << "\n- Cap: " << vec(o.p1)

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rays/scene/text_shape.h"
+
 namespace rays {
 
 int Csg::add(int parent, CsgOp op, bool inverse) {
@@ -190,6 +192,7 @@ int insideShape(const Object& o, Vec3 q) {
         }
         case ShapeType::Plane: return dot(o.p0, p) < o.r0;
         case ShapeType::Csg: return insideCsg(*o.csg, 0, q);
+        case ShapeType::Text: return insideText(*o.text, p);
         case ShapeType::Triangle: case ShapeType::Mesh: return -1;
     }
     return -1;

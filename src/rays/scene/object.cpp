@@ -5,6 +5,7 @@
 #include "rays/geometry/sphere_hit.h"
 #include "rays/scene/csg.h"
 #include "rays/scene/mesh.h"
+#include "rays/scene/text_shape.h"
 
 namespace rays {
 
@@ -17,6 +18,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Cone: return "Cone";
         case ShapeType::Mesh: return "Mesh";
         case ShapeType::Csg: return "CSG";
+        case ShapeType::Text: return "Text";
     }
     return "Object";
 }
@@ -202,6 +204,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         }
         case ShapeType::Box: found = hitBox(o, r, tMin, tMax, h); break;
         case ShapeType::Cone: found = hitCone(o, r, tMin, tMax, h); break;
+        case ShapeType::Text: found = intersectText(*o.text, r, tMin, tMax, h.t, h.normal); break;
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
@@ -231,6 +234,7 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Csg:
             b = o.csg->bounds;
             break;
+        case ShapeType::Text: b = o.text->bounds; break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);
             b.extend(o.p0 - Vec3(r));

@@ -9,12 +9,13 @@
 
 namespace rays {
 
-enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg };
+enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg, Text };
 
 struct Mesh;
 struct Csg;
+struct TextShape;
 
-/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone", "Mesh", "CSG").
+/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone", "Mesh", "CSG", "Text").
 std::string_view shapeName(ShapeType t);
 
 struct Object {
@@ -33,6 +34,7 @@ struct Object {
     bool open = false;    ///< Cone only: no caps (POV-Ray's `open`)
     const Mesh* mesh = nullptr;  ///< Mesh only: the geometry (owned by the Scene)
     const Csg* csg = nullptr;    ///< Csg only: the tree (owned by the Scene)
+    const TextShape* text = nullptr;  ///< Text only: the glyph outlines, in object space (owned by the Scene)
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
     bool localSpace = false;   ///< rays are mapped through toObject before intersecting
