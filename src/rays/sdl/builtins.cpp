@@ -65,15 +65,17 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
         return v.str();
     };
     // One float argument: read directly, without an argument list.
-    auto one = [&](double (*fn)(double)) {
+    auto oneFloat = [&]() {
         if (!isSym('(')) errorHere(std::string("expected '(' after ") + std::string(name) + ", found " + describe());
         next();
         const Loc argAt = loc();
         const Num a = fullNum();
         if (!isSym(')')) errorHere(std::string(name) + " takes 1 argument; expected ')', found " + describe());
         next();
-        return Value::number(fn(toFloat(a, argAt, std::string(name) + " argument 1")));
+        if (a.type == VType::Float) return a.c[0];  // the message below is built only when needed
+        return toFloat(a, argAt, std::string(name) + " argument 1");
     };
+    auto one = [&](double (*fn)(double)) { return Value::number(fn(oneFloat())); };
     if (double (*fn1)(double) = mathFunction1(k)) return one(fn1);
     switch (k) {
         case Kw::atan2:
@@ -108,9 +110,9 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
             if (a.size() == 3) return s < 0 ? a[1] : a[2];
             return s < 0 ? a[1] : s == 0 ? a[2] : a[3];
         }
-        case Kw::seed: return Value::number(random_.seed(f(callArgs("seed", 1, 1)[0], 0)));
+        case Kw::seed: return Value::number(random_.seed(oneFloat()));
         case Kw::rand: {
-            const Outcome<double> r = random_.rand(f(callArgs("rand", 1, 1)[0], 0));
+            const Outcome<double> r = random_.rand(oneFloat());
             if (!r.ok()) error(at, r.error);
             return Value::number(r.value);
         }

@@ -205,8 +205,35 @@ Num Interpreter::fullNum() {
 // Binary operators by precedence, left-associative (one loop instead of a function per level):
 // 1 `&` `|` and 2 the comparisons (full expressions only: inside parentheses), 3 `+` `-`, 4 `*` `/`.
 Num Interpreter::binary(int minPrec, bool full, bool colorCtx) {
+    Num quick;
+    if (quickOperand(full, quick)) return quick;
     return binaryAfter(full && minPrec <= 2 && atStringStart() ? stringComparison() : unary(colorCtx), minPrec, full,
                        colorCtx);
+}
+
+// A number, or an identifier holding a float or vector, that the file's next token ends (`,` `)`
+// `}` `]` `;`, and `>` outside parentheses where it closes a vector): the whole operand, read
+// without the descent through unary, factor and postfix (most values in scenes are like this).
+bool Interpreter::quickOperand(bool full, Num& out) {
+    const Token& t = tok();
+    const Token& after = *cursor_;  // the token after the current one in its array (not yet fetched)
+    if (after.kind != Tk::Symbol) return false;
+    switch (after.sym) {
+        case ',': case ')': case '}': case ']': case ';': break;
+        case '>': if (full) return false; break;
+        default: return false;
+    }
+    if (t.kind == Tk::Number) {
+        out = Num::number(t.number);
+    } else if (t.kind == Tk::Name && !Names::isKeyword(t.id)) {
+        const Binding* b = scopes_.find(t.id);
+        if (!b || b->deprecated || (b->value.type != VType::Float && b->value.type != VType::Vector)) return false;
+        out = Num::of(b->value);
+    } else {
+        return false;
+    }
+    next();
+    return true;
 }
 
 // The operators after a first operand already read (a), as binary's loop.

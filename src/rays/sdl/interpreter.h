@@ -309,6 +309,7 @@ private:
     Num logical() { return binary(1, true, false); }
     Num additive(bool colorCtx) { return binary(3, false, colorCtx); }
     Num binaryAfter(Num a, int minPrec, bool full, bool colorCtx);
+    bool quickOperand(bool full, Num& out);
     Num unary(bool colorCtx);
     Num factor(bool colorCtx);
     Num postfix(Num v);
