@@ -25,8 +25,8 @@ constexpr Vec3 kPyramid[4] = {{kT, kT, kT}, {kT, -kT, -kT}, {-kT, kT, -kT}, {-kT
 
 // The specialised normals' heights are scaled so that their mean tilt at amount 1 is POV-Ray's
 // (measured over a plane, tests/pov_normal_test.cpp, NormalSpecialPatternsTiltLikePovRays).
-constexpr double kBumpsScale = 1.0, kDentsScale = 1.0, kRipplesScale = 1.0, kWavesScale = 1.0,
-                 kWrinklesScale = 1.0;
+constexpr double kBumpsScale = 8.5, kDentsScale = 1.9, kRipplesScale = 3.0, kWavesScale = 5.5,
+                 kWrinklesScale = 1.15;
 
 // Ten wave centres in the unit cube for ripples and waves (POV-Ray's are its own random ones).
 constexpr Vec3 kCentres[10] = {{0.12, 0.84, 0.37}, {0.71, 0.22, 0.91}, {0.45, 0.58, 0.06}, {0.93, 0.67, 0.49},
@@ -66,11 +66,12 @@ double slopeHeight(const SlopeEntry* s, int count, double v) {
 
 double wavesSum(Vec3 q, const Wave& w, bool ripples) {
     double sum = 0;
-    for (const Vec3& c : kCentres) {
-        const double d = length(q - c);
+    for (const Vec3& centre : kCentres) {
+        const double d = length(q - centre);
         const double phase = kTwoPi * (d * w.frequency + w.phase);
-        // ripples: sharp rings of equal strength; waves: rounder, fading with the distance.
-        sum += ripples ? std::sin(phase) : std::cos(phase) / (1 + d);
+        // ripples: rings of a sine; waves: rounder crests (a squared cosine, broader troughs).
+        const double c = std::cos(phase);
+        sum += ripples ? std::sin(phase) : c * std::fabs(c);
     }
     return sum / 10;
 }
