@@ -6,7 +6,8 @@
 // normal keeps its depth, a scale along one axis steepens it), the full gradient subtracted from
 // the unit normal there (a gradient along the normal changes nothing), the wave and slopes included.
 // bumps, dents, ripples, waves and wrinkles have their own perturbation in POV-Ray; here they are
-// gradients of look-alike heights on Rays' noise and Rays' wave centres, not POV-Ray's.
+// gradients of look-alike heights on Rays' noise and Rays' wave centres, not POV-Ray's (ripples
+// and waves: analytic, the tilt independent of the frequency, as measured).
 #include "rays/pattern/normal.h"
 
 #include <algorithm>
@@ -25,7 +26,7 @@ constexpr Vec3 kPyramid[4] = {{kT, kT, kT}, {kT, -kT, -kT}, {-kT, kT, -kT}, {-kT
 
 // The specialised normals' heights are scaled so that their mean tilt at amount 1 is POV-Ray's
 // (measured over a plane, tests/pov_normal_test.cpp, NormalSpecialPatternsTiltLikePovRays).
-constexpr double kBumpsScale = 8.5, kDentsScale = 1.9, kRipplesScale = 3.0, kWavesScale = 5.5,
+constexpr double kBumpsScale = 8.5, kDentsScale = 1.9, kRipplesScale = 18.8, kWavesScale = 34.5,
                  kWrinklesScale = 1.15;
 
 // Ten wave centres in the unit cube for ripples and waves (POV-Ray's are its own random ones).
@@ -64,16 +65,21 @@ double slopeHeight(const SlopeEntry* s, int count, double v) {
     return s[count - 1].height;
 }
 
-double wavesSum(Vec3 q, const Wave& w, bool ripples) {
-    double sum = 0;
+// ripples and waves: the gradient of rings about ten centres, without the frequency's factor
+// (measured: POV-Ray's tilt does not grow with `frequency`, so that huge scales with huge
+// frequencies, as in var_refl.pov, stay calm).
+Vec3 wavesGradient(Vec3 q, const Wave& w, bool ripples) {
+    Vec3 g;
     for (const Vec3& centre : kCentres) {
-        const double d = length(q - centre);
+        const Vec3 r = q - centre;
+        const double d = length(r);
+        if (d == 0) continue;
         const double phase = kTwoPi * (d * w.frequency + w.phase);
-        // ripples: rings of a sine; waves: rounder crests (a squared cosine, broader troughs).
-        const double c = std::cos(phase);
-        sum += ripples ? std::sin(phase) : c * std::fabs(c);
+        // ripples: the slope of sine rings; waves: of rounder crests (c·|c|, c the cosine).
+        const double slope = ripples ? std::cos(phase) : -2 * std::sin(phase) * std::fabs(std::cos(phase));
+        g += (slope / d) * r;
     }
-    return sum / 10;
+    return g / 10.0;
 }
 
 // The specialised normals' heights at q (pattern space, before turbulence).
@@ -90,8 +96,6 @@ double specialHeight(NormalKind kind, const PigmentNode& pn, Vec3 q) {
             plain.turbulence = Turbulence{};
             return kWrinklesScale * patternValue(PatternKind::Wrinkles, plain, q);
         }
-        case NormalKind::Ripples: return kRipplesScale * wavesSum(q, pn.wave, true);
-        case NormalKind::Waves: return kWavesScale * wavesSum(q, pn.wave, false);
         default: return 0;
     }
 }
@@ -117,10 +121,18 @@ Vec3 NormalTable::perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 norm
     Vec3 out;
     if (node.kind == NormalKind::Pattern || isSpecial(node.kind)) {
         // The gradient in pattern space from four samples `accuracy` apart in pattern space.
-        const double delta = node.accuracy > 0 ? node.accuracy : 0.02;
         Vec3 g;
-        for (const Vec3& d : kPyramid) g += height(patterns, node, p + node.fromPattern.vector(delta * d)) * d;
-        g = g * (3 / (4 * delta));
+        if (node.kind == NormalKind::Ripples || node.kind == NormalKind::Waves) {
+            const PigmentNode& pn = patterns.nodes[size_t(node.pattern)];
+            Vec3 q = patternPoint(patterns, pn, p);
+            if (pn.params.turbulence.on()) q = turbulent(q, pn.params.turbulence);
+            const bool ripples = node.kind == NormalKind::Ripples;
+            g = (ripples ? kRipplesScale : kWavesScale) * wavesGradient(q, pn.wave, ripples);
+        } else {
+            const double delta = node.accuracy > 0 ? node.accuracy : 0.02;
+            for (const Vec3& d : kPyramid) g += height(patterns, node, p + node.fromPattern.vector(delta * d)) * d;
+            g = g * (3 / (4 * delta));
+        }
         out = np - (kPovBumpScale * node.amount) * g;
     } else {
         const PigmentNode& pn = patterns.nodes[size_t(node.pattern)];
