@@ -26,7 +26,7 @@ constexpr Vec3 kPyramid[4] = {{kT, kT, kT}, {kT, -kT, -kT}, {-kT, kT, -kT}, {-kT
 
 // The specialised normals' heights are scaled so that their tilt at amount 1 spreads as POV-Ray's
 // (measured over a plane, tests/pov_normal_test.cpp, SpecialisedNormalsTiltAboutAsMuchAsPovRays).
-constexpr double kBumpsScale = 8.5, kDentsScale = 1.9, kRipplesScale = 18.8, kWavesScale = 34.5,
+constexpr double kBumpsScale = 8.5, kDentsScale = 12.5, kRipplesScale = 18.8, kWavesScale = 34.5,
                  kWrinklesScale = 1.15;
 
 // Ten wave centres in the unit cube for ripples and waves (POV-Ray's are its own random ones).
@@ -87,7 +87,8 @@ double specialHeight(NormalKind kind, const PigmentNode& pn, Vec3 q) {
     switch (kind) {
         case NormalKind::Bumps: return kBumpsScale * noise(q);
         case NormalKind::Dents: {
-            const double n = noise(q);
+            // Dimples where the noise is high, flat elsewhere (as POV-Ray's look).
+            const double n = std::max(0.0, 2 * noise(q) - 1);
             return -kDentsScale * n * n * n;
         }
         case NormalKind::Wrinkles: {
