@@ -87,6 +87,16 @@ TEST(PovNormal, WaveFrequencySlopeMapAndTransformationsShapeTheTilt) {
     EXPECT_NEAR(planeBrightness("gradient x 1 triangle_wave", 1, 0.65), 0.8654, kMeasured);
     EXPECT_NEAR(planeBrightness("gradient x 1 slope_map { [0 <0, 2>] [1 <2, 2>] }", 1), 0.5010, kMeasured);
     EXPECT_NEAR(planeBrightness("gradient x 1 slope_map { [0 <0, 1>] [1 <1, 1>] }", 1), 0.6074, kMeasured);
+    // Cubic between the entries, the slopes per unit of the segment (povray at x = 0.05 ... 0.45;
+    // where the curve bends, the sampled gradients differ by up to 3e-3).
+    const std::string smooth = "gradient x 1 slope_map { [0 <0, 0>] [1 <1, 0>] }";
+    EXPECT_NEAR(planeBrightness(smooth, 1, 0.05), 0.6773, 4e-3);
+    EXPECT_NEAR(planeBrightness(smooth, 1, 0.45), 0.5561, 4e-3);
+    const std::string tri = "gradient x 1 slope_map { [0 <0, 1>] [0.5 <1, 1>] [0.5 <1, -1>] [1 <0, -1>] }";
+    EXPECT_NEAR(planeBrightness(tri, 1, 0.15), 0.5010, kMeasured);
+    EXPECT_NEAR(planeBrightness(tri, 1, 0.85), 0.8654, kMeasured);
+    const std::string ends = "gradient x 1 slope_map { [0 <0, 5>] [1 <0, 5>] }";
+    EXPECT_NEAR(planeBrightness(ends, 1, 0.45), 0.8910, 4e-3);
     // A uniform scale keeps the depth; a scale along x steepens it (povray).
     EXPECT_NEAR(planeBrightness("gradient x 1 scale 0.5", 1), 0.6074, kMeasured);
     EXPECT_NEAR(planeBrightness("gradient x 1 scale <0.5, 1, 1>", 1), 0.5010, kMeasured);

@@ -49,7 +49,9 @@ double rawValue(const PigmentNode& pn, Vec3 q) {
     return applyWave(pn.wave, patternValue(pn.kind, pn.params, q));
 }
 
-// The slope map's cubic (Hermite) curve through the entries' heights with their slopes.
+// The slope map's cubic (Hermite) curve through the entries' heights with their slopes, the slopes
+// per unit of the segment (measured: the manual's triangle map [0 <0,1>] [0.5 <1,1>] ... gives a
+// straight ramp, and [0 <0,0>] [1 <1,0>] a smoothstep).
 double slopeHeight(const SlopeEntry* s, int count, double v) {
     if (count == 0) return v;
     if (v <= s[0].value) return s[0].height;
@@ -59,8 +61,8 @@ double slopeHeight(const SlopeEntry* s, int count, double v) {
         const double d = b.value - a.value;
         if (d <= 0) return b.height;
         const double t = (v - a.value) / d, t2 = t * t, t3 = t2 * t;
-        return (2 * t3 - 3 * t2 + 1) * a.height + (t3 - 2 * t2 + t) * d * a.slope + (-2 * t3 + 3 * t2) * b.height +
-               (t3 - t2) * d * b.slope;
+        return (2 * t3 - 3 * t2 + 1) * a.height + (t3 - 2 * t2 + t) * a.slope + (-2 * t3 + 3 * t2) * b.height +
+               (t3 - t2) * b.slope;
     }
     return s[count - 1].height;
 }
