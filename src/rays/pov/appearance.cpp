@@ -57,6 +57,16 @@ void setPigment(const Item& p, Appearance& a, NotRendered& notes, PigmentCompile
     a.pigmentToObject = Transform{};
 }
 
+// The look's normal becomes the normal item of entry e (compiled when the compiler makes normals).
+void setNormal(const Entry& e, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
+    if (!pigments || !pigments->compilesNormals()) {
+        notes.note("normal", e.loc, "(surfaces drawn smooth)");
+        return;
+    }
+    a.normalNode = pigments->compileNormal(e.args[0].item());
+    a.normalToObject = Transform{};
+}
+
 }  // namespace
 
 void applyPigment(const Item& p, Rgbft& c, NotRendered& notes, bool noteUnrendered) {
@@ -299,14 +309,15 @@ void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompi
             continue;
         }
         if (e.key == kMapEntry) continue;
-        if (isTransformEntry(e)) {  // moves the texture's pigment (set before it)
+        if (isTransformEntry(e)) {  // moves the texture's pigment and normal (set before it)
             applyTransform(e, a.pigmentToObject);
+            applyTransform(e, a.normalToObject);
             continue;
         }
         switch (e.kw()) {
             case Kw::pigment: setPigment(e.args[0].item(), a, notes, pigments); break;
             case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
-            case Kw::normal: notes.note("normal", e.loc, "(surfaces drawn smooth)"); break;
+            case Kw::normal: setNormal(e, a, notes, pigments); break;
             case Kw::texture_map: notes.note("texture_map", e.loc, "(drawn with its first texture)");
                 for (const Entry& me : e.args[0].item().entries)
                     if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item) {
@@ -353,7 +364,7 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
             break;
         case Kw::pigment: setPigment(e.args[0].item(), a, notes, pigments); break;
         case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
-        case Kw::normal: notes.note("normal", e.loc, "(surfaces drawn smooth)"); break;
+        case Kw::normal: setNormal(e, a, notes, pigments); break;
         case Kw::material:
             for (const Entry& me : e.args[0].item().entries) {
                 if (me.positional()) {

@@ -18,6 +18,8 @@ struct Appearance {
     /// Texture space → the space the look was given in: the transformations written after the
     /// pigment (in the texture, then on the object); SceneBuilder completes it to world space.
     Transform pigmentToObject;
+    int normalNode = -1;  ///< the normal's node in the scene's NormalTable; -1: the surface's own normal
+    Transform normalToObject;  ///< like pigmentToObject, for the normal
     PovFinish finish;
     PovInterior interior;
     bool interiorSet = false;

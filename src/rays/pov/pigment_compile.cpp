@@ -4,6 +4,7 @@
 #include <string>
 
 #include "rays/pattern/default_maps.h"
+#include "rays/pov/normal_compile.h"
 #include "rays/pov/grammar.h"
 #include "rays/pov/specs.h"
 #include "rays/sdl/function_value.h"
@@ -78,7 +79,19 @@ struct PigmentCompiler::State {
     bool warped = false;
     bool waveSet = false;
     const char* what = "pigment";  ///< for notes: "pigment pattern X" or "texture pattern X"
+    bool normal = false;           ///< reading a normal: its specialised patterns are accepted
 };
+
+PigmentCompiler::PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes, pattern::NormalTable* normals)
+    : table_(table), notes_(notes), normalTable_(normals) {}
+
+PigmentCompiler::~PigmentCompiler() = default;
+
+int PigmentCompiler::compileNormal(const Item& normal) {
+    if (!normalTable_) return -1;
+    if (!normals_) normals_ = std::make_unique<NormalCompiler>(*normalTable_, *this, notes_);
+    return normals_->compile(normal);
+}
 
 int PigmentCompiler::compile(const Item& pigment) {
     if (const auto it = done_.find(&pigment); it != done_.end()) return it->second;
@@ -145,7 +158,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         for (const Value& v : e.args) {
             if (v.type == VType::Item) {
                 const Kw k = v.item().kind;
-                if (k == Kw::pigment) read(v.item(), s, depth + 1);  // the base pigment
+                if (k == Kw::pigment || (s.normal && k == Kw::normal)) read(v.item(), s, depth + 1);  // the base
                 else if (k == Kw::color_map || k == Kw::colour_map) readColorMap(v.item(), s, depth);
                 else if (k == Kw::pigment_map) readPigmentMap(v.item(), s, depth);
             } else if (v.isNumeric()) {
@@ -177,7 +190,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     const Kw k = e.kw();
     const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
     PatternKind kind;
-    if (patternKind(k, kind)) {
+    const bool special = k == Kw::dents || k == Kw::ripples || k == Kw::waves;  // normal-only (bumps, wrinkles known)
+    if (patternKind(k, kind) || (s.normal && special)) {
+        if (special) kind = PatternKind::Bozo;
         s.pattern = true;
         s.unrendered = false;
         s.node.kind = kind;
@@ -209,7 +224,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         s.unrendered = true;
         s.pattern = false;
         notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)), e.loc,
-                    "(drawn in its mean colour)");
+                    s.normal ? "(drawn smooth)" : "(drawn in its mean colour)");
         return;
     }
     pattern::PatternParams& pp = s.node.params;
@@ -305,6 +320,18 @@ int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Pla
         list.push_back(MapEntry{i < values.size() ? values[i] : 0.0, {}, placed(entries[i])});
     if (pattern::isBlockPattern(s.node.kind)) s.list = list;
     else s.map = list, s.mapSet = true;
+    return emit(s);
+}
+
+int PigmentCompiler::normalPattern(const Item& normal) {
+    State s;
+    s.what = "normal";
+    s.normal = true;
+    read(normal, s, 0);
+    if (!s.pattern || s.unrendered) return -1;
+    s.list.clear();  // the map and list are the normal's: not pigments
+    s.map.clear();
+    s.mapSet = false;
     return emit(s);
 }
 

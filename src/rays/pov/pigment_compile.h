@@ -3,17 +3,27 @@
 // order (a base pigment identifier first, then the pattern, its colour list, map, modifiers and
 // transformations). Each pigment item is compiled once; objects that share it share its nodes.
 #pragma once
+#include <memory>
 #include <unordered_map>
 
+#include "rays/pattern/normal.h"
 #include "rays/pattern/pigment.h"
 #include "rays/pov/item_values.h"
 #include "rays/pov/not_rendered.h"
 
 namespace rays::pov {
 
+class NormalCompiler;
+
 class PigmentCompiler {
 public:
-    PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes) : table_(table), notes_(notes) {}
+    /// With `normals`, normal items are compiled too (compileNormal).
+    PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes, pattern::NormalTable* normals = nullptr);
+    ~PigmentCompiler();
+    /// The node of a normal item in the NormalTable, or -1 (smooth; noted when not rendered).
+    int compileNormal(const Item& normal);
+    /// True when normals are compiled (a NormalTable was given).
+    bool compilesNormals() const { return normalTable_ != nullptr; }
     /// The node of a pigment with a rendered pattern, or -1 for a flat colour (a pigment with no
     /// pattern, or with only patterns Rays does not render: those are noted).
     int compile(const Item& pigment);
@@ -31,6 +41,11 @@ public:
     /// a pigment: the texture's pattern and modifiers choosing among the textures' pigments
     /// (entries, at `values` in a map); -1 when the pattern is not rendered (noted).
     int patternedTexture(const Item& texture, const std::vector<Placed>& entries, const std::vector<double>& values);
+    /// The pattern of a normal item (its pattern type, modifiers, transformations, warps and wave;
+    /// a base normal identifier first) as a node whose map is unused; bumps, dents, ripples, waves
+    /// and wrinkles give a node of kind Bozo carrying their modifiers. -1 when the normal has no
+    /// rendered pattern (noted "normal pattern X").
+    int normalPattern(const Item& normal);
 
 private:
     struct State;
@@ -46,6 +61,8 @@ private:
     pattern::PigmentTable& table_;
     NotRendered& notes_;
     std::unordered_map<const Item*, int> done_;  ///< pigment items compiled (-1: flat)
+    pattern::NormalTable* normalTable_ = nullptr;
+    std::unique_ptr<NormalCompiler> normals_;  ///< made on the first normal
 };
 
 }  // namespace rays::pov

@@ -12,6 +12,13 @@ int SceneBuilder::pigmentRoot(const Appearance& look) {
     return int(scene_.pigments.roots.size()) - 1;
 }
 
+int SceneBuilder::normalRoot(const Appearance& look) {
+    if (look.normalNode < 0 || look.normalToObject.determinant() == 0) return -1;
+    const Transform toTexture = look.normalToObject.inverse();
+    scene_.normals.roots.push_back(pattern::NormalRoot{toTexture, look.normalToObject, look.normalNode});
+    return int(scene_.normals.roots.size()) - 1;
+}
+
 namespace {
 
 // A sky_sphere's entries with `sky_sphere { Base ... }` unrolled: the base's first.

@@ -367,6 +367,7 @@ Material SceneBuilder::material(const Appearance& look) {
     s.noImage = noImage_;
     s.noReflection = noReflection_;
     s.doubleIlluminate = doubleIlluminate_;
+    s.normal = normalRoot(look);
     m.pov = int(scene_.povSurfaces.size());
     scene_.povSurfaces.push_back(s);
     return m;
@@ -409,7 +410,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (e.key == kMapEntry) continue;
         if (isTransformEntry(e)) {
             applyTransform(e, local);
-            if (look.set) applyTransform(e, look.pigmentToObject);  // transformations after the texture move it
+            if (look.set) {  // transformations after the texture move it
+                applyTransform(e, look.pigmentToObject);
+                applyTransform(e, look.normalToObject);
+            }
             continue;
         }
         if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
@@ -446,7 +450,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
-    if (look.set) look.pigmentToObject = parent * look.pigmentToObject;  // texture space → world
+    if (look.set) {  // texture space → world
+        look.pigmentToObject = parent * look.pigmentToObject;
+        look.normalToObject = parent * look.normalToObject;
+    }
     const Appearance* own = look.set ? &look : inherited;
     // Intersection, difference, merge and clipped objects become one CSG object (csg.h); unions
     // outside them are flattened into their children.

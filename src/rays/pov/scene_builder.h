@@ -67,6 +67,8 @@ private:
     /// The scene's pigment root for a look with a pattern (its texture space completed to world
     /// space by SceneBuilder::addObject), or -1.
     int pigmentRoot(const Appearance& look);
+    /// The scene's normal root for a look with a normal (like pigmentRoot), or -1.
+    int normalRoot(const Appearance& look);
     /// sky_sphere: its pigments (layers) and transformations → PovGlobals' sky roots.
     void addSkySphere(const Item& sky);
     /// Counts n more objects made at `at`; throws past maxObjects_.
@@ -74,7 +76,7 @@ private:
 
     NotRendered& notes_;
     Scene scene_;
-    PigmentCompiler pigments_{scene_.pigments, notes_};  ///< pigment patterns → scene_.pigments
+    PigmentCompiler pigments_{scene_.pigments, notes_, &scene_.normals};  ///< patterns → scene_.pigments, normals
     Appearance fallback_;      ///< the default texture of the item being added
     Csg* csg_ = nullptr;       ///< the CSG tree being built (objects go into it), or none
     int csgParent_ = -1;       ///< the node of csg_ new objects go under

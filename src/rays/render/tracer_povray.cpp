@@ -8,6 +8,7 @@
 #include "rays/geometry/refract.h"
 #include "rays/render/area_light.h"
 #include "rays/render/pov_lighting.h"
+#include "rays/render/pov_normal.h"
 #include "rays/render/pov_pigment.h"
 #include "rays/render/texturing.h"
 #include "rays/render/tracer.h"
@@ -103,7 +104,10 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     pt.surface = &povSurfaceOf(o.material);
     pt.P = ray.at(hit.t);
     pt.entering = dot(ray.dir, hit.geomNormal) < 0;
-    pt.N = pt.entering ? hit.normal : -hit.normal;  // faces the viewer
+    // The normal pattern tilts the shading normal (lighting, highlights, reflection, refraction);
+    // inside or outside is still decided by the geometric normal.
+    const Vec3 N = pt.surface->normal >= 0 ? povNormalAt(scene_, *pt.surface, pt.P, hit.normal) : hit.normal;
+    pt.N = pt.entering ? N : -N;  // faces the viewer
     pt.C = o.material.color;
     pt.filter = o.material.filter;
     pt.transmit = pt.surface->transmit;

@@ -46,6 +46,7 @@ struct PovSurface {
     /// Material::filter and transmit above; with a pattern those hold its mean colour).
     int pigment = -1;
     bool pigmentTransparent = false;  ///< some colour of the pattern filters or transmits
+    int normal = -1;  ///< the normal pattern: a root of Scene::normals, or -1 (the surface's own normal)
 };
 
 /// A fog layer (POV-Ray 3.7 reference, "Fog"; the details measured, docs/povray-lighting.md).

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rays/npr/edge_settings.h"
+#include "rays/pattern/normal.h"
 #include "rays/pattern/pigment.h"
 #include "rays/scene/camera.h"
 #include "rays/scene/csg.h"
@@ -36,6 +37,7 @@ struct Scene {
     std::vector<PovSurface> povSurfaces;
     PovGlobals pov;
     pattern::PigmentTable pigments;  ///< POV-Ray pigment patterns referenced by PovSurface::pigment
+    pattern::NormalTable normals;    ///< POV-Ray normals referenced by PovSurface::normal
 };
 
 }  // namespace rays

@@ -1,0 +1,192 @@
+// Normal perturbation as the manual describes it ("Normals, Accuracy"): a pattern not made for
+// normals is sampled at four points of a pyramid (a regular tetrahedron) `accuracy` away from the
+// point, giving the gradient of its height (value → wave → slope_map); the normal tilts against
+// that gradient. Measured with POV-Ray 3.7 (tests/pov_normal_test.cpp): the tilt is
+// kPovBumpScale·amount·gradient, the gradient taken in the pattern's own space (a uniformly scaled
+// normal keeps its depth, a scale along one axis steepens it), the full gradient subtracted from
+// the unit normal there (a gradient along the normal changes nothing), the wave and slopes included.
+// bumps, dents, ripples, waves and wrinkles have their own perturbation in POV-Ray; here they are
+// gradients of look-alike heights on Rays' noise and Rays' wave centres, not POV-Ray's (ripples
+// and waves: analytic, the tilt independent of the frequency, as measured).
+#include "rays/pattern/normal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rays::pattern {
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// The tetrahedron's unit directions; Σ dᵢ dᵢᵀ = 4/3 I, so the gradient of a linear height h is
+// 3/(4δ) Σ h(p + δ dᵢ) dᵢ.
+constexpr double kT = 0.57735026918962573;
+constexpr Vec3 kPyramid[4] = {{kT, kT, kT}, {kT, -kT, -kT}, {-kT, kT, -kT}, {-kT, -kT, kT}};
+
+// The specialised normals' heights are scaled so that their tilt at amount 1 spreads as POV-Ray's
+// (measured over a plane, tests/pov_normal_test.cpp, SpecialisedNormalsTiltAboutAsMuchAsPovRays).
+constexpr double kBumpsScale = 8.5, kDentsScale = 12.5, kRipplesScale = 18.8, kWavesScale = 34.5,
+                 kWrinklesScale = 1.15;
+
+// Ten wave centres in the unit cube for ripples and waves (POV-Ray's are its own random ones).
+constexpr Vec3 kCentres[10] = {{0.12, 0.84, 0.37}, {0.71, 0.22, 0.91}, {0.45, 0.58, 0.06}, {0.93, 0.67, 0.49},
+                               {0.28, 0.11, 0.62}, {0.59, 0.95, 0.73}, {0.04, 0.39, 0.18}, {0.81, 0.03, 0.27},
+                               {0.36, 0.76, 0.88}, {0.67, 0.48, 0.55}};
+
+Vec3 patternPoint(const PigmentTable& patterns, const PigmentNode& pn, Vec3 p) {
+    if (pn.warpCount > 0) {
+        for (int i = 0; i < pn.warpCount; ++i) p = applyWarp(patterns.warps[size_t(pn.warpBegin + i)], p);
+    } else if (pn.transformed) {
+        p = pn.toPattern.point(p);
+    }
+    return p;
+}
+
+// The pattern's value at q (pattern space): a block pattern's index, else the value after the wave.
+double rawValue(const PigmentNode& pn, Vec3 q) {
+    if (isBlockPattern(pn.kind)) return blockIndex(pn.kind, pn.params, q);
+    return applyWave(pn.wave, patternValue(pn.kind, pn.params, q));
+}
+
+// The slope map's cubic (Hermite) curve through the entries' heights with their slopes, the slopes
+// per unit of the segment (measured: the manual's triangle map [0 <0,1>] [0.5 <1,1>] ... gives a
+// straight ramp, and [0 <0,0>] [1 <1,0>] a smoothstep).
+double slopeHeight(const SlopeEntry* s, int count, double v) {
+    if (count == 0) return v;
+    if (v <= s[0].value) return s[0].height;
+    for (int i = 0; i + 1 < count; ++i) {
+        const SlopeEntry &a = s[i], &b = s[i + 1];
+        if (v > b.value) continue;
+        const double d = b.value - a.value;
+        if (d <= 0) return b.height;
+        const double t = (v - a.value) / d, t2 = t * t, t3 = t2 * t;
+        return (2 * t3 - 3 * t2 + 1) * a.height + (t3 - 2 * t2 + t) * a.slope + (-2 * t3 + 3 * t2) * b.height +
+               (t3 - t2) * b.slope;
+    }
+    return s[count - 1].height;
+}
+
+// ripples and waves: the gradient of rings about ten centres, without the frequency's factor
+// (measured: POV-Ray's tilt does not grow with `frequency`, so that huge scales with huge
+// frequencies, as in var_refl.pov, stay calm).
+Vec3 wavesGradient(Vec3 q, const Wave& w, bool ripples) {
+    Vec3 g;
+    for (const Vec3& centre : kCentres) {
+        const Vec3 r = q - centre;
+        const double d = length(r);
+        if (d == 0) continue;
+        const double phase = kTwoPi * (d * w.frequency + w.phase);
+        // ripples: the slope of sine rings; waves: of rounder crests (c·|c|, c the cosine).
+        const double slope = ripples ? std::cos(phase) : -2 * std::sin(phase) * std::fabs(std::cos(phase));
+        g += (slope / d) * r;
+    }
+    return g / 10.0;
+}
+
+// The specialised normals' heights at q (pattern space, turbulence applied already).
+double specialHeight(NormalKind kind, const PigmentNode& pn, Vec3 q) {
+    switch (kind) {
+        case NormalKind::Bumps: return kBumpsScale * noise(q);
+        case NormalKind::Dents: {
+            // Dimples where the noise is high, flat elsewhere (as POV-Ray's look).
+            const double n = std::max(0.0, 2 * noise(q) - 1);
+            return -kDentsScale * n * n * n;
+        }
+        case NormalKind::Wrinkles: {
+            PatternParams plain = pn.params;
+            plain.turbulence = Turbulence{};
+            return kWrinklesScale * patternValue(PatternKind::Wrinkles, plain, q);
+        }
+        default: return 0;
+    }
+}
+
+bool isSpecial(NormalKind k) { return k >= NormalKind::Bumps; }
+
+}  // namespace
+
+double NormalTable::height(const PigmentTable& patterns, const NormalNode& node, Vec3 p) const {
+    const PigmentNode& pn = patterns.nodes[size_t(node.pattern)];
+    Vec3 q = patternPoint(patterns, pn, p);
+    if (isSpecial(node.kind)) {
+        if (pn.params.turbulence.on()) q = turbulent(q, pn.params.turbulence);
+        return specialHeight(node.kind, pn, q);
+    }
+    return slopeHeight(slopes.data() + node.slopeBegin, node.slopeCount, rawValue(pn, q));
+}
+
+Vec3 NormalTable::perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 normal) const {
+    const NormalNode& node = nodes[size_t(n)];
+    if (node.pattern < 0) return normal;
+    Vec3 np = node.fromPattern.transposedVector(normal);  // the normal in pattern space
+    const double len = length(np);
+    if (len == 0) return normal;
+    np = np / len;
+    Vec3 out;
+    if (node.kind == NormalKind::Pattern || isSpecial(node.kind)) {
+        // The gradient in pattern space from four samples `accuracy` apart in pattern space.
+        Vec3 g;
+        const double delta = node.accuracy > 0 ? node.accuracy : 0.02;
+        if (isSpecial(node.kind)) {
+            // Sampled about the turbulent point in pattern space: the turbulence moves the bumps
+            // but does not roughen them (measured: POV-Ray's bumps tilt as much with turbulence 0.5).
+            const PigmentNode& pn = patterns.nodes[size_t(node.pattern)];
+            Vec3 q = patternPoint(patterns, pn, p);
+            if (pn.params.turbulence.on()) q = turbulent(q, pn.params.turbulence);
+            if (node.kind == NormalKind::Ripples || node.kind == NormalKind::Waves) {
+                const bool ripples = node.kind == NormalKind::Ripples;
+                g = (ripples ? kRipplesScale : kWavesScale) * wavesGradient(q, pn.wave, ripples);
+            } else {
+                for (const Vec3& d : kPyramid) g += specialHeight(node.kind, pn, q + delta * d) * d;
+                g = g * (3 / (4 * delta));
+            }
+        } else {
+            for (const Vec3& d : kPyramid) g += height(patterns, node, p + node.fromPattern.vector(delta * d)) * d;
+            g = g * (3 / (4 * delta));
+        }
+        out = np - (kPovBumpScale * node.amount) * g;
+    } else {
+        const PigmentNode& pn = patterns.nodes[size_t(node.pattern)];
+        const Vec3 q = patternPoint(patterns, pn, p);
+        const NormalEntry* map = entries.data() + node.mapBegin;
+        auto entry = [&](int i) { return map[i].node >= 0 ? perturb(patterns, map[i].node, q, np) : np; };
+        if (node.mapCount == 0) {
+            out = np;
+        } else if (node.kind == NormalKind::Block) {
+            const int i = blockIndex(pn.kind, pn.params, q);
+            out = entry(std::min(i, node.mapCount - 1));
+        } else if (node.kind == NormalKind::Average) {
+            for (int i = 0; i < node.mapCount; ++i) out += map[i].value * entry(i);
+        } else {
+            // The map's two entries about the value, blended (the first wins at a shared value).
+            const double v = rawValue(pn, q);
+            int hi = 0;
+            while (hi < node.mapCount && map[hi].value <= v) ++hi;
+            if (hi == 0) out = entry(0);
+            else if (hi == node.mapCount) out = entry(node.mapCount - 1);
+            else {
+                const int lo = hi - 1;
+                const double span = map[hi].value - map[lo].value;
+                const double t = span > 0 ? (v - map[lo].value) / span : 0;
+                out = t <= 0 ? entry(lo) : (1 - t) * entry(lo) + t * entry(hi);
+            }
+        }
+    }
+    const Vec3 back = node.toPattern.transposedVector(out);
+    const double bl = length(back);
+    return bl > 0 ? back / bl : normal;
+}
+
+Vec3 NormalTable::atRoot(const PigmentTable& patterns, int r, Vec3 P, Vec3 N) const {
+    const NormalRoot& root = roots[size_t(r)];
+    Vec3 n = root.textureToWorld.transposedVector(N);
+    const double len = length(n);
+    if (len == 0) return N;
+    n = perturb(patterns, root.node, root.worldToTexture.point(P), n / len);
+    const Vec3 w = root.worldToTexture.transposedVector(n);
+    const double wl = length(w);
+    return wl > 0 ? w / wl : N;
+}
+
+}  // namespace rays::pattern
