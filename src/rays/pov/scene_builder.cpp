@@ -6,6 +6,7 @@
 
 #include "rays/error.h"
 #include "rays/pov/build_mesh.h"
+#include "rays/pov/build_shapes.h"
 #include "rays/pov/grammar.h"
 
 namespace rays::pov {
@@ -370,6 +371,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_image: notes_.note("no_image", e.loc); break;
             case Kw::no_reflection: notes_.note("no_reflection", e.loc); break;
             case Kw::double_illuminate: break;
+            case Kw::xyz: terms_.push_back(&e); break;  // polynomial's terms
             case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder; break;
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
@@ -421,6 +423,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         }
         default:
             addPrimitive(kind, args, item.loc, toWorld, own ? *own : fallback_, open, inverse);
+            terms_.clear();
     }
     if (clipNode >= 0) {
         // The clipping objects follow the transformations written after clipped_by.
@@ -592,9 +595,20 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             }
             break;
         }
-        default:
-            notes_.note(std::string(sdl::keywordName(kind)), at, "(left out)");
-            return;
+        default: {
+            std::unique_ptr<ShapeData> data;
+            const ShapeBuild made = buildShape(kind, a, terms_, o, data, notes_.where(at));
+            if (made == ShapeBuild::Empty) return;
+            if (made == ShapeBuild::NotAShape) {
+                notes_.note(std::string(sdl::keywordName(kind)), at, "(left out)");
+                return;
+            }
+            if (data) {
+                o.data = data.get();
+                scene_.shapeData.push_back(std::move(data));
+            }
+            break;
+        }
     }
     o.open = open && o.type == ShapeType::Cone;
     o.material = material(look);

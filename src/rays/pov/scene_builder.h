@@ -61,6 +61,7 @@ private:
     double version_ = 3.7;
     bool gammaSet_ = false;
     bool backgroundSet_ = false;
+    std::vector<const Entry*> terms_;  ///< the xyz entries of the polynomial being added
     bool noShadow_ = false;    ///< the objects being added cast no shadow (no_shadow, looks_like)
     uint64_t maxObjects_, objects_ = 0;
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_

@@ -5,6 +5,10 @@
 #include "rays/geometry/sphere_hit.h"
 #include "rays/scene/csg.h"
 #include "rays/scene/mesh.h"
+#include "rays/scene/shapes/disc.h"
+#include "rays/scene/shapes/polygon.h"
+#include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/torus.h"
 
 namespace rays {
 
@@ -17,6 +21,10 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Cone: return "Cone";
         case ShapeType::Mesh: return "Mesh";
         case ShapeType::Csg: return "CSG";
+        case ShapeType::Torus: return "Torus";
+        case ShapeType::Disc: return "Disc";
+        case ShapeType::Polygon: return "Polygon";
+        case ShapeType::Poly: return "Poly";
     }
     return "Object";
 }
@@ -202,6 +210,10 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         }
         case ShapeType::Box: found = hitBox(o, r, tMin, tMax, h); break;
         case ShapeType::Cone: found = hitCone(o, r, tMin, tMax, h); break;
+        case ShapeType::Torus: found = hitTorus(o, r, tMin, tMax, h); break;
+        case ShapeType::Disc: found = hitDisc(o, r, tMin, tMax, h); break;
+        case ShapeType::Polygon: found = hitPolygon(o, r, tMin, tMax, h); break;
+        case ShapeType::Poly: found = hitPolySurface(o, r, tMin, tMax, h); break;
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
@@ -231,6 +243,9 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Csg:
             b = o.csg->bounds;
             break;
+        case ShapeType::Torus: b = torusBounds(o); break;
+        case ShapeType::Disc: b = discBounds(o); break;
+        case ShapeType::Polygon: case ShapeType::Poly: b = o.data->bounds; break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);
             b.extend(o.p0 - Vec3(r));

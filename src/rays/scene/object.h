@@ -9,12 +9,14 @@
 
 namespace rays {
 
-enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg };
+enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg,
+    Torus, Disc, Polygon, Poly };  // scene/shapes/*.h
 
 struct Mesh;
 struct Csg;
+struct ShapeData;
 
-/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone", "Mesh", "CSG").
+/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone", "Mesh", "CSG", "Torus", …).
 std::string_view shapeName(ShapeType t);
 
 struct Object {
@@ -26,6 +28,7 @@ struct Object {
     //   Triangle p0 p1 p2 vertices             Box    p0 min corner, p1 max corner
     //   Cone     p0 base, r0 base radius, p1 cap, r1 cap radius (closed by flat caps unless open)
     //   Csg      csg: the tree, its leaves in world space (no transform of its own)
+    //   Torus, Disc, Polygon, Poly: see their headers in scene/shapes
     Vec3 p0, p1, p2;
     double r0 = 0, r1 = 0;
     bool smooth = false;  ///< Triangle only: interpolate the vertex normals n0, n1, n2
@@ -33,6 +36,7 @@ struct Object {
     bool open = false;    ///< Cone only: no caps (POV-Ray's `open`)
     const Mesh* mesh = nullptr;  ///< Mesh only: the geometry (owned by the Scene)
     const Csg* csg = nullptr;    ///< Csg only: the tree (owned by the Scene)
+    const ShapeData* data = nullptr;  ///< Polygon, Poly: their numbers (owned by the Scene)
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
     bool localSpace = false;   ///< rays are mapped through toObject before intersecting
