@@ -11,6 +11,9 @@
 
 namespace rays::pov {
 
+/// quadric, cubic, quartic, poly or polynomial: the unbounded surfaces.
+bool isPolynomialKind(Kw kind);
+
 /// Result of buildShape.
 enum class ShapeBuild { NotAShape, Empty, Made };
 
