@@ -240,13 +240,73 @@ TEST(PovShapesPoly, BoundedByCutsAnUnboundedSurface) {
     EXPECT_NEAR(shoot(build("sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } }"), {-10, 0, 0}, {1, 0, 0}).t, 9, 1e-9);
 }
 
+TEST(PovShapesSuperellipsoid, HitsNormalsAndInside) {
+    // e = n = 1 is the unit sphere.
+    const Scene sphere = build("superellipsoid { <1, 1> }");
+    ASSERT_EQ(sphere.objects.size(), 1u);
+    EXPECT_EQ(shapeName(sphere.objects[0].type), "Superellipsoid");
+    const Hit d = shoot(sphere, {0.6, 5, 0}, {0, -1, 0});
+    EXPECT_NEAR(d.t, 5 - 0.8, 1e-9);
+    EXPECT_TRUE(near(d.normal, {0.6, 0.8, 0}));
+    // <1, 0.25>: a rounded cylinder along z, (x² + y²)⁴ + z⁸ = 1.
+    const Scene cyl = build("superellipsoid { <1, 0.25> }");
+    const Hit end = shoot(cyl, {0.3, 0, -5}, {0, 0, 1});
+    EXPECT_NEAR(end.t, 5 - std::pow(1 - std::pow(0.09, 4), 1.0 / 8), 1e-9);
+    const Hit side = shoot(cyl, {-5, 0, 0.5}, {1, 0, 0});
+    EXPECT_NEAR(side.t, 5 - std::pow(1 - std::pow(0.5, 8), 1.0 / 8), 1e-9);
+    EXPECT_EQ(insideShape(cyl.objects[0], {0.7, 0.7, 0.9}), 0);   // outside the round cross-section
+    EXPECT_EQ(insideShape(cyl.objects[0], {0.6, 0.6, 0.9}), 1);
+    // <0.2, 0.2>: nearly a box, x¹⁰ + y¹⁰ + z¹⁰ = 1; its rounded corners are missed.
+    const Scene box = build("superellipsoid { <0.2, 0.2> }");
+    const double z = std::pow(1 - 2 * std::pow(0.5, 10), 0.1);
+    const Hit face = shoot(box, {0.5, 0.5, -5}, {0, 0, 1});
+    EXPECT_NEAR(face.t, 5 - z, 1e-9);
+    EXPECT_TRUE(near(face.normal, normalize(Vec3{std::pow(0.5, 9), std::pow(0.5, 9), -std::pow(z, 9)})));
+    EXPECT_FALSE(shoot(box, {0.99, 0.99, -5}, {0, 0, 1}).valid());
+    // In CSG: a sphere cut out of it.
+    const Scene cut = build("difference { superellipsoid { <1, 1> } sphere { <0, 0, -1>, 0.5 } }");
+    EXPECT_NEAR(shoot(cut, {0, 0, -5}, {0, 0, 1}).t, 4.5, 1e-9);
+}
+
+TEST(PovShapesSuperellipsoid, PixelsMatchPovRay) {
+    const Scene s = build(
+        "global_settings { assumed_gamma 1.0 }\n"
+        "camera { location <0, 3, -7> look_at <0, 0, 0> angle 50 }\n"
+        "light_source { <-5, 8, -6> color rgb 1 }\n"
+        "plane { y, -1.5 pigment { rgb <0.8, 0.8, 0.7> } }\n"
+        "superellipsoid { <1, 0.2> rotate <-30, 20, 0> translate <-2.2, 0, 0> pigment { rgb <0.9, 0.3, 0.2> } }\n"
+        "superellipsoid { <0.3, 0.3> rotate <10, 30, 0> pigment { rgb <0.3, 0.9, 0.3> } }\n"
+        "difference { superellipsoid { <2.5, 0.6> } sphere { <0, 0, -1>, 0.7 } rotate <0, -20, 0>\n"
+        "  translate <2.2, 0, 0> pigment { rgb <0.2, 0.4, 0.9> } }\n");
+    RenderSettings settings;
+    settings.width = 160;
+    settings.height = 120;
+    settings.threads = 2;
+    const Bvh bvh(s.objects);
+    TraceStats stats;
+    const ImageF img = render(s, bvh, settings, stats);
+    struct Pixel {
+        int x, y;
+        Vec3 povray;  // 0-255, POV-Ray 3.7.0.10 (+W160 +H120 -D -A +FP)
+    };
+    const Pixel pixels[] = {{25, 60, {191, 115, 95}},  {40, 55, {158, 95, 78}},    {75, 50, {117, 194, 117}},
+                            {90, 60, {83, 140, 83}},   {125, 55, {103, 143, 206}}, {140, 50, {104, 144, 207}},
+                            {130, 70, {39, 56, 85}},   {112, 62, {101, 140, 202}}};
+    for (const Pixel& p : pixels) {
+        const Vec3 c = 255.0 * img.at(p.x, p.y);
+        EXPECT_LE(std::max({std::fabs(c.x - p.povray.x), std::fabs(c.y - p.povray.y), std::fabs(c.z - p.povray.z)}),
+                  3.0)
+            << p.x << "," << p.y << ": " << c.x << " " << c.y << " " << c.z;
+    }
+}
+
 TEST(PovShapesNotes, RenderedShapesAreNoLongerNoted) {
     std::vector<std::string> warnings;
     const Scene s = build(
         "torus { 1, 0.2 } disc { 0, y, 1 } polygon { 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }"
-        " quadric { <1, 1, 1>, 0, 0, -1 } blob { sphere { 0, 1, 1 } }",
+        " quadric { <1, 1, 1>, 0, 0, -1 } superellipsoid { <1, 1> } blob { sphere { 0, 1, 1 } }",
         &warnings);
-    EXPECT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(s.objects.size(), 5u);
     std::string all;
     for (const std::string& w : warnings) all += w + "\n";
     EXPECT_EQ(all.find("torus"), std::string::npos) << all;

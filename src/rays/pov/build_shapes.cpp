@@ -45,6 +45,15 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             o.r0 = toFloat(*a[0]);
             o.r1 = std::fabs(toFloat(*a[1]));
             return o.r1 > 0 ? ShapeBuild::Made : ShapeBuild::Empty;
+        case Kw::superellipsoid: {
+            need(1);
+            const Vec3 en = toVec3(*a[0]);
+            if (!(en.x > 0 && en.y > 0)) return ShapeBuild::Empty;  // the reference wants both above 0
+            o.type = ShapeType::Superellipsoid;
+            o.r0 = en.x;
+            o.r1 = en.y;
+            return ShapeBuild::Made;
+        }
         case Kw::disc: {
             need(3);
             o.type = ShapeType::Disc;

@@ -10,7 +10,7 @@
 namespace rays {
 
 enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg,
-    Torus, Disc, Polygon, Poly };  // scene/shapes/*.h
+    Torus, Disc, Polygon, Poly, Superellipsoid };  // scene/shapes/*.h
 
 struct Mesh;
 struct Csg;
