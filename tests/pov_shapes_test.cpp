@@ -227,19 +227,6 @@ TEST(PovShapesCsg, TorusAndPolyCutByABox) {
     EXPECT_FALSE(shoot(q, {-10, 5, 0}, {1, 0, 0}).valid());      // above the box
 }
 
-TEST(PovShapesPoly, BoundedByCutsAnUnboundedSurface) {
-    // A cylinder along y (x² + z² = 1) bounded by a sphere of radius 2: POV-Ray draws it only
-    // inside the sphere, open at the cut.
-    const Scene s = build("quadric { <1, 0, 1>, 0, 0, -1 bounded_by { sphere { 0, 2 } } }");
-    ASSERT_EQ(s.objects.size(), 1u);
-    EXPECT_NEAR(shoot(s, {-10, 0, 0}, {1, 0, 0}).t, 9, 1e-9);
-    EXPECT_FALSE(shoot(s, {-10, 5, 0}, {1, 0, 0}).valid());
-    EXPECT_FALSE(worldBounds(s.objects[0]).empty());  // bounded for the BVH
-    // Without bounded_by it goes on for ever; a sphere is not cut by its bounded_by.
-    EXPECT_NEAR(shoot(build("quadric { <1, 0, 1>, 0, 0, -1 }"), {-10, 50, 0}, {1, 0, 0}).t, 9, 1e-9);
-    EXPECT_NEAR(shoot(build("sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } }"), {-10, 0, 0}, {1, 0, 0}).t, 9, 1e-9);
-}
-
 TEST(PovShapesSuperellipsoid, HitsNormalsAndInside) {
     // e = n = 1 is the unit sphere.
     const Scene sphere = build("superellipsoid { <1, 1> }");

@@ -21,11 +21,6 @@ std::unique_ptr<ShapeData> polyData(int n, const std::vector<double>& coef) {
 
 }  // namespace
 
-bool isPolynomialKind(Kw kind) {
-    return kind == Kw::quadric || kind == Kw::cubic || kind == Kw::quartic || kind == Kw::poly ||
-           kind == Kw::polynomial;
-}
-
 ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
                       std::unique_ptr<ShapeData>& data, const std::string& where) {
     auto need = [&](size_t n) {

@@ -11,9 +11,6 @@
 
 namespace rays::pov {
 
-/// quadric, cubic, quartic, poly or polynomial: the unbounded surfaces.
-bool isPolynomialKind(Kw kind);
-
 /// Result of buildShape.
 enum class ShapeBuild { NotAShape, Empty, Made };
 

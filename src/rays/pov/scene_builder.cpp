@@ -344,7 +344,6 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     std::vector<const Item*> children;
     std::vector<Clip> clips;
     const Entry* bounds = nullptr;
-    Transform boundsBefore;
     bool inverse = false, open = false, noShadow = false;
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
@@ -366,10 +365,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         }
         switch (k) {
             case Kw::clipped_by: clips.push_back(Clip{&e, local}); break;
-            case Kw::bounded_by:  // a speed hint only, but it cuts unbounded polynomial surfaces
-                bounds = &e;
-                boundsBefore = local;
-                break;
+            case Kw::bounded_by: bounds = &e; break;  // a speed hint only
             case Kw::inverse: inverse = true; break;
             case Kw::no_shadow: noShadow = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_image: notes_.note("no_image", e.loc); break;
@@ -387,9 +383,6 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         ~KeepNoShadow() { flag = saved; }
     } keep{noShadow_, noShadow_};
     noShadow_ = noShadow_ || noShadow;
-    // POV-Ray 3.7 draws an unbounded polynomial surface only inside its bounded_by objects (seen
-    // in its renders): the bound becomes a clip.
-    if (bounds && clips.empty() && isPolynomialKind(kind)) clips.push_back(Clip{bounds, boundsBefore});
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
     const Appearance* own = look.set ? &look : inherited;
