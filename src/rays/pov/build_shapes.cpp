@@ -5,6 +5,7 @@
 #include "rays/error.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/prism.h"
 
 namespace rays::pov {
 
@@ -48,6 +49,30 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             o.r0 = en.x;
             o.r1 = en.y;
             return ShapeBuild::Made;
+        }
+        case Kw::prism: {
+            // linear_spline and linear_sweep only; the last spline or sweep keyword written counts.
+            Kw spline = Kw::linear_spline, sweep = Kw::linear_sweep;
+            for (const Entry* e : terms) {
+                const Kw k = e->kw();
+                if (k == Kw::conic_sweep || k == Kw::linear_sweep) sweep = k;
+                else if (k != Kw::xyz) spline = k;
+            }
+            if (spline != Kw::linear_spline || sweep != Kw::linear_sweep) return ShapeBuild::NotAShape;
+            need(3);
+            double y0 = toFloat(*a[0]), y1 = toFloat(*a[1]);
+            if (y0 > y1) std::swap(y0, y1);
+            const size_t n = size_t(std::max(0.0, toFloat(*a[2])));
+            std::vector<Vec3> pts;
+            for (size_t i = 3; i < a.size() && pts.size() < n; ++i) {
+                const Vec3 p = toVec3(*a[i]);
+                pts.push_back(Vec3{p.x, 0, p.y});  // <u, v> → x, z
+            }
+            o.type = ShapeType::Prism;
+            o.r0 = y0;
+            o.r1 = y1;
+            data = std::make_unique<ShapeData>();
+            return y1 > y0 && makePrism(pts, y0, y1, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::disc: {
             need(3);

@@ -371,8 +371,11 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_image: notes_.note("no_image", e.loc); break;
             case Kw::no_reflection: notes_.note("no_reflection", e.loc); break;
             case Kw::double_illuminate: break;
-            case Kw::xyz: terms_.push_back(&e); break;  // polynomial's terms
-            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder; break;
+            case Kw::xyz: case Kw::quadratic_spline: case Kw::cubic_spline: case Kw::bezier_spline:
+            case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep:
+                terms_.push_back(&e);  // polynomial's terms, a prism's kind
+                break;
+            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism; break;
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
     }
@@ -610,7 +613,7 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             break;
         }
     }
-    o.open = open && o.type == ShapeType::Cone;
+    o.open = open && (o.type == ShapeType::Cone || o.type == ShapeType::Prism);
     o.material = material(look);
     prepareObject(o, toWorld);
     emit(o, inverse);

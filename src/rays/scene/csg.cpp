@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/superellipsoid.h"
 #include "rays/scene/shapes/torus.h"
 
@@ -203,6 +204,7 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::Torus: return insideTorus(o, p);
         case ShapeType::Poly: return insidePolySurface(o, p);
         case ShapeType::Superellipsoid: return insideSuperellipsoid(o, p);
+        case ShapeType::Prism: return insidePrism(o, p);
         case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Disc: case ShapeType::Polygon: return -1;
     }
     return -1;

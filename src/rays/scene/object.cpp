@@ -8,6 +8,7 @@
 #include "rays/scene/shapes/disc.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/superellipsoid.h"
 #include "rays/scene/shapes/torus.h"
 
@@ -27,6 +28,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Polygon: return "Polygon";
         case ShapeType::Poly: return "Poly";
         case ShapeType::Superellipsoid: return "Superellipsoid";
+        case ShapeType::Prism: return "Prism";
     }
     return "Object";
 }
@@ -217,6 +219,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Polygon: found = hitPolygon(o, r, tMin, tMax, h); break;
         case ShapeType::Poly: found = hitPolySurface(o, r, tMin, tMax, h); break;
         case ShapeType::Superellipsoid: found = hitSuperellipsoid(o, r, tMin, tMax, h); break;
+        case ShapeType::Prism: found = hitPrism(o, r, tMin, tMax, h); break;
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
@@ -248,7 +251,7 @@ Bounds localBounds(const Object& o) {
             break;
         case ShapeType::Torus: b = torusBounds(o); break;
         case ShapeType::Disc: b = discBounds(o); break;
-        case ShapeType::Polygon: case ShapeType::Poly: b = o.data->bounds; break;
+        case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: b = o.data->bounds; break;
         case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);

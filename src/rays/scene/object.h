@@ -10,7 +10,7 @@
 namespace rays {
 
 enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg,
-    Torus, Disc, Polygon, Poly, Superellipsoid };  // scene/shapes/*.h
+    Torus, Disc, Polygon, Poly, Superellipsoid, Prism };  // scene/shapes/*.h
 
 struct Mesh;
 struct Csg;
@@ -33,10 +33,10 @@ struct Object {
     double r0 = 0, r1 = 0;
     bool smooth = false;  ///< Triangle only: interpolate the vertex normals n0, n1, n2
     Vec3 n0, n1, n2;
-    bool open = false;    ///< Cone only: no caps (POV-Ray's `open`)
+    bool open = false;    ///< Cone and Prism: no caps (POV-Ray's `open`)
     const Mesh* mesh = nullptr;  ///< Mesh only: the geometry (owned by the Scene)
     const Csg* csg = nullptr;    ///< Csg only: the tree (owned by the Scene)
-    const ShapeData* data = nullptr;  ///< Polygon, Poly: their numbers (owned by the Scene)
+    const ShapeData* data = nullptr;  ///< Polygon, Poly, Prism: their numbers (owned by the Scene)
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
     bool localSpace = false;   ///< rays are mapped through toObject before intersecting
