@@ -7,6 +7,7 @@
 
 #include "rays/error.h"
 #include "rays/pov/build_mesh.h"
+#include "rays/pov/build_shapes.h"
 #include "rays/pov/grammar.h"
 
 namespace rays::pov {
@@ -431,7 +432,11 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_image: noImage = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::double_illuminate: doubleIlluminate = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder; break;
+            case Kw::xyz: case Kw::quadratic_spline: case Kw::cubic_spline: case Kw::bezier_spline:
+            case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep:
+                terms_.push_back(&e);  // polynomial's terms, a prism's kind
+                break;
+            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism; break;
             case Kw::ttf: case Kw::internal: font = &e; break;
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
@@ -493,6 +498,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         case Kw::text: addText(font, args, item.loc, toWorld, own ? *own : fallback_, inverse); break;
         default:
             addPrimitive(kind, args, item.loc, toWorld, own ? *own : fallback_, open, inverse);
+            terms_.clear();
     }
     if (clipNode >= 0) {
         // The clipping objects follow the transformations written after clipped_by.
@@ -664,11 +670,22 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             }
             break;
         }
-        default:
-            notes_.note(std::string(sdl::keywordName(kind)), at, "(left out)");
-            return;
+        default: {
+            std::unique_ptr<ShapeData> data;
+            const ShapeBuild made = buildShape(kind, a, terms_, o, data, notes_.where(at));
+            if (made == ShapeBuild::Empty) return;
+            if (made == ShapeBuild::NotAShape) {
+                notes_.note(std::string(sdl::keywordName(kind)), at, "(left out)");
+                return;
+            }
+            if (data) {
+                o.data = data.get();
+                scene_.shapeData.push_back(std::move(data));
+            }
+            break;
+        }
     }
-    o.open = open && o.type == ShapeType::Cone;
+    o.open = open && (o.type == ShapeType::Cone || o.type == ShapeType::Prism);
     o.material = material(look);
     prepareObject(o, toWorld);
     emit(o, inverse);

@@ -81,6 +81,7 @@ void printObject(std::ostream& out, const Object& o) {
             out << "- Base: " << vec(o.p0) << "\n- Base Radius: " << num(o.r0) << "\n- Cap: " << vec(o.p1)
                 << "\n- Cap Radius: " << num(o.r1) << "\n";
             break;
+        default: break;  // the POV-Ray shapes (scene/shapes) print their type only
     }
     out << "- Color: " << vec(o.material.color) << "\n";
     if (o.material.filter > 0) out << "- Filter: " << num(o.material.filter) << "\n";

@@ -4,6 +4,10 @@
 #include <cmath>
 
 #include "rays/scene/text_shape.h"
+#include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/prism.h"
+#include "rays/scene/shapes/superellipsoid.h"
+#include "rays/scene/shapes/torus.h"
 
 namespace rays {
 
@@ -74,10 +78,16 @@ Bounds planeBounds(const Object& o, bool inverse) {
     return b;
 }
 
+// World bounds of a leaf, all space for unbounded ones (planes, polys).
+Bounds leafWorldBox(const Object& o) {
+    const Bounds b = o.type == ShapeType::Plane ? Bounds{} : worldBounds(o);
+    return b.empty() && (o.type == ShapeType::Plane || o.type == ShapeType::Poly) ? allSpace() : b;
+}
+
 Bounds leafBounds(const Object& o, bool inverse) {
     if (o.type == ShapeType::Plane) return planeBounds(o, inverse);
     if (inverse) return allSpace();
-    return worldBounds(o);
+    return leafWorldBox(o);
 }
 
 Bounds nodeBounds(const Csg& c, int n) {
@@ -159,7 +169,7 @@ void Csg::finish() {
     leafBox.resize(leaves.size());
     for (size_t k = 0; k < leaves.size(); ++k) {
         hasSurface[k] = leafHasSurface(*this, int(k));
-        Bounds b = leaves[k].type == ShapeType::Plane ? allSpace() : worldBounds(leaves[k]);
+        Bounds b = leafWorldBox(leaves[k]);
         if (!b.empty()) {  // room for the rounding of the slab test
             Vec3 pad;
             for (int a = 0; a < 3; ++a) pad[a] = 1e-9 * (std::fabs(b.lo[a]) + std::fabs(b.hi[a])) + 1e-12;
@@ -193,7 +203,11 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::Plane: return dot(o.p0, p) < o.r0;
         case ShapeType::Csg: return insideCsg(*o.csg, 0, q);
         case ShapeType::Text: return insideText(*o.text, p);
-        case ShapeType::Triangle: case ShapeType::Mesh: return -1;
+        case ShapeType::Torus: return insideTorus(o, p);
+        case ShapeType::Poly: return insidePolySurface(o, p);
+        case ShapeType::Superellipsoid: return insideSuperellipsoid(o, p);
+        case ShapeType::Prism: return insidePrism(o, p);
+        case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Disc: case ShapeType::Polygon: return -1;
     }
     return -1;
 }

@@ -6,6 +6,12 @@
 #include "rays/scene/csg.h"
 #include "rays/scene/mesh.h"
 #include "rays/scene/text_shape.h"
+#include "rays/scene/shapes/disc.h"
+#include "rays/scene/shapes/polygon.h"
+#include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/prism.h"
+#include "rays/scene/shapes/superellipsoid.h"
+#include "rays/scene/shapes/torus.h"
 
 namespace rays {
 
@@ -19,6 +25,12 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Mesh: return "Mesh";
         case ShapeType::Csg: return "CSG";
         case ShapeType::Text: return "Text";
+        case ShapeType::Torus: return "Torus";
+        case ShapeType::Disc: return "Disc";
+        case ShapeType::Polygon: return "Polygon";
+        case ShapeType::Poly: return "Poly";
+        case ShapeType::Superellipsoid: return "Superellipsoid";
+        case ShapeType::Prism: return "Prism";
     }
     return "Object";
 }
@@ -205,6 +217,12 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Box: found = hitBox(o, r, tMin, tMax, h); break;
         case ShapeType::Cone: found = hitCone(o, r, tMin, tMax, h); break;
         case ShapeType::Text: found = intersectText(*o.text, r, tMin, tMax, h.t, h.normal); break;
+        case ShapeType::Torus: found = hitTorus(o, r, tMin, tMax, h); break;
+        case ShapeType::Disc: found = hitDisc(o, r, tMin, tMax, h); break;
+        case ShapeType::Polygon: found = hitPolygon(o, r, tMin, tMax, h); break;
+        case ShapeType::Poly: found = hitPolySurface(o, r, tMin, tMax, h); break;
+        case ShapeType::Superellipsoid: found = hitSuperellipsoid(o, r, tMin, tMax, h); break;
+        case ShapeType::Prism: found = hitPrism(o, r, tMin, tMax, h); break;
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
@@ -235,6 +253,10 @@ Bounds localBounds(const Object& o) {
             b = o.csg->bounds;
             break;
         case ShapeType::Text: b = o.text->bounds; break;
+        case ShapeType::Torus: b = torusBounds(o); break;
+        case ShapeType::Disc: b = discBounds(o); break;
+        case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: b = o.data->bounds; break;
+        case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);
             b.extend(o.p0 - Vec3(r));

@@ -9,13 +9,15 @@
 
 namespace rays {
 
-enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg, Text };
+enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg, Text,
+    Torus, Disc, Polygon, Poly, Superellipsoid, Prism };  // scene/shapes/*.h
 
 struct Mesh;
 struct Csg;
 struct TextShape;
+struct ShapeData;
 
-/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone", "Mesh", "CSG", "Text").
+/// Name used in course output ("Sphere", "Plane", "Triangle", "Box", "Cone", "Mesh", "CSG", "Text", "Torus", …).
 std::string_view shapeName(ShapeType t);
 
 struct Object {
@@ -27,14 +29,16 @@ struct Object {
     //   Triangle p0 p1 p2 vertices             Box    p0 min corner, p1 max corner
     //   Cone     p0 base, r0 base radius, p1 cap, r1 cap radius (closed by flat caps unless open)
     //   Csg      csg: the tree, its leaves in world space (no transform of its own)
+    //   Torus, Disc, Polygon, Poly: see their headers in scene/shapes
     Vec3 p0, p1, p2;
     double r0 = 0, r1 = 0;
     bool smooth = false;  ///< Triangle only: interpolate the vertex normals n0, n1, n2
     Vec3 n0, n1, n2;
-    bool open = false;    ///< Cone only: no caps (POV-Ray's `open`)
+    bool open = false;    ///< Cone and Prism: no caps (POV-Ray's `open`)
     const Mesh* mesh = nullptr;  ///< Mesh only: the geometry (owned by the Scene)
     const Csg* csg = nullptr;    ///< Csg only: the tree (owned by the Scene)
     const TextShape* text = nullptr;  ///< Text only: the glyph outlines, in object space (owned by the Scene)
+    const ShapeData* data = nullptr;  ///< Polygon, Poly, Prism: their numbers (owned by the Scene)
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
     bool localSpace = false;   ///< rays are mapped through toObject before intersecting

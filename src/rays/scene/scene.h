@@ -14,6 +14,7 @@
 #include "rays/scene/object.h"
 #include "rays/scene/pov_surface.h"
 #include "rays/scene/text_shape.h"
+#include "rays/scene/shapes/shape_data.h"
 #include "rays/scene/texture.h"
 
 namespace rays {
@@ -27,6 +28,7 @@ struct Scene {
     std::vector<std::unique_ptr<Mesh>> meshes;  ///< geometry of Mesh objects (stable addresses)
     std::vector<std::unique_ptr<Csg>> csgs;     ///< trees of Csg objects (stable addresses)
     std::vector<std::unique_ptr<TextShape>> texts;  ///< outlines of Text objects (stable addresses)
+    std::vector<std::unique_ptr<ShapeData>> shapeData;  ///< numbers of Polygon and Poly objects
     /// Transforms written inside pigment / normal blocks: texture space → object space (M) and back.
     struct TextureTransform {
         Transform toObject, toTexture;

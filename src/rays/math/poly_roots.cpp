@@ -1,0 +1,64 @@
+#include "rays/math/poly_roots.h"
+
+#include <cmath>
+
+namespace rays {
+
+double evalPoly(const double* c, int n, double t) {
+    double v = c[n];
+    for (int i = n - 1; i >= 0; --i) v = v * t + c[i];
+    return v;
+}
+
+namespace {
+
+// The root of monotone p (derivative d) in [a, b], where p(a) and p(b) differ in sign.
+double refineRoot(const double* c, const double* d, int n, double a, double b, double fa) {
+    // Keep a on the side where p has fa's sign.
+    double x = 0.5 * (a + b);
+    for (int it = 0; it < 100; ++it) {
+        const double f = evalPoly(c, n, x);
+        if (f == 0) return x;
+        if ((f < 0) == (fa < 0)) a = x;
+        else b = x;
+        const double df = evalPoly(d, n - 1, x);
+        double next = df != 0 ? x - f / df : 0.5 * (a + b);
+        const double lo = a < b ? a : b, hi = a < b ? b : a;
+        if (!(next > lo && next < hi)) next = 0.5 * (a + b);
+        if (std::fabs(next - x) <= 1e-15 * (1 + std::fabs(x)) || hi - lo <= 1e-15 * (1 + std::fabs(x)))
+            return next;
+        x = next;
+    }
+    return x;
+}
+
+}  // namespace
+
+int polyRoots(const double* c, int n, double lo, double hi, double* roots) {
+    while (n > 0 && c[n] == 0) --n;
+    if (n <= 0 || !(lo < hi)) return 0;
+    if (n == 1) {
+        const double t = -c[0] / c[1];
+        if (!(t > lo && t < hi)) return 0;
+        roots[0] = t;
+        return 1;
+    }
+    double d[kMaxPolyDegree];
+    for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
+    double ends[kMaxPolyDegree + 1];  // lo, the critical points, hi
+    ends[0] = lo;
+    const int m = polyRoots(d, n - 1, lo, hi, ends + 1);
+    ends[m + 1] = hi;
+    int count = 0;
+    double fa = evalPoly(c, n, lo);
+    for (int i = 0; i <= m; ++i) {
+        const double a = ends[i], b = ends[i + 1];
+        const double fb = evalPoly(c, n, b);
+        if ((fa < 0) != (fb < 0) && fa != 0) roots[count++] = refineRoot(c, d, n, a, b, fa);
+        else if (fb == 0 && i < m) roots[count++] = b;  // a root exactly at a critical point
+        fa = fb;
+    }
+    return count;
+}
+
+}  // namespace rays

@@ -1,0 +1,24 @@
+// Real roots of a polynomial in one variable on a bounded interval, for the ray tests of the
+// polynomial shapes (torus, quartic, poly). Method: isolation by the derivative's roots — between
+// two neighbouring critical points a polynomial is monotone, so it has a root there exactly when
+// its sign changes, found by safeguarded Newton iteration (Newton steps kept inside a shrinking
+// bracket, bisection when they leave it; Press et al., Numerical Recipes, "rtsafe"). The critical
+// points are the roots of the derivative, found the same way, down to degree 1. Robust for any
+// degree up to kMaxPolyDegree; double roots where the sign does not change (grazing rays) are
+// missed. No heap allocation.
+#pragma once
+
+namespace rays {
+
+/// Highest degree polyRoots accepts (POV-Ray's poly allows order 35).
+constexpr int kMaxPolyDegree = 35;
+
+/// p(t) = c[0] + c[1] t + … + c[n] t^n by Horner's rule.
+double evalPoly(const double* c, int n, double t);
+
+/// The real roots of p(t) = c[0] + c[1] t + … + c[n] t^n in the open interval (lo, hi) (finite),
+/// ascending, into roots (room for n); returns their count. n ≤ kMaxPolyDegree; zero leading
+/// coefficients lower the degree.
+int polyRoots(const double* c, int n, double lo, double hi, double* roots);
+
+}  // namespace rays

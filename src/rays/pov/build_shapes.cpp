@@ -1,0 +1,144 @@
+#include "rays/pov/build_shapes.h"
+
+#include <cmath>
+
+#include "rays/error.h"
+#include "rays/scene/shapes/polygon.h"
+#include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/prism.h"
+
+namespace rays::pov {
+
+namespace {
+
+// A poly of degree n from its coefficients in POV-Ray's order (poly.h).
+std::unique_ptr<ShapeData> polyData(int n, const std::vector<double>& coef) {
+    auto d = std::make_unique<ShapeData>();
+    d->order = n;
+    d->values = coef;
+    d->values.resize(size_t(polyTermCount(n)), 0.0);
+    return d;
+}
+
+}  // namespace
+
+ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
+                      std::unique_ptr<ShapeData>& data, const std::string& where) {
+    auto need = [&](size_t n) {
+        if (a.size() < n)
+            throw Error(where + ": error: " + std::string(sdl::keywordName(kind)) + " needs " + std::to_string(n) +
+                        " values, found " + std::to_string(a.size()));
+    };
+    auto numbers = [&](size_t from) {
+        std::vector<double> v;
+        for (size_t i = from; i < a.size(); ++i) v.push_back(toFloat(*a[i]));
+        return v;
+    };
+    switch (kind) {
+        case Kw::torus:
+            need(2);
+            o.type = ShapeType::Torus;
+            o.r0 = toFloat(*a[0]);
+            o.r1 = std::fabs(toFloat(*a[1]));
+            return o.r1 > 0 ? ShapeBuild::Made : ShapeBuild::Empty;
+        case Kw::superellipsoid: {
+            need(1);
+            const Vec3 en = toVec3(*a[0]);
+            if (!(en.x > 0 && en.y > 0)) return ShapeBuild::Empty;  // the reference wants both above 0
+            o.type = ShapeType::Superellipsoid;
+            o.r0 = en.x;
+            o.r1 = en.y;
+            return ShapeBuild::Made;
+        }
+        case Kw::prism: {
+            // linear_spline and linear_sweep only; the last spline or sweep keyword written counts.
+            Kw spline = Kw::linear_spline, sweep = Kw::linear_sweep;
+            for (const Entry* e : terms) {
+                const Kw k = e->kw();
+                if (k == Kw::conic_sweep || k == Kw::linear_sweep) sweep = k;
+                else if (k != Kw::xyz) spline = k;
+            }
+            if (spline != Kw::linear_spline || sweep != Kw::linear_sweep) return ShapeBuild::NotAShape;
+            need(3);
+            double y0 = toFloat(*a[0]), y1 = toFloat(*a[1]);
+            if (y0 > y1) std::swap(y0, y1);
+            const size_t n = size_t(std::max(0.0, toFloat(*a[2])));
+            std::vector<Vec3> pts;
+            for (size_t i = 3; i < a.size() && pts.size() < n; ++i) {
+                const Vec3 p = toVec3(*a[i]);
+                pts.push_back(Vec3{p.x, 0, p.y});  // <u, v> → x, z
+            }
+            o.type = ShapeType::Prism;
+            o.r0 = y0;
+            o.r1 = y1;
+            data = std::make_unique<ShapeData>();
+            return y1 > y0 && makePrism(pts, y0, y1, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::disc: {
+            need(3);
+            o.type = ShapeType::Disc;
+            o.p0 = toVec3(*a[0]);
+            const Vec3 n = toVec3(*a[1]);
+            if (length(n) == 0) throw Error(where + ": error: the disc's normal is zero");
+            o.p1 = normalize(n);
+            o.r0 = std::fabs(toFloat(*a[2]));
+            o.r1 = a.size() > 3 ? std::fabs(toFloat(*a[3])) : 0.0;
+            return o.r0 > o.r1 ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::polygon: {
+            need(1);
+            const size_t n = size_t(std::max(0.0, toFloat(*a[0])));
+            std::vector<Vec3> pts;
+            for (size_t i = 1; i < a.size() && pts.size() < n; ++i) pts.push_back(toVec3(*a[i]));
+            o.type = ShapeType::Polygon;
+            data = std::make_unique<ShapeData>();
+            return makePolygon(pts, o, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::quadric: {
+            // A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J (reference 3.4.5.3.6) in
+            // poly order: x², xy, xz, x, y², yz, y, z², z, 1.
+            need(4);
+            const Vec3 abc = toVec3(*a[0]), def = toVec3(*a[1]), ghi = toVec3(*a[2]);
+            const double j = toFloat(*a[3]);
+            o.type = ShapeType::Poly;
+            data = polyData(2, {abc.x, def.x, def.y, ghi.x, abc.y, def.z, ghi.y, abc.z, ghi.z, j});
+            return ShapeBuild::Made;
+        }
+        case Kw::cubic: case Kw::quartic: {
+            const int n = kind == Kw::cubic ? 3 : 4;
+            need(size_t(polyTermCount(n)));
+            o.type = ShapeType::Poly;
+            data = polyData(n, numbers(0));
+            return ShapeBuild::Made;
+        }
+        case Kw::poly: {
+            need(1);
+            const int n = int(toFloat(*a[0]));
+            if (n < 2 || n > 35) throw Error(where + ": error: a poly's order must be from 2 to 35");
+            need(1 + size_t(polyTermCount(n)));
+            o.type = ShapeType::Poly;
+            data = polyData(n, numbers(1));
+            return ShapeBuild::Made;
+        }
+        case Kw::polynomial: {
+            need(1);
+            const int n = int(toFloat(*a[0]));
+            if (n < 2 || n > 35) throw Error(where + ": error: a polynomial's order must be from 2 to 35");
+            std::vector<double> coef(size_t(polyTermCount(n)), 0.0);
+            for (const Entry* e : terms) {
+                if (e->args.size() < 4) continue;
+                const int i = int(toFloat(e->args[0])), j = int(toFloat(e->args[1])), k = int(toFloat(e->args[2]));
+                if (i < 0 || j < 0 || k < 0 || i + j + k > n)
+                    throw Error(where + ": error: xyz(" + std::to_string(i) + "," + std::to_string(j) + "," +
+                                std::to_string(k) + ") is beyond the polynomial's order");
+                coef[size_t(polyTermIndex(n, i, j, k))] = toFloat(e->args[3]);  // the last one written wins
+            }
+            o.type = ShapeType::Poly;
+            data = polyData(n, coef);
+            return ShapeBuild::Made;
+        }
+        default: return ShapeBuild::NotAShape;
+    }
+}
+
+}  // namespace rays::pov

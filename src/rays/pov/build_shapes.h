@@ -1,0 +1,24 @@
+// POV-Ray items → the shapes of scene/shapes (torus, disc, polygon, quadric, cubic, quartic, poly,
+// polynomial), from the POV-Ray 3.7 reference's syntax of each.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rays/pov/item_values.h"
+#include "rays/scene/object.h"
+#include "rays/scene/shapes/shape_data.h"
+
+namespace rays::pov {
+
+/// Result of buildShape.
+enum class ShapeBuild { NotAShape, Empty, Made };
+
+/// Fills o's type and shape fields (and data, for polygons and polys) from the item's positional
+/// values a and, for polynomial, its xyz entries. NotAShape: kind is not one of these shapes;
+/// Empty: the shape has nothing to draw (a zero radius, points on a line). Throws Error prefixed
+/// by `where` (FILE:LINE:COL) for values the reference forbids.
+ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
+                      std::unique_ptr<ShapeData>& data, const std::string& where);
+
+}  // namespace rays::pov

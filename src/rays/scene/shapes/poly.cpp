@@ -1,0 +1,124 @@
+// The polynomial along the ray, p(O + tD), is expanded term by term with the binomial theorem
+// and its real roots found by polyRoots (poly_roots.h). The origin is first moved to the point of
+// the ray nearest the object's origin, which keeps the coefficients small for cameras far away.
+#include "rays/scene/shapes/poly.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "rays/math/poly_roots.h"
+
+namespace rays {
+
+int polyTermCount(int n) { return (n + 1) * (n + 2) * (n + 3) / 6; }
+
+int polyTermIndex(int n, int i, int j, int k) {
+    // Terms before x^i: those with a higher x power; before y^j within x^i: higher y powers.
+    int idx = 0;
+    for (int a = n; a > i; --a) idx += (n - a + 1) * (n - a + 2) / 2;
+    const int m = n - i;  // the y, z degrees left
+    for (int b = m; b > j; --b) idx += m - b + 1;
+    return idx + (m - j - k);
+}
+
+namespace {
+
+// pw[i] = v^i for i ≤ n.
+void powers(double v, int n, double* pw) {
+    pw[0] = 1;
+    for (int i = 1; i <= n; ++i) pw[i] = pw[i - 1] * v;
+}
+
+// Coefficients of (o + t d)^i for i ≤ n: row i of out (stride kMaxPolyDegree + 1).
+constexpr int kStride = kMaxPolyDegree + 1;
+void binomialRows(double o, double d, int n, double* out) {
+    out[0] = 1;
+    for (int i = 1; i <= n; ++i) {
+        const double* prev = out + (i - 1) * kStride;
+        double* row = out + i * kStride;
+        row[0] = prev[0] * o;
+        for (int m = 1; m < i; ++m) row[m] = prev[m] * o + prev[m - 1] * d;
+        row[i] = prev[i - 1] * d;
+    }
+}
+
+}  // namespace
+
+double evalPolySurface(const ShapeData& d, Vec3 q) {
+    const int n = d.order;
+    double px[kStride], py[kStride], pz[kStride];
+    powers(q.x, n, px), powers(q.y, n, py), powers(q.z, n, pz);
+    double v = 0;
+    int idx = 0;
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j)
+            for (int k = n - i - j; k >= 0; --k, ++idx) v += d.values[size_t(idx)] * px[i] * py[j] * pz[k];
+    return v;
+}
+
+bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    const ShapeData& sd = *o.data;
+    const int n = sd.order;
+    const double dd = dot(r.dir, r.dir);
+    const double t0 = -dot(r.origin, r.dir) / dd;  // the new origin's t
+    const Vec3 O = r.origin + t0 * r.dir, D = r.dir;
+    double X[kStride * kStride], Y[kStride * kStride], Z[kStride * kStride];
+    binomialRows(O.x, D.x, n, X), binomialRows(O.y, D.y, n, Y), binomialRows(O.z, D.z, n, Z);
+    double c[kStride] = {};
+    int idx = 0;
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j) {
+            // zs(t) = Σ_k a_ijk (Oz + t Dz)^k, then c += X_i · Y_j · zs.
+            const int kMax = n - i - j;
+            double zs[kStride] = {};
+            bool any = false;
+            for (int k = kMax; k >= 0; --k, ++idx) {
+                const double a = sd.values[size_t(idx)];
+                if (a == 0) continue;
+                any = true;
+                for (int m = 0; m <= k; ++m) zs[m] += a * Z[k * kStride + m];
+            }
+            if (!any) continue;
+            double xy[kStride] = {};
+            for (int p = 0; p <= i; ++p)
+                for (int q = 0; q <= j; ++q) xy[p + q] += X[i * kStride + p] * Y[j * kStride + q];
+            for (int p = 0; p <= i + j; ++p)
+                for (int m = 0; m <= kMax; ++m) c[p + m] += xy[p] * zs[m];
+        }
+    // Real roots are bounded by Cauchy's bound 1 + max |c_m / c_top| (in the shifted variable).
+    int top = n;
+    while (top > 0 && c[top] == 0) --top;
+    if (top == 0) return false;
+    double bound = 0;
+    for (int m = 0; m < top; ++m) bound = std::max(bound, std::fabs(c[m] / c[top]));
+    bound = 1 + bound;
+    const double lo = std::max(tMin - t0, -bound), hi = std::min(tMax - t0, bound);
+    double roots[kMaxPolyDegree];
+    const int count = polyRoots(c, top, lo, hi, roots);
+    // The first root whose t, after the shift back and the rounding, is still in (tMin, tMax).
+    int i = 0;
+    while (i < count && !(roots[i] + t0 > tMin && roots[i] + t0 < tMax)) ++i;
+    if (i == count) return false;
+    h.t = roots[i] + t0;
+    // The gradient at the hit.
+    const Vec3 q = r.at(h.t);
+    double px[kStride], py[kStride], pz[kStride];
+    powers(q.x, n, px), powers(q.y, n, py), powers(q.z, n, pz);
+    Vec3 g;
+    idx = 0;
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j)
+            for (int k = n - i - j; k >= 0; --k, ++idx) {
+                const double a = sd.values[size_t(idx)];
+                if (a == 0) continue;
+                if (i) g.x += a * i * px[i - 1] * py[j] * pz[k];
+                if (j) g.y += a * j * px[i] * py[j - 1] * pz[k];
+                if (k) g.z += a * k * px[i] * py[j] * pz[k - 1];
+            }
+    h.normal = length(g) > 0 ? normalize(g) : -r.dir / std::sqrt(dd);
+    return true;
+}
+
+bool insidePolySurface(const Object& o, Vec3 q) { return evalPolySurface(*o.data, q) < 0; }
+
+}  // namespace rays

@@ -1,0 +1,23 @@
+// POV-Ray's polynomial surfaces (reference 3.4.5.3.2–3.4.5.3.6: poly, cubic, quartic, quadric,
+// polynomial): the points where p(x, y, z) = 0, inside where p < 0. data->order is the degree N
+// and data->values the coefficients in POV-Ray's order: the terms x^i y^j z^k with i + j + k ≤ N
+// by falling i, then falling j, then falling k (A1 = x^N, A2 = x^(N−1) y, …, the last = 1).
+// Unbounded: data->bounds is empty unless set.
+#pragma once
+#include "rays/scene/object.h"
+#include "rays/scene/shapes/shape_data.h"
+
+namespace rays {
+
+/// Number of coefficients of a degree-n poly: (n + 1)(n + 2)(n + 3) / 6.
+int polyTermCount(int n);
+/// Index in POV-Ray's order of the term x^i y^j z^k of a degree-n poly.
+int polyTermIndex(int n, int i, int j, int k);
+/// p at object-space point q.
+double evalPolySurface(const ShapeData& d, Vec3 q);
+/// Nearest hit of the object-space ray with t in (tMin, tMax): t and the normal ∇p (outward).
+bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h);
+/// Whether object-space point q is strictly inside (p < 0).
+bool insidePolySurface(const Object& o, Vec3 q);
+
+}  // namespace rays
