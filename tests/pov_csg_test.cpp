@@ -12,42 +12,19 @@
 #include "rays/error.h"
 #include "rays/pov/load_pov.h"
 #include "rays/render/renderer.h"
+#include "support/pov_scene.h"
 #include "rays/scene/csg.h"
 
 namespace rays {
 namespace {
 
-Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) {
-    ParseOptions o;
-    o.warn = [&](const std::string& w) {
-        if (warnings) warnings->push_back(w);
-    };
-    o.language.installedIncludeDir.clear();
-    return pov::parsePovText("#version 3.7;\n" + text, "scene.pov", ".", o);
-}
+Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) { return test::buildPov(text, warnings); }
 
 bool near(Vec3 a, Vec3 b, double eps = 1e-9) { return length(a - b) < eps; }
 
-// The nearest hit of the ray from `from` along `dir` (normalised).
-Hit shoot(const Scene& s, Vec3 from, Vec3 dir) {
-    const Bvh bvh(s.objects);
-    return bvh.closest(s.objects, Ray{from, normalize(dir)}, 1e-9, kInfinity);
-}
+Hit shoot(const Scene& s, Vec3 from, Vec3 dir) { return test::shootPov(s, from, dir); }
 
-// The distances of all surfaces the ray crosses, in order.
-std::vector<double> allHits(const Scene& s, Vec3 from, Vec3 dir) {
-    const Bvh bvh(s.objects);
-    std::vector<double> ts;
-    const Ray r{from, normalize(dir)};
-    double t = 1e-9;
-    for (int i = 0; i < 16; ++i) {
-        const Hit h = bvh.closest(s.objects, r, t, kInfinity);
-        if (!h.valid()) break;
-        ts.push_back(h.t);
-        t = h.t + 1e-9;
-    }
-    return ts;
-}
+std::vector<double> allHits(const Scene& s, Vec3 from, Vec3 dir) { return test::allHitsPov(s, from, dir, 1e-9); }
 
 Object prepared(Object o, const Transform& m = Transform{}) {
     prepareObject(o, m);
@@ -295,19 +272,8 @@ TEST(PovCsgRender, PixelsMatchPovRay) {
         "  rotate 90*y translate <1.6, 0, 0.5>\n"
         "}\n"
         "sphere { <0, 1.5, 1.5>, 0.6 clipped_by { plane { z, 1.5 } } pigment { rgb <0.8, 0.3, 0.8> } }\n");
-    RenderSettings settings;
-    settings.width = 160;
-    settings.height = 120;
-    settings.threads = 2;
-    const Bvh bvh(s.objects);
-    TraceStats stats;
-    const ImageF img = render(s, bvh, settings, stats);
-    struct Pixel {
-        int x, y;
-        Vec3 povray;  // 0-255
-        const char* what;
-    };
-    const Pixel pixels[] = {
+    const ImageF img = test::renderPov(s);
+    const test::PovPixel pixels[] = {
         {40, 75, {39, 56, 85}, "the sphere cut out of the box (its own blue, in shadow)"},
         {30, 60, {167, 167, 158}, "the floor through the hole the sphere cut in the front face"},
         {45, 80, {173, 104, 86}, "the box's red front face"},
@@ -316,11 +282,7 @@ TEST(PovCsgRender, PixelsMatchPovRay) {
         {120, 70, {170, 161, 84}, "the lens"},
         {80, 20, {165, 105, 165}, "the clipped sphere"},
     };
-    for (const Pixel& p : pixels) {
-        const Vec3 c = 255.0 * img.at(p.x, p.y);
-        EXPECT_LE(std::max({std::fabs(c.x - p.povray.x), std::fabs(c.y - p.povray.y), std::fabs(c.z - p.povray.z)}), 3.0) << p.what << " at " << p.x << "," << p.y << ": " << c.x << " "
-                                                          << c.y << " " << c.z;
-    }
+    test::expectPovPixels(img, pixels);
 }
 
 }  // namespace

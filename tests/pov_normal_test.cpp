@@ -11,6 +11,7 @@
 
 #include "rays/accel/bvh.h"
 #include "rays/pov/load_pov.h"
+#include "support/pov_scene.h"
 #include "rays/render/renderer.h"
 #include "rays/render/tracer.h"
 
@@ -19,18 +20,10 @@ namespace {
 
 constexpr double kMeasured = 2e-4;  // povray's 16-bit output
 
-struct Loaded {
-    Scene scene;
-    std::vector<std::string> warnings;
-};
+using Loaded = test::PovLoaded;
 
 Loaded load(const std::string& body) {
-    Loaded l;
-    ParseOptions o;
-    o.warn = [&](const std::string& w) { l.warnings.push_back(w); };
-    o.language.installedIncludeDir.clear();
-    l.scene = pov::parsePovText("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n" + body, "scene.pov", ".", o);
-    return l;
+    return test::loadPov(body, "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n");
 }
 
 // The working-space colour seen along the ray of an orthographic camera at z = −5 looking along +z.

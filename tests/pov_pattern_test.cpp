@@ -13,23 +13,14 @@
 #include "rays/render/tracer.h"
 #include "rays/pattern/wave.h"
 #include "rays/pov/load_pov.h"
+#include "support/pov_scene.h"
 
 namespace rays {
 namespace {
 
-struct Built {
-    Scene scene;
-    std::vector<std::string> warnings;
-};
+using Built = test::PovLoaded;
 
-Built build(const std::string& text) {
-    Built b;
-    ParseOptions o;
-    o.warn = [&](const std::string& w) { b.warnings.push_back(w); };
-    o.language.installedIncludeDir.clear();
-    b.scene = pov::parsePovText("#version 3.7;\n" + text, "scene.pov", ".", o);
-    return b;
-}
+Built build(const std::string& text) { return test::loadPov(text); }
 
 // The pigment of the first object of a scene, evaluated at world points.
 struct Probe {

@@ -12,42 +12,20 @@
 #include "rays/math/poly_roots.h"
 #include "rays/pov/load_pov.h"
 #include "rays/render/renderer.h"
+#include "support/pov_scene.h"
 #include "rays/scene/csg.h"
 #include "rays/scene/shapes/poly.h"
 
 namespace rays {
 namespace {
 
-Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) {
-    ParseOptions o;
-    o.warn = [&](const std::string& w) {
-        if (warnings) warnings->push_back(w);
-    };
-    o.language.installedIncludeDir.clear();
-    return pov::parsePovText("#version 3.7;\n" + text, "scene.pov", ".", o);
-}
+Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) { return test::buildPov(text, warnings); }
 
 bool near(Vec3 a, Vec3 b, double eps = 1e-6) { return length(a - b) < eps; }
 
-Hit shoot(const Scene& s, Vec3 from, Vec3 dir) {
-    const Bvh bvh(s.objects);
-    return bvh.closest(s.objects, Ray{from, normalize(dir)}, 1e-9, kInfinity);
-}
+Hit shoot(const Scene& s, Vec3 from, Vec3 dir) { return test::shootPov(s, from, dir); }
 
-// The distances of all surfaces the ray crosses, in order.
-std::vector<double> allHits(const Scene& s, Vec3 from, Vec3 dir) {
-    const Bvh bvh(s.objects);
-    std::vector<double> ts;
-    const Ray r{from, normalize(dir)};
-    double t = 1e-9;
-    for (int i = 0; i < 16; ++i) {
-        const Hit h = bvh.closest(s.objects, r, t, kInfinity);
-        if (!h.valid()) break;
-        ts.push_back(h.t);
-        t = h.t + 1e-7;
-    }
-    return ts;
-}
+std::vector<double> allHits(const Scene& s, Vec3 from, Vec3 dir) { return test::allHitsPov(s, from, dir, 1e-7); }
 
 TEST(PovShapesRoots, FindsEveryRealRootInTheInterval) {
     // (t − 1)(t − 2)(t − 3)(t − 4) = t⁴ − 10t³ + 35t² − 50t + 24
@@ -265,26 +243,12 @@ TEST(PovShapesSuperellipsoid, PixelsMatchPovRay) {
         "superellipsoid { <0.3, 0.3> rotate <10, 30, 0> pigment { rgb <0.3, 0.9, 0.3> } }\n"
         "difference { superellipsoid { <2.5, 0.6> } sphere { <0, 0, -1>, 0.7 } rotate <0, -20, 0>\n"
         "  translate <2.2, 0, 0> pigment { rgb <0.2, 0.4, 0.9> } }\n");
-    RenderSettings settings;
-    settings.width = 160;
-    settings.height = 120;
-    settings.threads = 2;
-    const Bvh bvh(s.objects);
-    TraceStats stats;
-    const ImageF img = render(s, bvh, settings, stats);
-    struct Pixel {
-        int x, y;
-        Vec3 povray;  // 0-255, POV-Ray 3.7.0.10 (+W160 +H120 -D -A +FP)
-    };
-    const Pixel pixels[] = {{25, 60, {191, 115, 95}},  {40, 55, {158, 95, 78}},    {75, 50, {117, 194, 117}},
+    const ImageF img = test::renderPov(s);
+    // 0-255, POV-Ray 3.7.0.10 (+W160 +H120 -D -A +FP)
+    const test::PovPixel pixels[] = {{25, 60, {191, 115, 95}},  {40, 55, {158, 95, 78}},    {75, 50, {117, 194, 117}},
                             {90, 60, {83, 140, 83}},   {125, 55, {103, 143, 206}}, {140, 50, {104, 144, 207}},
                             {130, 70, {39, 56, 85}},   {112, 62, {101, 140, 202}}};
-    for (const Pixel& p : pixels) {
-        const Vec3 c = 255.0 * img.at(p.x, p.y);
-        EXPECT_LE(std::max({std::fabs(c.x - p.povray.x), std::fabs(c.y - p.povray.y), std::fabs(c.z - p.povray.z)}),
-                  3.0)
-            << p.x << "," << p.y << ": " << c.x << " " << c.y << " " << c.z;
-    }
+    test::expectPovPixels(img, pixels);
 }
 
 TEST(PovShapesPrism, LinearSweepHitsNormalsAndInside) {
@@ -331,26 +295,12 @@ TEST(PovShapesPrism, PixelsMatchPovRay) {
         "  pigment { rgb <0.3, 0.9, 0.3> } }\n"
         "difference { prism { -1, 1.5, 7, <0, 0>, <2, 0>, <2, 1>, <1, 1>, <1, 2>, <0, 2>, <0, 0> }\n"
         "  sphere { <2, 1.5, 0>, 0.8 } scale 0.6 translate <-0.5, 0, 0.5> pigment { rgb <0.2, 0.4, 0.9> } }\n");
-    RenderSettings settings;
-    settings.width = 160;
-    settings.height = 120;
-    settings.threads = 2;
-    const Bvh bvh(s.objects);
-    TraceStats stats;
-    const ImageF img = render(s, bvh, settings, stats);
-    struct Pixel {
-        int x, y;
-        Vec3 povray;  // 0-255, POV-Ray 3.7.0.10 (+W160 +H120 -D -A +FP)
-    };
-    const Pixel pixels[] = {{30, 60, {188, 114, 94}}, {40, 75, {171, 103, 85}},   {36, 55, {85, 48, 39}},
+    const ImageF img = test::renderPov(s);
+    // 0-255, POV-Ray 3.7.0.10 (+W160 +H120 -D -A +FP)
+    const test::PovPixel pixels[] = {{30, 60, {188, 114, 94}}, {40, 75, {171, 103, 85}},   {36, 55, {85, 48, 39}},
                             {95, 55, {80, 80, 75}},   {105, 60, {78, 131, 78}},   {112, 45, {48, 85, 48}},
                             {117, 48, {106, 176, 106}}, {70, 70, {39, 56, 85}}, {75, 60, {84, 117, 169}}};
-    for (const Pixel& p : pixels) {
-        const Vec3 c = 255.0 * img.at(p.x, p.y);
-        EXPECT_LE(std::max({std::fabs(c.x - p.povray.x), std::fabs(c.y - p.povray.y), std::fabs(c.z - p.povray.z)}),
-                  3.0)
-            << p.x << "," << p.y << ": " << c.x << " " << c.y << " " << c.z;
-    }
+    test::expectPovPixels(img, pixels);
 }
 
 TEST(PovShapesNotes, RenderedShapesAreNoLongerNoted) {
@@ -385,19 +335,8 @@ TEST(PovShapesRender, PixelsMatchPovRay) {
         "quartic { < 1, 0, 0, 0, 2, 0, 0, 2, 0, -104, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 2, 0, 56, 0, 0, 0, 0, 1, 0, -104, 0, 784 >\n"
         "  sturm scale 0.12 rotate -70*x translate <2.3, -0.1, 0> pigment { rgb <0.8, 0.3, 0.8> } }\n"
 );
-    RenderSettings settings;
-    settings.width = 160;
-    settings.height = 120;
-    settings.threads = 2;
-    const Bvh bvh(s.objects);
-    TraceStats stats;
-    const ImageF img = render(s, bvh, settings, stats);
-    struct Pixel {
-        int x, y;
-        Vec3 povray;  // 0-255
-        const char* what;
-    };
-    const Pixel pixels[] = {
+    const ImageF img = test::renderPov(s);
+    const test::PovPixel pixels[] = {
         {25, 28, {203, 123, 102}, "the red torus"},
         {45, 20, {176, 106, 87}, "the red torus"},
         {35, 35, {86, 86, 81}, "the floor through the red torus's hole"},
@@ -412,12 +351,7 @@ TEST(PovShapesRender, PixelsMatchPovRay) {
         {110, 75, {165, 105, 165}, "the purple quartic"},
         {115, 68, {161, 161, 151}, "the floor through the quartic's hole"},
     };
-    for (const Pixel& p : pixels) {
-        const Vec3 c = 255.0 * img.at(p.x, p.y);
-        EXPECT_LE(std::max({std::fabs(c.x - p.povray.x), std::fabs(c.y - p.povray.y), std::fabs(c.z - p.povray.z)}),
-                  3.0)
-            << p.what << " at " << p.x << "," << p.y << ": " << c.x << " " << c.y << " " << c.z;
-    }
+    test::expectPovPixels(img, pixels);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "rays/io/ttf_font.h"
 #include "rays/pov/load_pov.h"
 #include "rays/render/renderer.h"
+#include "support/pov_scene.h"
 #include "rays/scene/csg.h"
 #include "rays/scene/text_shape.h"
 
@@ -28,21 +29,11 @@ bool haveFonts() { return std::filesystem::exists(std::string(kFontDir) + "/timr
 #define NEED_FONTS() \
     if (!haveFonts()) GTEST_SKIP() << "fonts-povray is not installed (" << kFontDir << ")"
 
-Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) {
-    ParseOptions o;
-    o.warn = [&](const std::string& w) {
-        if (warnings) warnings->push_back(w);
-    };
-    o.language.installedIncludeDir.clear();  // the fonts come from fonts-povray's own folder
-    return pov::parsePovText("#version 3.7;\n" + text, "scene.pov", ".", o);
-}
+Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) { return test::buildPov(text, warnings); }
 
 bool near(Vec3 a, Vec3 b, double eps) { return length(a - b) < eps; }
 
-Hit shoot(const Scene& s, Vec3 from, Vec3 dir) {
-    const Bvh bvh(s.objects);
-    return bvh.closest(s.objects, Ray{from, normalize(dir)}, 1e-9, kInfinity);
-}
+Hit shoot(const Scene& s, Vec3 from, Vec3 dir) { return test::shootPov(s, from, dir); }
 
 // The scene's only object's text shape.
 const TextShape& shapeOf(const Scene& s) {
@@ -222,19 +213,8 @@ TEST(PovTextRender, PixelsMatchPovRay) {
         "light_source { <-3, 5, -6> color rgb 1 }\n"
         "plane { y, 0 pigment { rgb <0.8, 0.8, 0.7> } }\n"
         "text { ttf \"timrom.ttf\" \"Rays\" 0.3, 0 pigment { rgb <0.9, 0.3, 0.2> } }\n");
-    RenderSettings settings;
-    settings.width = 160;
-    settings.height = 120;
-    settings.threads = 2;
-    const Bvh bvh(s.objects);
-    TraceStats stats;
-    const ImageF img = render(s, bvh, settings, stats);
-    struct Pixel {
-        int x, y;
-        Vec3 povray;  // 0-255
-        const char* what;
-    };
-    const Pixel pixels[] = {
+    const ImageF img = test::renderPov(s);
+    const test::PovPixel pixels[] = {
         {10, 56, {185, 112, 92}, "the R's stem, front face"},
         {64, 52, {182, 110, 91}, "the y's front face"},
         {100, 50, {174, 105, 86}, "the s's front face"},
@@ -242,11 +222,7 @@ TEST(PovTextRender, PixelsMatchPovRay) {
         {44, 50, {153, 153, 144}, "the floor seen through the a's bowl"},
         {80, 100, {163, 163, 153}, "the floor before the text"},
     };
-    for (const Pixel& p : pixels) {
-        const Vec3 c = 255.0 * img.at(p.x, p.y);
-        EXPECT_LE(std::max({std::fabs(c.x - p.povray.x), std::fabs(c.y - p.povray.y), std::fabs(c.z - p.povray.z)}), 3.0)
-            << p.what << " at " << p.x << "," << p.y << ": " << c.x << " " << c.y << " " << c.z;
-    }
+    test::expectPovPixels(img, pixels);
 }
 
 }  // namespace
