@@ -190,6 +190,18 @@ TEST(PovLights, PointAreaAndParallelLights) {
     EXPECT_TRUE(near(b.scene.lights[2].direction, {0, -1, 0}));
 }
 
+TEST(PovSurfaces, ObjectsMadeInARowThatLookAlikeShareOne) {
+    const Built b = build("#version 3.7; #for (I, 1, 3) sphere { I*x, 0.5 pigment { rgb 1 } finish { phong 1 } } #end\n"
+                          "sphere { 0, 1 pigment { rgb 1 } finish { phong 0.5 } }\n"
+                          "difference { box { -1, 1 } sphere { 0, 1.2 } pigment { rgb 1 } finish { phong 0.5 } }");
+    ASSERT_EQ(b.error, "");
+    ASSERT_EQ(b.scene.objects.size(), 5u);
+    EXPECT_EQ(b.scene.povSurfaces.size(), 2u);  // the three spheres, then the last sphere and the CSG's leaves
+    EXPECT_EQ(b.scene.objects[0].material.pov, b.scene.objects[2].material.pov);
+    EXPECT_NE(b.scene.objects[2].material.pov, b.scene.objects[3].material.pov);
+    EXPECT_DOUBLE_EQ(b.scene.povSurfaces[size_t(b.scene.objects[3].material.pov)].finish.phong, 0.5);
+}
+
 TEST(PovGlobals, AssumedGammaDefaultsByVersion) {
     EXPECT_DOUBLE_EQ(build("#version 3.7; sphere { 0, 1 }").scene.pov.assumedGamma, 1.0);
     EXPECT_DOUBLE_EQ(build("#version 3.6; sphere { 0, 1 }").scene.pov.assumedGamma, 0.0);  // written unchanged

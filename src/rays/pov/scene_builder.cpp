@@ -369,6 +369,12 @@ Material SceneBuilder::material(const Appearance& look) {
     s.noReflection = noReflection_;
     s.doubleIlluminate = doubleIlluminate_;
     s.normal = normalRoot(look);
+    // Objects made one after another mostly look alike (a CSG's leaves, copies in a loop): they
+    // share the surface then.
+    if (!scene_.povSurfaces.empty() && scene_.povSurfaces.back() == s) {
+        m.pov = int(scene_.povSurfaces.size() - 1);
+        return m;
+    }
     m.pov = int(scene_.povSurfaces.size());
     scene_.povSurfaces.push_back(s);
     return m;

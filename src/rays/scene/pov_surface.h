@@ -25,6 +25,8 @@ struct PovFinish {
     /// Graininess: each light's diffuse term times 1 − crand·U, U uniform in [0, 1) drawn per light
     /// and pixel sample (the manual, "Crand Graininess"; the distribution measured).
     double crand = 0;
+
+    bool operator==(const PovFinish&) const = default;
 };
 
 struct PovInterior {
@@ -32,6 +34,8 @@ struct PovInterior {
     double fadeDistance = 0;    ///< 0: no fading inside
     double fadePower = 0;
     Vec3 fadeColor{0, 0, 0};
+
+    bool operator==(const PovInterior&) const = default;
 };
 
 struct PovSurface {
@@ -47,6 +51,8 @@ struct PovSurface {
     int pigment = -1;
     bool pigmentTransparent = false;  ///< some colour of the pattern filters or transmits
     int normal = -1;  ///< the normal pattern: a root of Scene::normals, or -1 (the surface's own normal)
+
+    bool operator==(const PovSurface&) const = default;
 };
 
 /// A fog layer (POV-Ray 3.7 reference, "Fog"; the details measured, docs/povray-lighting.md).
