@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <numbers>
 
 #include "rays/error.h"
 #include "rays/pov/build_mesh.h"
 #include "rays/pov/build_shapes.h"
 #include "rays/pov/grammar.h"
+#include "rays/pov/scene_builder_parts.h"
 
 namespace rays::pov {
 
@@ -18,8 +18,7 @@ namespace {
 
 constexpr int kMaxObjectDepth = 1000;
 
-// v as an int in [lo, hi], clamped as a float first (1e300 has no int); NaN gives lo.
-int clampedInt(double v, int lo, int hi) { return std::isnan(v) ? lo : int(std::clamp(v, double(lo), double(hi))); }
+}  // namespace
 
 bool isObjectKind(Kw k) {
     switch (k) {
@@ -35,6 +34,8 @@ bool isObjectKind(Kw k) {
             return false;
     }
 }
+
+namespace {
 
 // An object's entries with `object { Base ... }` copies unrolled: the base's entries come first,
 // then the copy's (POV-Ray applies a copy's modifiers after the base's own).
@@ -56,15 +57,6 @@ Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
         out.push_back(&e);
     }
     return kind;
-}
-
-// The object of a looks_like block (nullptr when it holds none).
-const Item* lookedLikeObject(const Entry& e) {
-    if (e.args.empty() || e.args[0].type != VType::Item) return nullptr;
-    for (const Entry& inner : e.args[0].item().entries)
-        for (const Value& v : inner.args)
-            if (v.type == VType::Item && isObjectKind(v.item().kind)) return &v.item();
-    return nullptr;
 }
 
 }  // namespace
@@ -111,240 +103,6 @@ void SceneBuilder::updateDefaults(const ParsedScene::Top& top) {
     }
     fallback_ = defaultsLook_;
     fallback_.set = false;
-}
-
-// ---- camera ----------------------------------------------------------------------------------
-// POV-Ray 3.7 reference, "Placing the Camera": items apply in order; angle sets the direction's
-// length from the right vector's; look_at turns direction, right and up (right = sky × direction,
-// keeping the handedness of the vectors before it); transformations move the location and turn
-// the vectors.
-void SceneBuilder::addCamera(const Item& cam) {
-    Vec3 loc{0, 0, 0}, dir{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
-    Vec3 lookAt{0, 0, 1};  // POV-Ray's default look_at point (measured: orthographic's window size)
-    Camera c;
-    bool rightOrUpSet = false, angleSet = false;
-    double angles[2] = {-1, -1};  // the angle values given (degrees; −1: none)
-    std::vector<const Entry*> entries;
-    std::function<void(const Item&)> collect = [&](const Item& it) {
-        for (const Entry& e : it.entries) {
-            if (e.positional() && !e.args.empty() && e.args[0].type == VType::Item && e.args[0].item().kind == Kw::camera)
-                collect(e.args[0].item());
-            else
-                entries.push_back(&e);
-        }
-    };
-    collect(cam);
-    for (const Entry* ep : entries) {
-        const Entry& e = *ep;
-        if (e.positional()) continue;
-        if (isTransformEntry(e)) {
-            Transform m;
-            applyTransform(e, m);
-            loc = m.point(loc);
-            lookAt = m.point(lookAt);
-            dir = m.vector(dir);
-            up = m.vector(up);
-            right = m.vector(right);
-            continue;
-        }
-        switch (e.kw()) {
-            case Kw::perspective: c.projection = Projection::Perspective; break;
-            case Kw::orthographic: c.projection = Projection::Orthographic; break;
-            case Kw::fisheye: c.projection = Projection::Fisheye; break;
-            case Kw::ultra_wide_angle: c.projection = Projection::UltraWideAngle; break;
-            case Kw::omnimax: c.projection = Projection::Omnimax; break;
-            case Kw::panoramic: c.projection = Projection::Panoramic; break;
-            case Kw::spherical: c.projection = Projection::Spherical; break;
-            case Kw::cylinder: {
-                const int type = clampedInt(toFloat(e.args[0]), 0, 5);
-                if (type < 1 || type > 4) throw Error(notes_.where(e.loc) + ": error: cylinder camera type must be 1 to 4");
-                c.projection = Projection(int(Projection::Cylinder1) + type - 1);
-                break;
-            }
-            case Kw::mesh_camera:
-                c.projection = Projection::Perspective;
-                notes_.note(std::string("camera type ") + std::string(sdl::keywordName(e.kw())), e.loc,
-                            "(rendered as a perspective camera)");
-                break;
-            case Kw::location: loc = toVec3(e.args[0]); break;
-            case Kw::direction: dir = toVec3(e.args[0]); break;
-            case Kw::up: up = toVec3(e.args[0]); rightOrUpSet = true; break;
-            case Kw::right: right = toVec3(e.args[0]); rightOrUpSet = true; break;
-            case Kw::sky: sky = toVec3(e.args[0]); break;
-            case Kw::angle: {
-                angleSet = true;
-                for (size_t i = 0; i < 2; ++i) angles[i] = i < e.args.size() ? toFloat(e.args[i]) : -1;
-                if (c.projection != Projection::Perspective || e.args.empty()) break;
-                const double a = angles[0];
-                if (a > 0 && a < 180 && length(dir) > 0)
-                    dir = normalize(dir) * (0.5 * length(right) / std::tan(a * std::numbers::pi / 360.0));
-                break;
-            }
-            case Kw::look_at: {
-                const Vec3 at = toVec3(e.args[0]);
-                lookAt = at;
-                const double handed = dot(cross(up, dir), right);
-                const double dl = length(dir), ul = length(up), rl = length(right);
-                if (length(at - loc) == 0) throw Error(notes_.where(e.loc) + ": error: look_at is the camera location");
-                const Vec3 d = normalize(at - loc);
-                Vec3 r = cross(sky, d);
-                if (length(r) < 1e-12 * length(sky)) {
-                    // Looking along the sky vector: keep the right vector, made perpendicular.
-                    r = right - dot(right, d) * d;
-                    if (length(r) == 0) r = std::fabs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
-                    if (handed < 0) r = -r;
-                }
-                r = normalize(r);
-                dir = d * dl;
-                up = normalize(cross(d, r)) * ul;
-                right = r * (handed < 0 ? -rl : rl);
-                break;
-            }
-            case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
-            case Kw::aperture: c.aperture = 0.5 * toFloat(e.args[0]); break;
-            case Kw::blur_samples: c.blurSamples = clampedInt(toFloat(e.args.back()), 0, 65536); break;
-            case Kw::normal: notes_.note("camera normal", e.loc); break;
-            case Kw::bokeh: notes_.note("bokeh", e.loc); break;
-            default: break;
-        }
-    }
-    const double dl = length(dir);
-    if (dl == 0) throw Error(notes_.where(cam.loc) + ": error: the camera's direction is zero");
-    c.location = loc;
-    c.lookAt = loc + dir;
-    c.right = right / dl;
-    c.up = up / dl;
-    if (c.projection != Projection::Perspective) finishProjection(c, dir, right, up, lookAt, rightOrUpSet, angleSet, angles);
-    if (c.aperture > 0 && c.blurSamples == 0) c.blurSamples = 16;
-    scene_.cameras.push_back(c);
-}
-
-// The vectors and angles of the non-perspective projections, as measured from POV-Ray 3.7 renders.
-// Orthographic: the window is right × up as written; with no right and up given, or with angle,
-// it is the view of a perspective camera with the same vectors at the look_at point (whose default
-// is <0,0,1>): right·dist/|direction|, or 2·dist·tan(angle/2) wide keeping up's aspect. The angle
-// projections default to 90° (spherical: 360° × 180°; its vertical angle to half the horizontal).
-void SceneBuilder::finishProjection(Camera& c, Vec3 dir, Vec3 right, Vec3 up, Vec3 lookAt, bool rightOrUpSet,
-                                    bool angleSet, const double angles[2]) {
-    constexpr double kDeg = std::numbers::pi / 180.0;
-    if (c.projection == Projection::Orthographic) {
-        if (angleSet || !rightOrUpSet) {
-            double dist = length(lookAt - c.location);
-            if (dist == 0) dist = 1;
-            const double a = angles[0];
-            if (a > 0 && a < 180) {
-                const double w = 2 * dist * std::tan(0.5 * a * kDeg);
-                up = normalize(up) * (w * length(up) / length(right));
-                right = normalize(right) * w;
-            } else {
-                right = right * (dist / length(dir));
-                up = up * (dist / length(dir));
-            }
-        }
-        c.right = right;
-        c.up = up;
-        return;
-    }
-    c.right = right;
-    c.up = up;
-    const bool spherical = c.projection == Projection::Spherical;
-    c.angleH = (angles[0] > 0 ? angles[0] : spherical ? 360 : 90) * kDeg;
-    c.angleV = angles[1] > 0 ? angles[1] * kDeg : (angles[0] > 0 ? 0.5 * c.angleH : 180 * kDeg);
-}
-
-// ---- lights ----------------------------------------------------------------------------------
-
-void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
-    Light l;
-    std::vector<const Value*> p = positionals(item);
-    Vec3 pos = p.empty() ? Vec3{} : toVec3(*p[0]);
-    l.color = p.size() > 1 ? toColor(*p[1]).rgb : Vec3{1, 1, 1};
-    Transform m;
-    Vec3 pointAt{0, 0, 1};
-    bool parallel = false, pointAtSet = false;
-    double radius = -1, falloff = -1;  // < 0: the light type's default
-    const Item* looksLike = nullptr;
-    for (const Entry& e : item.entries) {
-        if (e.positional()) continue;
-        if (isTransformEntry(e)) {
-            applyTransform(e, m);
-            continue;
-        }
-        switch (e.kw()) {
-            case Kw::spotlight: l.spot = Light::Spot::Cone; break;
-            case Kw::cylinder: l.spot = Light::Spot::Cylinder; break;
-            case Kw::parallel: parallel = true; break;
-            case Kw::point_at:
-                pointAt = toVec3(e.args[0]);
-                pointAtSet = true;
-                break;
-            case Kw::radius: radius = toFloat(e.args[0]); break;
-            case Kw::falloff: falloff = toFloat(e.args[0]); break;
-            case Kw::tightness: l.tightness = std::max(0.0, toFloat(e.args[0])); break;
-            case Kw::shadowless: l.shadowless = true; break;
-            case Kw::area_light:
-                if (e.args.size() == 4) {
-                    l.area = true;
-                    l.axis1 = toVec3(e.args[0]);
-                    l.axis2 = toVec3(e.args[1]);
-                    l.n1 = clampedInt(toFloat(e.args[2]), 1, 1024);
-                    l.n2 = clampedInt(toFloat(e.args[3]), 1, 1024);
-                }
-                break;
-            case Kw::jitter: l.jitter = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::adaptive: l.adaptive = clampedInt(toFloat(e.args[0]), -1, 1000); break;
-            case Kw::circular: l.circular = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::orient: l.orient = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::fade_distance: l.fadeDistance = std::max(0.0, toFloat(e.args[0])); break;
-            case Kw::fade_power: l.fadePower = toFloat(e.args[0]); break;
-            case Kw::looks_like: looksLike = lookedLikeObject(e); break;
-            case Kw::projected_through: notes_.note("projected_through", e.loc); break;
-            default: break;
-        }
-    }
-    const Transform world = toWorld * m;
-    l.position = world.point(pos);
-    l.axis1 = world.vector(l.axis1);
-    l.axis2 = world.vector(l.axis2);
-    if (l.spot != Light::Spot::None) {
-        // The manual's defaults: spotlights radius 30 and falloff 45 degrees (cosines kept);
-        // cylindrical lights 0.75 and 1, measured to be distances from the axis.
-        const Vec3 d = world.point(pointAtSet ? pointAt : Vec3{}) - l.position;
-        if (length(d) == 0) {
-            l.spot = Light::Spot::None;
-        } else if (l.spot == Light::Spot::Cone) {
-            auto cosDeg = [](double deg) { return std::cos(std::clamp(deg, 0.0, 180.0) * std::numbers::pi / 180); };
-            l.spotRadius = cosDeg(radius < 0 ? 30 : radius);
-            l.spotFalloff = cosDeg(falloff < 0 ? 45 : falloff);
-            l.direction = normalize(d);
-        } else {
-            l.spotRadius = radius < 0 ? 0.75 : radius;
-            l.spotFalloff = falloff < 0 ? 1 : falloff;
-            // Cylindrical lights shine and cast shadows along their axis (measured).
-            parallel = true;
-            pointAt = pointAtSet ? pointAt : Vec3{};
-        }
-    }
-    if (parallel) {
-        const Vec3 d = world.point(pointAt) - l.position;
-        if (length(d) > 0) {
-            l.parallel = true;
-            l.area = false;
-            l.pointAt = world.point(pointAt);
-            l.direction = normalize(d);
-        } else if (l.spot == Light::Spot::Cylinder) {
-            l.spot = Light::Spot::None;
-        }
-    }
-    if (l.area && (length(cross(l.axis1, l.axis2)) == 0)) l.area = false;
-    scene_.lights.push_back(l);
-    // looks_like: the object, moved to the light's place, is seen but casts no shadow (the manual).
-    if (looksLike) {
-        const bool saved = noShadow_;
-        noShadow_ = true;
-        addObject(*looksLike, world * Transform::translate(pos), nullptr, 0);
-        noShadow_ = saved;
-    }
 }
 
 // ---- objects ---------------------------------------------------------------------------------
@@ -516,88 +274,6 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         csg_ = nullptr;
         finishCsg(std::move(tree), kind, item.loc);
     }
-}
-
-// The children of a CSG node (op from kind) under csgParent_. A child not rendered leaves an
-// intersection empty, and a difference whose first child it is; a union or merge, or a
-// difference losing a subtracted child, is drawn without it.
-void SceneBuilder::addCsgChildren(Kw kind, bool inverse, const std::vector<const Item*>& children,
-                                  const Transform& toWorld, const Appearance* own, int depth) {
-    const CsgOp op = kind == Kw::difference ? CsgOp::Difference
-                     : kind == Kw::intersection ? CsgOp::Intersection
-                     : kind == Kw::merge        ? CsgOp::Merge
-                                                : CsgOp::Union;
-    const int node = csg_->add(csgParent_, op, inverse);
-    const int outer = csgParent_;
-    bool empty = false;
-    for (size_t i = 0; i < children.size(); ++i) {
-        csgParent_ = node;
-        const int before = csg_->childCount(node);
-        addObject(*children[i], toWorld, own, depth + 1);
-        const bool lost = csg_->childCount(node) == before;
-        empty = empty || (lost && (op == CsgOp::Intersection || (op == CsgOp::Difference && i == 0)));
-    }
-    csgParent_ = outer;
-    if (empty) csg_->nodes[size_t(node)].op = CsgOp::Empty;
-}
-
-// The objects of a clipped_by block under csgParent_ (the clip node); `clipped_by { bounded_by }`
-// takes the objects of the bounded_by block.
-void SceneBuilder::addClippers(const Entry& clip, const Entry* bounds, const Transform& toWorld, int depth) {
-    const int node = csgParent_;
-    for (const Value& v : clip.args) {
-        if (v.type != VType::Item) continue;
-        for (const Entry& e : v.item().entries) {
-            if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::bounded_by && bounds && bounds != &clip) {
-                addClippers(*bounds, nullptr, toWorld, depth);
-                continue;
-            }
-            for (const Value& a : e.args)
-                if (a.type == VType::Item && isObjectKind(a.item().kind)) {
-                    csgParent_ = node;
-                    addObject(a.item(), toWorld, nullptr, depth + 1);
-                }
-        }
-    }
-    csgParent_ = node;
-}
-
-// A finished CSG tree becomes one object, unless it needs the inside of a triangle or mesh (they
-// have none) or can never be seen.
-void SceneBuilder::finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at) {
-    if (tree.leaves.empty()) return;
-    for (size_t k = 0; k < tree.leaves.size(); ++k)
-        if (insideShape(tree.leaves[k], Vec3{}) < 0 && tree.needsInside(int(k))) {
-            notes_.note(std::string(sdl::keywordName(kind)) + " of triangles or meshes", at, "(left out)");
-            return;
-        }
-    // An opaque merge looks as a union does (its inner surfaces are hidden): its children become
-    // objects of their own, in the scene's BVH.
-    bool unionLike = true;
-    for (const CsgNode& n : tree.nodes)
-        unionLike = unionLike && !n.inverse && (n.op == CsgOp::Leaf || n.op == CsgOp::Union || n.op == CsgOp::Merge);
-    for (const Object& leaf : tree.leaves)
-        unionLike = unionLike && leaf.material.filter == 0 && scene_.povSurfaces[size_t(leaf.material.pov)].transmit == 0;
-    if (unionLike) {
-        for (const Object& leaf : tree.leaves) scene_.objects.push_back(leaf);
-        return;
-    }
-    tree.finish();
-    if (tree.boundsEmpty()) return;
-    Object o;
-    o.type = ShapeType::Csg;
-    o.line = int(at.line);
-    o.col = int(at.col);
-    o.material = tree.leaves[0].material;
-    for (size_t k = 0; k < tree.leaves.size(); ++k)
-        if (tree.hasSurface[k]) {
-            o.material = tree.leaves[k].material;  // the interior a ray inside it is in
-            break;
-        }
-    scene_.csgs.push_back(std::make_unique<Csg>(std::move(tree)));
-    o.csg = scene_.csgs.back().get();
-    prepareObject(o, Transform{});
-    scene_.objects.push_back(o);
 }
 
 // A finished object: into the CSG tree being built, or into the scene.
@@ -784,53 +460,6 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     prepareObject(o, toWorld);
     scene_.meshes.push_back(std::move(mesh));
     emit(o, inverse);
-}
-
-// ---- atmosphere -----------------------------------------------------------------------------
-
-// POV-Ray 3.7 reference, "Fog": fog_type 1 (constant) and 2 (ground fog along up), distance and
-// the colour with filter and transmit; transformations turn up. A fog identifier's items come
-// first. distance 0 turns the fog off (the manual).
-void SceneBuilder::addFog(const Item& item) {
-    PovFog f;
-    bool turbulent = false;
-    Transform m;
-    std::function<void(const Item&)> read = [&](const Item& it) {
-        for (const Entry& e : it.entries) {
-            if (e.positional()) {
-                for (const Value& v : e.args) {
-                    if (v.type == VType::Item && v.item().kind == Kw::fog) {
-                        read(v.item());
-                    } else {
-                        const Rgbft c = toColor(v);
-                        f.color = c.rgb;
-                        f.filter = c.filter;
-                        f.transmit = c.transmit;
-                    }
-                }
-                continue;
-            }
-            if (isTransformEntry(e)) {
-                applyTransform(e, m);
-                continue;
-            }
-            switch (e.kw()) {
-                case Kw::fog_type: f.ground = toFloat(e.args[0]) == 2; break;
-                case Kw::distance: f.distance = toFloat(e.args[0]); break;
-                case Kw::fog_offset: f.offset = toFloat(e.args[0]); break;
-                case Kw::fog_alt: f.alt = toFloat(e.args[0]); break;
-                case Kw::up: f.up = toVec3(e.args[0]); break;
-                case Kw::turbulence: turbulent = turbulent || length(toVec3(e.args[0])) > 0; break;
-                default: break;  // turb_depth, omega, lambda, octaves: only with turbulence
-            }
-        }
-    };
-    read(item);
-    if (turbulent) notes_.note("fog turbulence", item.loc, "(the fog is drawn smooth)");
-    f.up = m.vector(f.up);
-    if (f.distance <= 0 || length(f.up) == 0) return;
-    f.up = normalize(f.up);
-    scene_.pov.fogs.push_back(f);
 }
 
 // ---- global settings -------------------------------------------------------------------------

@@ -1,0 +1,152 @@
+// SceneBuilder's camera: POV-Ray 3.7's camera items and projection types → Camera.
+#include <cmath>
+#include <numbers>
+
+#include "rays/error.h"
+#include "rays/pov/scene_builder.h"
+#include "rays/pov/scene_builder_parts.h"
+
+namespace rays::pov {
+
+using sdl::VType;
+
+// ---- camera ----------------------------------------------------------------------------------
+// POV-Ray 3.7 reference, "Placing the Camera": items apply in order; angle sets the direction's
+// length from the right vector's; look_at turns direction, right and up (right = sky × direction,
+// keeping the handedness of the vectors before it); transformations move the location and turn
+// the vectors.
+void SceneBuilder::addCamera(const Item& cam) {
+    Vec3 loc{0, 0, 0}, dir{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
+    Vec3 lookAt{0, 0, 1};  // POV-Ray's default look_at point (measured: orthographic's window size)
+    Camera c;
+    bool rightOrUpSet = false, angleSet = false;
+    double angles[2] = {-1, -1};  // the angle values given (degrees; −1: none)
+    std::vector<const Entry*> entries;
+    std::function<void(const Item&)> collect = [&](const Item& it) {
+        for (const Entry& e : it.entries) {
+            if (e.positional() && !e.args.empty() && e.args[0].type == VType::Item && e.args[0].item().kind == Kw::camera)
+                collect(e.args[0].item());
+            else
+                entries.push_back(&e);
+        }
+    };
+    collect(cam);
+    for (const Entry* ep : entries) {
+        const Entry& e = *ep;
+        if (e.positional()) continue;
+        if (isTransformEntry(e)) {
+            Transform m;
+            applyTransform(e, m);
+            loc = m.point(loc);
+            lookAt = m.point(lookAt);
+            dir = m.vector(dir);
+            up = m.vector(up);
+            right = m.vector(right);
+            continue;
+        }
+        switch (e.kw()) {
+            case Kw::perspective: c.projection = Projection::Perspective; break;
+            case Kw::orthographic: c.projection = Projection::Orthographic; break;
+            case Kw::fisheye: c.projection = Projection::Fisheye; break;
+            case Kw::ultra_wide_angle: c.projection = Projection::UltraWideAngle; break;
+            case Kw::omnimax: c.projection = Projection::Omnimax; break;
+            case Kw::panoramic: c.projection = Projection::Panoramic; break;
+            case Kw::spherical: c.projection = Projection::Spherical; break;
+            case Kw::cylinder: {
+                const int type = clampedInt(toFloat(e.args[0]), 0, 5);
+                if (type < 1 || type > 4) throw Error(notes_.where(e.loc) + ": error: cylinder camera type must be 1 to 4");
+                c.projection = Projection(int(Projection::Cylinder1) + type - 1);
+                break;
+            }
+            case Kw::mesh_camera:
+                c.projection = Projection::Perspective;
+                notes_.note(std::string("camera type ") + std::string(sdl::keywordName(e.kw())), e.loc,
+                            "(rendered as a perspective camera)");
+                break;
+            case Kw::location: loc = toVec3(e.args[0]); break;
+            case Kw::direction: dir = toVec3(e.args[0]); break;
+            case Kw::up: up = toVec3(e.args[0]); rightOrUpSet = true; break;
+            case Kw::right: right = toVec3(e.args[0]); rightOrUpSet = true; break;
+            case Kw::sky: sky = toVec3(e.args[0]); break;
+            case Kw::angle: {
+                angleSet = true;
+                for (size_t i = 0; i < 2; ++i) angles[i] = i < e.args.size() ? toFloat(e.args[i]) : -1;
+                if (c.projection != Projection::Perspective || e.args.empty()) break;
+                const double a = angles[0];
+                if (a > 0 && a < 180 && length(dir) > 0)
+                    dir = normalize(dir) * (0.5 * length(right) / std::tan(a * std::numbers::pi / 360.0));
+                break;
+            }
+            case Kw::look_at: {
+                const Vec3 at = toVec3(e.args[0]);
+                lookAt = at;
+                const double handed = dot(cross(up, dir), right);
+                const double dl = length(dir), ul = length(up), rl = length(right);
+                if (length(at - loc) == 0) throw Error(notes_.where(e.loc) + ": error: look_at is the camera location");
+                const Vec3 d = normalize(at - loc);
+                Vec3 r = cross(sky, d);
+                if (length(r) < 1e-12 * length(sky)) {
+                    // Looking along the sky vector: keep the right vector, made perpendicular.
+                    r = right - dot(right, d) * d;
+                    if (length(r) == 0) r = std::fabs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
+                    if (handed < 0) r = -r;
+                }
+                r = normalize(r);
+                dir = d * dl;
+                up = normalize(cross(d, r)) * ul;
+                right = r * (handed < 0 ? -rl : rl);
+                break;
+            }
+            case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
+            case Kw::aperture: c.aperture = 0.5 * toFloat(e.args[0]); break;
+            case Kw::blur_samples: c.blurSamples = clampedInt(toFloat(e.args.back()), 0, 65536); break;
+            case Kw::normal: notes_.note("camera normal", e.loc); break;
+            case Kw::bokeh: notes_.note("bokeh", e.loc); break;
+            default: break;
+        }
+    }
+    const double dl = length(dir);
+    if (dl == 0) throw Error(notes_.where(cam.loc) + ": error: the camera's direction is zero");
+    c.location = loc;
+    c.lookAt = loc + dir;
+    c.right = right / dl;
+    c.up = up / dl;
+    if (c.projection != Projection::Perspective) finishProjection(c, dir, right, up, lookAt, rightOrUpSet, angleSet, angles);
+    if (c.aperture > 0 && c.blurSamples == 0) c.blurSamples = 16;
+    scene_.cameras.push_back(c);
+}
+
+// The vectors and angles of the non-perspective projections, as measured from POV-Ray 3.7 renders.
+// Orthographic: the window is right × up as written; with no right and up given, or with angle,
+// it is the view of a perspective camera with the same vectors at the look_at point (whose default
+// is <0,0,1>): right·dist/|direction|, or 2·dist·tan(angle/2) wide keeping up's aspect. The angle
+// projections default to 90° (spherical: 360° × 180°; its vertical angle to half the horizontal).
+void SceneBuilder::finishProjection(Camera& c, Vec3 dir, Vec3 right, Vec3 up, Vec3 lookAt, bool rightOrUpSet,
+                                    bool angleSet, const double angles[2]) {
+    constexpr double kDeg = std::numbers::pi / 180.0;
+    if (c.projection == Projection::Orthographic) {
+        if (angleSet || !rightOrUpSet) {
+            double dist = length(lookAt - c.location);
+            if (dist == 0) dist = 1;
+            const double a = angles[0];
+            if (a > 0 && a < 180) {
+                const double w = 2 * dist * std::tan(0.5 * a * kDeg);
+                up = normalize(up) * (w * length(up) / length(right));
+                right = normalize(right) * w;
+            } else {
+                right = right * (dist / length(dir));
+                up = up * (dist / length(dir));
+            }
+        }
+        c.right = right;
+        c.up = up;
+        return;
+    }
+    c.right = right;
+    c.up = up;
+    const bool spherical = c.projection == Projection::Spherical;
+    c.angleH = (angles[0] > 0 ? angles[0] : spherical ? 360 : 90) * kDeg;
+    c.angleV = angles[1] > 0 ? angles[1] * kDeg : (angles[0] > 0 ? 0.5 * c.angleH : 180 * kDeg);
+}
+
+}  // namespace rays::pov

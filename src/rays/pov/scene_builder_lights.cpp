@@ -1,0 +1,171 @@
+// SceneBuilder's lights and atmosphere: light_source (point, spot, cylinder, area, parallel,
+// fading, looks_like) → Light, and fog → PovFog.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "rays/error.h"
+#include "rays/pov/grammar.h"
+#include "rays/pov/scene_builder.h"
+#include "rays/pov/scene_builder_parts.h"
+
+namespace rays::pov {
+
+using sdl::VType;
+
+namespace {
+
+// The object of a looks_like block (nullptr when it holds none).
+const Item* lookedLikeObject(const Entry& e) {
+    if (e.args.empty() || e.args[0].type != VType::Item) return nullptr;
+    for (const Entry& inner : e.args[0].item().entries)
+        for (const Value& v : inner.args)
+            if (v.type == VType::Item && isObjectKind(v.item().kind)) return &v.item();
+    return nullptr;
+}
+
+}  // namespace
+
+// ---- lights ----------------------------------------------------------------------------------
+
+void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
+    Light l;
+    std::vector<const Value*> p = positionals(item);
+    Vec3 pos = p.empty() ? Vec3{} : toVec3(*p[0]);
+    l.color = p.size() > 1 ? toColor(*p[1]).rgb : Vec3{1, 1, 1};
+    Transform m;
+    Vec3 pointAt{0, 0, 1};
+    bool parallel = false, pointAtSet = false;
+    double radius = -1, falloff = -1;  // < 0: the light type's default
+    const Item* looksLike = nullptr;
+    for (const Entry& e : item.entries) {
+        if (e.positional()) continue;
+        if (isTransformEntry(e)) {
+            applyTransform(e, m);
+            continue;
+        }
+        switch (e.kw()) {
+            case Kw::spotlight: l.spot = Light::Spot::Cone; break;
+            case Kw::cylinder: l.spot = Light::Spot::Cylinder; break;
+            case Kw::parallel: parallel = true; break;
+            case Kw::point_at:
+                pointAt = toVec3(e.args[0]);
+                pointAtSet = true;
+                break;
+            case Kw::radius: radius = toFloat(e.args[0]); break;
+            case Kw::falloff: falloff = toFloat(e.args[0]); break;
+            case Kw::tightness: l.tightness = std::max(0.0, toFloat(e.args[0])); break;
+            case Kw::shadowless: l.shadowless = true; break;
+            case Kw::area_light:
+                if (e.args.size() == 4) {
+                    l.area = true;
+                    l.axis1 = toVec3(e.args[0]);
+                    l.axis2 = toVec3(e.args[1]);
+                    l.n1 = clampedInt(toFloat(e.args[2]), 1, 1024);
+                    l.n2 = clampedInt(toFloat(e.args[3]), 1, 1024);
+                }
+                break;
+            case Kw::jitter: l.jitter = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::adaptive: l.adaptive = clampedInt(toFloat(e.args[0]), -1, 1000); break;
+            case Kw::circular: l.circular = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::orient: l.orient = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::fade_distance: l.fadeDistance = std::max(0.0, toFloat(e.args[0])); break;
+            case Kw::fade_power: l.fadePower = toFloat(e.args[0]); break;
+            case Kw::looks_like: looksLike = lookedLikeObject(e); break;
+            case Kw::projected_through: notes_.note("projected_through", e.loc); break;
+            default: break;
+        }
+    }
+    const Transform world = toWorld * m;
+    l.position = world.point(pos);
+    l.axis1 = world.vector(l.axis1);
+    l.axis2 = world.vector(l.axis2);
+    if (l.spot != Light::Spot::None) {
+        // The manual's defaults: spotlights radius 30 and falloff 45 degrees (cosines kept);
+        // cylindrical lights 0.75 and 1, measured to be distances from the axis.
+        const Vec3 d = world.point(pointAtSet ? pointAt : Vec3{}) - l.position;
+        if (length(d) == 0) {
+            l.spot = Light::Spot::None;
+        } else if (l.spot == Light::Spot::Cone) {
+            auto cosDeg = [](double deg) { return std::cos(std::clamp(deg, 0.0, 180.0) * std::numbers::pi / 180); };
+            l.spotRadius = cosDeg(radius < 0 ? 30 : radius);
+            l.spotFalloff = cosDeg(falloff < 0 ? 45 : falloff);
+            l.direction = normalize(d);
+        } else {
+            l.spotRadius = radius < 0 ? 0.75 : radius;
+            l.spotFalloff = falloff < 0 ? 1 : falloff;
+            // Cylindrical lights shine and cast shadows along their axis (measured).
+            parallel = true;
+            pointAt = pointAtSet ? pointAt : Vec3{};
+        }
+    }
+    if (parallel) {
+        const Vec3 d = world.point(pointAt) - l.position;
+        if (length(d) > 0) {
+            l.parallel = true;
+            l.area = false;
+            l.pointAt = world.point(pointAt);
+            l.direction = normalize(d);
+        } else if (l.spot == Light::Spot::Cylinder) {
+            l.spot = Light::Spot::None;
+        }
+    }
+    if (l.area && (length(cross(l.axis1, l.axis2)) == 0)) l.area = false;
+    scene_.lights.push_back(l);
+    // looks_like: the object, moved to the light's place, is seen but casts no shadow (the manual).
+    if (looksLike) {
+        const bool saved = noShadow_;
+        noShadow_ = true;
+        addObject(*looksLike, world * Transform::translate(pos), nullptr, 0);
+        noShadow_ = saved;
+    }
+}
+
+// ---- atmosphere -----------------------------------------------------------------------------
+
+// POV-Ray 3.7 reference, "Fog": fog_type 1 (constant) and 2 (ground fog along up), distance and
+// the colour with filter and transmit; transformations turn up. A fog identifier's items come
+// first. distance 0 turns the fog off (the manual).
+void SceneBuilder::addFog(const Item& item) {
+    PovFog f;
+    bool turbulent = false;
+    Transform m;
+    std::function<void(const Item&)> read = [&](const Item& it) {
+        for (const Entry& e : it.entries) {
+            if (e.positional()) {
+                for (const Value& v : e.args) {
+                    if (v.type == VType::Item && v.item().kind == Kw::fog) {
+                        read(v.item());
+                    } else {
+                        const Rgbft c = toColor(v);
+                        f.color = c.rgb;
+                        f.filter = c.filter;
+                        f.transmit = c.transmit;
+                    }
+                }
+                continue;
+            }
+            if (isTransformEntry(e)) {
+                applyTransform(e, m);
+                continue;
+            }
+            switch (e.kw()) {
+                case Kw::fog_type: f.ground = toFloat(e.args[0]) == 2; break;
+                case Kw::distance: f.distance = toFloat(e.args[0]); break;
+                case Kw::fog_offset: f.offset = toFloat(e.args[0]); break;
+                case Kw::fog_alt: f.alt = toFloat(e.args[0]); break;
+                case Kw::up: f.up = toVec3(e.args[0]); break;
+                case Kw::turbulence: turbulent = turbulent || length(toVec3(e.args[0])) > 0; break;
+                default: break;  // turb_depth, omega, lambda, octaves: only with turbulence
+            }
+        }
+    };
+    read(item);
+    if (turbulent) notes_.note("fog turbulence", item.loc, "(the fog is drawn smooth)");
+    f.up = m.vector(f.up);
+    if (f.distance <= 0 || length(f.up) == 0) return;
+    f.up = normalize(f.up);
+    scene_.pov.fogs.push_back(f);
+}
+
+}  // namespace rays::pov
