@@ -310,15 +310,7 @@ TEST(PovCsgParseTime, InsideAndTraceAnswerForCsgObjects) {
 namespace rays {
 namespace {
 
-ImageF renderSmall(const Scene& s) {
-    RenderSettings settings;
-    settings.width = 32;
-    settings.height = 24;
-    settings.threads = 1;
-    const Bvh bvh(s.objects);
-    TraceStats stats;
-    return render(s, bvh, settings, stats);
-}
+ImageF renderSmall(const Scene& s) { return test::renderPov(s, 32, 24, 1); }
 
 TEST(PovCsgShadows, LightPassesThroughATransparentChildOfAnOpaqueOnesCsg) {
     const std::string base =

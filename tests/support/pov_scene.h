@@ -61,12 +61,12 @@ inline std::vector<double> allHitsPov(const Scene& s, Vec3 from, Vec3 dir, doubl
     return ts;
 }
 
-/// The scene rendered at 160×120 on two threads.
-inline ImageF renderPov(const Scene& s) {
+/// The scene rendered at width × height (160×120 by default) on `threads` threads.
+inline ImageF renderPov(const Scene& s, int width = 160, int height = 120, int threads = 2) {
     RenderSettings settings;
-    settings.width = 160;
-    settings.height = 120;
-    settings.threads = 2;
+    settings.width = width;
+    settings.height = height;
+    settings.threads = threads;
     const Bvh bvh(s.objects);
     TraceStats stats;
     return render(s, bvh, settings, stats);
