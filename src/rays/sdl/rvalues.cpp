@@ -9,8 +9,8 @@
 namespace rays::sdl {
 
 bool Interpreter::peekRawSym(char c) {
-    if (have_) return cur_->kind == Tk::Symbol && cur_->sym == uint8_t(c);
-    return cursor_->kind == Tk::Symbol && cursor_->sym == uint8_t(c);
+    const Token* t = peekRaw();
+    return t->kind == Tk::Symbol && t->sym == uint8_t(c);
 }
 
 Value Interpreter::parseRValue() {
