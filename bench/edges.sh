@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Feature-line cost: bunny.pov at 640x480 rendered without lines and with --edges all (default
+# Feature-line cost: bunny.pov (bench/scenes/course/) at 640x480 rendered without lines and with --edges all (default
 # stencil method, and the image method), runs alternated; prints the median render time (render
 # + lines phases from rays' own summary line, parse and write excluded) and the ratio.
 # Target: --edges all costs at most 1.5x the plain render.
@@ -9,8 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=7
 if [ "${1:-}" = "-n" ]; then runs=$2; shift 2; fi
-scene=${1:-../shared/scenes/course/bunny.pov}
-[ -f "$scene" ] || { echo "missing scene $scene (needs ../shared, or pass a scene)" >&2; exit 2; }
+scene=${1:-$(bench/course_scene.sh bunny)}
+[ -f "$scene" ] || { echo "missing scene $scene" >&2; exit 2; }
 rays=./build/rays
 [ -x "$rays" ] || { echo "build first: scripts/build.sh" >&2; exit 2; }
 tmp=$(mktemp -d)

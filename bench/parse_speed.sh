@@ -70,7 +70,7 @@ printf 'median ratio over %d scenes: %sx (%d runs each, alternated)\n' "${#ratio
   "$(printf '%s\n' "${ratios[@]}" | median)" "$runs"
 
 # The course's big scene (course reader): Rays' parse against POV-Ray's parse of the same file.
-balls=$repo/../shared/scenes/course/balls2.pov
+balls=$("$repo/bench/course_scene.sh" balls2)
 if [ -f "$balls" ]; then
   pov=(); rays=()
   for ((i = 0; i < runs; i++)); do
@@ -83,5 +83,5 @@ if [ -f "$balls" ]; then
   printf 'course balls2.pov (2.5 MB, course reader): POV-Ray %s s, Rays %s s\n' \
     "$(printf '%s\n' "${pov[@]}" | median)" "$(printf '%s\n' "${rays[@]}" | median)"
 else
-  echo "course balls2.pov: ../shared is absent, skipped"
+  echo "course balls2.pov: bench/scenes/course/balls2.pov.gz not found, skipped"
 fi

@@ -4,7 +4,7 @@
 #
 #   bench/render.sh [-n RUNS] [-s WxH] [SCENE.pov ...]
 #
-# Defaults: 5 runs, 640x480, and the course scenes bunny, gnarly and balls2 from ../shared.
+# Defaults: 5 runs, 640x480, and the course scenes bunny, gnarly and balls2 (bench/scenes/course/).
 # Both renderers use all cores and one sample per pixel (POV-Ray: -A, no anti-aliasing).
 # Needs the `povray` package (RAYS_BENCH_DEPS=1 scripts/install-deps.sh) and a built ./build/rays.
 set -euo pipefail
@@ -23,7 +23,7 @@ w=${size%x*}
 h=${size#*x}
 scenes=("$@")
 if [ ${#scenes[@]} -eq 0 ]; then
-  for s in bunny gnarly balls2; do scenes+=("../shared/scenes/course/$s.pov"); done
+  for s in bunny gnarly balls2; do scenes+=("$(bench/course_scene.sh "$s")"); done
 fi
 rays=$(pwd)/build/rays
 [ -x "$rays" ] || { echo "build first: scripts/build.sh" >&2; exit 2; }

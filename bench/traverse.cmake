@@ -9,7 +9,6 @@ find_package(Threads REQUIRED)
 add_executable(bench_traverse ${CMAKE_CURRENT_LIST_DIR}/traverse.cpp)
 target_compile_options(bench_traverse PRIVATE ${RAYS_WARNINGS})
 target_include_directories(bench_traverse PRIVATE ${CMAKE_CURRENT_LIST_DIR}/../tests)  # support/icosphere.h
-target_link_libraries(bench_traverse PRIVATE rays_core embree Threads::Threads)  # tinyobjloader: compiled into rays_core
-# Models and scenes live in shared/, beside the source tree.
-get_filename_component(RAYS_BENCH_SHARED_DIR "${CMAKE_CURRENT_LIST_DIR}/../../shared" ABSOLUTE)
-target_compile_definitions(bench_traverse PRIVATE RAYS_SHARED_DIR="${RAYS_BENCH_SHARED_DIR}")
+target_link_libraries(bench_traverse PRIVATE rays_core embree Threads::Threads ZLIB::ZLIB)  # tinyobjloader: compiled into rays_core
+# The models and scenes it reads ship with the project (scenes/models/, bench/scenes/course/).
+target_compile_definitions(bench_traverse PRIVATE RAYS_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

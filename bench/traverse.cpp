@@ -4,9 +4,10 @@
 //   bench_traverse [--model bunny.obj] [--pov bunny.pov] [--size WxH] [--reps N] [--quick]
 //                  [--mesh small|bunny|big]... [--set primary|shadow|shd-out|shd-in|diffuse]... [--1t] [--ablation]
 //
-// Meshes: the Stanford bunny (69,451 triangles; a displaced icosphere of similar size when the
+// Meshes: the Stanford bunny (69,451 triangles, scenes/models/; a displaced icosphere of similar size when the
 // OBJ is missing), 16 bunnies on a 4x4 grid (1.1 M triangles), and for the scaling target the
-// 10,000-triangle bunny of the course scene bunny.pov (a 20k icosphere when missing).
+// 10,000-triangle bunny of the course scene bench/scenes/course/bunny.pov.gz (a 20k icosphere when
+// missing). Model and scene files may be gzip-compressed.
 // Ray sets: primary (pinhole camera framing the mesh), shadow (primary hits toward a point
 // light) and one-bounce diffuse (cosine-distributed about the geometric normal at primary hits).
 // The shadow rays are also timed in two parts, shd-out (those that leave the surface they start
@@ -20,6 +21,7 @@
 // near-first), then 8-wide SIMD nodes with scalar leaves, + SIMD leaves, + near-first ordering.
 #include <embree3/rtcore.h>
 #include <tiny_obj_loader.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <array>
@@ -43,8 +45,8 @@
 #include "support/icosphere.h"
 #include "rays/accel/triangle_bvh.h"
 
-#ifndef RAYS_SHARED_DIR
-#define RAYS_SHARED_DIR "../shared"
+#ifndef RAYS_SOURCE_DIR
+#define RAYS_SOURCE_DIR "."
 #endif
 
 using namespace rays;
@@ -82,11 +84,23 @@ struct Mesh {
     }
 };
 
+/// The whole text of a file, gzip-compressed or plain (zlib reads both); false when unreadable.
+bool readText(const std::string& path, std::string& text) {
+    gzFile f = gzopen(path.c_str(), "rb");
+    if (!f) return false;
+    char chunk[1 << 16];
+    int n = 0;
+    while ((n = gzread(f, chunk, sizeof chunk)) > 0) text.append(chunk, size_t(n));
+    gzclose(f);
+    return n == 0;
+}
+
 bool loadObj(const std::string& path, Mesh& m) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path, config)) return false;
+    std::string text;
+    if (!readText(path, text) || !reader.ParseFromString(text, "", config)) return false;
     const auto& v = reader.GetAttrib().vertices;
     m.pos.assign(v.begin(), v.end());
     for (const auto& shape : reader.GetShapes())
@@ -96,11 +110,8 @@ bool loadObj(const std::string& path, Mesh& m) {
 
 /// The triangles of a POV-Ray scene written as `triangle { <x,y,z>, <x,y,z>, <x,y,z> ... }`.
 bool loadPovTriangles(const std::string& path, Mesh& m) {
-    std::ifstream in(path);
-    if (!in) return false;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string s = ss.str();
+    std::string s;
+    if (!readText(path, s)) return false;
     std::map<std::array<float, 3>, uint32_t> index;
     size_t at = 0;
     while ((at = s.find("triangle", at)) != std::string::npos) {
@@ -405,8 +416,8 @@ Compare compare(const std::vector<Result>& a, const std::vector<Result>& b, bool
 }
 
 struct Options {
-    std::string model = std::string(RAYS_SHARED_DIR) + "/models/stanford-bunny.obj";
-    std::string pov = std::string(RAYS_SHARED_DIR) + "/scenes/course/bunny.pov";
+    std::string model = std::string(RAYS_SOURCE_DIR) + "/scenes/models/stanford-bunny.obj.gz";
+    std::string pov = std::string(RAYS_SOURCE_DIR) + "/bench/scenes/course/bunny.pov.gz";
     int width = 1024, height = 768, reps = 5;
     bool quick = false;
     bool oneThreadOnly = false;           ///< skip the all-threads runs

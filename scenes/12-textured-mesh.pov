@@ -1,4 +1,4 @@
-// Textured mesh: Keenan Crane's "Spot" (OBJ with UVs, from ../shared) with its colour map by uv_mapping.
+// Textured mesh: Keenan Crane's "Spot" (OBJ with UVs, models/spot/, public domain) with its colour map by uv_mapping.
 // rays render --scene textured-mesh --spp 4
 camera {
   location <2.2, 1.1, 2.4>
@@ -12,8 +12,8 @@ light_source { <-5, 3, 1> color rgb <0.35, 0.35, 0.4> }
 
 plane { <0, 1, 0>, -0.74 pigment { image_map { png "textures/checker.png" interpolate 2 } rotate <90, 0, 0> scale 3 } finish { ambient 0.25 diffuse 0.7 } }
 
-obj_mesh { "../../shared/models/spot/spot_triangulated.obj" smooth
-  pigment { uv_mapping image_map { png "../../shared/models/spot/spot_texture.png" interpolate 2 } }
+obj_mesh { "models/spot/spot_triangulated.obj.gz" smooth
+  pigment { uv_mapping image_map { png "models/spot/spot_texture.png" interpolate 2 } }
   finish { ambient 0.2 diffuse 0.8 specular 0.2 roughness 0.3 }
   rotate <0, 150, 0>
 }

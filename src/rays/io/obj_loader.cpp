@@ -14,13 +14,38 @@
 #include <string_view>
 
 #include <tiny_obj_loader.h>
+#include <zlib.h>
 
 #include "rays/error.h"
 
 namespace rays {
 namespace {
 
+bool isGzipName(const std::string& path) { return path.size() > 3 && path.compare(path.size() - 3, 3, ".gz") == 0; }
+
+/// The decompressed text of a gzip file (zlib's gzread).
+std::string readGzipFile(const std::string& path) {
+    gzFile f = gzopen(path.c_str(), "rb");
+    if (!f) failFile(path, std::string("cannot open OBJ file: ") + std::strerror(errno ? errno : ENOENT));
+    std::string text;
+    char chunk[1 << 16];
+    for (;;) {
+        const int n = gzread(f, chunk, sizeof chunk);
+        if (n < 0) {
+            int code = 0;
+            const std::string why = gzerror(f, &code);
+            gzclose(f);
+            failFile(path, "cannot read compressed OBJ file: " + why);
+        }
+        if (n == 0) break;
+        text.append(chunk, size_t(n));
+    }
+    gzclose(f);
+    return text;
+}
+
 std::string readWholeFile(const std::string& path) {
+    if (isGzipName(path)) return readGzipFile(path);
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) failFile(path, std::string("cannot open OBJ file: ") + std::strerror(errno));
     std::string text;
@@ -237,16 +262,19 @@ std::vector<std::string> messageLines(const std::string& msg) {
 }  // namespace
 
 ObjMesh loadObj(const std::string& path) {
-    {
-        const std::string text = readWholeFile(path);
-        PreScanner(path, text).run();
-    }
+    const bool gz = isGzipName(path);
+    std::string text = readWholeFile(path);
+    PreScanner(path, text).run();
+    if (!gz) std::string().swap(text);
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    const bool ok = reader.ParseFromFile(path, config);  // MTL searched in the OBJ's folder
+    // A plain file is read by tinyobjloader itself, its MTL searched in the OBJ's folder; a gzip file
+    // is parsed from the decompressed text, without materials.
+    const bool ok = gz ? reader.ParseFromString(text, "", config) : reader.ParseFromFile(path, config);
+    std::string().swap(text);
     for (const std::string& w : messageLines(reader.Warning())) std::cerr << path << ": warning: " << w << "\n";
     if (!ok) {
         const std::vector<std::string> lines = messageLines(reader.Error());

@@ -27,7 +27,8 @@ struct ObjMesh {
 /// triangles kept, quads split along the shorter diagonal, larger polygons ear-clipped). Negative
 /// (relative) indices work. Errors throw rays::Error "PATH: error: ..." (missing/unreadable file) or
 /// "PATH:LINE:1: error: ..." (a malformed v/vn/vt/f line, an index out of range or zero, a parse error
-/// reported by tinyobjloader). Reader warnings go to stderr as "PATH: warning: ...".
+/// reported by tinyobjloader). Reader warnings go to stderr as "PATH: warning: ...". A PATH ending in
+/// ".gz" is read through zlib (gzip-compressed OBJ; its mtllib, if any, is ignored).
 ObjMesh loadObj(const std::string& path);
 
 }  // namespace rays
