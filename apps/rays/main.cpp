@@ -161,6 +161,11 @@ int run(int argc, char** argv) {
     CLI::App* assets = app.add_subcommand("assets", "write the procedural textures the demo scenes use (checker, bricks, brick normal and height maps)");
     assets->add_option("dir", assetDir, "output folder (must exist)")->required();
 
+    // filter and compare run before this parser (runFilterCommand, runCompareCommand); listed here
+    // so that `rays --help` names them.
+    app.add_subcommand("filter", "apply image convolution filters: rays filter IN.png OUT.png KERNEL... (see rays filter --help)");
+    app.add_subcommand("compare", "compare two images (SSIM, PSNR): rays compare A.png B.png (see rays compare --help)");
+
     // sceneinfo
     CLI::App* sceneinfo = app.add_subcommand("sceneinfo", "print the camera, lights and objects of a scene");
     sceneinfo->add_option("scene", scene, "scene file")->required();
@@ -200,6 +205,7 @@ int run(int argc, char** argv) {
 
     if (assets->parsed()) return cli::writeAssets(assetDir);
     if (scenes->parsed()) {
+        std::printf("Scenes in %s (render one: rays render --scene N):\n", cli::sceneDirectory().c_str());
         for (const cli::LibraryScene& ls : cli::listScenes(cli::sceneDirectory()))
             std::printf("%3d  %-20s %s\n", ls.number, ls.name.c_str(), ls.description.c_str());
         return 0;
@@ -215,6 +221,9 @@ int run(int argc, char** argv) {
         cli::PovOptions pov;
         cli::PovOptionReader reader(pov, [](const std::string& line) { std::cerr << line << '\n'; });
         cli::readInOrder(*render, shared, reader);
+        if (shared.width->count() > 0 && pov.height == -1)
+            throw Error("rays: error: width " + shared.width->results().front() + " without a height: give both "
+                        "(rays render SCENE WIDTH HEIGHT)");  // `rays render s.pov 320` rendered 320x480
         if (pov.inputFile.empty())
             throw Error(povForm ? "rays: error: no scene: give +Iscene.pov, a .pov file or Input_File_Name in an INI file"
                                 : "rays: error: no scene: give a scene file or --scene N");

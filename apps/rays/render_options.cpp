@@ -1,6 +1,7 @@
 #include "render_options.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "rays/error.h"
@@ -84,10 +85,16 @@ void applyOptions(const CourseFlags& f, const ModernOptions& o, RenderSettings& 
     if (f.altbrdf) s.shading = ShadingModel::CookTorrance;
     s.fresnel = f.fresnel;
     s.beers = f.beers;
+    if (f.ss > 0 && o.spp > 0)
+        bad("-ss=" + std::to_string(f.ss) + " and --spp " + std::to_string(o.spp) +
+            " both set the samples per pixel: give one of them");
     if (f.ss > 0) {
         s.aa = AaMode::Grid;
         s.spp = f.ss * f.ss;
     }
+    if (!f.gi && (!f.giSamples.empty() || !f.giBounces.empty()))
+        std::fprintf(stderr, "rays: warning: %s turns global illumination on (as -gi)\n",
+                     f.giSamples.empty() ? "-gi_bounces" : "-gi_samples");
     if (f.gi || !f.giSamples.empty() || !f.giBounces.empty()) s.gi = true;
     if (!f.giSamples.empty()) {
         const size_t comma = f.giSamples.find(',');

@@ -27,7 +27,8 @@ struct ModernOptions {
 void addCourseFlags(CLI::App* cmd, CourseFlags& f);
 void addModernOptions(CLI::App* cmd, ModernOptions& o, RenderSettings& s);
 
-/// Applies both to s; throws Error for values CLI11 cannot check (names, lists).
+/// Applies both to s; throws Error for values CLI11 cannot check (names, lists) and for -ss with
+/// --spp; warns on stderr when -gi_samples or -gi_bounces turns GI on without -gi.
 void applyOptions(const CourseFlags& f, const ModernOptions& o, RenderSettings& s);
 
 /// Course flags normalised for CLI11: "-altbrdf" → "--altbrdf", "-ss=4" → "--ss=4".

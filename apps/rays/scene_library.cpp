@@ -10,7 +10,14 @@
 namespace rays::cli {
 
 std::string sceneDirectory() {
-    if (const char* env = std::getenv("RAYS_SCENES")) return env;
+    if (const char* env = std::getenv("RAYS_SCENES"); env && *env) return env;
+    // An installed rays (cmake --install) finds PREFIX/share/rays/scenes beside its bin folder.
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const std::filesystem::path installed = (exe.parent_path() / RAYS_SCENES_FROM_BIN).lexically_normal();
+        if (std::filesystem::is_directory(installed, ec)) return installed.string();
+    }
     return RAYS_SCENES_DIR;
 }
 
@@ -60,6 +67,7 @@ namespace rays::cli {
 
 int writeAssets(const std::string& dir) {
     std::error_code ec;
+    if (!std::filesystem::exists(dir, ec)) failFile(dir, "does not exist (create the folder first)");
     if (!std::filesystem::is_directory(dir, ec)) failFile(dir, "is not a folder");
     const std::filesystem::path d(dir);
     const uint8_t light[3] = {230, 230, 220}, dark[3] = {40, 60, 110};

@@ -12,7 +12,8 @@ struct LibraryScene {
     std::string path;
 };
 
-/// The scene folder: $RAYS_SCENES if set, else the source tree's scenes/.
+/// The scene folder: $RAYS_SCENES if set, else the installed one (PREFIX/share/rays/scenes beside
+/// the binary's PREFIX/bin) when it exists, else the source tree's scenes/.
 std::string sceneDirectory();
 
 /// All NN-name.pov files of the folder, by number.

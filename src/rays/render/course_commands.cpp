@@ -7,6 +7,7 @@
 #include "rays/render/pov_output.h"
 #include "rays/render/tracer.h"
 #include "rays/scene/mesh.h"
+#include "rays/scene/object_transform.h"
 
 namespace rays {
 namespace {
@@ -83,6 +84,14 @@ void printObject(std::ostream& out, const Object& o) {
             break;
         default: break;  // the POV-Ray shapes (scene/shapes) print their type only
     }
+    if (o.transformed) {  // the shape above is in object space; M maps it into the world
+        const Transform m = objectToWorld(o);
+        out << "- Transform (object to world):\n";
+        out << "  - X axis: " << vec(m.vector({1, 0, 0})) << "\n";
+        out << "  - Y axis: " << vec(m.vector({0, 1, 0})) << "\n";
+        out << "  - Z axis: " << vec(m.vector({0, 0, 1})) << "\n";
+        out << "  - Translation: " << vec(m.point({0, 0, 0})) << "\n";
+    }
     out << "- Color: " << vec(o.material.color) << "\n";
     if (o.material.filter > 0) out << "- Filter: " << num(o.material.filter) << "\n";
     printMaterial(out, o.material);
@@ -120,8 +129,10 @@ void printSceneInfo(std::ostream& out, const Scene& scene) {
         out << "- Color: " << vec(scene.lights[i].color) << "\n";
     }
     out << "\n---\n\n" << scene.objects.size() << " object(s)\n";
+    // Objects are numbered from 1, as printrays' "Hit Object: (ID #N ...)" numbers them (the
+    // course's sceneinfo numbers from 0; its text comparison accepts integers ±1).
     for (size_t i = 0; i < scene.objects.size(); ++i) {
-        out << "\nObject[" << i << "]:\n";
+        out << "\nObject[" << i + 1 << "]:\n";
         printObject(out, scene.objects[i]);
     }
 }

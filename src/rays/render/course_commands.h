@@ -11,7 +11,8 @@
 
 namespace rays {
 
-/// Camera, lights and objects with their materials.
+/// Camera, lights and objects with their materials; objects numbered from 1 (as printrays numbers
+/// them), each with its object-to-world transform when the file wrote one.
 void printSceneInfo(std::ostream& out, const Scene& scene);
 
 /// "Pixel: [x, y] Ray: {origin} -> {direction}" for pixel (x, y), y counted up from the bottom.

@@ -1,4 +1,5 @@
 #include "rays/scene/object.h"
+#include "rays/scene/object_transform.h"
 
 #include <cmath>
 
@@ -271,6 +272,17 @@ Bounds localBounds(const Object& o) {
 
 }  // namespace
 
+namespace {
+// A cone's canonical frame in object space: x, y, z to u, v, w (w along the axis) at the base.
+Transform coneFrame(const Object& o) {
+    const Vec3 w = normalize(o.p1 - o.p0);
+    const Vec3 helper = std::fabs(w.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 u = normalize(cross(helper, w));
+    const Vec3 v = cross(w, u);
+    return Transform::fromColumns(u, v, w, o.p0);
+}
+}  // namespace
+
 void prepareObject(Object& o, const Transform& objectToWorld) {
     o.transformed = !objectToWorld.isIdentity();
     o.toObject = o.transformed ? objectToWorld.inverse() : Transform{};
@@ -287,15 +299,16 @@ void prepareObject(Object& o, const Transform& objectToWorld) {
         return;
     }
     if (o.type != ShapeType::Cone) return;
-    const Vec3 axis = o.p1 - o.p0;
-    const double height = length(axis);
-    const Vec3 w = axis / height;
-    const Vec3 helper = std::fabs(w.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    const Vec3 u = normalize(cross(helper, w));
-    const Vec3 v = cross(w, u);
+    const double height = length(o.p1 - o.p0);
     // Canonical → object maps x, y, z to u, v, w at the base; its (rigid) inverse follows M⁻¹.
-    o.toObject = Transform::fromColumns(u, v, w, o.p0).inverse() * o.toObject;
+    o.toObject = coneFrame(o).inverse() * o.toObject;
     o.p2 = Vec3{height, (o.r1 - o.r0) / height, 0};
+}
+
+Transform objectToWorld(const Object& o) {
+    if (!o.transformed) return Transform{};
+    if (o.type != ShapeType::Cone) return o.toObject.inverse();
+    return (coneFrame(o) * o.toObject).inverse();  // toObject = frame⁻¹ · M⁻¹
 }
 
 Bounds worldBounds(const Object& o) {
