@@ -92,9 +92,6 @@ void applyOptions(const CourseFlags& f, const ModernOptions& o, RenderSettings& 
         s.aa = AaMode::Grid;
         s.spp = f.ss * f.ss;
     }
-    if (!f.gi && (!f.giSamples.empty() || !f.giBounces.empty()))
-        std::fprintf(stderr, "rays: warning: %s turns global illumination on (as -gi)\n",
-                     f.giSamples.empty() ? "-gi_bounces" : "-gi_samples");
     if (f.gi || !f.giSamples.empty() || !f.giBounces.empty()) s.gi = true;
     if (!f.giSamples.empty()) {
         const size_t comma = f.giSamples.find(',');
@@ -103,6 +100,9 @@ void applyOptions(const CourseFlags& f, const ModernOptions& o, RenderSettings& 
                                                      : positiveInt(f.giSamples.substr(comma + 1), "gi_samples");
     }
     if (!f.giBounces.empty()) s.giBounces = positiveInt(f.giBounces, "gi_bounces");
+    if (!f.gi && (!f.giSamples.empty() || !f.giBounces.empty()))  // once the values are known to be good
+        std::fprintf(stderr, "rays: warning: %s turns global illumination on (as -gi)\n",
+                     f.giSamples.empty() ? "-gi_bounces" : "-gi_samples");
 
     if (!o.shading.empty() && !parseShadingName(o.shading.c_str(), s.shading))
         bad("unknown shading model '" + o.shading + "' (use blinn-phong, cook-torrance, oren-nayar, lambert, flat or normals)");
