@@ -5,7 +5,7 @@
 // The heap is not advised for transparent huge pages (it was until 2026-11-24): on the virtual
 // machines Rays is measured on, a huge page of fresh memory often comes from blocks the guest has
 // reported free to the host, and faulting it back costs more than the 4 KB faults it saves
-// (balls2.pov's parse: median 7 ms on 4 KB pages against 15-28 ms advised; docs/performance.md).
+// (balls2.pov's parse: median 7 ms on 4 KB pages against 15-28 ms advised; docs/design-notes.md).
 // Buffers of 4 MiB and more (BVH arrays, images) still get huge pages (rays/accel/huge_pages.h).
 #pragma once
 
