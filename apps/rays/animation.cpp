@@ -24,7 +24,12 @@ std::string frameLabel(const FramePlan& plan, size_t i) {
 RenderJob frameJob(const RenderJob& base, const FramePlan& plan, size_t i) {
     RenderJob job = base;
     job.language.animation = plan.frames[i];
-    if (plan.animated) job.outputPath = frameFileName(base.outputPath, plan.frames[i].frameNumber, plan.digits);
+    if (plan.animated) {
+        job.outputPath = frameFileName(base.outputPath, plan.frames[i].frameNumber, plan.digits);
+        // Each frame's edge mask is numbered as its image is, not written over the last frame's.
+        if (!base.edges.maskPath.empty())
+            job.edges.maskPath = frameFileName(base.edges.maskPath, plan.frames[i].frameNumber, plan.digits);
+    }
     return job;
 }
 

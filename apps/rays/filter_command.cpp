@@ -10,6 +10,7 @@
 #include "rays/error.h"
 #include "rays/image/filter.h"
 #include "rays/io/image_io.h"
+#include "paths.h"
 #include "subcommand_args.h"
 
 namespace rays::cli {
@@ -58,6 +59,8 @@ int runFilterCommand(const std::vector<std::string>& args) {
     const BorderMode border = parseBorderMode(borderName);
     const std::vector<KernelSpec> kernels = parseKernelList(kernelArgs);
     checkOutputPath(output);
+    checkOutputIsNotInput(output, input);
+    for (const KernelSpec& k : kernels) checkOutputIsNotInput(output, k.file);
 
     auto t0 = Clock::now();
     Image8 out = readImage(input);

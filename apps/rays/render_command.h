@@ -14,9 +14,9 @@ namespace rays::cli {
 struct EdgeOptions {
     std::string types;        ///< --edges LIST
     std::string method;       ///< --edge-method
-    double width = -1;        ///< --edge-width
+    std::string width;        ///< --edge-width (checked by resolveEdges, as every value here)
     std::string color;        ///< --edge-color R,G,B
-    double creaseAngle = -1;  ///< --crease-angle
+    std::string creaseAngle;  ///< --crease-angle
     bool linesOnly = false;   ///< --lines-only
     std::string maskPath;     ///< --edge-mask FILE
 };

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <sstream>
 #include <string_view>
 
 #include <tiny_obj_loader.h>
@@ -237,29 +238,36 @@ std::vector<std::string> messageLines(const std::string& msg) {
 }  // namespace
 
 ObjMesh loadObj(const std::string& path) {
-    {
-        const std::string text = readWholeFile(path);
-        PreScanner(path, text).run();
-    }
+    std::string text = readWholeFile(path);
+    // A UTF-8 byte-order mark (some editors write one) is not part of the first statement.
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+    PreScanner(path, text).run();
 
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    const bool ok = reader.ParseFromFile(path, config);  // MTL searched in the OBJ's folder
-    for (const std::string& w : messageLines(reader.Warning())) std::cerr << path << ": warning: " << w << "\n";
+    // The text read once is what tinyobjloader parses; MTL files are searched in the OBJ's folder.
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warning, error;
+    const size_t slash = path.find_last_of('/');
+    tinyobj::MaterialFileReader mtlReader(slash == std::string::npos ? std::string() : path.substr(0, slash + 1));
+    bool ok = false;
+    {
+        std::stringbuf buffer(std::move(text));
+        std::istream in(&buffer);
+        ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &mtlReader, true, false);
+    }
+    for (const std::string& w : messageLines(warning)) std::cerr << formatWarning(SourceLoc{path, 0, 0}, w) << "\n";
     if (!ok) {
-        const std::vector<std::string> lines = messageLines(reader.Error());
+        const std::vector<std::string> lines = messageLines(error);
         std::string msg;
         for (const std::string& l : lines) msg += (msg.empty() ? "" : "; ") + l;
         if (msg.empty()) msg = "cannot parse OBJ file";
-        const int line = lineFromMessage(reader.Error());
+        const int line = lineFromMessage(error);
         fail(SourceLoc{path, line, line > 0 ? 1 : 0}, msg);
     }
     // A non-fatal error text (e.g. from the MTL parser) is still worth showing.
-    for (const std::string& w : messageLines(reader.Error())) std::cerr << path << ": warning: " << w << "\n";
+    for (const std::string& w : messageLines(error)) std::cerr << formatWarning(SourceLoc{path, 0, 0}, w) << "\n";
 
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
     ObjMesh mesh;
     mesh.positions.resize(attrib.vertices.size() / 3);
     for (size_t i = 0; i < mesh.positions.size(); ++i)
@@ -272,7 +280,7 @@ ObjMesh loadObj(const std::string& path) {
         mesh.uvs[i] = {double(attrib.texcoords[2 * i]), double(attrib.texcoords[2 * i + 1])};
 
     const std::string dir = path.find('/') == std::string::npos ? "" : path.substr(0, path.rfind('/') + 1);
-    for (const tinyobj::material_t& m : reader.GetMaterials()) {
+    for (const tinyobj::material_t& m : materials) {
         ObjMesh::Material mat;
         mat.name = m.name;
         mat.diffuse = Vec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
@@ -283,12 +291,12 @@ ObjMesh loadObj(const std::string& path) {
     }
 
     size_t total = 0;
-    for (const tinyobj::shape_t& s : reader.GetShapes()) total += s.mesh.num_face_vertices.size();
+    for (const tinyobj::shape_t& s : shapes) total += s.mesh.num_face_vertices.size();
     mesh.faces.reserve(total);
     mesh.faceMaterial.reserve(total);
     const int nv = int(mesh.positions.size()), nn = int(mesh.normals.size()), nt = int(mesh.uvs.size());
     const int nm = int(mesh.materials.size());
-    for (const tinyobj::shape_t& s : reader.GetShapes()) {
+    for (const tinyobj::shape_t& s : shapes) {
         size_t k = 0;
         for (size_t f = 0; f < s.mesh.num_face_vertices.size(); ++f) {
             const size_t n = s.mesh.num_face_vertices[f];
