@@ -139,6 +139,10 @@ std::vector<Row> catalogue() {
                  "scene.pov:2:21: error: the transformation overflows or becomes singular here"});
     t.push_back({"sdl-scale-overflows", {{"scene.pov", kPov + "sphere { 0, 1 scale 1e300 scale 1e300 }\n"}}, render(), 2,
                  "scene.pov:4:1: error: the object's transformation overflows or is singular"});
+    t.push_back({"sdl-camera-scale-overflows", {{"scene.pov", "#version 3.7;\ncamera { location -5*z look_at 0 scale 1e300 scale 1e300 }\nsphere { 0, 1 }\n"}},
+                 render(), 2, "scene.pov:2:46: error: the camera's transformation overflows (its vectors are no longer finite)"});
+    t.push_back({"sdl-light-scale-overflows", {{"scene.pov", "#version 3.7;\ncamera { location -5*z look_at 0 }\nlight_source { <5, 5, -5> rgb 1 scale 1e300 scale 1e300 }\nsphere { 0, 1 }\n"}},
+                 render(), 2, "scene.pov:3:1: error: the light's transformation overflows (its position is no longer finite)"});
     t.push_back({"edge-color-out-of-range", {{"scene.pov", kScene}}, render({"--edges", "all", "--edge-color", "5,-1,nan"}), 2,
                  "rays: error: --edge-color takes R,G,B (three numbers from 0 to 1), got '5,-1,nan'"});
     t.push_back({"crease-angle-negative", {{"scene.pov", kScene}}, render({"--edges", "all", "--crease-angle", "-500"}), 2,

@@ -14,6 +14,7 @@
 
 #include "../apps/rays/flag_values.cpp"
 #include "rays/error.h"
+#include "rays/image/kernels.h"
 #include "rays/io/file_text.h"
 #include "rays/io/output_files.h"
 #include "rays/math/transform.h"
@@ -122,6 +123,18 @@ TEST(HardeningStreams, SourceTextSkipsTheByteOrderMarkAndEndsLinesAtLoneCarriage
     EXPECT_EQ(raw.text(), "\xEF\xBB\xBFx\ry");
     const rays::FileText source((dir.path() / "t.txt").string(), rays::TextForm::Source);
     EXPECT_EQ(source.text(), "x\ny");
+}
+
+TEST(HardeningStreams, KernelFilesAreReadAsSourceText) {
+    const rays::KernelSpec k = rays::parseKernelText("\xEF\xBB\xBF" "0 0 0\r0 1 0\r0 0 0\r", "k.txt");
+    EXPECT_EQ(k.width, 3);
+    EXPECT_EQ(k.height, 3);
+    try {
+        rays::parseKernelText("0 0 0\r0 1\r", "k.txt");
+        ADD_FAILURE() << "a ragged kernel was taken";
+    } catch (const rays::Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("k.txt:2:1: error: ragged kernel", 0), 0u) << e.what();
+    }
 }
 
 // ---- class 6: messages ----
