@@ -117,6 +117,8 @@ std::vector<Row> catalogue() {
                  {"out1.png", "out2.png", "mask1.png", "mask2.png"}});
     t.push_back({"sdl-fopen-onto-the-scene", {{"scene.pov", kPov + "#fopen F \"scene.pov\" write\n"}}, render(), 2,
                  "scene.pov:4:1: error: #fopen would overwrite \"scene.pov\", a scene file this parse reads"});
+    t.push_back({"sdl-fopen-onto-the-output", {{"scene.pov", kPov + "#fopen F \"out.png\" write\n"}}, render(), 2,
+                 "scene.pov:4:1: error: #fopen would overwrite \"out.png\", an output of this run"});
     // ---- 6: messages ----
     for (const char* item : {"ambient", "diffuse", "specular", "roughness", "ior", "refraction"})
         t.push_back(finishOutOfRange(item));

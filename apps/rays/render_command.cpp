@@ -168,11 +168,12 @@ void checkImageSize(int width, int height) {
                     " is too large (at most 65536 per side and 268435456 pixels)");
 }
 
-Scene loadJobScene(const RenderJob& job) {
+Scene loadJobScene(const RenderJob& job, const std::vector<std::string>& outputs) {
     ParseOptions opt;
     opt.rotation = job.rotation;
     opt.threads = job.settings.threads;
     opt.language = job.language;
+    opt.language.outputFiles = outputs;
     opt.language.imageWidth = job.settings.width;
     opt.language.imageHeight = job.settings.height;
     opt.checkInterrupt = [] { throwIfInterrupted(); };  // Ctrl-C stops a long parse
@@ -192,7 +193,7 @@ int runRender(const RenderJob& job) {
                         {job.savePartial ? partialImagePath(job.outputPath) : std::string(), "partial image"}});
 
     auto t0 = Clock::now();
-    const Scene scene = loadJobScene(job);
+    const Scene scene = loadJobScene(job, {job.outputPath, job.edges.maskPath});
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
                                     std::to_string(scene.cameras.size()) + ")");

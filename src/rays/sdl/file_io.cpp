@@ -64,6 +64,16 @@ void Interpreter::dirFopen(const Loc& at) {
         for (const auto& f : files_)  // a run never writes over its own input
             if (fs::exists(p, ec) && fs::equivalent(p, f->path, ec))
                 error(at, "#fopen would overwrite \"" + f->shownName + "\", a scene file this parse reads");
+        // Nor one of the run's own outputs (compared by name, links and ".." resolved).
+        auto resolved = [](const fs::path& q) {
+            std::error_code e;
+            const fs::path r = fs::weakly_canonical(fs::absolute(q, e), e);
+            return e ? fs::path() : r;
+        };
+        const fs::path target = resolved(p);
+        for (const std::string& out : options_.outputFiles)
+            if (!out.empty() && !target.empty() && resolved(out) == target)
+                error(at, "#fopen would overwrite \"" + out + "\", an output of this run");
         h->writing = true;
         h->out = std::fopen(p.string().c_str(), mode == Kw::write ? "wb" : "ab");
         if (!h->out) error(at, "cannot open \"" + file + "\" for writing");
