@@ -16,6 +16,7 @@
 #include "rays/error.h"
 #include "rays/image/kernels.h"
 #include "rays/io/file_text.h"
+#include "rays/io/obj_loader.h"
 #include "rays/io/output_files.h"
 #include "rays/math/transform.h"
 #include "support/files.h"
@@ -135,6 +136,17 @@ TEST(HardeningStreams, KernelFilesAreReadAsSourceText) {
     } catch (const rays::Error& e) {
         EXPECT_EQ(std::string(e.what()).rfind("k.txt:2:1: error: ragged kernel", 0), 0u) << e.what();
     }
+}
+
+TEST(HardeningStreams, ObjAndMtlFilesMayStartWithAByteOrderMark) {
+    TempDir dir;
+    writeFile(dir.path() / "m.obj", "\xEF\xBB\xBFmtllib m.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeFile(dir.path() / "m.mtl", "\xEF\xBB\xBFnewmtl red\r\nKd 1 0 0\r\n");
+    const rays::ObjMesh obj = rays::loadObj((dir.path() / "m.obj").string());
+    ASSERT_EQ(obj.materials.size(), 1u);
+    EXPECT_EQ(obj.materials[0].name, "red");
+    EXPECT_EQ(obj.materials[0].diffuse.x, 1.0);
+    EXPECT_EQ(obj.faces.size(), 1u);
 }
 
 // ---- class 6: messages ----

@@ -10,7 +10,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string_view>
 
@@ -42,6 +44,32 @@ std::string readWholeFile(const std::string& path) {
     ::close(fd);
     return text;
 }
+
+// MTL files as tinyobjloader's MaterialFileReader finds them (the OBJ's folder, or as named), read
+// as source text: a UTF-8 byte-order mark at the start would otherwise hide the first statement
+// (usually the first `newmtl`, losing that material). tinyobj ends lines at \n, \r\n and \r itself.
+class SourceMtlReader : public tinyobj::MaterialReader {
+public:
+    explicit SourceMtlReader(std::string folder) : folder_(std::move(folder)) {}
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* byName, std::string* warn, std::string* err) override {
+        std::ifstream file(folder_ + name, std::ios::binary);
+        if (!file) {
+            if (warn) *warn += "Material file [ " + name + " ] not found in a path : " + folder_ + "\n";
+            return false;
+        }
+        std::ostringstream bytes;
+        bytes << file.rdbuf();
+        std::string text = bytes.str();
+        if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+        std::istringstream in(text);
+        tinyobj::LoadMtl(byName, materials, &in, warn, err);
+        return true;
+    }
+
+private:
+    std::string folder_;  ///< "" or ending in '/'
+};
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -249,7 +277,7 @@ ObjMesh loadObj(const std::string& path) {
     std::vector<tinyobj::material_t> materials;
     std::string warning, error;
     const size_t slash = path.find_last_of('/');
-    tinyobj::MaterialFileReader mtlReader(slash == std::string::npos ? std::string() : path.substr(0, slash + 1));
+    SourceMtlReader mtlReader(slash == std::string::npos ? std::string() : path.substr(0, slash + 1));
     bool ok = false;
     {
         std::stringbuf buffer(std::move(text));
