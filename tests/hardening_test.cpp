@@ -175,6 +175,21 @@ TEST(HardeningMessages, LongMessagesKeepTheirStartAndEnd) {
     EXPECT_EQ(rays::printableMessage(cut), cut);
 }
 
+TEST(HardeningMessages, FileNamesInProgressLinesAreEscaped) {
+    TempDir dir;
+    writeFile(dir.path() / "scene.pov", kScene);
+    const std::string name = "\x1b[2Jx.png";
+    auto r = rays_(dir, {"render", "scene.pov", "16", "12", "-o", name});
+    ASSERT_TRUE(r.ok()) << r.err;
+    EXPECT_EQ(r.err.rfind("rays: wrote \\x1b[2Jx.png (16x12)", 0), 0u) << r.err;
+    r = rays_(dir, {"filter", name, "f.png", "box_blur_3"});
+    ASSERT_TRUE(r.ok()) << r.err;
+    r = rays_(dir, {"filter", "f.png", name, "box_blur_3"});
+    ASSERT_TRUE(r.ok()) << r.err;
+    EXPECT_EQ(r.err.rfind("rays: wrote \\x1b[2Jx.png (16x12", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
+}
+
 TEST(HardeningMessages, AHugeIdentifierGivesABoundedLine) {
     TempDir dir;
     for (const std::string& header : {std::string(), std::string("#version 3.7;\n")}) {

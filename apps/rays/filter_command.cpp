@@ -76,7 +76,7 @@ int runFilterCommand(const std::vector<std::string>& args) {
 
     if (!quiet)
         std::fprintf(stderr, "rays: wrote %s (%dx%d, %d channel%s): read %.1f ms, filter %.1f ms (%zu kernel%s, %s border), write %.1f ms\n",
-                     output.c_str(), out.width, out.height, out.channels, out.channels == 1 ? "" : "s", readMs,
+                     printableMessage(output).c_str(), out.width, out.height, out.channels, out.channels == 1 ? "" : "s", readMs,
                      filterMs, kernels.size(), kernels.size() == 1 ? "" : "s", borderModeName(border), writeMs);
     return 0;
 }

@@ -73,7 +73,7 @@ void stopIfInterrupted(const RenderJob& job, const Scene* scene, const ImageF* i
             checkOutputIsNoTexture(partial, *scene);
             CriticalSection writing;
             writeImage(partial, toImage8(*img), job.jpegQuality);
-            std::fprintf(stderr, "rays: warning: partial image saved to %s\n", partial.c_str());
+            std::fprintf(stderr, "rays: warning: partial image saved to %s\n", printableMessage(partial).c_str());
         } catch (const Error& e) {
             std::fprintf(stderr, "rays: warning: partial image not saved: %s\n", e.what());
         }
@@ -276,10 +276,10 @@ int runRender(const RenderJob& job) {
         const double mraysAll = (renderMs + linesMs) > 0 ? stats.total() / ((renderMs + linesMs) * 1000.0) : 0.0;
         if (edges.enabled())
             std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, lines %.1f ms, write %.1f ms; %.2f Mrays/s\n",
-                         job.outputPath.c_str(), s.width, s.height, parseMs, buildMs, renderMs, linesMs, writeMs, mraysAll);
+                         printableMessage(job.outputPath).c_str(), s.width, s.height, parseMs, buildMs, renderMs, linesMs, writeMs, mraysAll);
         else
             std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, write %.1f ms; %.2f Mrays/s\n",
-                         job.outputPath.c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
+                         printableMessage(job.outputPath).c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
     }
     if (job.stats) {
         std::fprintf(stderr, "stats: objects %zu, lights %zu, BVH nodes %zu (depth %d), threads %d\n",

@@ -75,7 +75,7 @@ int writeAssets(const std::string& dir) {
     stage("bricks-height.png", height);
     stage("bricks-normal.png", normalMapFromHeight(height, 6.0));
     files.commit();
-    std::fprintf(stderr, "rays: wrote checker.png, bricks.png, bricks-height.png, bricks-normal.png in %s\n", dir.c_str());
+    std::fprintf(stderr, "rays: wrote checker.png, bricks.png, bricks-height.png, bricks-normal.png in %s\n", printableMessage(dir).c_str());
     return 0;
 }
 
