@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "rays/error.h"
 #include "interrupt.h"
 #include "paths.h"
 
@@ -24,7 +25,12 @@ std::string frameLabel(const FramePlan& plan, size_t i) {
 RenderJob frameJob(const RenderJob& base, const FramePlan& plan, size_t i) {
     RenderJob job = base;
     job.language.animation = plan.frames[i];
-    if (plan.animated) job.outputPath = frameFileName(base.outputPath, plan.frames[i].frameNumber, plan.digits);
+    if (plan.animated) {
+        job.outputPath = frameFileName(base.outputPath, plan.frames[i].frameNumber, plan.digits);
+        // Each frame's edge mask is numbered as its image is, not written over the last frame's.
+        if (!base.edges.maskPath.empty())
+            job.edges.maskPath = frameFileName(base.edges.maskPath, plan.frames[i].frameNumber, plan.digits);
+    }
     return job;
 }
 
@@ -32,7 +38,7 @@ int runFrames(const RenderJob& base, const FramePlan& plan, bool resume, const F
     if (!plan.animated) {
         const RenderJob job = frameJob(base, plan, 0);
         if (resume && fileExists(job.outputPath)) {
-            if (!job.quiet) std::fprintf(stderr, "rays: %s exists; skipped (resume)\n", job.outputPath.c_str());
+            if (!job.quiet) std::fprintf(stderr, "rays: %s exists; skipped (resume)\n", printableMessage(job.outputPath).c_str());
             return 0;
         }
         return render(job);
@@ -44,7 +50,7 @@ int runFrames(const RenderJob& base, const FramePlan& plan, bool resume, const F
         job.summary = false;
         const std::string label = frameLabel(plan, i);
         if (resume && fileExists(job.outputPath)) {
-            if (!job.quiet) std::fprintf(stderr, "rays: %s: %s exists; skipped (resume)\n", label.c_str(), job.outputPath.c_str());
+            if (!job.quiet) std::fprintf(stderr, "rays: %s: %s exists; skipped (resume)\n", label.c_str(), printableMessage(job.outputPath).c_str());
             continue;
         }
         const auto t0 = std::chrono::steady_clock::now();
@@ -56,13 +62,13 @@ int runFrames(const RenderJob& base, const FramePlan& plan, bool resume, const F
             std::fprintf(stderr,
                          "rays: interrupted at %s: %s not written; %zu frame%s written before it; "
                          "run again with --resume to go on\n",
-                         label.c_str(), job.outputPath.c_str(), written, written == 1 ? "" : "s");
+                         label.c_str(), printableMessage(job.outputPath).c_str(), written, written == 1 ? "" : "s");
             return e.exitStatus();
         }
         ++written;
         if (!job.quiet) {
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            std::fprintf(stderr, "rays: %s: wrote %s in %.2f s\n", label.c_str(), job.outputPath.c_str(), seconds);
+            std::fprintf(stderr, "rays: %s: wrote %s in %.2f s\n", label.c_str(), printableMessage(job.outputPath).c_str(), seconds);
         }
     }
     return 0;

@@ -16,7 +16,7 @@ namespace rays::cli {
 using FrameRenderer = std::function<int(const RenderJob&)>;
 
 /// The job of frame i of plan: base with the frame's clock in language.animation and, for an
-/// animation, the numbered output file (frameFileName).
+/// animation, the numbered output file and edge mask (frameFileName).
 RenderJob frameJob(const RenderJob& base, const FramePlan& plan, size_t i);
 
 /// Renders every frame of plan in order with render; returns 0, or the first non-zero status.

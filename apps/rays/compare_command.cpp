@@ -7,7 +7,9 @@
 #include "rays/error.h"
 #include "rays/image/compare.h"
 #include "rays/io/image_io.h"
+#include "flag_values.h"
 #include "paths.h"
+#include "stdout_check.h"
 #include "subcommand_args.h"
 
 namespace rays::cli {
@@ -46,11 +48,11 @@ int runCompareCommand(const std::vector<std::string>& args) {
     app.add_option("b", b, "second image, same width and height")->required();
     app.add_option("--diff", diff, "write |A-B|*scale per channel as an RGB image (must not be an input)");
     app.add_option("--scale", scale, "factor applied to the differences in the diff image (default 1)")
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(finiteNumberCheck())->check(CLI::Range(0.0, 1e6));
     app.add_option("--threshold", threshold, "count pixels whose largest channel difference exceeds N, 0..255 (default 5)")
-        ->check(CLI::Range(0.0, 255.0));
+        ->check(finiteNumberCheck())->check(CLI::Range(0.0, 255.0));
     CLI::Option* failOpt = app.add_option("--fail-ssim", failSsim, "exit with status 1 when the SSIM is below S")
-                               ->check(CLI::Range(-1.0, 1.0));
+                               ->check(finiteNumberCheck())->check(CLI::Range(-1.0, 1.0));
     app.footer("Output (stdout), one figure a line: ssim, ssim_rgb, ssim_luma, psnr, mean, max, over, size\n"
                "(see docs/cli.md). Exit status 0, 1 when --fail-ssim S is given and ssim < S, 2 on errors.");
     if (parseSubcommandArgs(app, args, "compare",
@@ -66,7 +68,7 @@ int runCompareCommand(const std::vector<std::string>& args) {
     const ImageComparison r = compareImages(imgA, imgB, threshold);
     if (!diff.empty()) writeImage(diff, differenceImage(imgA, imgB, scale));
     printFigures(r);
-    std::fflush(stdout);
+    flushStdout();  // the figures come before the verdict on stderr, and must have arrived
     if (failOpt->count() > 0 && r.ssim.mean() < failSsim) {
         std::fprintf(stderr, "rays: compare: SSIM %.6f is below %g\n", r.ssim.mean(), failSsim);
         return 1;

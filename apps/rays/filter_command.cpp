@@ -10,6 +10,7 @@
 #include "rays/error.h"
 #include "rays/image/filter.h"
 #include "rays/io/image_io.h"
+#include "paths.h"
 #include "subcommand_args.h"
 
 namespace rays::cli {
@@ -58,6 +59,8 @@ int runFilterCommand(const std::vector<std::string>& args) {
     const BorderMode border = parseBorderMode(borderName);
     const std::vector<KernelSpec> kernels = parseKernelList(kernelArgs);
     checkOutputPath(output);
+    checkOutputIsNotInput(output, input);
+    for (const KernelSpec& k : kernels) checkOutputIsNotInput(output, k.file);
 
     auto t0 = Clock::now();
     Image8 out = readImage(input);
@@ -73,7 +76,7 @@ int runFilterCommand(const std::vector<std::string>& args) {
 
     if (!quiet)
         std::fprintf(stderr, "rays: wrote %s (%dx%d, %d channel%s): read %.1f ms, filter %.1f ms (%zu kernel%s, %s border), write %.1f ms\n",
-                     output.c_str(), out.width, out.height, out.channels, out.channels == 1 ? "" : "s", readMs,
+                     printableMessage(output).c_str(), out.width, out.height, out.channels, out.channels == 1 ? "" : "s", readMs,
                      filterMs, kernels.size(), kernels.size() == 1 ? "" : "s", borderModeName(border), writeMs);
     return 0;
 }

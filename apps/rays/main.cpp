@@ -20,8 +20,10 @@
 #include "arg_text.h"
 #include "compare_command.h"
 #include "filter_command.h"
+#include "flag_values.h"
 #include "frame_plan.h"
 #include "heap_setup.h"
+#include "stdout_check.h"
 #include "interrupt.h"
 #include "pov_forms.h"
 #include "pov_options.h"
@@ -219,7 +221,7 @@ int run(int argc, char** argv) {
     if (render->parsed()) {
         // POV-Ray's options and render's own ones for the same settings, in command-line order.
         cli::PovOptions pov;
-        cli::PovOptionReader reader(pov, [](const std::string& line) { std::cerr << line << '\n'; });
+        cli::PovOptionReader reader(pov, [](const std::string& line) { std::cerr << printableMessage(line) << '\n'; });
         cli::readInOrder(*render, shared, reader);
         if (shared.width->count() > 0 && pov.height == -1)
             throw Error("rays: error: width " + shared.width->results().front() + " without a height: give both "
@@ -270,10 +272,17 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
+// After a command that wrote to stdout (sceneinfo, the pixel commands, compare's figures, --help):
+// everything written must have arrived. Returns the exit status.
+int checkStdout(int status) {
+    cli::flushStdout();
+    return status;
+}
+
 int main(int argc, char** argv) {
     cli::prepareHeap();
     try {
-        return run(argc, argv);
+        return checkStdout(run(argc, argv));
     } catch (const cli::Interrupted& e) {
         std::cerr << "rays: interrupted; no image written\n";
         return e.exitStatus();
@@ -284,7 +293,7 @@ int main(int argc, char** argv) {
         std::cerr << e.what() << '\n';
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "rays: internal error: " << e.what() << '\n';
+        std::cerr << "rays: internal error: " << printableMessage(e.what()) << '\n';
         return 1;
     }
 }

@@ -13,6 +13,7 @@
 #include "paths.h"
 #include "pov_option_table.h"
 #include "rays/error.h"
+#include "rays/io/file_text.h"
 #include "rays/sdl/declare_value.h"
 
 namespace rays::cli {
@@ -414,7 +415,9 @@ void PovOptionReader::readIniText(const std::string& text, const std::string& pa
     // POV-Ray 3.7 (observed) reads the unlabelled top part, then the parts labelled [section]; its
     // manual says a named section replaces the top part, but the program reads both.
     bool reading = true, found = false;
-    std::istringstream lines(text);
+    std::string source = text;  // as scene files: a byte-order mark skipped, lone CRs end lines
+    source.erase(0, makeSourceText(source.data(), source.size()));
+    std::istringstream lines(source);
     int lineNo = 0;
     for (std::string raw; std::getline(lines, raw);) {
         ++lineNo;

@@ -15,11 +15,13 @@
 #include "rays/io/image_io.h"
 #include "rays/io/png_stream.h"
 #include "rays/io/mesh_from_obj.h"
+#include "rays/io/output_files.h"
 #include "rays/io/obj_loader.h"
 #include "rays/image/filter.h"
 #include "rays/npr/feature_lines.h"
 #include "rays/npr/stencil_pass.h"
 #include "rays/render/renderer.h"
+#include "flag_values.h"
 #include "interrupt.h"
 #include "paths.h"
 #include "render_budget.h"
@@ -71,7 +73,7 @@ void stopIfInterrupted(const RenderJob& job, const Scene* scene, const ImageF* i
             checkOutputIsNoTexture(partial, *scene);
             CriticalSection writing;
             writeImage(partial, toImage8(*img), job.jpegQuality);
-            std::fprintf(stderr, "rays: warning: partial image saved to %s\n", partial.c_str());
+            std::fprintf(stderr, "rays: warning: partial image saved to %s\n", printableMessage(partial).c_str());
         } catch (const Error& e) {
             std::fprintf(stderr, "rays: warning: partial image not saved: %s\n", e.what());
         }
@@ -98,6 +100,7 @@ void checkImageOutput(const std::string& path, const char* what, const RenderJob
     checkOutputDirectory(path);
     checkOutputIsNotInput(path, job.scenePath);
     checkOutputIsNotInput(path, job.objPath);
+    for (const KernelSpec& k : job.post) checkOutputIsNotInput(path, k.file);
 }
 
 // The streamed PNG's bytes; a failure is named after the file, as writeImage names it.
@@ -141,15 +144,9 @@ EdgeSettings resolveEdges(const EdgeSettings& fromScene, const EdgeOptions& o) {
         else if (o.method == "image") e.method = EdgeMethod::Image;
         else throw Error("rays: error: unknown edge method '" + o.method + "' (use stencil or image)");
     }
-    if (o.width >= 0) e.width = o.width;
-    if (o.creaseAngle >= 0) e.creaseAngle = o.creaseAngle;
-    if (!o.color.empty()) {
-        double c[3];
-        char extra;
-        if (std::sscanf(o.color.c_str(), "%lf,%lf,%lf%c", &c[0], &c[1], &c[2], &extra) != 3)
-            throw Error("rays: error: --edge-color takes R,G,B (0..1), got '" + o.color + "'");
-        e.color = {c[0], c[1], c[2]};
-    }
+    if (!o.width.empty()) e.width = flagNumber(o.width, "--edge-width");
+    if (!o.creaseAngle.empty()) e.creaseAngle = flagNumber(o.creaseAngle, "--crease-angle");
+    if (!o.color.empty()) e.color = flagColour(o.color, "--edge-color");
     if (o.linesOnly) e.linesOnly = true;
     // Lines-only without any edge type asked for (an explicit --edges none stays empty): draw the
     // outline, folds, intersections and creases.
@@ -171,11 +168,12 @@ void checkImageSize(int width, int height) {
                     " is too large (at most 65536 per side and 268435456 pixels)");
 }
 
-Scene loadJobScene(const RenderJob& job) {
+Scene loadJobScene(const RenderJob& job, const std::vector<std::string>& outputs) {
     ParseOptions opt;
     opt.rotation = job.rotation;
     opt.threads = job.settings.threads;
     opt.language = job.language;
+    opt.language.outputFiles = outputs;
     opt.language.imageWidth = job.settings.width;
     opt.language.imageHeight = job.settings.height;
     opt.checkInterrupt = [] { throwIfInterrupted(); };  // Ctrl-C stops a long parse
@@ -190,9 +188,12 @@ int runRender(const RenderJob& job) {
     checkImageSize(s.width, s.height);
     checkImageOutput(job.outputPath, "output", job);
     if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
+    checkOutputsDiffer({{job.outputPath, "output image"},
+                        {job.edges.maskPath, "edge mask"},
+                        {job.savePartial ? partialImagePath(job.outputPath) : std::string(), "partial image"}});
 
     auto t0 = Clock::now();
-    const Scene scene = loadJobScene(job);
+    const Scene scene = loadJobScene(job, {job.outputPath, job.edges.maskPath});
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
                                     std::to_string(scene.cameras.size()) + ")");
@@ -259,13 +260,14 @@ int runRender(const RenderJob& job) {
     t0 = Clock::now();
     {
         // A signal from here on waits until both files are complete: never a temporary left behind.
+        // Both are written in full before either replaces an old file: a failure changes neither.
         CriticalSection writing;
         stopIfInterrupted(job, &scene, &img);
-        if (!job.edges.maskPath.empty()) writeImage(job.edges.maskPath, coverageImage(lines), job.jpegQuality);
-        if (png)
-            writeFileAtomically(job.outputPath, finishPng(*png, job.outputPath));
-        else
-            writeImage(job.outputPath, toImage8(img), job.jpegQuality);
+        OutputFiles files;
+        files.stage(job.outputPath, png ? finishPng(*png, job.outputPath) : encodeImageFile(job.outputPath, toImage8(img), job.jpegQuality));
+        if (!job.edges.maskPath.empty())
+            files.stage(job.edges.maskPath, encodeImageFile(job.edges.maskPath, coverageImage(lines), job.jpegQuality));
+        files.commit();
     }
     const double writeMs = msSince(t0);
 
@@ -274,10 +276,10 @@ int runRender(const RenderJob& job) {
         const double mraysAll = (renderMs + linesMs) > 0 ? stats.total() / ((renderMs + linesMs) * 1000.0) : 0.0;
         if (edges.enabled())
             std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, lines %.1f ms, write %.1f ms; %.2f Mrays/s\n",
-                         job.outputPath.c_str(), s.width, s.height, parseMs, buildMs, renderMs, linesMs, writeMs, mraysAll);
+                         printableMessage(job.outputPath).c_str(), s.width, s.height, parseMs, buildMs, renderMs, linesMs, writeMs, mraysAll);
         else
             std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, write %.1f ms; %.2f Mrays/s\n",
-                         job.outputPath.c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
+                         printableMessage(job.outputPath).c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
     }
     if (job.stats) {
         std::fprintf(stderr, "stats: objects %zu, lights %zu, BVH nodes %zu (depth %d), threads %d\n",

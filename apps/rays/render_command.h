@@ -14,9 +14,9 @@ namespace rays::cli {
 struct EdgeOptions {
     std::string types;        ///< --edges LIST
     std::string method;       ///< --edge-method
-    double width = -1;        ///< --edge-width
+    std::string width;        ///< --edge-width (checked by resolveEdges, as every value here)
     std::string color;        ///< --edge-color R,G,B
-    double creaseAngle = -1;  ///< --crease-angle
+    std::string creaseAngle;  ///< --crease-angle
     bool linesOnly = false;   ///< --lines-only
     std::string maskPath;     ///< --edge-mask FILE
 };
@@ -49,7 +49,8 @@ int runRender(const RenderJob& job);
 /// Loads the job's scene as every command does: the scene language sees job.language with the
 /// image size set from job.settings (`image_width`, `image_height`); big files are parsed on two
 /// threads unless settings.threads is 1 (ParseOptions::threads); objPath's triangles are appended.
-Scene loadJobScene(const RenderJob& job);
+/// outputs: the files the run will write, which the scene's `#fopen ... write` may not name.
+Scene loadJobScene(const RenderJob& job, const std::vector<std::string>& outputs = {});
 
 /// Throws Error when w×h is not a sensible image size.
 void checkImageSize(int width, int height);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "flag_values.h"
 #include "rays/error.h"
 
 namespace rays::cli {
@@ -77,7 +78,7 @@ void addModernOptions(CLI::App* cmd, ModernOptions& o, RenderSettings& s) {
     cmd->add_option("--dof-samples", o.dofSamples, "samples per pixel with depth of field (overrides blur_samples)")->check(CLI::Range(1, 65536));
     cmd->add_option("--depth", s.maxDepth, "recursion depth for reflection and refraction (default 6)")->check(CLI::Range(0, 1000));
     cmd->add_option("--threads", s.threads, "worker threads (default: all cores)")->check(CLI::Range(0, 1024));
-    cmd->add_option("--seed", s.seed, "random seed for jittered samples, area lights, lens and GI");
+    cmd->add_option("--seed", s.seed, "random seed for jittered samples, area lights, lens and GI")->check(unsigned64Check());
     cmd->add_option("--camera", s.cameraIndex, "index of the camera in the scene (default 0)")->check(atLeast(0, false));
 }
 

@@ -62,6 +62,7 @@ std::string findScene(const std::string& key) {
 
 #include "rays/image/procedural.h"
 #include "rays/io/image_io.h"
+#include "rays/io/output_files.h"
 
 namespace rays::cli {
 
@@ -71,12 +72,18 @@ int writeAssets(const std::string& dir) {
     if (!std::filesystem::is_directory(dir, ec)) failFile(dir, "is not a folder");
     const std::filesystem::path d(dir);
     const uint8_t light[3] = {230, 230, 220}, dark[3] = {40, 60, 110};
-    writeImage((d / "checker.png").string(), checkerImage(256, 8, light, dark));
     const Image8 height = brickHeightImage(256, 256, 8);
-    writeImage((d / "bricks.png").string(), brickColorImage(256, 256, 8));
-    writeImage((d / "bricks-height.png").string(), height);
-    writeImage((d / "bricks-normal.png").string(), normalMapFromHeight(height, 6.0));
-    std::fprintf(stderr, "rays: wrote checker.png, bricks.png, bricks-height.png, bricks-normal.png in %s\n", dir.c_str());
+    OutputFiles files;  // the four are replaced together, once all are written
+    auto stage = [&](const char* name, const Image8& img) {
+        const std::string path = (d / name).string();
+        files.stage(path, encodeImageFile(path, img));
+    };
+    stage("checker.png", checkerImage(256, 8, light, dark));
+    stage("bricks.png", brickColorImage(256, 256, 8));
+    stage("bricks-height.png", height);
+    stage("bricks-normal.png", normalMapFromHeight(height, 6.0));
+    files.commit();
+    std::fprintf(stderr, "rays: wrote checker.png, bricks.png, bricks-height.png, bricks-normal.png in %s\n", printableMessage(dir).c_str());
     return 0;
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "rays/error.h"
+#include "rays/io/file_text.h"
 
 namespace rays {
 namespace {
@@ -196,7 +197,9 @@ KernelSpec parseKernelText(const std::string& text, const std::string& file) {
     int cols = 0, firstRowLine = 0, lastRowLine = 0, rows = 0;
     std::vector<double> values;
 
-    std::istringstream in(text);
+    std::string source = text;  // as scene files: a byte-order mark skipped, lone CRs end lines
+    source.erase(0, makeSourceText(source.data(), source.size()));
+    std::istringstream in(source);
     std::string line;
     int lineNo = 0;
     while (std::getline(in, line)) {

@@ -1,5 +1,6 @@
 #include "rays/io/file_text.h"
 
+#include <cstring>
 #include <fstream>
 #include <iterator>
 
@@ -16,7 +17,7 @@
 namespace rays {
 
 #ifdef RAYS_HAVE_POSIX_FILES
-FileText::FileText(const std::string& path) {
+FileText::FileText(const std::string& path, TextForm form) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return;  // CannotOpen
     struct stat st {};
@@ -43,9 +44,10 @@ FileText::FileText(const std::string& path) {
         }
     }
     ::close(fd);
+    if (status_ == Status::Ok && form == TextForm::Source) start_ = makeSourceText(data_.get(), size_);
 }
 #else
-FileText::FileText(const std::string& path) {
+FileText::FileText(const std::string& path, TextForm form) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return;  // CannotOpen
     const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -57,7 +59,14 @@ FileText::FileText(const std::string& path) {
     all.copy(data_.get(), all.size());
     size_ = all.size();
     status_ = Status::Ok;
+    if (form == TextForm::Source) start_ = makeSourceText(data_.get(), size_);
 }
 #endif
+
+size_t makeSourceText(char* text, size_t size) {
+    for (size_t i = 0; i < size; ++i)
+        if (text[i] == '\r' && (i + 1 == size || text[i + 1] != '\n')) text[i] = '\n';
+    return size >= 3 && std::memcmp(text, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
+}
 
 }  // namespace rays

@@ -11,20 +11,30 @@
 
 namespace rays {
 
+/// How the bytes are handed out: as they are, or as source text (scene files, include files, files
+/// #read): a UTF-8 byte-order mark at the start is skipped (editors write one) and a lone carriage
+/// return (old Mac OS line ends) becomes a line feed, so that every reader numbers lines as an editor
+/// does; "\r\n" is left as it is, and no line changes length.
+enum class TextForm { Bytes, Source };
+
 class FileText {
 public:
     enum class Status { Ok, CannotOpen, CannotRead };
 
-    explicit FileText(const std::string& path);
+    explicit FileText(const std::string& path, TextForm form = TextForm::Bytes);
 
     Status status() const { return status_; }
     /// The contents (valid while this object lives) when status() is Ok.
-    std::string_view text() const { return {data_.get(), size_}; }
+    std::string_view text() const { return {data_.get() + start_, size_ - start_}; }
 
 private:
     Status status_ = Status::CannotOpen;
     std::unique_ptr<char[]> data_;
     size_t size_ = 0;
+    size_t start_ = 0;  ///< bytes skipped at the start (a byte-order mark)
 };
+
+/// The source form of text (TextForm::Source) in place; returns how many bytes to skip at the start.
+size_t makeSourceText(char* text, size_t size);
 
 }  // namespace rays

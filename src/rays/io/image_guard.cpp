@@ -1,11 +1,14 @@
 #include "rays/io/image_guard.h"
 
+#include <zlib.h>
+
 #include <cstring>
 
 namespace rays {
 namespace {
 
 int be16(const uint8_t* p) { return (int(p[0]) << 8) | int(p[1]); }
+uint32_t be32(const uint8_t* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3]; }
 
 // The tables of one DHT segment (payload of `length` bytes at p), read exactly as stb_image reads
 // them: while payload is left, a class/id byte, 16 code counts and that many symbols, taken from the
@@ -87,6 +90,23 @@ bool pngChunksFit(const uint8_t* data, size_t size) {
     return true;
 }
 
+// The first chunk (up to IEND) whose CRC does not match its type and data, or "" when all do.
+// stb_image does not check CRCs, so a damaged file would otherwise be decoded as it stands.
+std::string pngChunkWithBadCrc(const uint8_t* data, size_t size) {
+    size_t pos = 8;
+    while (size - pos >= 12) {
+        const uint8_t* c = data + pos;
+        const uint32_t length = be32(c);
+        if (length > size - pos - 12) break;  // pngChunksFit reports it
+        const uint32_t stored = be32(c + 8 + length);
+        if (uint32_t(crc32(crc32(0L, Z_NULL, 0), c + 4, uInt(length) + 4)) != stored)
+            return std::string(reinterpret_cast<const char*>(c + 4), 4);
+        if (std::memcmp(c + 4, "IEND", 4) == 0) break;
+        pos += 12 + size_t(length);
+    }
+    return {};
+}
+
 }  // namespace
 
 std::string imageDecoderHazard(const uint8_t* data, size_t size) {
@@ -95,8 +115,11 @@ std::string imageDecoderHazard(const uint8_t* data, size_t size) {
     while (i < size && data[i] == 0xFF) ++i;
     if (i >= 1 && i < size && data[i] == 0xD8 && !jpegHuffmanTablesFit(data + i + 1, data + size))
         return "corrupt JPEG (Huffman table with more than 256 codes)";
-    if (size >= 8 && std::memcmp(data, "\x89PNG\r\n\x1a\n", 8) == 0 && !pngChunksFit(data, size))
-        return "corrupt PNG (a chunk runs past the end of the file)";
+    if (size >= 8 && std::memcmp(data, "\x89PNG\r\n\x1a\n", 8) == 0) {
+        if (!pngChunksFit(data, size)) return "corrupt PNG (a chunk runs past the end of the file)";
+        if (const std::string chunk = pngChunkWithBadCrc(data, size); !chunk.empty())
+            return "corrupt PNG (the CRC of a chunk '" + chunk + "' does not match its data)";
+    }
     if (size >= 2 && data[0] == 'P' && (data[1] == '5' || data[1] == '6') && !pnmHeaderNumbersFit(data + 2, data + size))
         return "corrupt PPM/PGM header (number too large)";
     return {};

@@ -16,7 +16,8 @@ inline constexpr int kMaxImageSide = 65536;
 /// "cannot read image: <reason>"). Today: a JPEG whose Huffman table (DHT segment) declares more
 /// than 256 codes, which overflows stb_image 2.27's tables, and a PPM/PGM header number beyond
 /// 2^31 − 1, which overflows its int (both fixed upstream in 2.28); a PNG chunk running past the
-/// end of the file, for which stb allocates the declared length (up to 4 GiB) first.
+/// end of the file, for which stb allocates the declared length (up to 4 GiB) first; a PNG chunk
+/// whose CRC does not match (stb does not check them: a damaged file would be decoded as it is).
 std::string imageDecoderHazard(const uint8_t* data, size_t size);
 
 /// Removes the zero-length IDAT chunks of a PNG (legal, and empty): stb_image 2.27 copies an empty

@@ -19,6 +19,7 @@
 
 #include "rays/error.h"
 #include "rays/io/image_guard.h"
+#include "rays/io/output_files.h"
 
 #define STBI_NO_STDIO
 #define STBI_ONLY_PNG
@@ -329,22 +330,6 @@ std::string unknownExtensionMessage(const std::string& ext) {
 
 std::string errnoText(int e) { return std::strerror(e); }
 
-/// Writes all of data to fd; returns 0 or an errno value.
-int writeAll(int fd, const uint8_t* data, size_t size) {
-    while (size > 0) {
-        const ssize_t n = ::write(fd, data, std::min(size, size_t(1) << 30));
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            return errno;
-        }
-        data += n;
-        size -= size_t(n);
-    }
-    return 0;
-}
-
-std::atomic<unsigned> tempCounter{0};
-
 }  // namespace
 
 bool isSupportedImageExtension(const std::string& path) {
@@ -369,7 +354,7 @@ std::vector<uint8_t> encodeImage(const std::string& extension, const Image8& img
     }
 }
 
-void writeImage(const std::string& path, const Image8& img, int jpegQuality) {
+std::vector<uint8_t> encodeImageFile(const std::string& path, const Image8& img, int jpegQuality) {
     if (!isSupportedImageExtension(path)) {
         const size_t slash = path.find_last_of('/');
         const size_t dot = path.find_last_of('.');
@@ -382,28 +367,17 @@ void writeImage(const std::string& path, const Image8& img, int jpegQuality) {
     } catch (const EncodeFailure& e) {
         failFile(path, e.msg);
     }
-    writeFileAtomically(path, data);
+    return data;
+}
+
+void writeImage(const std::string& path, const Image8& img, int jpegQuality) {
+    writeFileAtomically(path, encodeImageFile(path, img, jpegQuality));
 }
 
 void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& data) {
-    const std::string tmp =
-        path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(tempCounter.fetch_add(1));
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0666);
-    if (fd < 0) failFile(path, "cannot create file: " + errnoText(errno));
-
-    // No fsync: the rename makes the update atomic for readers of the file, which is what matters for a
-    // renderer overwriting its output; durability across a power cut is not worth the latency here.
-    int e = writeAll(fd, data.data(), data.size());
-    if (::close(fd) != 0 && e == 0) e = errno;
-    if (e != 0) {
-        ::unlink(tmp.c_str());
-        failFile(path, "write failed: " + errnoText(e));
-    }
-    if (::rename(tmp.c_str(), path.c_str()) != 0) {
-        e = errno;
-        ::unlink(tmp.c_str());
-        failFile(path, "cannot replace file: " + errnoText(e));
-    }
+    OutputFiles files;
+    files.stage(path, data);
+    files.commit();
 }
 
 namespace {

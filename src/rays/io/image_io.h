@@ -21,6 +21,10 @@ bool isPngPath(const std::string& path);
 /// Channels a format cannot store are dropped (JPEG and PPM drop alpha; BMP stores grey as RGB).
 void writeImage(const std::string& path, const Image8& img, int jpegQuality = 90);
 
+/// The bytes writeImage(path, img, jpegQuality) writes (format by path's extension); throws rays::Error
+/// "PATH: error: ..." as writeImage does. For a run that commits several files together (OutputFiles).
+std::vector<uint8_t> encodeImageFile(const std::string& path, const Image8& img, int jpegQuality = 90);
+
 /// Encodes img to memory in the format named by extension ("png", ".png", "out.PNG" all work).
 /// Throws rays::Error "error: ..." for an unknown extension, an invalid image or an encoder failure.
 std::vector<uint8_t> encodeImage(const std::string& extension, const Image8& img, int jpegQuality = 90);
@@ -32,7 +36,8 @@ int pngZlibStrategy(const Image8& img);
 int pngStrategyLastRow(int height);
 
 /// Writes data to path atomically, as writeImage does (temporary file in the same directory, renamed
-/// over path when complete; on failure removed, and rays::Error "PATH: error: ..." thrown).
+/// over path when complete; on failure removed, and rays::Error "PATH: error: ..." thrown). A file
+/// replaced keeps its permission bits (OutputFiles, which commits several files together).
 void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& data);
 
 /// PNG encoding row by row, top row first, into memory: the bytes encodeImage("png", img) gives when

@@ -10,7 +10,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 #include <string_view>
 
 #include <tiny_obj_loader.h>
@@ -66,6 +69,32 @@ std::string readWholeFile(const std::string& path) {
     ::close(fd);
     return text;
 }
+
+// MTL files as tinyobjloader's MaterialFileReader finds them (the OBJ's folder, or as named), read
+// as source text: a UTF-8 byte-order mark at the start would otherwise hide the first statement
+// (usually the first `newmtl`, losing that material). tinyobj ends lines at \n, \r\n and \r itself.
+class SourceMtlReader : public tinyobj::MaterialReader {
+public:
+    explicit SourceMtlReader(std::string folder) : folder_(std::move(folder)) {}
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* byName, std::string* warn, std::string* err) override {
+        std::ifstream file(folder_ + name, std::ios::binary);
+        if (!file) {
+            if (warn) *warn += "Material file [ " + name + " ] not found in a path : " + folder_ + "\n";
+            return false;
+        }
+        std::ostringstream bytes;
+        bytes << file.rdbuf();
+        std::string text = bytes.str();
+        if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+        std::istringstream in(text);
+        tinyobj::LoadMtl(byName, materials, &in, warn, err);
+        return true;
+    }
+
+private:
+    std::string folder_;  ///< "" or ending in '/'
+};
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -262,32 +291,36 @@ std::vector<std::string> messageLines(const std::string& msg) {
 }  // namespace
 
 ObjMesh loadObj(const std::string& path) {
-    const bool gz = isGzipName(path);
     std::string text = readWholeFile(path);
+    // A UTF-8 byte-order mark (some editors write one) is not part of the first statement.
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
     PreScanner(path, text).run();
-    if (!gz) std::string().swap(text);
 
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    // A plain file is read by tinyobjloader itself, its MTL searched in the OBJ's folder; a gzip file
-    // is parsed from the decompressed text, without materials.
-    const bool ok = gz ? reader.ParseFromString(text, "", config) : reader.ParseFromFile(path, config);
-    std::string().swap(text);
-    for (const std::string& w : messageLines(reader.Warning())) std::cerr << path << ": warning: " << w << "\n";
+    // The text read once is what tinyobjloader parses; MTL files are searched in the OBJ's folder.
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warning, error;
+    const size_t slash = path.find_last_of('/');
+    SourceMtlReader mtlReader(slash == std::string::npos ? std::string() : path.substr(0, slash + 1));
+    bool ok = false;
+    {
+        std::stringbuf buffer(std::move(text));
+        std::istream in(&buffer);
+        ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &mtlReader, true, false);
+    }
+    for (const std::string& w : messageLines(warning)) std::cerr << formatWarning(SourceLoc{path, 0, 0}, w) << "\n";
     if (!ok) {
-        const std::vector<std::string> lines = messageLines(reader.Error());
+        const std::vector<std::string> lines = messageLines(error);
         std::string msg;
         for (const std::string& l : lines) msg += (msg.empty() ? "" : "; ") + l;
         if (msg.empty()) msg = "cannot parse OBJ file";
-        const int line = lineFromMessage(reader.Error());
+        const int line = lineFromMessage(error);
         fail(SourceLoc{path, line, line > 0 ? 1 : 0}, msg);
     }
     // A non-fatal error text (e.g. from the MTL parser) is still worth showing.
-    for (const std::string& w : messageLines(reader.Error())) std::cerr << path << ": warning: " << w << "\n";
+    for (const std::string& w : messageLines(error)) std::cerr << formatWarning(SourceLoc{path, 0, 0}, w) << "\n";
 
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
     ObjMesh mesh;
     mesh.positions.resize(attrib.vertices.size() / 3);
     for (size_t i = 0; i < mesh.positions.size(); ++i)
@@ -300,7 +333,7 @@ ObjMesh loadObj(const std::string& path) {
         mesh.uvs[i] = {double(attrib.texcoords[2 * i]), double(attrib.texcoords[2 * i + 1])};
 
     const std::string dir = path.find('/') == std::string::npos ? "" : path.substr(0, path.rfind('/') + 1);
-    for (const tinyobj::material_t& m : reader.GetMaterials()) {
+    for (const tinyobj::material_t& m : materials) {
         ObjMesh::Material mat;
         mat.name = m.name;
         mat.diffuse = Vec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
@@ -311,12 +344,12 @@ ObjMesh loadObj(const std::string& path) {
     }
 
     size_t total = 0;
-    for (const tinyobj::shape_t& s : reader.GetShapes()) total += s.mesh.num_face_vertices.size();
+    for (const tinyobj::shape_t& s : shapes) total += s.mesh.num_face_vertices.size();
     mesh.faces.reserve(total);
     mesh.faceMaterial.reserve(total);
     const int nv = int(mesh.positions.size()), nn = int(mesh.normals.size()), nt = int(mesh.uvs.size());
     const int nm = int(mesh.materials.size());
-    for (const tinyobj::shape_t& s : reader.GetShapes()) {
+    for (const tinyobj::shape_t& s : shapes) {
         size_t k = 0;
         for (size_t f = 0; f < s.mesh.num_face_vertices.size(); ++f) {
             const size_t n = s.mesh.num_face_vertices[f];

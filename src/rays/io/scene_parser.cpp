@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -23,6 +24,16 @@ namespace rays {
 namespace {
 
 using namespace scenetext;
+
+// A number as messages quote it: "1e+31", "0.5".
+std::string numberText(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// "must be between LO and HI" for a value with no rule of its own.
+std::string betweenRule(double lo, double hi) { return "must be between " + numberText(lo) + " and " + numberText(hi); }
 
 class Parser : TokenReader {
 public:
@@ -371,7 +382,13 @@ private:
         } else {
             return false;
         }
+        checkTransform(m, t);
         return true;
+    }
+    // A transformation made singular or infinite by the item at `item` (scale 1e300 twice) would
+    // make the object vanish: an error, as a zero scale is.
+    void checkTransform(const Transform& m, const Token& item) {
+        if (!m.isUsable()) fail(loc(item), "the transformation overflows or becomes singular here");
     }
     int storeTextureTransform(const Transform& m, int previous) {
         if (m.isIdentity()) return previous;
@@ -491,7 +508,8 @@ private:
                     const Value v = expr();
                     dst = v.c[0];
                     if (!std::isfinite(dst)) fail(loc(at), std::string(item.text) + " is not a finite number");
-                    if (!(dst >= lo && dst <= hi)) fail(loc(at), std::string(item.text) + " " + rule);
+                    if (!(dst >= lo && dst <= hi))
+                        fail(loc(at), std::string(item.text) + " " + (*rule ? std::string(rule) : betweenRule(lo, hi)) + ", got " + numberText(dst));
                 }
                 seen = true;
             };
@@ -685,7 +703,9 @@ private:
                 break;
             }
             if (tok_.kind == TokenKind::End) fail(loc(open), "'{' of '" + name + "' is never closed (end of file reached)");
+            const Token item = tok_;
             if (!modifier(o, m) && !unsupportedHere()) unknown(name);
+            checkTransform(m, item);
         }
         prepareObject(o, m);
         scene_.objects.push_back(std::move(o));
@@ -718,6 +738,7 @@ private:
         if (!fs::is_regular_file(path, ec)) error("cannot open OBJ file '" + path.string() + "'");
         advance();
         const ObjMesh obj = loadObj(path.string());  // errors name the OBJ file and its line
+        if (obj.faces.empty()) fail(loc(kw), "OBJ file '" + path.string() + "' has no faces (is it an OBJ file?)");
         Material& mat = o.material;
         mat.color = {0.8, 0.8, 0.8};
         mat.ambient = 0.2;
@@ -780,13 +801,15 @@ Scene parseText(std::string_view text, const std::string& file, const ParseOptio
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& fileName, const ParseOptions& options) {
-    return parseText(text, fileName, options);
+    std::string source = text;  // as a file is read: byte-order mark skipped, lone CRs are line ends
+    const size_t skip = makeSourceText(source.data(), source.size());
+    return parseText(std::string_view(source).substr(skip), fileName, options);
 }
 
 Scene loadScene(const std::string& path, const ParseOptions& options) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) failFile(path, "is a directory, not a scene file");
-    const FileText file(path);
+    const FileText file(path, TextForm::Source);
     if (file.status() == FileText::Status::CannotOpen) failFile(path, "cannot open scene file");
     if (file.status() == FileText::Status::CannotRead) failFile(path, "cannot read scene file");
     const sdl::Dialect dialect = options.language.dialect;

@@ -48,15 +48,14 @@ TokenReader::TokenReader(std::string_view text, const std::string& file, const P
 
 void TokenReader::expectSymbol(char c, std::string_view context) {
     if (!isSymbol(c))
-        error("expected '" + std::string(1, c) + "' " + std::string(context) + ", found " + describe(tok_));
+        error("expected '" + std::string(1, c) + "'" + (std::string(context).empty() ? "" : " " + std::string(context)) +
+              ", found " + describe(tok_));
     advance();
 }
 
 // ---- warnings --------------------------------------------------------------------------
 void TokenReader::warn(const SourceLoc& at, const std::string& msg) {
-    const std::string line = formatError(at, msg);
-    // formatError says "error:"; warnings say "warning:".
-    const std::string text = line.substr(0, line.find(": error: ")) + ": warning: " + msg;
+    const std::string text = formatWarning(at, msg);
     if (opt_.warn) opt_.warn(text);
     else std::cerr << text << '\n';
 }

@@ -58,6 +58,20 @@ double Transform::determinant() const {
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
+bool Transform::isUsable() const {
+    auto finite = [](const Transform& t) {
+        for (const auto& row : t.m)
+            for (double v : row)
+                if (!std::isfinite(v)) return false;
+        return true;
+    };
+    const double det = determinant();
+    if (!finite(*this) || !std::isfinite(det) || det == 0) return false;
+    const Transform inv = inverse();
+    const double invDet = inv.determinant();
+    return finite(inv) && std::isfinite(invDet) && invDet != 0;
+}
+
 Transform Transform::inverse() const {
     const double inv = 1.0 / determinant();
     Transform r;

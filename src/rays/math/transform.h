@@ -39,6 +39,10 @@ struct Transform {
     /// Inverse; the caller guarantees determinant() != 0.
     Transform inverse() const;
     bool isIdentity() const;
+    /// True when every entry, the determinant and the inverse are finite and the determinant is not
+    /// 0: a transform an object can be drawn with (false after `scale 1e300 scale 1e300` overflows,
+    /// or `scale 1e-200 scale 1e-200` underflows to 0).
+    bool isUsable() const;
 };
 
 /// Composition: (a * b).point(p) == a.point(b.point(p)).

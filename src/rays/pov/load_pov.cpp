@@ -15,7 +15,8 @@ namespace rays::pov {
 
 namespace {
 
-void printLine(const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); }
+// Warnings: one printable, bounded line each; #debug text keeps its line breaks and tabs.
+void printLine(const std::string& s) { std::fprintf(stderr, "%s\n", printableMessage(s).c_str()); }
 
 }  // namespace
 
@@ -25,7 +26,10 @@ Scene parsePovText(std::string_view text, const std::string& shownName, const st
     PovHost host(parsed);
     sdl::Diagnostics d;
     d.warning = options.warn ? options.warn : std::function<void(const std::string&)>(printLine);
-    d.debug = [](const std::string& s) { std::fwrite(s.data(), 1, s.size(), stderr); };
+    d.debug = [](const std::string& s) {
+        const std::string text = printableMessage(s, true);
+        std::fwrite(text.data(), 1, text.size(), stderr);
+    };
     d.checkInterrupt = options.checkInterrupt;
     sdl::Interpreter in(options.language, host, d, limits);
     host.setFileFinder([&in](const std::string& name) { return in.findFile(name); });

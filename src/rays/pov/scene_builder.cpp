@@ -219,6 +219,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
+    // Finite steps can still overflow or underflow together (scale 1e300 scale 1e300): the object
+    // would vanish without a word.
+    if (!toWorld.isUsable())
+        throw Error(notes_.where(item.loc) + ": error: the object's transformation overflows or is singular");
     if (look.set) {  // texture space → world
         look.pigmentToObject = parent * look.pigmentToObject;
         look.normalToObject = parent * look.normalToObject;

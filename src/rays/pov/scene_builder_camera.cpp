@@ -42,6 +42,9 @@ void SceneBuilder::addCamera(const Item& cam) {
             dir = m.vector(dir);
             up = m.vector(up);
             right = m.vector(right);
+            auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+            if (!finite(loc) || !finite(lookAt) || !finite(dir) || !finite(up) || !finite(right))
+                throw Error(notes_.where(e.loc) + ": error: the camera's transformation overflows (its vectors are no longer finite)");
             continue;
         }
         switch (e.kw()) {

@@ -80,6 +80,9 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
     l.position = world.point(pos);
     l.axis1 = world.vector(l.axis1);
     l.axis2 = world.vector(l.axis2);
+    auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    if (!finite(l.position) || !finite(l.axis1) || !finite(l.axis2))
+        throw Error(notes_.where(item.loc) + ": error: the light's transformation overflows (its position is no longer finite)");
     if (l.spot != Light::Spot::None) {
         // The manual's defaults: spotlights radius 30 and falloff 45 degrees (cosines kept);
         // cylindrical lights 0.75 and 1, measured to be distances from the axis.

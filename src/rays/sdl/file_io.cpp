@@ -52,7 +52,7 @@ void Interpreter::dirFopen(const Loc& at) {
     if (mode == Kw::read) {
         const std::string path = findFile(file);
         if (path.empty()) error(at, "cannot find \"" + file + "\" to read");
-        FileText text(path);
+        FileText text(path, TextForm::Source);
         if (text.status() != FileText::Status::Ok) error(at, "cannot read \"" + file + "\"");
         if (text.text().size() > kMaxReadFile) error(at, "\"" + file + "\" is larger than 64 MiB");
         h->content.assign(text.text());
@@ -60,6 +60,20 @@ void Interpreter::dirFopen(const Loc& at) {
         const fs::path p = fs::path(file).is_absolute() ? fs::path(file) : fs::path(sceneFolder_) / file;
         if (!insideFolder(sceneFolder_, p))
             error(at, "#fopen may only write files in the scene's folder or below it (\"" + file + "\" is outside)");
+        std::error_code ec;
+        for (const auto& f : files_)  // a run never writes over its own input
+            if (fs::exists(p, ec) && fs::equivalent(p, f->path, ec))
+                error(at, "#fopen would overwrite \"" + f->shownName + "\", a scene file this parse reads");
+        // Nor one of the run's own outputs (compared by name, links and ".." resolved).
+        auto resolved = [](const fs::path& q) {
+            std::error_code e;
+            const fs::path r = fs::weakly_canonical(fs::absolute(q, e), e);
+            return e ? fs::path() : r;
+        };
+        const fs::path target = resolved(p);
+        for (const std::string& out : options_.outputFiles)
+            if (!out.empty() && !target.empty() && resolved(out) == target)
+                error(at, "#fopen would overwrite \"" + out + "\", an output of this run");
         h->writing = true;
         h->out = std::fopen(p.string().c_str(), mode == Kw::write ? "wb" : "ab");
         if (!h->out) error(at, "cannot open \"" + file + "\" for writing");

@@ -74,7 +74,7 @@ bool isDirectory(const std::string& p) {
 const SourceFile& Interpreter::openFile(const std::string& path, const std::string& shownName) {
     if (auto it = fileByPath_.find(path); it != fileByPath_.end()) return *files_[it->second];
     if (isDirectory(path)) failFile(shownName, "is a directory, not a scene file");
-    FileText text(path);
+    FileText text(path, TextForm::Source);
     if (text.status() == FileText::Status::CannotOpen) failFile(shownName, "cannot open file");
     if (text.status() == FileText::Status::CannotRead) failFile(shownName, "cannot read file");
     auto f = std::make_unique<SourceFile>();

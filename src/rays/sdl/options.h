@@ -45,6 +45,9 @@ struct LanguageOptions {
     /// compatibility until a #version directive).
     double version = 0;
     bool strict = false;  ///< a feature that is parsed but not rendered yet is an error, not a warning
+    /// The files the run writes besides what the scene writes (the image, the edge mask; relative
+    /// to the working folder): `#fopen ... write` may not name one of them.
+    std::vector<std::string> outputFiles;
 };
 
 }  // namespace rays::sdl
