@@ -183,6 +183,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         }
         if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
         const Kw k = e.kw();
+        if (collectBlobEntry(kind, e)) continue;
         if ((kind == Kw::union_ || kind == Kw::merge || kind == Kw::light_group || kind == Kw::difference ||
              kind == Kw::intersection) && isObjectKind(k)) {
             children.push_back(&e.args[0].item());
@@ -260,6 +261,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             break;
         }
         case Kw::text: addText(font, args, item.loc, toWorld, own ? *own : fallback_, inverse); break;
+        case Kw::blob: addBlob(item.loc, toWorld, own ? *own : fallback_, inverse); break;
         default:
             addPrimitive(kind, args, item.loc, toWorld, own ? *own : fallback_, open, inverse);
             terms_.clear();

@@ -6,6 +6,7 @@
 #include "rays/scene/csg.h"
 #include "rays/scene/mesh.h"
 #include "rays/scene/text_shape.h"
+#include "rays/scene/shapes/blob.h"
 #include "rays/scene/shapes/disc.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
@@ -31,6 +32,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Poly: return "Poly";
         case ShapeType::Superellipsoid: return "Superellipsoid";
         case ShapeType::Prism: return "Prism";
+        case ShapeType::Blob: return "Blob";
     }
     return "Object";
 }
@@ -223,6 +225,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Poly: found = hitPolySurface(o, r, tMin, tMax, h); break;
         case ShapeType::Superellipsoid: found = hitSuperellipsoid(o, r, tMin, tMax, h); break;
         case ShapeType::Prism: found = hitPrism(o, r, tMin, tMax, h); break;
+        case ShapeType::Blob: found = hitBlob(o, r, tMin, tMax, h); break;
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
@@ -255,7 +258,7 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Text: b = o.text->bounds; break;
         case ShapeType::Torus: b = torusBounds(o); break;
         case ShapeType::Disc: b = discBounds(o); break;
-        case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: b = o.data->bounds; break;
+        case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: case ShapeType::Blob: b = o.data->bounds; break;
         case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);
