@@ -308,9 +308,10 @@ TEST(PovShapesNotes, RenderedShapesAreNoLongerNoted) {
     const Scene s = build(
         "torus { 1, 0.2 } disc { 0, y, 1 } polygon { 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }"
         " quadric { <1, 1, 1>, 0, 0, -1 } superellipsoid { <1, 1> }"
-        " blob { sphere { 0, 1, 2 } } julia_fractal { <0, 0, 0, 0> }",
+        " blob { sphere { 0, 1, 2 } } julia_fractal { <0, 0, 0, 0> }"
+        " lathe { 3, <1, 0>, <2, 1>, <1, 2> } sor { 4, <0, 0>, <1, 1>, <1.5, 2>, <0.5, 4> }",
         &warnings);
-    EXPECT_EQ(s.objects.size(), 6u);
+    EXPECT_EQ(s.objects.size(), 8u);
     std::string all;
     for (const std::string& w : warnings) all += w + "\n";
     EXPECT_EQ(all.find("torus"), std::string::npos) << all;
@@ -318,6 +319,8 @@ TEST(PovShapesNotes, RenderedShapesAreNoLongerNoted) {
     EXPECT_EQ(all.find("polygon"), std::string::npos) << all;
     EXPECT_EQ(all.find("quadric"), std::string::npos) << all;
     EXPECT_EQ(all.find("blob"), std::string::npos) << all;
+    EXPECT_EQ(all.find("lathe"), std::string::npos) << all;
+    EXPECT_EQ(all.find("sor"), std::string::npos) << all;
     EXPECT_NE(all.find("julia_fractal"), std::string::npos) << all;
 }
 

@@ -201,7 +201,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep:
                 terms_.push_back(&e);  // polynomial's terms, a prism's kind
                 break;
-            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism; break;
+            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism || kind == Kw::sor; break;
             case Kw::ttf: case Kw::internal: font = &e; break;
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
@@ -369,7 +369,7 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             break;
         }
     }
-    o.open = open && (o.type == ShapeType::Cone || o.type == ShapeType::Prism);
+    o.open = open && (o.type == ShapeType::Cone || o.type == ShapeType::Prism || o.type == ShapeType::Sor);
     o.material = material(look);
     prepareObject(o, toWorld);
     emit(o, inverse);

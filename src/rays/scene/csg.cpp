@@ -5,8 +5,10 @@
 
 #include "rays/scene/text_shape.h"
 #include "rays/scene/shapes/blob.h"
+#include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/poly.h"
 #include "rays/scene/shapes/prism.h"
+#include "rays/scene/shapes/sor.h"
 #include "rays/scene/shapes/superellipsoid.h"
 #include "rays/scene/shapes/torus.h"
 
@@ -209,6 +211,8 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::Superellipsoid: return insideSuperellipsoid(o, p);
         case ShapeType::Prism: return insidePrism(o, p);
         case ShapeType::Blob: return insideBlob(o, p);
+        case ShapeType::Lathe: return insideLathe(o, p);
+        case ShapeType::Sor: return insideSor(o, p);
         case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Disc: case ShapeType::Polygon: return -1;
     }
     return -1;
