@@ -8,6 +8,7 @@
 #include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/sor.h"
+#include "rays/scene/shapes/sphere_sweep.h"
 
 namespace rays::pov {
 
@@ -100,6 +101,25 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             }
             o.type = ShapeType::Lathe;
             return makeLathe(pts, spline, o, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::sphere_sweep: {
+            // sphere_sweep { SPLINE N, centre, radius, ... }: linear_spline only (b_spline and
+            // cubic_spline stay noted); the last spline keyword written counts.
+            Kw spline = Kw::linear_spline;
+            for (const Entry* e : terms)
+                if (e->kw() == Kw::linear_spline || e->kw() == Kw::b_spline || e->kw() == Kw::cubic_spline) spline = e->kw();
+            if (spline != Kw::linear_spline) return ShapeBuild::NotAShape;
+            need(1);
+            const size_t n = size_t(std::max(0.0, toFloat(*a[0])));
+            std::vector<Vec3> centres;
+            std::vector<double> radii;
+            for (size_t i = 1; i + 1 < a.size() && centres.size() < n; i += 2) {
+                centres.push_back(toVec3(*a[i]));
+                radii.push_back(toFloat(*a[i + 1]));
+            }
+            o.type = ShapeType::SphereSweep;
+            data = std::make_unique<ShapeData>();
+            return makeSphereSweep(centres, radii, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::disc: {
             need(3);

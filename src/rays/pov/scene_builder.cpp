@@ -198,8 +198,8 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::double_illuminate: doubleIlluminate = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::xyz: case Kw::quadratic_spline: case Kw::cubic_spline: case Kw::bezier_spline:
-            case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep:
-                terms_.push_back(&e);  // polynomial's terms, a prism's kind
+            case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep: case Kw::b_spline:
+                terms_.push_back(&e);  // polynomial's terms, a prism's, lathe's or sphere_sweep's kind
                 break;
             case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism || kind == Kw::sor; break;
             case Kw::ttf: case Kw::internal: font = &e; break;

@@ -9,6 +9,7 @@
 #include "rays/scene/shapes/poly.h"
 #include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/sor.h"
+#include "rays/scene/shapes/sphere_sweep.h"
 #include "rays/scene/shapes/superellipsoid.h"
 #include "rays/scene/shapes/torus.h"
 
@@ -213,6 +214,7 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::Blob: return insideBlob(o, p);
         case ShapeType::Lathe: return insideLathe(o, p);
         case ShapeType::Sor: return insideSor(o, p);
+        case ShapeType::SphereSweep: return insideSphereSweep(o, p);
         case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Disc: case ShapeType::Polygon: return -1;
     }
     return -1;

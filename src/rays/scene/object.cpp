@@ -13,6 +13,7 @@
 #include "rays/scene/shapes/poly.h"
 #include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/sor.h"
+#include "rays/scene/shapes/sphere_sweep.h"
 #include "rays/scene/shapes/superellipsoid.h"
 #include "rays/scene/shapes/torus.h"
 
@@ -37,6 +38,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Blob: return "Blob";
         case ShapeType::Lathe: return "Lathe";
         case ShapeType::Sor: return "Sor";
+        case ShapeType::SphereSweep: return "SphereSweep";
     }
     return "Object";
 }
@@ -232,6 +234,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Blob: found = hitBlob(o, r, tMin, tMax, h); break;
         case ShapeType::Lathe: found = hitLathe(o, r, tMin, tMax, h); break;
         case ShapeType::Sor: found = hitSor(o, r, tMin, tMax, h); break;
+        case ShapeType::SphereSweep: found = hitSphereSweep(o, r, tMin, tMax, h); break;
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
@@ -265,7 +268,7 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Torus: b = torusBounds(o); break;
         case ShapeType::Disc: b = discBounds(o); break;
         case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: case ShapeType::Blob:
-        case ShapeType::Lathe: case ShapeType::Sor: b = o.data->bounds; break;
+        case ShapeType::Lathe: case ShapeType::Sor: case ShapeType::SphereSweep: b = o.data->bounds; break;
         case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);
