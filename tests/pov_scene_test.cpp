@@ -223,16 +223,16 @@ TEST(PovGlobals, AssumedGammaDefaultsByVersion) {
 TEST(PovNotes, UnrenderedFeaturesWarnOnceEachOrFailWithStrict) {
     const std::string text =
         "#declare Unused = isosurface { function { x } }\n"  // declared, never used: no note
-        "blob { sphere { 0, 1, 1 } }\nblob { sphere { 0, 2, 1 } }\n"
+        "julia_fractal { <0, 0, 0, 0> }\njulia_fractal { <0, 0, 1, 0> }\n"
         "sphere { 0, 1 pigment { cells color_map { [0 rgb 0] [1 rgb 1] } } }\n";
     const Built b = build(text);
     ASSERT_EQ(b.error, "");
     ASSERT_EQ(b.warnings.size(), 2u);
-    EXPECT_EQ(b.warnings[0], "scene.pov:2:1: warning: not rendered yet: blob (left out)");
+    EXPECT_EQ(b.warnings[0], "scene.pov:2:1: warning: not rendered yet: julia_fractal (left out)");
     EXPECT_EQ(b.warnings[1], "scene.pov:4:25: warning: not rendered yet: pigment pattern cells (drawn in its mean colour)");
     ASSERT_EQ(b.scene.objects.size(), 1u);
     EXPECT_TRUE(near(b.scene.objects[0].material.color, {0.5, 0.5, 0.5}));
-    EXPECT_EQ(build(text, true).error, "scene.pov:2:1: error: not rendered yet: blob (--strict)");
+    EXPECT_EQ(build(text, true).error, "scene.pov:2:1: error: not rendered yet: julia_fractal (--strict)");
 }
 
 TEST(PovGeometry, TraceAndExtentsAnswerAsPovRayDoes) {

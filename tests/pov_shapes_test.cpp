@@ -307,16 +307,21 @@ TEST(PovShapesNotes, RenderedShapesAreNoLongerNoted) {
     std::vector<std::string> warnings;
     const Scene s = build(
         "torus { 1, 0.2 } disc { 0, y, 1 } polygon { 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }"
-        " quadric { <1, 1, 1>, 0, 0, -1 } superellipsoid { <1, 1> } blob { sphere { 0, 1, 1 } }",
+        " quadric { <1, 1, 1>, 0, 0, -1 } superellipsoid { <1, 1> }"
+        " blob { sphere { 0, 1, 2 } } julia_fractal { <0, 0, 0, 0> }"
+        " lathe { 3, <1, 0>, <2, 1>, <1, 2> } sor { 4, <0, 0>, <1, 1>, <1.5, 2>, <0.5, 4> }",
         &warnings);
-    EXPECT_EQ(s.objects.size(), 5u);
+    EXPECT_EQ(s.objects.size(), 8u);
     std::string all;
     for (const std::string& w : warnings) all += w + "\n";
     EXPECT_EQ(all.find("torus"), std::string::npos) << all;
     EXPECT_EQ(all.find("disc"), std::string::npos) << all;
     EXPECT_EQ(all.find("polygon"), std::string::npos) << all;
     EXPECT_EQ(all.find("quadric"), std::string::npos) << all;
-    EXPECT_NE(all.find("blob"), std::string::npos) << all;
+    EXPECT_EQ(all.find("blob"), std::string::npos) << all;
+    EXPECT_EQ(all.find("lathe"), std::string::npos) << all;
+    EXPECT_EQ(all.find("sor"), std::string::npos) << all;
+    EXPECT_NE(all.find("julia_fractal"), std::string::npos) << all;
 }
 
 // Two tori (one cut by a box), a disc and a polygon with holes and the reference's quartic torus

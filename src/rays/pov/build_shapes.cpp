@@ -5,7 +5,10 @@
 #include "rays/error.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/prism.h"
+#include "rays/scene/shapes/sor.h"
+#include "rays/scene/shapes/sphere_sweep.h"
 
 namespace rays::pov {
 
@@ -73,6 +76,50 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             o.r1 = y1;
             data = std::make_unique<ShapeData>();
             return y1 > y0 && makePrism(pts, y0, y1, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::lathe: case Kw::sor: {
+            // lathe { [SPLINE] N, <x, y>... }, sor { N, <r, h>... }; the last spline keyword written counts.
+            LatheSpline spline = LatheSpline::Linear;
+            for (const Entry* e : terms) {
+                const Kw k = e->kw();
+                if (k == Kw::linear_spline) spline = LatheSpline::Linear;
+                else if (k == Kw::quadratic_spline) spline = LatheSpline::Quadratic;
+                else if (k == Kw::cubic_spline) spline = LatheSpline::Cubic;
+                else if (k == Kw::bezier_spline) spline = LatheSpline::Bezier;
+            }
+            need(1);
+            const size_t n = size_t(std::max(0.0, toFloat(*a[0])));
+            std::vector<Vec3> pts;
+            for (size_t i = 1; i < a.size() && pts.size() < n; ++i) {
+                const Vec3 p = toVec3(*a[i]);
+                pts.push_back(Vec3{p.x, p.y, 0});
+            }
+            data = std::make_unique<ShapeData>();
+            if (kind == Kw::sor) {
+                o.type = ShapeType::Sor;
+                return makeSor(pts, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+            }
+            o.type = ShapeType::Lathe;
+            return makeLathe(pts, spline, o, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::sphere_sweep: {
+            // sphere_sweep { SPLINE N, centre, radius, ... }: linear_spline only (b_spline and
+            // cubic_spline stay noted); the last spline keyword written counts.
+            Kw spline = Kw::linear_spline;
+            for (const Entry* e : terms)
+                if (e->kw() == Kw::linear_spline || e->kw() == Kw::b_spline || e->kw() == Kw::cubic_spline) spline = e->kw();
+            if (spline != Kw::linear_spline) return ShapeBuild::NotAShape;
+            need(1);
+            const size_t n = size_t(std::max(0.0, toFloat(*a[0])));
+            std::vector<Vec3> centres;
+            std::vector<double> radii;
+            for (size_t i = 1; i + 1 < a.size() && centres.size() < n; i += 2) {
+                centres.push_back(toVec3(*a[i]));
+                radii.push_back(toFloat(*a[i + 1]));
+            }
+            o.type = ShapeType::SphereSweep;
+            data = std::make_unique<ShapeData>();
+            return makeSphereSweep(centres, radii, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::disc: {
             need(3);

@@ -1,4 +1,5 @@
-// POV-Ray items → the shapes of scene/shapes (torus, disc, polygon, quadric, cubic, quartic, poly,
+// POV-Ray items → the shapes of scene/shapes (torus, disc, polygon, superellipsoid, prism, lathe,
+// sor, quadric, cubic, quartic, poly,
 // polynomial), from the POV-Ray 3.7 reference's syntax of each.
 #pragma once
 #include <memory>

@@ -183,6 +183,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         }
         if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
         const Kw k = e.kw();
+        if (collectBlobEntry(kind, e)) continue;
         if ((kind == Kw::union_ || kind == Kw::merge || kind == Kw::light_group || kind == Kw::difference ||
              kind == Kw::intersection) && isObjectKind(k)) {
             children.push_back(&e.args[0].item());
@@ -197,10 +198,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::double_illuminate: doubleIlluminate = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::xyz: case Kw::quadratic_spline: case Kw::cubic_spline: case Kw::bezier_spline:
-            case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep:
-                terms_.push_back(&e);  // polynomial's terms, a prism's kind
+            case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep: case Kw::b_spline:
+                terms_.push_back(&e);  // polynomial's terms, a prism's, lathe's or sphere_sweep's kind
                 break;
-            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism; break;
+            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism || kind == Kw::sor; break;
             case Kw::ttf: case Kw::internal: font = &e; break;
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
@@ -264,6 +265,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             break;
         }
         case Kw::text: addText(font, args, item.loc, toWorld, own ? *own : fallback_, inverse); break;
+        case Kw::blob: addBlob(item.loc, toWorld, own ? *own : fallback_, inverse); break;
         default:
             addPrimitive(kind, args, item.loc, toWorld, own ? *own : fallback_, open, inverse);
             terms_.clear();
@@ -371,7 +373,7 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             break;
         }
     }
-    o.open = open && (o.type == ShapeType::Cone || o.type == ShapeType::Prism);
+    o.open = open && (o.type == ShapeType::Cone || o.type == ShapeType::Prism || o.type == ShapeType::Sor);
     o.material = material(look);
     prepareObject(o, toWorld);
     emit(o, inverse);

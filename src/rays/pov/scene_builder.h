@@ -15,6 +15,7 @@
 #include "rays/pov/not_rendered.h"
 #include "rays/pov/pov_host.h"
 #include "rays/scene/scene.h"
+#include "rays/scene/shapes/blob.h"
 
 namespace rays::pov {
 
@@ -46,6 +47,11 @@ private:
     void addObject(const Item& object, const Transform& parent, const Appearance* inherited, int depth);
     void addPrimitive(Kw kind, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
                       const Appearance& look, bool open, bool inverse);
+    /// Blobs (scene_builder_blob.cpp): keeps e in terms_ when it is one of a blob's components or
+    /// its threshold; the object from them; one component with its own texture (own).
+    bool collectBlobEntry(Kw kind, const Entry& e);
+    void addBlob(const sdl::Loc& at, const Transform& toWorld, const Appearance& look, bool inverse);
+    BlobComponent blobComponent(const Item& component, const Transform& toWorld, Appearance& own);
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look, bool inverse);
     void addText(const Entry* font, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
                  const Appearance& look, bool inverse);
@@ -83,7 +89,7 @@ private:
     double version_ = 3.7;
     bool gammaSet_ = false;
     bool backgroundSet_ = false;
-    std::vector<const Entry*> terms_;  ///< the xyz entries of the polynomial being added
+    std::vector<const Entry*> terms_;  ///< the xyz entries of the polynomial being added, a blob's components
     bool noShadow_ = false;    ///< the objects being added cast no shadow (no_shadow, looks_like)
     bool noImage_ = false;       ///< the objects being added are hidden from camera rays (no_image)
     bool noReflection_ = false;  ///< and from reflection rays (no_reflection)

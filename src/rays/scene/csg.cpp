@@ -4,8 +4,12 @@
 #include <cmath>
 
 #include "rays/scene/text_shape.h"
+#include "rays/scene/shapes/blob.h"
+#include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/poly.h"
 #include "rays/scene/shapes/prism.h"
+#include "rays/scene/shapes/sor.h"
+#include "rays/scene/shapes/sphere_sweep.h"
 #include "rays/scene/shapes/superellipsoid.h"
 #include "rays/scene/shapes/torus.h"
 
@@ -207,6 +211,10 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::Poly: return insidePolySurface(o, p);
         case ShapeType::Superellipsoid: return insideSuperellipsoid(o, p);
         case ShapeType::Prism: return insidePrism(o, p);
+        case ShapeType::Blob: return insideBlob(o, p);
+        case ShapeType::Lathe: return insideLathe(o, p);
+        case ShapeType::Sor: return insideSor(o, p);
+        case ShapeType::SphereSweep: return insideSphereSweep(o, p);
         case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Disc: case ShapeType::Polygon: return -1;
     }
     return -1;
@@ -289,7 +297,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
                 hit->normal = -hit->normal;
                 hit->geomNormal = -hit->geomNormal;
             }
-            hit->part = &leaf;
+            if (!hit->part) hit->part = &leaf;  // a blob's component texture stays
             return true;
         }
         tLast = bestT;

@@ -7,10 +7,14 @@
 #include "rays/scene/csg.h"
 #include "rays/scene/mesh.h"
 #include "rays/scene/text_shape.h"
+#include "rays/scene/shapes/blob.h"
 #include "rays/scene/shapes/disc.h"
+#include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
 #include "rays/scene/shapes/prism.h"
+#include "rays/scene/shapes/sor.h"
+#include "rays/scene/shapes/sphere_sweep.h"
 #include "rays/scene/shapes/superellipsoid.h"
 #include "rays/scene/shapes/torus.h"
 
@@ -32,6 +36,10 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Poly: return "Poly";
         case ShapeType::Superellipsoid: return "Superellipsoid";
         case ShapeType::Prism: return "Prism";
+        case ShapeType::Blob: return "Blob";
+        case ShapeType::Lathe: return "Lathe";
+        case ShapeType::Sor: return "Sor";
+        case ShapeType::SphereSweep: return "SphereSweep";
     }
     return "Object";
 }
@@ -224,6 +232,10 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Poly: found = hitPolySurface(o, r, tMin, tMax, h); break;
         case ShapeType::Superellipsoid: found = hitSuperellipsoid(o, r, tMin, tMax, h); break;
         case ShapeType::Prism: found = hitPrism(o, r, tMin, tMax, h); break;
+        case ShapeType::Blob: found = hitBlob(o, r, tMin, tMax, h); break;
+        case ShapeType::Lathe: found = hitLathe(o, r, tMin, tMax, h); break;
+        case ShapeType::Sor: found = hitSor(o, r, tMin, tMax, h); break;
+        case ShapeType::SphereSweep: found = hitSphereSweep(o, r, tMin, tMax, h); break;
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
@@ -256,7 +268,8 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Text: b = o.text->bounds; break;
         case ShapeType::Torus: b = torusBounds(o); break;
         case ShapeType::Disc: b = discBounds(o); break;
-        case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: b = o.data->bounds; break;
+        case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: case ShapeType::Blob:
+        case ShapeType::Lathe: case ShapeType::Sor: case ShapeType::SphereSweep: b = o.data->bounds; break;
         case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);

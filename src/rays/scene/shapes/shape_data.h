@@ -4,13 +4,23 @@
 #include <vector>
 
 #include "rays/geometry/ray.h"
+#include "rays/scene/object.h"
 
 namespace rays {
+
+/// A node of a box tree over a shape's pieces: a leaf holds pieces [first, first + count), an inner
+/// node (count 0) its two children at nodes first and first + 1.
+struct BoxNode {
+    Bounds box;
+    int first = 0, count = 0;
+};
 
 struct ShapeData {
     std::vector<double> values;  ///< the shape's numbers (each shape's header says their layout)
     int order = 0;               ///< Poly only: the polynomial's degree
     Bounds bounds;               ///< object-space bounds (empty: unbounded)
+    std::vector<BoxNode> tree;   ///< Blob only: its components' box tree (root first)
+    std::vector<Object> parts;   ///< Blob only: copies of the object with a component's texture (ShapeHit::part)
 };
 
 }  // namespace rays
