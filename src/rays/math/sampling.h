@@ -45,4 +45,17 @@ inline Vec3 cosineHemisphere(Vec3 n, double a, double b) {
     return normalize(x * t + y * bt + z * n);
 }
 
+/// cosineHemisphere() for many directions about one n: the basis is made once.
+struct CosineHemisphere {
+    Vec3 n, t, b;
+    explicit CosineHemisphere(Vec3 normal) : n(normal) { orthonormalBasis(n, t, b); }
+    /// The direction of (a, b) ∈ [0,1)²: unit up to rounding (not renormalised).
+    Vec3 operator()(double a, double bb) const {
+        double x, y;
+        concentricDisc(a, bb, x, y);
+        const double z = std::sqrt(std::max(0.0, 1.0 - x * x - y * y));
+        return x * t + y * b + z * n;
+    }
+};
+
 }  // namespace rays

@@ -279,13 +279,14 @@ Vec3 Tracer::gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) c
     child.giLevel = f.giLevel + 1;
     child.depth = f.depth + 1;
     child.kind = TraceRecord::Kind::Reflection;
+    const CosineHemisphere hemisphere(N);
     for (int i = 0; i < n; ++i) {
         double a = ctx.rng.next(), b = ctx.rng.next();
         if (strata) {  // stratified: one jittered sample per cell of a k×k grid
             a = (i % k + a) / k;
             b = (i / k + b) / k;
         }
-        const Vec3 d = cosineHemisphere(N, a, b);
+        const Vec3 d = hemisphere(a, b);
         ++ctx.stats.secondaryRays;
         sum += trace(Ray{P + kSurfaceOffset * N, d}, child, ctx, nullptr, nullptr).color;
     }
