@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "rays/io/scene_parser.h"
+#include "rays/math/sampling.h"
 #include "rays/render/course_commands.h"
 #include "rays/render/tracer.h"
 
@@ -254,4 +256,31 @@ TEST(CourseConventions, ReflectionRaysRestartTheGiLevel) {
     TraceContext ctx;
     Tracer(s, bvh, rs).tracePrimary(Ray{{0, 0.5, 0}, {0, -1, 0}}, ctx);
     EXPECT_EQ(ctx.stats.secondaryRays, 424u);
+}
+
+// The GI samples' fast direction map gives cosineHemisphere()'s directions (same concentric map,
+// sin and cos by series within π/4), unit length, on n's side; over a stratified grid their mean
+// is n·2/3 as a cosine-weighted hemisphere's must be (E[cos θ] = 2/3).
+TEST(CourseConventions, GiSampleDirectionsAreCosineHemisphere) {
+    for (const Vec3 n : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, normalize(Vec3{1, -2, 0.5}), normalize(Vec3{-0.3, 0.1, -0.9})}) {
+        const CosineHemisphere hemisphere(n);
+        const int k = 64;
+        double meanCos = 0;
+        for (int i = 0; i < k; ++i)
+            for (int j = 0; j < k; ++j) {
+                const double a = (i + 0.37) / k, b = (j + 0.61) / k;
+                const Vec3 d = hemisphere(a, b);
+                expectVec(d, cosineHemisphere(n, a, b), 1e-9, "same direction");
+                EXPECT_NEAR(length(d), 1.0, 1e-12);
+                EXPECT_GE(dot(d, n), 0.0);
+                meanCos += dot(d, n);
+            }
+        EXPECT_NEAR(meanCos / (k * k), 2.0 / 3.0, 1e-3);
+    }
+    double c, s;
+    for (double th = -std::numbers::pi / 4; th <= std::numbers::pi / 4; th += 0.001) {
+        sinCosQuarter(th, c, s);
+        EXPECT_NEAR(c, std::cos(th), 1e-11);
+        EXPECT_NEAR(s, std::sin(th), 1e-11);
+    }
 }
