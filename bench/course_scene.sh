@@ -3,7 +3,7 @@
 # bench/out/scenes/ the first time (and again when the .gz is newer).
 #   bench/course_scene.sh bunny     ->  /path/to/bench/out/scenes/bunny.pov
 set -euo pipefail
-[ $# -eq 1 ] || { echo "usage: bench/course_scene.sh NAME   (bunny, gnarly or balls2)" >&2; exit 2; }
+[ $# -eq 1 ] || { echo "usage: bench/course_scene.sh NAME   (bunny, gnarly, balls2 or cornell)" >&2; exit 2; }
 here=$(cd "$(dirname "$0")" && pwd)
 gz=$here/scenes/course/$1.pov.gz
 [ -f "$gz" ] || { echo "bench/course_scene.sh: no scene $gz" >&2; exit 2; }

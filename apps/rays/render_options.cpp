@@ -76,6 +76,7 @@ void addModernOptions(CLI::App* cmd, ModernOptions& o, RenderSettings& s) {
     cmd->add_option("--aperture", o.aperture, "lens radius for depth of field (overrides the camera's aperture)")->check(atLeast(0, false));
     cmd->add_option("--focal-distance", o.focalDistance, "distance to the focal plane along the view direction")->check(atLeast(0, true));
     cmd->add_option("--dof-samples", o.dofSamples, "samples per pixel with depth of field (overrides blur_samples)")->check(CLI::Range(1, 65536));
+    cmd->add_flag("--gi-physical", s.giPhysical, "global illumination with the physically based (Lambertian) estimator kd*C*E instead of the course's plain mean E (implies --gi)");
     cmd->add_option("--depth", s.maxDepth, "recursion depth for reflection and refraction (default 6)")->check(CLI::Range(0, 1000));
     cmd->add_option("--threads", s.threads, "worker threads (default: all cores)")->check(CLI::Range(0, 1024));
     cmd->add_option("--seed", s.seed, "random seed for jittered samples, area lights, lens and GI")->check(unsigned64Check());
@@ -93,7 +94,7 @@ void applyOptions(const CourseFlags& f, const ModernOptions& o, RenderSettings& 
         s.aa = AaMode::Grid;
         s.spp = f.ss * f.ss;
     }
-    if (f.gi || !f.giSamples.empty() || !f.giBounces.empty()) s.gi = true;
+    if (f.gi || s.giPhysical || !f.giSamples.empty() || !f.giBounces.empty()) s.gi = true;
     if (!f.giSamples.empty()) {
         const size_t comma = f.giSamples.find(',');
         s.giSamples[0] = positiveInt(f.giSamples.substr(0, comma), "gi_samples");

@@ -76,8 +76,11 @@ int32_t Bvh::planeIndex(Vec3 n, const Object& o) {
 }
 
 // Below this many untransformed triangles, a separate triangle BVH (a second traversal per ray,
-// with its own setup) costs more than testing them as objects.
+// with its own setup) costs more than testing them as objects, unless they are most of the
+// scene: from kTriangleBvhFew on, when they make at least half of the objects, their 4-wide
+// float tests win (cornell.pov, 16 triangles and 2 boxes: -gi renders ~17 % faster).
 constexpr size_t kTriangleBvhMin = 64;
+constexpr size_t kTriangleBvhFew = 8;
 
 Bvh::Bvh(const std::vector<Object>& objects) {
     std::vector<ObjectBvh::Prim> prims;
@@ -85,7 +88,8 @@ Bvh::Bvh(const std::vector<Object>& objects) {
     std::vector<uint32_t> indices;
     size_t plainTriangles = 0;
     for (const Object& o : objects) plainTriangles += o.type == ShapeType::Triangle && !o.localSpace;
-    const bool triangleBvh = plainTriangles >= kTriangleBvhMin;
+    const bool triangleBvh = plainTriangles >= kTriangleBvhMin ||
+                             (plainTriangles >= kTriangleBvhFew && 2 * plainTriangles >= objects.size());
     boundedOf_.assign(objects.size(), -1);
     for (uint32_t i = 0; i < objects.size(); ++i) {
         const Object& o = objects[i];

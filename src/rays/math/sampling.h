@@ -45,4 +45,37 @@ inline Vec3 cosineHemisphere(Vec3 n, double a, double b) {
     return normalize(x * t + y * bt + z * n);
 }
 
+/// cos θ and sin θ for |θ| ≤ π/4 by their Taylor series to degree 12 and 11 (error < 1e-11).
+inline void sinCosQuarter(double th, double& c, double& s) {
+    const double x2 = th * th;
+    c = 1 + x2 * (-1.0 / 2 +
+                  x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 + x2 / 479001600)))));
+    s = th * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (-1.0 / 39916800))))));
+}
+
+/// cosineHemisphere() for many directions about one n: the basis is made once, and the
+/// concentric map's angle (within π/4 of an axis) goes through sinCosQuarter instead of libm.
+struct CosineHemisphere {
+    Vec3 n, t, b;
+    explicit CosineHemisphere(Vec3 normal) : n(normal) { orthonormalBasis(n, t, b); }
+    /// The direction of (a, b) ∈ [0,1)²: unit up to rounding (not renormalised).
+    Vec3 operator()(double a, double bb) const {
+        const double sx = 2 * a - 1, sy = 2 * bb - 1;
+        double x = 0, y = 0;
+        if (std::fabs(sx) > std::fabs(sy)) {  // φ = (π/4)(sy/sx)
+            double c, s;
+            sinCosQuarter((std::numbers::pi / 4) * (sy / sx), c, s);
+            x = sx * c;
+            y = sx * s;
+        } else if (sy != 0) {  // φ = π/2 − (π/4)(sx/sy): cos φ = sin, sin φ = cos of the rest
+            double c, s;
+            sinCosQuarter((std::numbers::pi / 4) * (sx / sy), c, s);
+            x = sy * s;
+            y = sy * c;
+        }
+        const double z = std::sqrt(std::max(0.0, 1.0 - x * x - y * y));
+        return x * t + y * b + z * n;
+    }
+};
+
 }  // namespace rays

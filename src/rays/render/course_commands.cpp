@@ -173,13 +173,16 @@ void printPixelColor(std::ostream& out, const Scene& scene, const Bvh& bvh, cons
     out << "Color: " << bytes(imageColor(scene, c)) << "\n";
 }
 
-void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y) {
+void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& settings, int x, int y) {
+    RenderSettings s = settings;
+    s.maxDepth = kPrintRaysDepth;
     const Ray r = pixelRay(scene, s, x, y);
     std::vector<TraceRecord> log;
     TraceContext ctx;
     const Vec3 c = Tracer(scene, bvh, s).tracePrimary(r, ctx, &log);
     out << "Pixel: [" << x << ", " << y << "] Color: " << bytes(imageColor(scene, c)) << "\n";
-    for (const TraceRecord& rec : log) {
+    for (size_t i = 0; i < log.size(); ++i) {
+        const TraceRecord& rec = log[i];
         out << "----\n";
         field(out, "Iteration type:", kindName(rec.kind));
         field(out, "Ray:", vec(rec.ray.origin) + " -> " + vec(rec.ray.dir));
@@ -187,9 +190,9 @@ void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const Rend
             out << "  No intersection.\n";
         } else {
             const Object& o = scene.objects[size_t(rec.object)];
-            field(out, "Hit Object:", "(ID #" + std::to_string(rec.object + 1) + " - " + std::string(shapeName(o.type)) + ")");
             if (o.transformed)
                 field(out, "Transformed Ray:", vec(rec.objectRay.origin) + " -> " + vec(rec.objectRay.dir));
+            field(out, "Hit Object:", "(ID #" + std::to_string(rec.object + 1) + " - " + std::string(shapeName(o.type)) + ")");
             field(out, "Intersection:", vec(rec.point) + " at T = " + num(rec.t));
             field(out, "Normal:", vec(rec.normal));
             field(out, "Final Color:", vec(rec.color));
@@ -203,8 +206,10 @@ void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const Rend
         }
         if (rec.kind == TraceRecord::Kind::Refraction)
             field(out, "Extra Info:", rec.intoObject ? "into-object" : "into-air");
+        // A blank line after every ray without children (the log is depth first).
+        if (i + 1 == log.size() || log[i + 1].depth <= rec.depth) out << "\n";
     }
-    out << "\n\n" << std::string(80, '-') << "\n\n";
+    out << "\n" << std::string(80, '-') << "\n\n";
 }
 
 }  // namespace rays

@@ -24,8 +24,14 @@ void printFirstHit(std::ostream& out, const Scene& scene, const Bvh& bvh, const 
 /// The first hit plus the shading model ("BRDF: ...") and the shaded colour as the image has it.
 void printPixelColor(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y);
 
-/// The pixel's colour as the image has it and the whole ray tree of its centre ray with per-term
-/// contributions (the tree in working-space colours).
+/// Recursion limit of printrays: the course's expected ray trees stop 5 bounces after the primary ray.
+inline constexpr int kPrintRaysDepth = 5;
+
+/// The pixel's colour and the whole ray tree of its centre ray (traced to kPrintRaysDepth) with
+/// per-term contributions (the tree in working-space colours), in the course's layout: per ray
+/// its kind, the ray, the object-space ray (transformed objects), the hit and its terms;
+/// refraction subtrees before reflection ones, misses as "No intersection.", a blank line after
+/// every ray without children.
 void printRays(std::ostream& out, const Scene& scene, const Bvh& bvh, const RenderSettings& s, int x, int y);
 
 }  // namespace rays

@@ -40,7 +40,8 @@ struct RenderSettings {
     double focalDistance = -1; ///< > 0: focal distance overriding the camera's focal_point
     int dofSamples = 0;        ///< > 0: samples per pixel with depth of field, overriding blur_samples
 
-    bool gi = false;           ///< course part 6: cosine-weighted hemisphere samples replace the ambient term
+    bool gi = false;           ///< course part 6: the mean of cosine-weighted hemisphere samples replaces the ambient term
+    bool giPhysical = false;   ///< with gi: the Lambertian estimate kd·C·mean instead of the course's plain mean
     int giSamples[2] = {64, 16};  ///< samples at the first and at later bounces
     int giBounces = 2;         ///< levels of indirect light
 

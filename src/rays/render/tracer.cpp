@@ -134,13 +134,18 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         diffuse += t.diffuse;
         specular += t.specular;
     };
-    // Whether a point of a light at toLight from P (dist = |toLight| > 0) lights P; L receives the
-    // unit direction towards it.
-    auto litFrom = [&](Vec3 toLight, double dist, Vec3& L, const FromLight* fromLight) {
+    // Whether a point pos of a light at toLight = pos − P from P (dist = |toLight| > 0) lights P;
+    // L receives the unit direction from P towards it. The shadow ray is aimed at pos from the
+    // offset point and blocked by any hit before pos (course convention).
+    auto litFrom = [&](Vec3 pos, Vec3 toLight, double dist, Vec3& L, bool useBuffer) {
         L = toLight / dist;
         const double nl = dot(L, N);
         if (skipFacingAway && nl <= 0) return false;
-        return !shadowed(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, nl < 0, fromLight);
+        const Vec3 s = pos - origin;
+        const double sd = length(s);
+        if (sd == 0) return true;
+        const FromLight fromLight{-s, sd};
+        return !shadowed(Ray{origin, s / sd}, sd, index, ctx, nl < 0, useBuffer ? &fromLight : nullptr);
     };
     if (light.parallel) {
         const Vec3 L = -light.direction;
@@ -155,9 +160,8 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
         if (skipFacingAway && clearlyFacingAway(toLight, N)) return 0.0;  // no sqrt, no division
         const double dist = length(toLight);
         if (dist == 0) return 1.0;
-        const FromLight fromLight{-toLight, dist};
         Vec3 L;
-        if (!litFrom(toLight, dist, L, &fromLight)) return 0.0;
+        if (!litFrom(light.position, toLight, dist, L, true)) return 0.0;
         addSample(L, light.color);
         return 1.0;
     }
@@ -174,7 +178,7 @@ double Tracer::shadeLight(const Light& light, size_t index, const Material& m, S
             L = N;
             return true;
         }
-        return litFrom(toLight, dist, L, nullptr);
+        return litFrom(pos, toLight, dist, L, false);
     };
     // adaptive: when the four corners agree, their verdict holds for the whole light.
     int cornerVerdict = -1;  // −1 undecided, 0 all blocked, 1 all visible
@@ -215,11 +219,12 @@ int Tracer::blockedLightsAt(Vec3 P, Vec3 N, TraceContext& ctx) const {
     int blocked = 0;
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& L = scene_.lights[li];
-        const Vec3 toLight = L.parallel ? -L.direction : L.position - P;
+        // As shadeLight: aimed at the light from the offset point.
+        const Vec3 toLight = L.parallel ? -L.direction : L.position - origin;
         const double dist = length(toLight);
         if (dist == 0) continue;
         const FromLight fromLight{-toLight, dist};
-        if (shadowed(Ray{origin, toLight / dist}, L.parallel ? kInfinity : dist - kSurfaceOffset, li, ctx, false,
+        if (shadowed(Ray{origin, toLight / dist}, L.parallel ? kInfinity : dist, li, ctx, false,
                      L.parallel || L.area ? nullptr : &fromLight))
             ++blocked;
     }
@@ -241,14 +246,15 @@ void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followS
     }
     if (!followSecondary || depth >= settings_.maxDepth || out.count >= PathInfo::kMaxIds) return;
     const SecondaryWeights w = secondaryWeights(o.material, ray.dir, N, entering, settings_.fresnel);
+    // As trace(): refraction first, origins offset along the normal.
+    if (w.wTrans > 0) {
+        ++ctx.stats.secondaryRays;
+        probeRec(Ray{P - kSurfaceOffset * N, w.T}, depth + 1, false, true, ctx, out);
+    }
     if (w.wRefl > 0) {
         const Vec3 R = normalize(reflect(ray.dir, N));
         ++ctx.stats.secondaryRays;
-        probeRec(Ray{P + kSurfaceOffset * R, R}, depth + 1, false, true, ctx, out);
-    }
-    if (w.wTrans > 0) {
-        ++ctx.stats.secondaryRays;
-        probeRec(Ray{P + kSurfaceOffset * w.T, w.T}, depth + 1, false, true, ctx, out);
+        probeRec(Ray{P + kSurfaceOffset * N, R}, depth + 1, false, true, ctx, out);
     }
 }
 
@@ -273,17 +279,25 @@ Vec3 Tracer::gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) c
     child.giLevel = f.giLevel + 1;
     child.depth = f.depth + 1;
     child.kind = TraceRecord::Kind::Reflection;
+    const CosineHemisphere hemisphere(N);
     for (int i = 0; i < n; ++i) {
         double a = ctx.rng.next(), b = ctx.rng.next();
         if (strata) {  // stratified: one jittered sample per cell of a k×k grid
             a = (i % k + a) / k;
             b = (i / k + b) / k;
         }
-        const Vec3 d = cosineHemisphere(N, a, b);
+        const Vec3 d = hemisphere(a, b);
         ++ctx.stats.secondaryRays;
         sum += trace(Ray{P + kSurfaceOffset * N, d}, child, ctx, nullptr, nullptr).color;
     }
     return sum / double(n);
+}
+
+Vec3 Tracer::ambientTerm(const Material& m, Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const {
+    if (!settings_.gi) return m.ambient * m.color;
+    if (f.giLevel >= settings_.giBounces) return {};  // the last level: no ambient light at all
+    const Vec3 E = gatherIndirect(P, N, f, ctx);
+    return settings_.giPhysical ? m.diffuse * m.color * E : E;
 }
 
 Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, std::vector<TraceRecord>* log,
@@ -295,6 +309,7 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
         (*log)[rec].kind = f.kind;
         (*log)[rec].ray = ray;
         (*log)[rec].intoObject = f.inside;
+        (*log)[rec].depth = f.depth;
     }
     const Hit hit = firstHit(ray);
     if (info) info->push(hit.object);
@@ -349,10 +364,7 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
         const bool countBlocked = info && f.kind == TraceRecord::Kind::Primary;
         blocked = localShading(m, model, P, N, V, ctx, diffuse, specular, countBlocked);
         ctx.surfaceObject = -1;
-        if (settings_.gi && f.giLevel < settings_.giBounces)
-            ambient = m.diffuse * m.color * gatherIndirect(P, N, f, ctx);
-        else
-            ambient = m.ambient * m.color;
+        ambient = ambientTerm(m, P, N, f, ctx);
     }
     if (info && f.kind == TraceRecord::Kind::Primary) {
         info->blockedLights = int16_t(blocked);
@@ -363,18 +375,23 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     const bool recurse = f.depth < settings_.maxDepth;
     Frame child = f;
     child.depth = f.depth + 1;
-    if (recurse && wRefl > 0) {
-        const Vec3 R = normalize(reflect(ray.dir, N));
-        ++ctx.stats.secondaryRays;
-        child.kind = TraceRecord::Kind::Reflection;
-        reflColor = trace(Ray{P + kSurfaceOffset * R, R}, child, ctx, log, info).color * m.color;
-    }
+    // Refraction first, as the course traces (and printrays prints) them. Both rays leave P
+    // kSurfaceOffset along N (which faces the viewer): refraction rays to the far side,
+    // reflection rays to the viewer's side.
     if (recurse && wTrans > 0) {
         ++ctx.stats.secondaryRays;
         child.kind = TraceRecord::Kind::Refraction;
         child.inside = entering;
-        const Result c = trace(Ray{P + kSurfaceOffset * T, T}, child, ctx, log, info);
+        const Result c = trace(Ray{P - kSurfaceOffset * N, T}, child, ctx, log, info);
         transColor = entering ? c.color * (settings_.beers ? beerTint(m.color, c.t) : m.color) : c.color;
+    }
+    if (recurse && wRefl > 0) {
+        const Vec3 R = normalize(reflect(ray.dir, N));
+        ++ctx.stats.secondaryRays;
+        child.kind = TraceRecord::Kind::Reflection;
+        child.inside = f.inside;
+        child.giLevel = 0;  // the course's GI restarts its levels on a reflection ray
+        reflColor = trace(Ray{P + kSurfaceOffset * N, R}, child, ctx, log, info).color * m.color;
     }
 
     if (log) {

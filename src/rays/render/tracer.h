@@ -28,6 +28,7 @@ struct TraceRecord {
     Vec3 ambient, diffuse, specular, reflection, refraction;  ///< weighted contributions
     double wLocal = 0, wReflection = 0, wTransmission = 0;
     bool intoObject = false;    ///< refraction records: the ray travels inside an object
+    int depth = 0;              ///< bounces after the primary ray (0: the primary ray)
 };
 
 /// Per-thread counters.
@@ -96,7 +97,9 @@ struct SharedOrigins {
 
 class Tracer {
 public:
-    /// Rays leave a surface this far along their direction (shadow rays: along the normal).
+    /// Secondary rays leave a surface this far: course scenes along the normal (reflection and
+    /// shadow rays on the viewer's side, refraction rays on the far side), POV-Ray scenes along
+    /// the new ray (shadow rays: along the normal).
     static constexpr double kSurfaceOffset = 0.001;
 
     /// Hits closer than this along a ray are ignored.
@@ -121,7 +124,8 @@ public:
     static constexpr double kSharedOriginsBytesPerObject = 64.0;
 
     /// Colour seen along a primary ray. When log is non-null the ray tree is appended to it in
-    /// depth-first order (each node before its children; course scenes only); when info is non-null
+    /// depth-first order (each node before its children, the refraction subtree before the
+    /// reflection one, as the course traces them; course scenes only); when info is non-null
     /// it receives the ids along the tree and the primary hit's blocked lights. Random decisions
     /// (area-light jitter, global illumination) draw from ctx.rng. POV-Ray scenes give the colour
     /// in the scene's working space (render() encodes it for output: render/pov_output.h).
@@ -165,12 +169,17 @@ private:
                       Vec3 V, TraceContext& ctx, Vec3& diffuse, Vec3& specular, bool skipFacingAway) const;
     void probeRec(const Ray& ray, int depth, bool countShadows, bool followSecondary, TraceContext& ctx,
                   PathInfo& out) const;
+    /// The ambient term at P. Without GI ka·C. With GI (course part 6) below the last GI level
+    /// E, the plain mean of what the cosine-weighted sample rays bring back (giPhysical: the
+    /// Lambertian estimate kd·C·E), and nothing at the last level.
+    Vec3 ambientTerm(const Material& m, Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
     /// Cosine-weighted average of the light arriving at P (global illumination).
     Vec3 gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
     /// intoSurface: the ray leaves towards the inside of the surface being shaded, which then
     /// most likely blocks it (tested first).
-    /// For a point light: the vector from the light to the shaded point and its length (the shadow
-    /// ray leaves that point offset by kSurfaceOffset along its unit normal).
+    /// For a point light: the vector from the light to the shadow ray's origin (course scenes) or
+    /// to the shaded point (POV-Ray scenes, whose shadow rays leave it offset by kSurfaceOffset
+    /// along the unit normal) and its length.
     struct FromLight {
         Vec3 toPoint;
         double dist;

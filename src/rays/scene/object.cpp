@@ -115,7 +115,10 @@ bool hitTriangle(const Object& o, const Ray& r, double tMin, double tMax, ShapeH
     return true;
 }
 
-// Slab test (Kay & Kajiya 1986), remembering which face was crossed.
+// Slab test (Kay & Kajiya 1986), remembering which face was crossed. The faces are picked by
+// the sign of the direction rather than by comparing their distances, and the miss is decided
+// after the three slabs (tNear only grows, tFar only shrinks): the same answer with selects
+// instead of branches that random directions would mispredict.
 bool hitBox(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     double tNear = -kInfinity, tFar = kInfinity;
     int nearAxis = 0, farAxis = 0;
@@ -126,17 +129,14 @@ bool hitBox(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h
             if (r.origin[a] < o.p0[a] || r.origin[a] > o.p1[a]) return false;
             continue;
         }
-        double t0 = (o.p0[a] - r.origin[a]) / d;
-        double t1 = (o.p1[a] - r.origin[a]) / d;
-        double s0 = -1, s1 = 1;  // outward normal sign of the face at t0 / t1
-        if (t0 > t1) {
-            std::swap(t0, t1);
-            std::swap(s0, s1);
-        }
+        const bool up = d > 0;
+        const double t0 = ((up ? o.p0[a] : o.p1[a]) - r.origin[a]) / d;  // entering face
+        const double t1 = ((up ? o.p1[a] : o.p0[a]) - r.origin[a]) / d;  // leaving face
+        const double s0 = up ? -1 : 1;  // outward normal sign of the entering face
         if (t0 > tNear) { tNear = t0; nearAxis = a; nearSign = s0; }
-        if (t1 < tFar) { tFar = t1; farAxis = a; farSign = s1; }
-        if (tNear > tFar) return false;
+        if (t1 < tFar) { tFar = t1; farAxis = a; farSign = -s0; }
     }
+    if (tNear > tFar) return false;
     Vec3 n;
     if (tNear > tMin && tNear < tMax) {
         h.t = tNear;
