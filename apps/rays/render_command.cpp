@@ -23,6 +23,7 @@
 #include "interrupt.h"
 #include "paths.h"
 #include "render_budget.h"
+#include "hdr_output.h"
 
 namespace rays::cli {
 namespace {
@@ -93,8 +94,12 @@ void checkOutputDirectory(const std::string& output) {
 // An image the render will write (what: "output" or "mask"): a known format, in a folder that
 // exists, and not one of the job's input files.
 void checkImageOutput(const std::string& path, const char* what, const RenderJob& job) {
-    if (!isSupportedImageExtension(path))
-        failFile(path, std::string("unsupported ") + what + " image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
+    const bool hdr = std::string(what) == "output" && isHdrOutput(path);
+    if (!isSupportedImageExtension(path) && !hdr)
+        failFile(path, std::string("unsupported ") + what + " image format (use .png, .jpg, .jpeg, .ppm, .tga, .bmp" +
+                           (std::string(what) == "output" ? ", .exr or .pfm)" : ")"));
+    if (isExrPath(path) && !exrAvailable())
+        failFile(path, "cannot write EXR: this Rays was built without OpenEXR (install libopenexr-dev and rebuild)");
     checkOutputDirectory(path);
     checkOutputIsNotInput(path, job.scenePath);
     checkOutputIsNotInput(path, job.objPath);
@@ -186,9 +191,20 @@ Scene loadJobScene(const RenderJob& job) {
 
 int runRender(const RenderJob& job) {
     InterruptScope interruptScope;  // Ctrl-C / SIGTERM stop the render cleanly (exit 130 / 143)
-    const RenderSettings& s = job.settings;
+    // HDR outputs (.exr, .pfm) take the linear float image (docs/aov.md).
+    const bool hdrOutput = isHdrOutput(job.outputPath);
+    RenderSettings s = job.settings;
+    s.linearOutput = hdrOutput;
     checkImageSize(s.width, s.height);
     checkImageOutput(job.outputPath, "output", job);
+    const unsigned aovKinds = parseAovList(job.aovs);
+    const bool aovFiles = aovKinds != 0 && !isExrPath(job.outputPath);  // one PFM per AOV
+    if (aovFiles)
+        for (AovBit bit : {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage})
+            if (aovKinds & bit) {
+                checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.scenePath);
+                checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.objPath);
+            }
     if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
 
     auto t0 = Clock::now();
@@ -256,6 +272,10 @@ int runRender(const RenderJob& job) {
         linesMs = msSince(t0);
     }
 
+    // The AOVs: one pixel-centre ray per pixel (aov.h).
+    const AovBuffers aov = aovKinds ? computeAovs(scene, bvh, s, aovKinds) : AovBuffers{};
+    const LineCoverage* lineCoverage = lines.coverage.empty() ? nullptr : &lines;
+
     t0 = Clock::now();
     {
         // A signal from here on waits until both files are complete: never a temporary left behind.
@@ -264,8 +284,15 @@ int runRender(const RenderJob& job) {
         if (!job.edges.maskPath.empty()) writeImage(job.edges.maskPath, coverageImage(lines), job.jpegQuality);
         if (png)
             writeFileAtomically(job.outputPath, finishPng(*png, job.outputPath));
+        else if (isExrPath(job.outputPath))
+            writeHdrImage(job.outputPath, exrImage(img, job.exrHalf, aov, lineCoverage, aovKinds));
+        else if (hdrOutput)
+            writeHdrImage(job.outputPath, colourImage(img, false));
         else
             writeImage(job.outputPath, toImage8(img), job.jpegQuality);
+        if (aovFiles)
+            for (AovBit bit : {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage})
+                if (aovKinds & bit) writeHdrImage(aovFilePath(job.outputPath, bit), aovImage(aov, lineCoverage, bit));
     }
     const double writeMs = msSince(t0);
 
