@@ -11,7 +11,7 @@ mkdir -p "$out"
 "$rays" render --scene bunny-lines --obj ../shared/models/stanford-bunny.obj 320 240 --spp 4 \
   --edges silhouette,occlusion,intersection,crease --aov all -o "$tmp/bunny.png" -q
 cp "$tmp/bunny.png" "$out/colour.png"
-for aov in depth normal albedo objectid materialid coverage; do
+for aov in depth normal albedo objectid materialid coverage edgetype; do
   python3 scripts/aov_png.py "$aov" "$tmp/bunny.$aov.pfm" "$out/$aov.png"
 done
 ls -l "$out"

@@ -2,7 +2,8 @@
 """Turns one AOV file written by `rays render --aov` (OUTPUT.NAME.pfm) into a small PNG for the
 docs (docs/aov.md). Python standard library only. Usage: aov_png.py KIND IN.pfm OUT.png
 KIND: depth (near white, far dark — the 90th percentile and beyond 15 % grey —, background black), normal (n*0.5+0.5), albedo (clamped),
-objectid / materialid (a fixed colour per id, background black), coverage (lines black on white)."""
+objectid / materialid (a fixed colour per id, background black), coverage (lines black on white),
+edgetype (white, each line pixel coloured by its lowest EdgeType bit, EDGE_COLOURS)."""
 import struct
 import sys
 import zlib
@@ -27,6 +28,19 @@ def write_png(path, w, h, rows):
     png = b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 2, 0, 0, 0))
     png += chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b'')
     open(path, 'wb').write(png)
+
+
+# The EdgeType bits of docs/edges.md: silhouette, occlusion, intersection, crease, material,
+# shadow, reflection.
+EDGE_COLOURS = [(0, 0, 0), (230, 120, 0), (210, 0, 0), (0, 90, 220), (150, 0, 170), (110, 110, 110), (0, 150, 60)]
+
+
+def edge_colour(v):
+    bits = int(v)
+    for b, c in enumerate(EDGE_COLOURS):
+        if bits & (1 << b):
+            return c
+    return (255, 255, 255)
 
 
 def byte(v):
@@ -57,6 +71,8 @@ def main():
             out.append(line)
     elif kind in ('objectid', 'materialid'):
         out = [[c for v in r for c in id_colour(v)] for r in rows]
+    elif kind == 'edgetype':
+        out = [[c for v in r for c in edge_colour(v)] for r in rows]
     elif kind == 'coverage':
         out = [[byte(1 - v) for v in r for _ in range(3)] for r in rows]
     elif kind == 'normal':

@@ -210,7 +210,7 @@ TEST(HdrIo, RenderExrAovsOfASphereWithLines) {
                           std::string(kCamera) + "sphere { <9,9,-40>, 1 pigment { color rgb <0,1,0> } }\n"
                                                  "sphere { <0,0,0>, 3 pigment { color rgb <1,0,0> } }\n");
     const auto r = runRays(dir, {"render", "s.pov", "65", "49", "-o", "out.exr", "--aov",
-                                 "depth,normal,objectid,materialid,coverage", "--edges", "silhouette", "-q"});
+                                 "depth,normal,objectid,materialid,coverage,edgetype", "--edges", "silhouette", "-q"});
     ASSERT_TRUE(r.ok()) << r.summary() << r.err;
     const ExrRead e = readExr((dir.path() / "out.exr").string());
     EXPECT_FALSE(e.channels.count("albedo.R"));  // not asked for
@@ -224,8 +224,31 @@ TEST(HdrIo, RenderExrAovsOfASphereWithLines) {
     EXPECT_EQ(e.at("coverage", 32, 24), 0.0f);  // inside the outline
     EXPECT_EQ(e.at("coverage", 0, 0), 0.0f);
     float most = 0;
-    for (int x = 0; x < 65; ++x) most = std::max(most, e.at("coverage", x, 24));
+    int mostX = 0;
+    for (int x = 0; x < 65; ++x)
+        if (e.at("coverage", x, 24) > most) most = e.at("coverage", x, 24), mostX = x;
     EXPECT_GT(most, 0.5f);  // the outline crosses the middle row
+    EXPECT_EQ(e.at("edgeType", mostX, 24), 1.0f);  // kEdgeSilhouette
+    EXPECT_EQ(e.at("edgeType", 32, 24), 0.0f);      // no line there
+    for (int x = 0; x < 65; ++x) {
+        if (e.at("coverage", x, 24) == 0.0f) {
+            EXPECT_EQ(e.at("edgeType", x, 24), 0.0f) << x;
+        }
+    }
+}
+
+TEST(HdrIo, EdgeTypeTellsIntersectionsFromOutlines) {
+    TempDir dir;
+    // Two spheres cutting each other in front of nothing: outline (1) and intersection (4) lines.
+    rays::test::writeFile(dir.path() / "s.pov", std::string(kCamera) + "sphere { <-1.2,0,0>, 2 pigment { color rgb 1 } }\n"
+                                                                         "sphere { <1.2,0,0>, 2 pigment { color rgb 1 } }\n");
+    const auto r = runRays(dir, {"render", "s.pov", "65", "49", "-o", "out.pfm", "--aov", "edgetype", "--edges",
+                                 "silhouette,intersection", "--edge-method", "image", "-q"});
+    ASSERT_TRUE(r.ok()) << r.summary() << r.err;
+    const PfmRead t = readPfm(dir.path() / "out.edgetype.pfm");
+    unsigned seen = 0;
+    for (float v : t.values) seen |= unsigned(v);
+    EXPECT_EQ(seen, 1u | 4u);
 }
 
 TEST(HdrIo, PovSceneExrIsLinearAndMatchesThePng) {

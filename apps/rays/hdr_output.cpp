@@ -3,7 +3,8 @@
 namespace rays::cli {
 namespace {
 
-constexpr AovBit kOrder[] = {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage};
+constexpr AovBit kOrder[] = {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage,
+                             kAovEdgeType};
 
 void addVec(HdrImage& out, const std::vector<Vec3>& v, const char* const names[3], bool half = false) {
     for (int c = 0; c < 3; ++c) {
@@ -26,6 +27,11 @@ void addAov(HdrImage& out, const AovBuffers& a, const LineCoverage* lines, AovBi
             HdrChannel& ch = out.add("coverage");  // zeros without lines
             if (lines && lines->width == out.width && lines->height == out.height)
                 ch.values.assign(lines->coverage.begin(), lines->coverage.end());
+            break;
+        }
+        case kAovEdgeType: {
+            HdrChannel& ch = out.add("edgeType");  // zeros without lines
+            if (a.edgeType.size() == ch.values.size()) ch.values = a.edgeType;
             break;
         }
     }

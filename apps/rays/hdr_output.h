@@ -17,7 +17,7 @@ bool isHdrOutput(const std::string& output);
 std::string aovFilePath(const std::string& output, AovBit bit);
 
 /// The EXR's channels: R, G, B (half when half), then the AOVs of `kinds` as float channels —
-/// Z, N.X N.Y N.Z, albedo.R albedo.G albedo.B, objectId, materialId, coverage. lines may be
+/// Z, N.X N.Y N.Z, albedo.R albedo.G albedo.B, objectId, materialId, coverage, edgeType. lines may be
 /// null (no lines drawn: coverage 0).
 HdrImage exrImage(const ImageF& img, bool half, const AovBuffers& aov, const LineCoverage* lines, unsigned kinds);
 

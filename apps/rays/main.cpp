@@ -128,7 +128,7 @@ int run(int argc, char** argv) {
     render->add_flag("--lines-only", job.edges.linesOnly, "lines on white, no shading");
     render->add_option("--edge-mask", job.edges.maskPath, "also write the line coverage as a greyscale image");
     // EXR / PFM output and AOVs (docs/aov.md)
-    render->add_option("--aov", job.aovs, "extra outputs: depth,normal,albedo,objectid,materialid,coverage | all (EXR channels, else OUTPUT.NAME.pfm)");
+    render->add_option("--aov", job.aovs, "extra outputs: depth,normal,albedo,objectid,materialid,coverage,edgetype | all (EXR channels, else OUTPUT.NAME.pfm)");
     render->add_flag("--exr-half", job.exrHalf, "EXR colour channels as 16-bit half floats (default 32-bit float)");
     render->add_option("--obj", obj, "add an OBJ mesh to the scene with a default material");
     shared.jpegQuality = render->add_option("--jpeg-quality", job.jpegQuality, "JPEG quality 1-100 (default 90)")->check(CLI::Range(1, 100));

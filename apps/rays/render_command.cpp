@@ -18,6 +18,7 @@
 #include "rays/io/obj_loader.h"
 #include "rays/image/filter.h"
 #include "rays/npr/feature_lines.h"
+#include "rays/npr/edge_types.h"
 #include "rays/npr/stencil_pass.h"
 #include "rays/render/renderer.h"
 #include "interrupt.h"
@@ -189,6 +190,9 @@ Scene loadJobScene(const RenderJob& job) {
     return scene;
 }
 
+// The AOVs in the order they are written.
+constexpr AovBit kAovOrder[] = {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage, kAovEdgeType};
+
 int runRender(const RenderJob& job) {
     InterruptScope interruptScope;  // Ctrl-C / SIGTERM stop the render cleanly (exit 130 / 143)
     // HDR outputs (.exr, .pfm) take the linear float image (docs/aov.md).
@@ -200,7 +204,7 @@ int runRender(const RenderJob& job) {
     const unsigned aovKinds = parseAovList(job.aovs);
     const bool aovFiles = aovKinds != 0 && !isExrPath(job.outputPath);  // one PFM per AOV
     if (aovFiles)
-        for (AovBit bit : {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage})
+        for (AovBit bit : kAovOrder)
             if (aovKinds & bit) {
                 checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.scenePath);
                 checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.objPath);
@@ -266,6 +270,12 @@ int runRender(const RenderJob& job) {
     LineCoverage lines;
     if (edges.enabled() || edges.linesOnly) {
         t0 = Clock::now();
+        // The edgetype AOV reads the centre records afterwards: probed here when the render did
+        // not record them (drawFeatureLines then uses them instead of probing its own).
+        if ((aovKinds & kAovEdgeType) && !records && edges.enabled()) {
+            records = std::make_unique<LineRecords>(scene, s.width, s.height);
+            probeLineRecords(scene, bvh, s, edges, *records, stats);
+        }
         lines = stencil ? stencil->finish(stats) : drawFeatureLines(scene, bvh, s, edges, records.get(), stats);
         stopIfInterrupted(job, &scene, &img);
         compositeLines(img, lines, edges, s.threads);
@@ -273,7 +283,8 @@ int runRender(const RenderJob& job) {
     }
 
     // The AOVs: one pixel-centre ray per pixel (aov.h).
-    const AovBuffers aov = aovKinds ? computeAovs(scene, bvh, s, aovKinds) : AovBuffers{};
+    AovBuffers aov = aovKinds ? computeAovs(scene, bvh, s, aovKinds) : AovBuffers{};
+    if ((aovKinds & kAovEdgeType) && records && !lines.coverage.empty()) aov.edgeType = lineEdgeTypes(*records, lines, edges);
     const LineCoverage* lineCoverage = lines.coverage.empty() ? nullptr : &lines;
 
     t0 = Clock::now();
@@ -291,7 +302,7 @@ int runRender(const RenderJob& job) {
         else
             writeImage(job.outputPath, toImage8(img), job.jpegQuality);
         if (aovFiles)
-            for (AovBit bit : {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage})
+            for (AovBit bit : kAovOrder)
                 if (aovKinds & bit) writeHdrImage(aovFilePath(job.outputPath, bit), aovImage(aov, lineCoverage, bit));
     }
     const double writeMs = msSince(t0);

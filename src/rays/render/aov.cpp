@@ -13,7 +13,7 @@
 namespace rays {
 namespace {
 
-constexpr AovBit kBits[] = {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage};
+constexpr AovBit kBits[] = {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage, kAovEdgeType};
 
 double srgbDecode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
 
@@ -58,7 +58,7 @@ unsigned parseAovList(const std::string& list) {
         if (name == "n") bit = kAovNormal;
         if (bit == 0)
             throw Error("rays: error: unknown AOV '" + name +
-                        "' (use depth, normal, albedo, objectid, materialid, coverage or all)");
+                        "' (use depth, normal, albedo, objectid, materialid, coverage, edgetype or all)");
         bits |= bit;
     }
     return bits;
@@ -72,6 +72,7 @@ const char* aovName(AovBit bit) {
         case kAovObjectId: return "objectid";
         case kAovMaterialId: return "materialid";
         case kAovCoverage: return "coverage";
+        case kAovEdgeType: return "edgetype";
     }
     return "?";
 }

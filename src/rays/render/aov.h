@@ -19,10 +19,11 @@ enum AovBit : unsigned {
     kAovObjectId = 8,
     kAovMaterialId = 16,
     kAovCoverage = 32,  ///< feature-line coverage (computed by the lines, npr/feature_lines.h)
+    kAovEdgeType = 64,  ///< EdgeType bits of the lines through a pixel (npr/edge_types.h)
 };
-inline constexpr unsigned kAovAll = 63;
+inline constexpr unsigned kAovAll = 127;
 
-/// Parses "depth,normal,albedo,objectid,materialid,coverage" (any order, "all" for every one,
+/// Parses "depth,normal,albedo,objectid,materialid,coverage,edgetype" (any order, "all" for every one,
 /// "" or "none" for none). Throws rays::Error "rays: error: unknown AOV 'X' (use ...)".
 unsigned parseAovList(const std::string& list);
 
@@ -38,6 +39,7 @@ struct AovBuffers {
     std::vector<Vec3> albedo;       ///< surface colour before lighting (linear, as the EXR colour)
     std::vector<float> objectId;    ///< index into Scene::objects (sceneinfo's Object[i])
     std::vector<float> materialId;  ///< POV-Ray scenes: texture index; course scenes: object index
+    std::vector<float> edgeType;    ///< filled by the caller (lineEdgeTypes); empty: 0 everywhere
 };
 
 /// Linear light of a POV-Ray working-space colour: max(c, 0)^assumedGamma, or for assumedGamma 0
@@ -46,7 +48,7 @@ struct AovBuffers {
 Vec3 povLinearColor(Vec3 c, double assumedGamma);
 
 /// The AOVs in `kinds` of one pinhole ray through each pixel centre of camera s.cameraIndex
-/// (first hit, no anti-aliasing: ids are never averaged). kAovCoverage is not computed here.
+/// (first hit, no anti-aliasing: ids are never averaged). kAovCoverage and kAovEdgeType are not computed here.
 AovBuffers computeAovs(const Scene& scene, const Bvh& bvh, const RenderSettings& s, unsigned kinds);
 
 }  // namespace rays
