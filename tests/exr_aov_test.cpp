@@ -20,14 +20,12 @@
 #include "support/files.h"
 #include "support/process.h"
 
-#if __has_include(<OpenEXR/ImfInputFile.h>)
-#define RAYS_TEST_EXR 1
+// RAYS_TEST_EXR: set by tests/CMakeLists.txt when the build found OpenEXR.
+#if RAYS_TEST_EXR
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
-#else
-#define RAYS_TEST_EXR 0
 #endif
 
 namespace fs = std::filesystem;
@@ -301,11 +299,24 @@ TEST(HdrIo, RenderPfmAndAovFilesNextToAPng) {
     EXPECT_EQ(rays::toByte(c.values[(size_t(48 - 3) * 65 + 7) * 3]), png.row(3)[7 * 3]);
 }
 
+TEST(HdrIo, ExrWithoutOpenExrSaysSo) {
+    if (rays::exrAvailable()) GTEST_SKIP() << "this build has OpenEXR";
+    rays::HdrImage img(1, 1);
+    img.add("R");
+    try {
+        rays::encodeExr(img);
+        FAIL() << "no error";
+    } catch (const rays::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("built without OpenEXR"), std::string::npos) << e.what();
+    }
+}
+
 TEST(HdrIo, BadAovListFailsBeforeWriting) {
     TempDir dir;
     rays::test::writeFile(dir.path() / "s.pov", std::string(kCamera) + "plane { <0,0,1>, 0 }\n");
-    const auto r = runRays(dir, {"render", "s.pov", "65", "49", "-o", "out.exr", "--aov", "depth,speed", "-q"});
+    const auto r = runRays(dir, {"render", "s.pov", "65", "49", "-o", "out.pfm", "--aov", "depth,speed", "-q"});
     EXPECT_FALSE(r.ok());
     EXPECT_NE(r.err.find("unknown AOV 'speed'"), std::string::npos) << r.err;
-    EXPECT_FALSE(fs::exists(dir.path() / "out.exr"));
+    EXPECT_FALSE(fs::exists(dir.path() / "out.pfm"));
+    EXPECT_FALSE(fs::exists(dir.path() / "out.depth.pfm"));
 }

@@ -8,6 +8,9 @@
 #include "rays/error.h"
 #include "rays/io/image_io.h"
 
+#ifndef RAYS_HAVE_OPENEXR  // set for this file by CMakeLists.txt when OpenEXR was found
+#define RAYS_HAVE_OPENEXR 0
+#endif
 #if RAYS_HAVE_OPENEXR
 #include <OpenEXR/openexr.h>
 #endif
