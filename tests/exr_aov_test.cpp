@@ -200,6 +200,15 @@ TEST(HdrIo, RenderExrAovsOfAPlaneAtKnownDistance) {
     EXPECT_EQ(e.at("objectId", 32, 24), 0.0f);
     EXPECT_EQ(e.at("coverage", 32, 24), 0.0f);  // no lines asked for
     EXPECT_GT(e.at("R", 32, 24), 0.0f);
+    EXPECT_EQ(e.types.at("R"), Imf::FLOAT);
+    EXPECT_EQ(e.types.at("Z"), Imf::FLOAT);
+
+    const auto h = runRays(dir, {"render", "s.pov", "65", "49", "-o", "half.exr", "--aov", "depth", "--exr-half", "-q"});
+    ASSERT_TRUE(h.ok()) << h.summary() << h.err;
+    const ExrRead eh = readExr((dir.path() / "half.exr").string());
+    EXPECT_EQ(eh.types.at("R"), Imf::HALF);
+    EXPECT_EQ(eh.types.at("Z"), Imf::FLOAT);  // AOVs stay float
+    EXPECT_NEAR(eh.at("R", 32, 24), e.at("R", 32, 24), 1e-3);
 }
 
 TEST(HdrIo, RenderExrAovsOfASphereWithLines) {
