@@ -5,7 +5,7 @@
 # the test suite reads through the language; RAYS_BENCH_DEPS=1 adds what the benchmarks compare with.
 set -euo pipefail
 packages=(cmake g++ make pkg-config libspng-dev zlib1g-dev libturbojpeg0-dev libstb-dev libtinyobjloader-dev
-          libcli11-dev libgtest-dev libfreetype-dev povray-includes fonts-povray)
+          libcli11-dev libgtest-dev libfreetype-dev libopenexr-dev povray-includes fonts-povray)
 if [ "${RAYS_TEST_DEPS:-0}" = 1 ]; then
   packages+=(povray-examples)
 fi

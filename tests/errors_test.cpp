@@ -267,9 +267,9 @@ std::vector<BadInput> catalogue() {
                  {"render", "scene.pov", "16", "12", "-o", "scene.pov/out.png"}, 2,
                  "scene.pov/out.png: error: cannot write the image: directory '{DIR}/scene.pov' does not exist", ""});
     t.push_back({"output-unknown-extension", {{"scene.pov", kScene}}, {"render", "scene.pov", "16", "12", "-o", "out.gif"}, 2,
-                 "out.gif: error: unsupported output image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)", "out.gif"});
+                 "out.gif: error: unsupported output image format (use .png, .jpg, .jpeg, .ppm, .tga, .bmp, .exr or .pfm)", "out.gif"});
     t.push_back({"output-no-extension", {{"scene.pov", kScene}}, {"render", "scene.pov", "16", "12", "-o", "out"}, 2,
-                 "out: error: unsupported output image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)", "out"});
+                 "out: error: unsupported output image format (use .png, .jpg, .jpeg, .ppm, .tga, .bmp, .exr or .pfm)", "out"});
     t.push_back({"output-dir-not-writable", {{"scene.pov", kScene}},
                  {"render", "scene.pov", "16", "12", "-o", "/proc/self/out.png"}, 2,
                  "/proc/self/out.png: error: cannot write the image: directory '/proc/self' is not writable", ""});

@@ -109,7 +109,7 @@ int run(int argc, char** argv) {
     shared.width = render->add_option("width", width, "image width in pixels (or -W)");
     shared.height = render->add_option("height", height, "image height in pixels (or -H)");
     cli::addCourseFlags(render, flags);
-    shared.output = render->add_option("-o,--output", job.outputPath, "output image: .png .jpg .ppm .tga .bmp (default output.png)");
+    shared.output = render->add_option("-o,--output", job.outputPath, "output image: .png .jpg .ppm .tga .bmp, or .exr .pfm (linear float) (default output.png)");
     shared.widthFlag = render->add_option("-W,--width", width, "image width in pixels");
     shared.heightFlag = render->add_option("-H,--height", height, "image height in pixels");
     cli::addModernOptions(render, modern, job.settings);
@@ -129,6 +129,9 @@ int run(int argc, char** argv) {
     render->add_option("--crease-angle", job.edges.creaseAngle, "crease threshold in degrees (default 30)");
     render->add_flag("--lines-only", job.edges.linesOnly, "lines on white, no shading");
     render->add_option("--edge-mask", job.edges.maskPath, "also write the line coverage as a greyscale image");
+    // EXR / PFM output and AOVs (docs/aov.md)
+    render->add_option("--aov", job.aovs, "extra outputs: depth,normal,albedo,objectid,materialid,coverage,edgetype | all (EXR channels, else OUTPUT.NAME.pfm)");
+    render->add_flag("--exr-half", job.exrHalf, "EXR colour channels as 16-bit half floats (default 32-bit float)");
     render->add_option("--obj", obj, "add an OBJ mesh to the scene with a default material");
     shared.jpegQuality = render->add_option("--jpeg-quality", job.jpegQuality, "JPEG quality 1-100 (default 90)")->check(CLI::Range(1, 100));
     render->add_flag("--povray-rotate", povrayRotate, "apply rotate x, then y, then z as POV-Ray does (course: z first)");

@@ -19,12 +19,14 @@
 #include "rays/io/obj_loader.h"
 #include "rays/image/filter.h"
 #include "rays/npr/feature_lines.h"
+#include "rays/npr/edge_types.h"
 #include "rays/npr/stencil_pass.h"
 #include "rays/render/renderer.h"
 #include "flag_values.h"
 #include "interrupt.h"
 #include "paths.h"
 #include "render_budget.h"
+#include "hdr_output.h"
 
 namespace rays::cli {
 namespace {
@@ -95,8 +97,12 @@ void checkOutputDirectory(const std::string& output) {
 // An image the render will write (what: "output" or "mask"): a known format, in a folder that
 // exists, and not one of the job's input files.
 void checkImageOutput(const std::string& path, const char* what, const RenderJob& job) {
-    if (!isSupportedImageExtension(path))
-        failFile(path, std::string("unsupported ") + what + " image format (use .png, .jpg, .jpeg, .ppm, .tga or .bmp)");
+    const bool hdr = std::string(what) == "output" && isHdrOutput(path);
+    if (!isSupportedImageExtension(path) && !hdr)
+        failFile(path, std::string("unsupported ") + what + " image format (use .png, .jpg, .jpeg, .ppm, .tga, .bmp" +
+                           (std::string(what) == "output" ? ", .exr or .pfm)" : ")"));
+    if (isExrPath(path) && !exrAvailable())
+        failFile(path, "cannot write EXR: this Rays was built without OpenEXR (install libopenexr-dev and rebuild)");
     checkOutputDirectory(path);
     checkOutputIsNotInput(path, job.scenePath);
     checkOutputIsNotInput(path, job.objPath);
@@ -182,15 +188,33 @@ Scene loadJobScene(const RenderJob& job, const std::vector<std::string>& outputs
     return scene;
 }
 
+// The AOVs in the order they are written.
+constexpr AovBit kAovOrder[] = {kAovDepth, kAovNormal, kAovAlbedo, kAovObjectId, kAovMaterialId, kAovCoverage, kAovEdgeType};
+
 int runRender(const RenderJob& job) {
     InterruptScope interruptScope;  // Ctrl-C / SIGTERM stop the render cleanly (exit 130 / 143)
-    const RenderSettings& s = job.settings;
+    // HDR outputs (.exr, .pfm) take the linear float image (docs/aov.md).
+    const bool hdrOutput = isHdrOutput(job.outputPath);
+    RenderSettings s = job.settings;
+    s.linearOutput = hdrOutput;
     checkImageSize(s.width, s.height);
     checkImageOutput(job.outputPath, "output", job);
+    const unsigned aovKinds = parseAovList(job.aovs);
+    const bool aovFiles = aovKinds != 0 && !isExrPath(job.outputPath);  // one PFM per AOV
+    if (aovFiles)
+        for (AovBit bit : kAovOrder)
+            if (aovKinds & bit) {
+                checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.scenePath);
+                checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.objPath);
+            }
     if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
-    checkOutputsDiffer({{job.outputPath, "output image"},
-                        {job.edges.maskPath, "edge mask"},
-                        {job.savePartial ? partialImagePath(job.outputPath) : std::string(), "partial image"}});
+    std::vector<NamedOutput> outputs = {{job.outputPath, "output image"},
+                                        {job.edges.maskPath, "edge mask"},
+                                        {job.savePartial ? partialImagePath(job.outputPath) : std::string(), "partial image"}};
+    if (aovFiles)
+        for (AovBit bit : kAovOrder)
+            if (aovKinds & bit) outputs.push_back({aovFilePath(job.outputPath, bit), "AOV file"});
+    checkOutputsDiffer(outputs);
 
     auto t0 = Clock::now();
     const Scene scene = loadJobScene(job, {job.outputPath, job.edges.maskPath});
@@ -251,11 +275,22 @@ int runRender(const RenderJob& job) {
     LineCoverage lines;
     if (edges.enabled() || edges.linesOnly) {
         t0 = Clock::now();
+        // The edgetype AOV reads the centre records afterwards: probed here when the render did
+        // not record them (drawFeatureLines then uses them instead of probing its own).
+        if ((aovKinds & kAovEdgeType) && !records && edges.enabled()) {
+            records = std::make_unique<LineRecords>(scene, s.width, s.height);
+            probeLineRecords(scene, bvh, s, edges, *records, stats);
+        }
         lines = stencil ? stencil->finish(stats) : drawFeatureLines(scene, bvh, s, edges, records.get(), stats);
         stopIfInterrupted(job, &scene, &img);
         compositeLines(img, lines, edges, s.threads);
         linesMs = msSince(t0);
     }
+
+    // The AOVs: one pixel-centre ray per pixel (aov.h).
+    AovBuffers aov = aovKinds ? computeAovs(scene, bvh, s, aovKinds) : AovBuffers{};
+    if ((aovKinds & kAovEdgeType) && records && !lines.coverage.empty()) aov.edgeType = lineEdgeTypes(*records, lines, edges);
+    const LineCoverage* lineCoverage = lines.coverage.empty() ? nullptr : &lines;
 
     t0 = Clock::now();
     {
@@ -264,9 +299,22 @@ int runRender(const RenderJob& job) {
         CriticalSection writing;
         stopIfInterrupted(job, &scene, &img);
         OutputFiles files;
-        files.stage(job.outputPath, png ? finishPng(*png, job.outputPath) : encodeImageFile(job.outputPath, toImage8(img), job.jpegQuality));
+        if (png)
+            files.stage(job.outputPath, finishPng(*png, job.outputPath));
+        else if (isExrPath(job.outputPath))
+            files.stage(job.outputPath, encodeHdrImage(job.outputPath, exrImage(img, job.exrHalf, aov, lineCoverage, aovKinds)));
+        else if (hdrOutput)
+            files.stage(job.outputPath, encodeHdrImage(job.outputPath, colourImage(img, false)));
+        else
+            files.stage(job.outputPath, encodeImageFile(job.outputPath, toImage8(img), job.jpegQuality));
         if (!job.edges.maskPath.empty())
             files.stage(job.edges.maskPath, encodeImageFile(job.edges.maskPath, coverageImage(lines), job.jpegQuality));
+        if (aovFiles)
+            for (AovBit bit : kAovOrder)
+                if (aovKinds & bit) {
+                    const std::string path = aovFilePath(job.outputPath, bit);
+                    files.stage(path, encodeHdrImage(path, aovImage(aov, lineCoverage, bit)));
+                }
         files.commit();
     }
     const double writeMs = msSince(t0);

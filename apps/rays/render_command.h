@@ -33,6 +33,8 @@ struct RenderJob {
     std::vector<KernelSpec> post;  ///< --post: filters applied to the rendered image (before lines)
     RotationOrder rotation = RotationOrder::Course;
     int jpegQuality = 90;
+    std::string aovs;      ///< --aov LIST: depth,normal,albedo,objectid,materialid,coverage (docs/aov.md)
+    bool exrHalf = false;  ///< --exr-half: the EXR's colour channels as 16-bit half floats
     bool quiet = false;   ///< no progress bar, no summary line
     bool stats = false;   ///< extra counters on stderr
     bool savePartial = false;  ///< --save-partial: on Ctrl-C, keep what was rendered as OUTPUT.partial.png

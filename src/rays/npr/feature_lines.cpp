@@ -71,16 +71,21 @@ bool renderRecordsAreCentred(const Scene& scene, const RenderSettings& s) {
            (s.shading == ShadingModel::BlinnPhong || s.shading == ShadingModel::CookTorrance);
 }
 
+void probeLineRecords(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,
+                      LineRecords& out, TraceStats& stats) {
+    const Tracer tracer(scene, bvh, s);
+    std::vector<TraceContext> ctx(size_t(resolveThreads(s.threads)));
+    probeCentres(tracer, scene.cameras.at(size_t(s.cameraIndex)), s, e, ctx, out);
+    for (const TraceContext& c : ctx) stats.add(c.stats);
+}
+
 LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,
                               const LineRecords* centre, TraceStats& stats) {
     if (!e.enabled()) return LineCoverage::empty(s.width, s.height);
     std::unique_ptr<LineRecords> probed;
     if (!centre) {
-        const Tracer tracer(scene, bvh, s);
-        std::vector<TraceContext> ctx(size_t(resolveThreads(s.threads)));
         probed = std::make_unique<LineRecords>(scene, s.width, s.height);
-        probeCentres(tracer, scene.cameras.at(size_t(s.cameraIndex)), s, e, ctx, *probed);
-        for (const TraceContext& c : ctx) stats.add(c.stats);
+        probeLineRecords(scene, bvh, s, e, *probed, stats);
         centre = probed.get();
     }
     if (e.method == EdgeMethod::Image) {

@@ -44,6 +44,11 @@ struct LineRecords {
     void store(int x, int y, const PathInfo& info) { rec[size_t(y) * size_t(width) + size_t(x)] = toEdgeRecord(info, ids); }
 };
 
+/// Probes the centre ray of every pixel into out, as drawFeatureLines does without records (for
+/// callers that need the records afterwards: the edgetype AOV). stats receives the rays cast.
+void probeLineRecords(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,
+                      LineRecords& out, TraceStats& stats);
+
 /// Computes the lines. centre: records of the pixel centres, or null to probe them here.
 /// stats receives the rays cast.
 LineCoverage drawFeatureLines(const Scene& scene, const Bvh& bvh, const RenderSettings& s, const EdgeSettings& e,

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "rays/math/sampling.h"
+#include "rays/render/aov.h"
 #include "rays/render/pov_output.h"
 #include "rays/render/sampler.h"
 #include "rays/util/worker_pool.h"
@@ -188,7 +189,11 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     // reads the image (the PNG stream, feature lines, post filters).
     const bool povOutput = scene.pov.enabled;
     const double assumedGamma = scene.pov.assumedGamma;
-    auto pixelOut = [&](Vec3 c) { return povOutput ? povOutputColor(c, assumedGamma) : c; };
+    // HDR files (s.linearOutput) take linear light instead, unclamped (docs/aov.md).
+    auto pixelOut = [&](Vec3 c) {
+        if (!povOutput) return c;
+        return s.linearOutput ? povLinearColor(c, assumedGamma) : povOutputColor(c, assumedGamma);
+    };
     const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
     const int tileCount = tilesX * tilesY;
     std::vector<TraceContext> perThread(size_t(resolveThreads(s.threads)));

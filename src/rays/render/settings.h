@@ -47,6 +47,7 @@ struct RenderSettings {
 
     int threads = 0;           ///< worker threads; 0 = all hardware threads
     int cameraIndex = 0;       ///< which camera of the scene
+    bool linearOutput = false; ///< POV-Ray scenes: pixels in linear light (povLinearColor, HDR files), not encoded
 };
 
 
