@@ -127,6 +127,10 @@ Material SceneBuilder::material(const Appearance& look) {
     s.noReflection = noReflection_;
     s.doubleIlluminate = doubleIlluminate_;
     s.normal = normalRoot(look);
+    if (!look.layers.empty() || !look.choices.empty()) {
+        s.texture = textureNode(look, s, 0);
+        if (s.texture >= 0) s.pigmentTransparent = s.pigmentTransparent || textureMayLetLightThrough(s.texture);
+    }
     // Objects made one after another mostly look alike (a CSG's leaves, copies in a loop): they
     // share the surface then.
     if (!scene_.povSurfaces.empty() && scene_.povSurfaces.back() == s) {
@@ -175,10 +179,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (e.key == kMapEntry) continue;
         if (isTransformEntry(e)) {
             applyTransform(e, local);
-            if (look.set) {  // transformations after the texture move it
-                applyTransform(e, look.pigmentToObject);
-                applyTransform(e, look.normalToObject);
-            }
+            if (look.set) moveLook(look, e);  // transformations after the texture move it
             continue;
         }
         if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
@@ -219,10 +220,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
-    if (look.set) {  // texture space → world
-        look.pigmentToObject = parent * look.pigmentToObject;
-        look.normalToObject = parent * look.normalToObject;
-    }
+    if (look.set) moveLook(look, parent);  // texture space → world
     const Appearance* own = look.set ? &look : inherited;
     // Intersection, difference, merge and clipped objects become one CSG object (csg.h); unions
     // outside them are flattened into their children.

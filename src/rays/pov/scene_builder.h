@@ -69,6 +69,14 @@ private:
     int pigmentRoot(const Appearance& look);
     /// The scene's normal root for a look with a normal (like pigmentRoot), or -1.
     int normalRoot(const Appearance& look);
+    /// The node of Scene::povTextures drawing a layered or patterned look on an object whose
+    /// surface is `object` (its interior and flags go to every layer); -1 when it cannot be placed.
+    int textureNode(const Appearance& look, const PovSurface& object, int depth);
+    /// One plain look as a layer of Scene::povTextures.
+    PovLayer layerOf(const Appearance& look, const PovSurface& object);
+    /// True when some point of the texture node may let light through (every layer of a run, any
+    /// texture of a pattern).
+    bool textureMayLetLightThrough(int node) const;
     /// sky_sphere: its pigments (layers) and transformations → PovGlobals' sky roots.
     void addSkySphere(const Item& sky);
     /// Counts n more objects made at `at`; throws past maxObjects_.
