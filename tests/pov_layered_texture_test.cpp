@@ -168,5 +168,33 @@ TEST(PovPatternedTexture, TextureMapsBlendWholeTextures) {
     }
 }
 
+TEST(PovPatternedTexture, AverageWeighsWholeTextures) {
+    // T2 reflects the background: (0,0,.5) + .5·(.2,.4,.6). Entries without a weight weigh 1.
+    const std::string t1 = "pigment { rgb <1,0,0> } finish { ambient 1 diffuse 0 }";
+    const std::string t2 = "pigment { rgb <0,0,1> } finish { ambient .5 diffuse 0 reflection .5 }";
+    expectColor(plane("texture { average texture_map { [" + t1 + "] [" + t2 + "] } }", "rgb <.2,.4,.6>"),
+                {0.55, 0.1, 0.4});  // measured .55000 .10000 .40000
+    expectColor(plane("texture { average texture_map { [3 " + t1 + "] [1 " + t2 + "] } }", "rgb <.2,.4,.6>"),
+                {0.775, 0.05, 0.2});  // measured .77501 .05000 .20001
+}
+
+TEST(PovPatternedTexture, ALayeredTextureInACheckerKeepsItsLayers) {
+    // The centre pixel shows the checker's first texture once moved by y: the declared layers,
+    // each with ambient 1 (measured .60001 .35001 .22500).
+    expectColor(centre(load("#declare TL = texture { pigment { rgb <.2,.4,.8> } finish { ambient 1 diffuse 0 } }\n"
+                            "  texture { pigment { rgbf <1,.5,.25,.5> } finish { ambient 1 diffuse 0 } }\n"
+                            "plane { -z, 0 texture { checker texture { TL } "
+                            "texture { pigment { rgb <1,0,0> } finish { ambient 1 diffuse 0 } } translate y } }\n")),
+                {0.6, 0.35, 0.225});
+}
+
+TEST(PovPatternedTexture, PlainTexturesStayPlain) {
+    // Only layered and patterned textures go to Scene::povTextures; a plain one keeps the plain path.
+    const Scene s = load("plane { -z, 0 texture { pigment { checker rgb 1 rgb 0 } finish { phong 1 } } }\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.povSurfaces[size_t(s.objects[0].material.pov)].texture, -1);
+    EXPECT_TRUE(s.povTextures.nodes.empty());
+}
+
 }  // namespace
 }  // namespace rays

@@ -309,7 +309,8 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
         if (e.kw() == Kw::texture_map)
             for (const Entry& me : e.args[0].item().entries)
                 if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item)
-                    addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 0 : toFloat(me.args[0]));
+                    // An average's entries may leave their weight out: 1 (as in pigment maps).
+                    addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 1 : toFloat(me.args[0]));
     }
     const int node = pigments.patternedTexture(t, entries, values);
     if (node < 0) return false;
