@@ -2,9 +2,8 @@
 // normal and finish, lower layers' light filtered by the layers above, reflections per layer, the
 // transmitted ray through all layers; a texture map's textures shaded in full and blended. The
 // expected values were measured with povray 3.7.0.10 on these scenes (4×4, 16-bit PPM, sRGB
-// decoded, assumed_gamma 1, centre pixel; /tmp scripts in the style of
-// tests/data/povray/shading/measure_*.py); they hold to 1e-4 (povray clips at 1, Rays' working
-// colour does not: the cases stay below 1 or say so).
+// decoded, assumed_gamma 1, centre pixel: tests/data/povray/shading/measure_layers.py); they hold
+// to 1e-4 (povray clips at 1, Rays' working colour does not: the cases stay below 1 or say so).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -113,6 +112,21 @@ TEST(PovLayeredTexture, ReflectionsPerLayerAndTheTransmittedRayThroughAll) {
     expectColor(plane(bottom + "texture { pigment { rgbt <1,.5,.25,.01> } finish { ambient 0 diffuse 0 } }",
                       "rgb <1,.8,.6>"),
                 {0, 0, 0});
+}
+
+TEST(PovLayeredTexture, ConserveEnergyTakesALayersReflectionFromWhatItLetsThrough) {
+    // Top: reflection .4 with conserve_energy lets through (1 − .4)·f·C: the bottom's ambient
+    // .1 becomes .06 (measured .14000 .22000 .29999).
+    expectColor(plane("texture { pigment { rgb <.2,.4,.8> } finish { ambient 1 diffuse 0 } } "
+                      "texture { pigment { rgbf <1,.5,.25,.5> } finish { ambient 0 diffuse 0 reflection .4 conserve_energy } }",
+                      "rgb <.2,.4,.6>"),
+                {0.14, 0.22, 0.30});
+    // Bottom: its transmitted share (1 − .4)·.5 of what the top lets through reaches the
+    // background (measured .16000 .23999 .31251).
+    expectColor(plane("texture { pigment { rgbt <.2,.4,.8,.5> } finish { ambient 1 diffuse 0 reflection .4 conserve_energy } } "
+                      "texture { pigment { rgbf <1,.5,.25,.5> } finish { ambient 0 diffuse 0 } }",
+                      "rgb <.2,.4,.6>"),
+                {0.16, 0.24, 0.3125});
 }
 
 TEST(PovLayeredTexture, ShadowsAreTintedByEveryLayer) {
