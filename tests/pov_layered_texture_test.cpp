@@ -210,5 +210,24 @@ TEST(PovPatternedTexture, PlainTexturesStayPlain) {
     EXPECT_TRUE(s.povTextures.nodes.empty());
 }
 
+TEST(PovPatternedTexture, TexturesNestedBeyond4096AreDrawnAsTheirMix) {
+    // Each level doubles the textures: 2^13 = 8192 are too many to keep apart; the object's look
+    // is then the pattern's mix of pigments (noted), not a table of 8192 textures.
+    std::string text = "#declare T0 = texture { pigment { rgb 1 } }\n";
+    for (int i = 1; i <= 13; ++i)
+        text += "#declare T" + std::to_string(i) + " = texture { checker texture { T" + std::to_string(i - 1) +
+                " } texture { T" + std::to_string(i - 1) + " } }\n";
+    const test::PovLoaded l =
+        test::loadPov(text + "plane { -z, 0 texture { T13 } }\n", "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n");
+    ASSERT_EQ(l.warnings.size(), 1u);
+    EXPECT_NE(l.warnings[0].find("more than 4096 textures"), std::string::npos) << l.warnings[0];
+    EXPECT_EQ(l.scene.povSurfaces[size_t(l.scene.objects[0].material.pov)].texture, -1);
+    // 12 levels (4096 textures) are kept.
+    const Scene kept = load(text + "plane { -z, 0 texture { T12 } }\n");
+    const int node = kept.povSurfaces[size_t(kept.objects[0].material.pov)].texture;
+    ASSERT_GE(node, 0);
+    EXPECT_EQ(kept.povTextures.layers.size(), 4096u);
+}
+
 }  // namespace
 }  // namespace rays

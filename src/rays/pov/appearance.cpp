@@ -222,7 +222,18 @@ Appearance plainLook(const Appearance& a) {
     p.layers.clear();
     p.choices.clear();
     p.patternNode = -1;
+    p.parts = 1;
     return p;
+}
+
+// Looks kept apart in one object's texture at most: textures nested in patterns double at every
+// level, so a deeper tree is drawn as its mix (noted).
+constexpr int kMaxParts = 4096;
+
+int partsOf(const std::vector<Appearance>& looks) {
+    int n = 0;
+    for (const Appearance& l : looks) n = std::min(kMaxParts + 1, n + l.parts);
+    return n;
 }
 
 // A layer over the texture below it (POV-Ray 3.7 reference, "Layered Textures"). Each layer keeps
@@ -260,7 +271,9 @@ void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCom
                                           {top.pigmentNode, top.pigment, top.pigmentToObject});
         a.pigmentToObject = Transform{};
     }
-    a.layers = std::move(layers);
+    a.parts = partsOf(layers);
+    if (a.parts <= kMaxParts) a.layers = std::move(layers);
+    else notes.note("layered texture", layer.loc, "(more than 4096 textures in one: the layers' pigments mixed, lit with one finish)");
 }
 
 // A patterned texture (POV-Ray 3.7 reference, "Patterned Textures", "Texture Maps"): the pattern
@@ -330,7 +343,9 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
     a.pigmentToObject = Transform{};
     a.patternNode = node;
     a.patternToObject = Transform{};
-    a.choices = std::move(looks);
+    a.parts = partsOf(looks);
+    if (a.parts <= kMaxParts) a.choices = std::move(looks);
+    else notes.note("texture pattern", patternAt->loc, "(more than 4096 textures in one: the textures' pigments follow the pattern, lit with one finish)");
     return true;
 }
 

@@ -34,6 +34,7 @@ struct Appearance {
     std::vector<Appearance> choices;
     int patternNode = -1;       ///< the pattern (a node of the PigmentTable) choosing among choices
     Transform patternToObject;  ///< like pigmentToObject, for the pattern
+    int parts = 1;              ///< plain looks in the tree of layers and choices (bounded)
 };
 
 /// The look moved by `outer`, applied after what moves it already: its pigment, normal, pattern,
