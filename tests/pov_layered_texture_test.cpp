@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "rays/accel/bvh.h"
 #include "rays/render/tracer.h"
@@ -227,6 +228,23 @@ TEST(PovPatternedTexture, TexturesNestedBeyond4096AreDrawnAsTheirMix) {
     const int node = kept.povSurfaces[size_t(kept.objects[0].material.pov)].texture;
     ASSERT_GE(node, 0);
     EXPECT_EQ(kept.povTextures.layers.size(), 4096u);
+}
+
+TEST(PovMeshTextureList, OneTextureEveryFaceNamesDrawsTheMesh) {
+    // .8·C + phong .2 (measured 1 .60001 .20001), whatever the mesh's own texture; a face
+    // without an index keeps the mesh's own texture (measured 0 0 .7) and the list is noted.
+    const std::string mesh = "mesh2 { vertex_vectors { 3, <-2,-2,0>, <2,-2,0>, <0,3,0> } "
+                             "texture_list { 1, texture { pigment { rgb <1,.5,0> } finish { ambient .5 diffuse .3 phong .2 } } } ";
+    expectColor(plane("pigment { rgb 0 } }\n" + mesh + "face_indices { 1, <0,1,2>, 0 } translate -z"), {1.0, 0.6, 0.2});
+    expectColor(plane("pigment { rgb 0 } }\n" + mesh + "face_indices { 1, <0,1,2>, 0 } texture { pigment { rgb <0,0,1> } } translate -z"),
+                {1.0, 0.6, 0.2});
+    std::vector<std::string> warnings;
+    const Scene own = test::buildPov("light_source { <0,0,-10>, rgb 1 parallel point_at 0 }\n" + mesh +
+                                         "face_indices { 1, <0,1,2> } texture { pigment { rgb <0,0,1> } } }\n",
+                                     &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("mesh2 texture_list"), std::string::npos);
+    EXPECT_EQ(own.objects[0].material.color, Vec3(0, 0, 1));
 }
 
 }  // namespace
