@@ -230,6 +230,20 @@ TEST(PovPatternedTexture, TexturesNestedBeyond4096AreDrawnAsTheirMix) {
     EXPECT_EQ(kept.povTextures.layers.size(), 4096u);
 }
 
+TEST(PovInteriorTexture, TheInnerSideHasItsOwnTexture) {
+    // A sphere's inner side, seen through a clipped cap or through its transmitting outer side
+    // (measured 1 .7 0 and .67302 .48843 .34607); from outside the outer texture alone.
+    auto sphere = [](const std::string& pigment, const std::string& more) {
+        return centre(load("background { rgb <.2,.4,.6> }\n"
+                           "light_source { <0,0,-10>, rgb 1 parallel point_at 0 }\n"
+                           "sphere { 0, 1 texture { pigment { " + pigment + " } finish { ambient .2 diffuse .5 } } "
+                           "interior_texture { pigment { rgb <1,.7,0> } finish { ambient 1 diffuse 0 } } " + more + " }\n"));
+    };
+    expectColor(sphere("rgb <.5,.4,1>", "clipped_by { plane { z, -.5 inverse } }"), {1.0, 0.7, 0.0});
+    expectColor(sphere("rgbt <.5,.4,1,.5>", ""), {0.67302, 0.48843, 0.34607}, 1e-3);
+    expectColor(sphere("rgb <.5,.4,1>", ""), {0.34607, 0.27685, 0.69213}, 1e-3);
+}
+
 TEST(PovMeshTextureList, OneTextureEveryFaceNamesDrawsTheMesh) {
     // .8·C + phong .2 (measured 1 .60001 .20001), whatever the mesh's own texture; a face
     // without an index keeps the mesh's own texture (measured 0 0 .7) and the list is noted.

@@ -206,6 +206,7 @@ void moveLook(Appearance& a, const Transform& outer) {
     a.patternToObject = outer * a.patternToObject;
     for (Appearance& l : a.layers) moveLook(l, outer);
     for (Appearance& c : a.choices) moveLook(c, outer);
+    for (Appearance& i : a.inside) moveLook(i, outer);
 }
 
 void moveLook(Appearance& a, const Entry& transformation) {
@@ -223,6 +224,7 @@ Appearance plainLook(const Appearance& a) {
     p.choices.clear();
     p.patternNode = -1;
     p.parts = 1;
+    p.inside.clear();
     return p;
 }
 
@@ -414,8 +416,11 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
         a.interiorSet = true;
         return true;
     }
-    if (k == Kw::interior_texture) {
-        notes.note("interior_texture", e.loc);
+    if (k == Kw::interior_texture) {  // the inner side's texture (POV-Ray 3.7 reference, "Interior Texture")
+        Appearance inside = fallback;
+        inside.inside.clear();
+        applyTexture(e.args[0].item(), inside, notes, pigments, &fallback);
+        a.inside.assign(1, std::move(inside));
         return true;
     }
     if (!a.set) {

@@ -35,6 +35,8 @@ struct Appearance {
     int patternNode = -1;       ///< the pattern (a node of the PigmentTable) choosing among choices
     Transform patternToObject;  ///< like pigmentToObject, for the pattern
     int parts = 1;              ///< plain looks in the tree of layers and choices (bounded)
+    /// interior_texture: the look of the surface's inner side (one look), or none.
+    std::vector<Appearance> inside;
 };
 
 /// The look moved by `outer`, applied after what moves it already: its pigment, normal, pattern,

@@ -131,6 +131,10 @@ Material SceneBuilder::material(const Appearance& look) {
         s.texture = textureNode(look, s, 0);
         if (s.texture >= 0) s.pigmentTransparent = s.pigmentTransparent || textureMayLetLightThrough(s.texture);
     }
+    if (!look.inside.empty()) {
+        s.interiorTexture = textureNode(look.inside[0], s, 0);
+        s.pigmentTransparent = s.pigmentTransparent || textureMayLetLightThrough(s.interiorTexture);
+    }
     // Objects made one after another mostly look alike (a CSG's leaves, copies in a loop): they
     // share the surface then.
     if (!scene_.povSurfaces.empty() && scene_.povSurfaces.back() == s) {

@@ -13,6 +13,12 @@ struct PovTextureChoice {
     int begin = 0, count = 0;
 };
 
+/// The texture node a ray meets on surface s from outside (entering) or inside: the interior
+/// texture inside when there is one, else the texture; -1: the plain texture.
+inline int povTextureSeen(const PovSurface& s, bool entering) {
+    return !entering && s.interiorTexture >= 0 ? s.interiorTexture : s.texture;
+}
+
 /// At most this many textures are blended at one point (more are left out).
 constexpr int kMaxTextureChoices = 8;
 

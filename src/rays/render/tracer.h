@@ -246,10 +246,11 @@ private:
         double filter = 0, transmit = 0, opacity = 0;
         Vec3 through{1, 1, 1};
     };
-    /// shadePov for a surface with a layered or patterned texture: the textures the pattern shows
+    /// shadePov for a surface with a layered or patterned texture (node `texture` of
+    /// Scene::povTextures, the side's: povTextureSeen): the textures the pattern shows
     /// at the hit, each lit in full, blended by their weights (POV-Ray 3.7 reference, "Texture Maps").
     Vec3 shadePovTextured(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
-                          PathInfo* info) const;
+                          PathInfo* info, int texture) const;
     /// One run of layers at pt (POV-Ray 3.7 reference, "Layered Textures"; measured): each layer's
     /// own colour and highlights lit with its own finish and normal and filtered by the layers
     /// above it, each layer's reflection unfiltered, what all the layers let through transmitted.

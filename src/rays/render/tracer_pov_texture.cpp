@@ -35,7 +35,7 @@ bool layerLit(const PovSurface& s, double opacity, double nl) {
 }  // namespace
 
 Vec3 Tracer::shadePovTextured(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
-                              PathInfo* info) const {
+                              PathInfo* info, int texture) const {
     const Object& o = shadedObject(scene_.objects, hit);
     PovPoint pt;
     pt.object = hit.object;
@@ -46,7 +46,7 @@ Vec3 Tracer::shadePovTextured(const Ray& ray, const Hit& hit, const PovRay& r, V
     pt.interior = r.interior;
     pt.viewFade = r.faded * segmentFade;
     PovTextureChoice choices[kMaxTextureChoices];
-    const int n = povTextureChoices(scene_, pt.surface->texture, pt.P, choices);
+    const int n = povTextureChoices(scene_, texture, pt.P, choices);
     if (n == 1) return shadePovLayers(ray, hit, pt, choices[0].begin, choices[0].count, r, ctx, info);
     // Between two entries of a texture map both textures are shaded in full, reflection and
     // refraction included, and their colours blended (the manual, "Texture Maps"; measured).

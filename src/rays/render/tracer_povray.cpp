@@ -99,7 +99,10 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
 Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                       PathInfo* info) const {
     const Object& o = shadedObject(scene_.objects, hit);
-    if (povSurfaceOf(o.material).texture >= 0) return shadePovTextured(ray, hit, r, segmentFade, ctx, info);
+    if (const PovSurface& s = povSurfaceOf(o.material); s.texture >= 0 || s.interiorTexture >= 0) {
+        const int node = povTextureSeen(s, dot(ray.dir, hit.geomNormal) < 0);
+        if (node >= 0) return shadePovTextured(ray, hit, r, segmentFade, ctx, info, node);
+    }
     PovPoint pt;
     pt.object = hit.object;
     pt.material = &o.material;
@@ -308,8 +311,8 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             continue;
         }
         if (!letsLightThrough(o.material, s)) return {};
-        if (s.texture >= 0) {  // a layered or patterned texture: each layer tints
-            tint *= povTextureTint(scene_, s.texture, shadow.at(h.t));
+        if (const int node = povTextureSeen(s, dot(shadow.dir, h.geomNormal) < 0); node >= 0) {
+            tint *= povTextureTint(scene_, node, shadow.at(h.t));  // a layered or patterned texture: each layer tints
         } else {
             Vec3 C = o.material.color;
             double filter = o.material.filter, transmit = s.transmit;

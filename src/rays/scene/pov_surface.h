@@ -54,6 +54,9 @@ struct PovSurface {
     /// A layered or patterned texture: a node of Scene::povTextures, lit layer by layer (the fields
     /// above then hold the layers' mix, for shading paths that know one look only); -1: plain.
     int texture = -1;
+    /// interior_texture: a node of Scene::povTextures drawing the inner side (rays arriving from
+    /// inside, shadow rays leaving); -1: both sides look alike.
+    int interiorTexture = -1;
 
     bool operator==(const PovSurface&) const = default;
 };
