@@ -153,10 +153,16 @@ TEST(PovObjects, TexturesWrittenInARowAreOneLayeredTexture) {
         "sphere { 0, 1 material { M } }\n"
         "sphere { 0, 1 texture { pigment { rgb 1 } } texture { T } }\n");
     ASSERT_EQ(b.error, "");
-    // One note for the layers, none for "texture at the top level".
-    ASSERT_EQ(b.warnings.size(), 1u);
-    EXPECT_EQ(b.warnings[0], "scene.pov:2:3: warning: not rendered yet: layered texture (the layers' pigments mixed, lit with one finish)");
+    // No note for "texture at the top level" (and the layers are rendered).
+    EXPECT_TRUE(b.warnings.empty()) << b.warnings[0];
     ASSERT_EQ(b.scene.objects.size(), 2u);
+    // Each object's layers, top first: T's two, and a white one under T's two.
+    const auto layers = [&](size_t i) {
+        const int t = b.scene.povSurfaces[size_t(b.scene.objects[i].material.pov)].texture;
+        return t < 0 ? 0 : b.scene.povTextures.nodes[size_t(t)].count;
+    };
+    EXPECT_EQ(layers(0), 2);
+    EXPECT_EQ(layers(1), 3);
     // Half-transmitting red over white: half red, half the white below.
     EXPECT_TRUE(near(b.scene.objects[0].material.color, {1, 0.5, 0.5})) << b.scene.objects[0].material.color.y;
     EXPECT_DOUBLE_EQ(b.scene.objects[0].material.filter, 0);

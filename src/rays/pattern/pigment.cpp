@@ -4,14 +4,31 @@
 
 namespace rays::pattern {
 
-Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
-    const PigmentNode& node = nodes[size_t(n)];
-    if (node.kind == PatternKind::Solid) return node.color;
+Vec3 PigmentTable::inNodeSpace(const PigmentNode& node, Vec3 p) const {
     if (node.warpCount > 0) {
         for (int i = 0; i < node.warpCount; ++i) p = applyWarp(warps[size_t(node.warpBegin + i)], p);
     } else if (node.transformed) {
         p = node.toPattern.point(p);
     }
+    return p;
+}
+
+MapPlace PigmentTable::place(int n, Vec3 p) const {
+    const PigmentNode& node = nodes[size_t(n)];
+    if (node.mapCount == 0) return {};
+    p = inNodeSpace(node, p);
+    if (isBlockPattern(node.kind)) {
+        const int i = std::min(blockIndex(node.kind, node.params, p), node.mapCount - 1);
+        return {i, i, 0};
+    }
+    const double v = applyWave(node.wave, patternValue(node.kind, node.params, p));
+    return placeInMap({entries.data() + node.mapBegin, size_t(node.mapCount)}, v);
+}
+
+Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
+    const PigmentNode& node = nodes[size_t(n)];
+    if (node.kind == PatternKind::Solid) return node.color;
+    p = inNodeSpace(node, p);
     const MapEntry* map = entries.data() + node.mapBegin;
     // Entries that are pigments are evaluated at the point in this pigment's space (the outer
     // pigment's transformations move its map's pigments too).

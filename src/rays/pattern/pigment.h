@@ -48,6 +48,18 @@ struct PigmentTable {
     }
     /// True when some colour of node n filters or transmits.
     bool mayLetLightThrough(int n) const;
+    /// Where node n's pattern puts p (p in the space enclosing the node): the place in its map, or
+    /// for a block pattern the entry of its list (lo == hi). For nodes with a pattern and a map.
+    MapPlace place(int n, Vec3 p) const;
+    /// place() of root r's node at the world point.
+    MapPlace placeAtRoot(int r, Vec3 world) const {
+        const PigmentRoot& root = roots[size_t(r)];
+        return place(root.node, root.worldToTexture.point(world));
+    }
+
+private:
+    /// p (in the space enclosing node) moved into the node's pattern space: warps or transformation.
+    Vec3 inNodeSpace(const PigmentNode& node, Vec3 p) const;
 };
 
 }  // namespace rays::pattern

@@ -200,18 +200,66 @@ void applyInterior(const Item& i, PovInterior& in, NotRendered& notes) {
     }
 }
 
+void moveLook(Appearance& a, const Transform& outer) {
+    a.pigmentToObject = outer * a.pigmentToObject;
+    a.normalToObject = outer * a.normalToObject;
+    a.patternToObject = outer * a.patternToObject;
+    for (Appearance& l : a.layers) moveLook(l, outer);
+    for (Appearance& c : a.choices) moveLook(c, outer);
+    for (Appearance& i : a.inside) moveLook(i, outer);
+}
+
+void moveLook(Appearance& a, const Entry& transformation) {
+    Transform t;
+    applyTransform(transformation, t);
+    moveLook(a, t);
+}
+
 namespace {
 
-// A layer over the texture below it (POV-Ray 3.7 reference, "Layered Textures"): the lower texture
-// shows through the layer's pigment where it filters (tinted by the layer's colour) or transmits.
-// The pigments are mixed point by point (a Layered pigment node; the flat colour is the mix of the
-// mean colours), light passing only where both let it; the finish is the layer's where it is
-// mostly opaque. Lighting each layer with its own finish is not rendered yet.
-void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
-    notes.note("layered texture", layer.loc, "(the layers' pigments mixed, lit with one finish)");
+// The look as one plain texture (a layered or patterned look: the mix of its parts).
+Appearance plainLook(const Appearance& a) {
+    Appearance p = a;
+    p.layers.clear();
+    p.choices.clear();
+    p.patternNode = -1;
+    p.parts = 1;
+    p.inside.clear();
+    return p;
+}
+
+// Looks kept apart in one object's texture at most: textures nested in patterns double at every
+// level, so a deeper tree is drawn as its mix (noted).
+constexpr int kMaxParts = 4096;
+
+int partsOf(const std::vector<Appearance>& looks) {
+    int n = 0;
+    for (const Appearance& l : looks) n = std::min(kMaxParts + 1, n + l.parts);
+    return n;
+}
+
+// A layer over the texture below it (POV-Ray 3.7 reference, "Layered Textures"). Each layer keeps
+// its own pigment, normal and finish (a.layers; the tracer lights them one by one); a layer starts
+// from the default texture, not from the layer below (measured). The fields of a become their mix
+// for paths that draw one look: the pigments mixed point by point (a Layered pigment node; the flat
+// colour is the mix of the mean colours), the finish the layer's where it is mostly opaque.
+void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCompiler* pigments,
+                const Appearance* base) {
     const Appearance below = a;
-    applyTexture(layer, a, notes, pigments);
-    const Appearance top = a;
+    Appearance top = base ? plainLook(*base) : Appearance{};
+    top.interior = a.interior;
+    top.interiorSet = a.interiorSet;
+    applyTexture(layer, top, notes, pigments, base);
+    std::vector<Appearance> layers = below.layers;
+    if (layers.empty()) layers.push_back(plainLook(below));
+    if (top.layers.empty()) layers.push_back(plainLook(top));
+    else layers.insert(layers.end(), top.layers.begin(), top.layers.end());
+
+    a = plainLook(top);
+    if (a.normalNode < 0) {  // the mix keeps the last normal given
+        a.normalNode = below.normalNode;
+        a.normalToObject = below.normalToObject;
+    }
     const double f = std::clamp(a.pigment.filter, 0.0, 1.0);
     const double t = std::clamp(a.pigment.transmit, 0.0, 1.0);
     const double through = std::min(1.0, f + t);
@@ -220,21 +268,22 @@ void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCom
     a.pigment.transmit = below.pigment.transmit * through;
     if (through >= 0.5) a.finish = below.finish;
     // Patterns: the layers are mixed point by point.
-    if (pigments && (a.pigmentNode >= 0 || below.pigmentNode >= 0)) {
+    if (pigments && (top.pigmentNode >= 0 || below.pigmentNode >= 0)) {
         a.pigmentNode = pigments->layered({below.pigmentNode, below.pigment, below.pigmentToObject},
                                           {top.pigmentNode, top.pigment, top.pigmentToObject});
         a.pigmentToObject = Transform{};
     }
+    a.parts = partsOf(layers);
+    if (a.parts <= kMaxParts) a.layers = std::move(layers);
+    else notes.note("layered texture", layer.loc, "(more than 4096 textures in one: the layers' pigments mixed, lit with one finish)");
 }
 
-}  // namespace
-
-namespace {
-
 // A patterned texture (POV-Ray 3.7 reference, "Patterned Textures", "Texture Maps"): the pattern
-// chooses among whole textures; Rays draws their pigments by the pattern and lights them with the
-// first texture's finish. False when the texture is not one (or its pattern is not rendered).
-bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler& pigments) {
+// chooses among whole textures (a.choices, each lit with its own finish and normal by the tracer;
+// the fields of a become the first texture with the textures' pigments following the pattern).
+// False when the texture is not one (or its pattern is not rendered).
+bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler& pigments,
+                           const Appearance* base) {
     const Entry* patternAt = nullptr;
     for (const Entry& e : t.entries) {
         if (e.positional()) {
@@ -249,10 +298,11 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
     std::vector<double> values;
     std::vector<Appearance> looks;
     auto addTexture = [&](const Item& sub, double value) {
-        Appearance look = a;
+        Appearance look = plainLook(a);
         look.pigmentNode = -1;
         look.pigmentToObject = Transform{};
-        applyTexture(sub, look, notes, &pigments);
+        look.normalToObject = Transform{};
+        applyTexture(sub, look, notes, &pigments, base);
         entries.push_back({look.pigmentNode, look.pigment, look.pigmentToObject});
         values.push_back(value);
         looks.push_back(look);
@@ -274,54 +324,74 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
         if (e.kw() == Kw::texture_map)
             for (const Entry& me : e.args[0].item().entries)
                 if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item)
-                    addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 0 : toFloat(me.args[0]));
+                    // An average's entries may leave their weight out: 1 (as in pigment maps).
+                    addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 1 : toFloat(me.args[0]));
     }
     const int node = pigments.patternedTexture(t, entries, values);
     if (node < 0) return false;
-    notes.note("texture pattern", patternAt->loc, "(the textures' pigments follow the pattern, lit with one finish)");
+    // The texture's transformations move its textures with the pattern.
+    for (const Entry& e : t.entries)
+        if (!e.positional() && e.key != kMapEntry && isTransformEntry(e))
+            for (Appearance& l : looks) moveLook(l, e);
     ColorMean mean;
     for (const Appearance& l : looks) mean.add(l.pigment);
     const PovInterior interior = a.interior;
     const bool interiorSet = a.interiorSet;
-    a = looks[0];
+    a = plainLook(looks[0]);
     a.interior = interior;
     a.interiorSet = interiorSet;
     a.pigment = mean.mean();
     a.pigmentNode = node;
     a.pigmentToObject = Transform{};
+    a.patternNode = node;
+    a.patternToObject = Transform{};
+    a.parts = partsOf(looks);
+    if (a.parts <= kMaxParts) a.choices = std::move(looks);
+    else notes.note("texture pattern", patternAt->loc, "(more than 4096 textures in one: the textures' pigments follow the pattern, lit with one finish)");
     return true;
+}
+
+// The part of a look that a texture's own pigment, normal or finish changes: the look, and the top
+// layer of a layered one (a modifier after a layered texture's identifier changes its top layer:
+// measured).
+template <class F>
+void onTop(Appearance& a, F&& change) {
+    change(a);
+    if (!a.layers.empty()) change(a.layers.back());
 }
 
 }  // namespace
 
-void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
+void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler* pigments,
+                  const Appearance* layerBase) {
     a.set = true;
-    if (pigments && applyPatternedTexture(t, a, notes, *pigments)) return;
+    if (pigments && applyPatternedTexture(t, a, notes, *pigments, layerBase)) return;
     bool layered = false;  // a texture item applied already: the next is a layer over it
     for (const Entry& e : t.entries) {
         if (e.positional()) {
             for (const Value& v : e.args) {
                 if (v.type != VType::Item || v.item().kind != Kw::texture) continue;
-                if (layered) applyLayer(v.item(), a, notes, pigments);
-                else applyTexture(v.item(), a, notes, pigments);
+                if (layered) applyLayer(v.item(), a, notes, pigments, layerBase);
+                else applyTexture(v.item(), a, notes, pigments, layerBase);
                 layered = true;
             }
             continue;
         }
         if (e.key == kMapEntry) continue;
         if (isTransformEntry(e)) {  // moves the texture's pigment and normal (set before it)
-            applyTransform(e, a.pigmentToObject);
-            applyTransform(e, a.normalToObject);
+            moveLook(a, e);
             continue;
         }
         switch (e.kw()) {
-            case Kw::pigment: setPigment(e.args[0].item(), a, notes, pigments); break;
-            case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
-            case Kw::normal: setNormal(e, a, notes, pigments); break;
+            case Kw::pigment:
+                onTop(a, [&](Appearance& l) { setPigment(e.args[0].item(), l, notes, pigments); });
+                break;
+            case Kw::finish: onTop(a, [&](Appearance& l) { applyFinish(e.args[0].item(), l.finish, notes); }); break;
+            case Kw::normal: onTop(a, [&](Appearance& l) { setNormal(e, l, notes, pigments); }); break;
             case Kw::texture_map: notes.note("texture_map", e.loc, "(drawn with its first texture)");
                 for (const Entry& me : e.args[0].item().entries)
                     if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item) {
-                        applyTexture(me.args[1].item(), a, notes, pigments);
+                        applyTexture(me.args[1].item(), a, notes, pigments, layerBase);
                         break;
                     }
                 break;
@@ -346,8 +416,11 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
         a.interiorSet = true;
         return true;
     }
-    if (k == Kw::interior_texture) {
-        notes.note("interior_texture", e.loc);
+    if (k == Kw::interior_texture) {  // the inner side's texture (POV-Ray 3.7 reference, "Interior Texture")
+        Appearance inside = fallback;
+        inside.inside.clear();
+        applyTexture(e.args[0].item(), inside, notes, pigments, &fallback);
+        a.inside.assign(1, std::move(inside));
         return true;
     }
     if (!a.set) {
@@ -360,11 +433,11 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
     }
     switch (k) {
         case Kw::texture:  // over what is set (textures written in a row arrive as one layered texture)
-            applyTexture(e.args[0].item(), a, notes, pigments);
+            applyTexture(e.args[0].item(), a, notes, pigments, &fallback);
             break;
-        case Kw::pigment: setPigment(e.args[0].item(), a, notes, pigments); break;
-        case Kw::finish: applyFinish(e.args[0].item(), a.finish, notes); break;
-        case Kw::normal: setNormal(e, a, notes, pigments); break;
+        case Kw::pigment: onTop(a, [&](Appearance& l) { setPigment(e.args[0].item(), l, notes, pigments); }); break;
+        case Kw::finish: onTop(a, [&](Appearance& l) { applyFinish(e.args[0].item(), l.finish, notes); }); break;
+        case Kw::normal: onTop(a, [&](Appearance& l) { setNormal(e, l, notes, pigments); }); break;
         case Kw::material:
             for (const Entry& me : e.args[0].item().entries) {
                 if (me.positional()) {

@@ -1,9 +1,12 @@
 // How a POV-Ray object looks, as far as Rays renders it today: a pigment (a flat colour, or a
-// pattern compiled by PigmentCompiler, with its mean colour kept as the flat one), POV-Ray's
-// finish and interior. Textures, pigments, finishes, interiors and materials of an object are
-// applied to it in file order (POV-Ray 3.7 reference, "Texture", "Default Directive"); normals,
-// texture patterns and some pigment patterns are noted as not rendered yet.
+// pattern compiled by PigmentCompiler, with its mean colour kept as the flat one), a normal,
+// POV-Ray's finish and interior, and for layered and patterned textures their plain textures.
+// Textures, pigments, finishes, interiors and materials of an object are applied to it in file
+// order (POV-Ray 3.7 reference, "Texture", "Default Directive"); some pigment patterns are noted
+// as not rendered yet.
 #pragma once
+#include <vector>
+
 #include "rays/pov/item_values.h"
 #include "rays/pov/not_rendered.h"
 #include "rays/pov/pigment_compile.h"
@@ -23,7 +26,24 @@ struct Appearance {
     PovFinish finish;
     PovInterior interior;
     bool interiorSet = false;
+    /// A layered texture: its layers, the bottom one first, each a plain look (POV-Ray 3.7
+    /// reference, "Layered Textures"); the fields above then hold their mix. Empty otherwise.
+    std::vector<Appearance> layers;
+    /// A patterned texture: the textures its pattern chooses among, in its map's or list's order
+    /// ("Patterned Textures"); the fields above then hold their mix. Empty otherwise.
+    std::vector<Appearance> choices;
+    int patternNode = -1;       ///< the pattern (a node of the PigmentTable) choosing among choices
+    Transform patternToObject;  ///< like pigmentToObject, for the pattern
+    int parts = 1;              ///< plain looks in the tree of layers and choices (bounded)
+    /// interior_texture: the look of the surface's inner side (one look), or none.
+    std::vector<Appearance> inside;
 };
+
+/// The look moved by `outer`, applied after what moves it already: its pigment, normal, pattern,
+/// layers and choices.
+void moveLook(Appearance& a, const Transform& outer);
+/// moveLook by a transformation entry (translate, rotate, scale, matrix, transform).
+void moveLook(Appearance& a, const Entry& transformation);
 
 /// Applies an object modifier entry that concerns appearance (texture, pigment, normal, finish,
 /// interior, material); false when the entry is something else. `fallback` is what an unset
@@ -37,6 +57,9 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
 void applyPigment(const Item& pigment, Rgbft& c, NotRendered& notes, bool noteUnrendered = true);
 void applyFinish(const Item& finish, PovFinish& f, NotRendered& notes);
 void applyInterior(const Item& interior, PovInterior& in, NotRendered& notes);
-void applyTexture(const Item& texture, Appearance& a, NotRendered& notes, PigmentCompiler* pigments = nullptr);
+/// Applies a texture item over a. A layer of a layered texture starts from `layerBase` (the
+/// default texture; POV-Ray's defaults when null), not from the layer below (measured).
+void applyTexture(const Item& texture, Appearance& a, NotRendered& notes, PigmentCompiler* pigments = nullptr,
+                  const Appearance* layerBase = nullptr);
 
 }  // namespace rays::pov

@@ -1,6 +1,9 @@
 // SceneBuilder's pigment pieces (kept apart from scene_builder.cpp, which is about objects): a
-// look's compiled pattern placed in the world, and the sky_sphere's pigments.
+// look's compiled pattern and normal placed in the world, layered and patterned textures as nodes
+// of Scene::povTextures, and the sky_sphere's pigments.
 #include "rays/pov/scene_builder.h"
+
+#include <algorithm>
 
 namespace rays::pov {
 
@@ -17,6 +20,62 @@ int SceneBuilder::normalRoot(const Appearance& look) {
     const Transform toTexture = look.normalToObject.inverse();
     scene_.normals.roots.push_back(pattern::NormalRoot{toTexture, look.normalToObject, look.normalNode});
     return int(scene_.normals.roots.size()) - 1;
+}
+
+PovLayer SceneBuilder::layerOf(const Appearance& look, const PovSurface& object) {
+    PovLayer l;
+    l.surface = object;
+    l.surface.texture = -1;
+    l.surface.finish = look.finish;
+    l.surface.transmit = look.pigment.transmit;
+    l.surface.pigment = pigmentRoot(look);
+    l.surface.pigmentTransparent =
+        l.surface.pigment >= 0 && scene_.pigments.mayLetLightThrough(look.pigmentNode);
+    l.surface.normal = normalRoot(look);
+    l.color = look.pigment.rgb;
+    l.filter = std::clamp(look.pigment.filter, 0.0, 1.0);
+    return l;
+}
+
+// Layers go to the table top first; a pattern's textures become nodes of their own first, so
+// that its children are contiguous.
+int SceneBuilder::textureNode(const Appearance& look, const PovSurface& object, int depth) {
+    PovTextures& tx = scene_.povTextures;
+    PovTextureNode node;
+    if (!look.choices.empty() && depth < 64 && look.patternNode >= 0 && look.patternToObject.determinant() != 0) {
+        std::vector<int> kids;
+        for (const Appearance& c : look.choices) kids.push_back(textureNode(c, object, depth + 1));
+        scene_.pigments.roots.push_back(pattern::PigmentRoot{look.patternToObject.inverse(), look.patternNode});
+        node.pattern = int(scene_.pigments.roots.size()) - 1;
+        node.begin = int(tx.children.size());
+        node.count = int(kids.size());
+        tx.children.insert(tx.children.end(), kids.begin(), kids.end());
+    } else {
+        node.begin = int(tx.layers.size());
+        if (look.layers.empty()) {
+            tx.layers.push_back(layerOf(look, object));
+        } else {
+            for (auto it = look.layers.rbegin(); it != look.layers.rend(); ++it) tx.layers.push_back(layerOf(*it, object));
+        }
+        node.count = int(tx.layers.size()) - node.begin;
+    }
+    tx.nodes.push_back(node);
+    return int(tx.nodes.size()) - 1;
+}
+
+bool SceneBuilder::textureMayLetLightThrough(int n) const {
+    const PovTextures& tx = scene_.povTextures;
+    const PovTextureNode& node = tx.nodes[size_t(n)];
+    if (node.pattern >= 0) {
+        for (int i = 0; i < node.count; ++i)
+            if (textureMayLetLightThrough(tx.children[size_t(node.begin + i)])) return true;
+        return false;
+    }
+    for (int i = 0; i < node.count; ++i) {
+        const PovLayer& l = tx.layers[size_t(node.begin + i)];
+        if (l.filter == 0 && l.surface.transmit == 0 && !l.surface.pigmentTransparent) return false;
+    }
+    return true;
 }
 
 namespace {

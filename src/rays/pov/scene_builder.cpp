@@ -127,6 +127,14 @@ Material SceneBuilder::material(const Appearance& look) {
     s.noReflection = noReflection_;
     s.doubleIlluminate = doubleIlluminate_;
     s.normal = normalRoot(look);
+    if (!look.layers.empty() || !look.choices.empty()) {
+        s.texture = textureNode(look, s, 0);
+        if (s.texture >= 0) s.pigmentTransparent = s.pigmentTransparent || textureMayLetLightThrough(s.texture);
+    }
+    if (!look.inside.empty()) {
+        s.interiorTexture = textureNode(look.inside[0], s, 0);
+        s.pigmentTransparent = s.pigmentTransparent || textureMayLetLightThrough(s.interiorTexture);
+    }
     // Objects made one after another mostly look alike (a CSG's leaves, copies in a loop): they
     // share the surface then.
     if (!scene_.povSurfaces.empty() && scene_.povSurfaces.back() == s) {
@@ -175,10 +183,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (e.key == kMapEntry) continue;
         if (isTransformEntry(e)) {
             applyTransform(e, local);
-            if (look.set) {  // transformations after the texture move it
-                applyTransform(e, look.pigmentToObject);
-                applyTransform(e, look.normalToObject);
-            }
+            if (look.set) moveLook(look, e);  // transformations after the texture move it
             continue;
         }
         if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
@@ -224,10 +229,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     // would vanish without a word.
     if (!toWorld.isUsable())
         throw Error(notes_.where(item.loc) + ": error: the object's transformation overflows or is singular");
-    if (look.set) {  // texture space → world
-        look.pigmentToObject = parent * look.pigmentToObject;
-        look.normalToObject = parent * look.normalToObject;
-    }
+    if (look.set) moveLook(look, parent);  // texture space → world
     const Appearance* own = look.set ? &look : inherited;
     // Intersection, difference, merge and clipped objects become one CSG object (csg.h); unions
     // outside them are flattened into their children.
@@ -449,9 +451,8 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     if (!mesh) throw Error(notes_.where(m.loc) + ": error: " + problem);
     if (mesh->triangleCount() == 0) return;
     countObjects(mesh->triangleCount(), m.loc);
-    for (const Entry& e : m.entries)
-        if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::texture_list)
-            notes_.note("mesh2 texture_list", e.loc, "(the mesh's own texture is used)");
+    Appearance listed;  // a texture list of one texture that every face names draws the mesh
+    const bool useList = oneListedTexture(m, toWorld, listed);
     try {
         mesh->finalize();
     } catch (const Error& err) {
@@ -462,10 +463,45 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     o.mesh = mesh.get();
     o.line = int(m.loc.line);
     o.col = int(m.loc.col);
-    o.material = material(look);
+    o.material = material(useList ? listed : look);
     prepareObject(o, toWorld);
     scene_.meshes.push_back(std::move(mesh));
     emit(o, inverse);
+}
+
+// mesh2's texture_list (POV-Ray 3.7 reference, "Mesh2"): face_indices name a texture of the list
+// after each face (one, or three interpolated over the face). Rays draws a list of one texture
+// that every face names (the mesh_camera demos bake a uv-mapped texture so) as the mesh's texture;
+// other lists are noted and the mesh's own texture is used.
+bool SceneBuilder::oneListedTexture(const Item& m, const Transform& toWorld, Appearance& out) {
+    const Entry* list = nullptr;
+    for (const Entry& e : m.entries)
+        if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::texture_list) list = &e;
+    if (!list) return false;
+    std::vector<const Item*> textures;
+    for (const Entry& e : list->args[0].item().entries) {
+        if (e.key == kMapEntry) continue;
+        if (!e.positional() && e.kw() == Kw::texture) textures.push_back(&e.args[0].item());
+        if (e.positional())
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::texture) textures.push_back(&v.item());
+    }
+    bool everyFace = false;
+    if (const Entry* faces = findEntry(m, Kw::face_indices); faces && textures.size() == 1) {
+        const std::vector<const Value*> v = positionals(faces->args[0].item());
+        everyFace = v.size() > 1;
+        for (size_t i = 1; i < v.size() && everyFace; ++i)  // after the count: each vector, then its index
+            if (v[i]->type == VType::Vector)
+                everyFace = i + 1 < v.size() && v[i + 1]->type != VType::Vector;
+    }
+    if (!everyFace) {
+        notes_.note("mesh2 texture_list", list->loc, "(the mesh's own texture is used)");
+        return false;
+    }
+    out = fallback_;
+    applyTexture(*textures[0], out, notes_, &pigments_, &fallback_);
+    moveLook(out, toWorld);
+    return true;
 }
 
 // ---- global settings -------------------------------------------------------------------------

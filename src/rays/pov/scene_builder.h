@@ -53,6 +53,9 @@ private:
     void addBlob(const sdl::Loc& at, const Transform& toWorld, const Appearance& look, bool inverse);
     BlobComponent blobComponent(const Item& component, const Transform& toWorld, Appearance& own);
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look, bool inverse);
+    /// True, with its look (texture space → world) in out, when a mesh2's texture_list holds one
+    /// texture that every face names; otherwise false (a texture_list is noted).
+    bool oneListedTexture(const Item& mesh, const Transform& toWorld, Appearance& out);
     void addText(const Entry* font, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
                  const Appearance& look, bool inverse);
     /// CSG trees (scene/csg.h): the children of a node, the objects of a clipped_by block, the
@@ -75,6 +78,14 @@ private:
     int pigmentRoot(const Appearance& look);
     /// The scene's normal root for a look with a normal (like pigmentRoot), or -1.
     int normalRoot(const Appearance& look);
+    /// The node of Scene::povTextures drawing a layered or patterned look on an object whose
+    /// surface is `object` (its interior and flags go to every layer); -1 when it cannot be placed.
+    int textureNode(const Appearance& look, const PovSurface& object, int depth);
+    /// One plain look as a layer of Scene::povTextures.
+    PovLayer layerOf(const Appearance& look, const PovSurface& object);
+    /// True when some point of the texture node may let light through (every layer of a run, any
+    /// texture of a pattern).
+    bool textureMayLetLightThrough(int node) const;
     /// sky_sphere: its pigments (layers) and transformations → PovGlobals' sky roots.
     void addSkySphere(const Item& sky);
     /// Counts n more objects made at `at`; throws past maxObjects_.

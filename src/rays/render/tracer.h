@@ -240,6 +240,35 @@ private:
     /// What the reflected and transmitted rays from a point bring (total internal reflection
     /// included), within max_trace_level and adc_bailout.
     Vec3 povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, TraceContext& ctx, PathInfo* info) const;
+    /// The recursion arguments of a ray reflected at pt (its weight still r's).
+    PovRay povReflectedRay(const PovPoint& pt, const PovRay& r) const;
+    /// Adds to color what the ray transmitted at pt brings, weighted by T (bent by the interior's
+    /// ior about pt.N); false, adding nothing, under total internal reflection.
+    bool povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r, Vec3 T, TraceContext& ctx,
+                        PathInfo* info, Vec3& color) const;
+    // Layered and patterned textures (tracer_pov_texture.cpp).
+    /// One layer at the point being shaded: its surface, pigment, normal (facing the viewer),
+    /// opacity, reflectivity, and what the layers above let through to it.
+    struct PovLayerAt {
+        const PovSurface* surface = nullptr;
+        Vec3 C, N, R;
+        double filter = 0, transmit = 0, opacity = 0;
+        Vec3 through{1, 1, 1};
+    };
+    /// shadePov for a surface with a layered or patterned texture (node `texture` of
+    /// Scene::povTextures, the side's: povTextureSeen): the textures the pattern shows
+    /// at the hit, each lit in full, blended by their weights (POV-Ray 3.7 reference, "Texture Maps").
+    Vec3 shadePovTextured(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
+                          PathInfo* info, int texture) const;
+    /// One run of layers at pt (POV-Ray 3.7 reference, "Layered Textures"; measured): each layer's
+    /// own colour and highlights lit with its own finish and normal and filtered by the layers
+    /// above it, each layer's reflection unfiltered, what all the layers let through transmitted.
+    Vec3 shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int begin, int count, const PovRay& r,
+                        TraceContext& ctx, PathInfo* info) const;
+    /// povLights for layers: each light's arrival found once (from the top layer's side), each
+    /// layer's diffuse (weighted by its opacity) and highlights added, filtered by what lies above it.
+    int povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int count, Vec3 V, TraceContext& ctx,
+                       Vec3& color, bool countBlocked) const;
     /// Adds every light's diffuse (weighted by opacity) and highlights at the point (seen from V)
     /// to color; returns the number of lights of which less than half reaches it (counted only
     /// when countBlocked).

@@ -10,6 +10,7 @@
 #include "rays/render/pov_lighting.h"
 #include "rays/render/pov_normal.h"
 #include "rays/render/pov_pigment.h"
+#include "rays/render/pov_texture.h"
 #include "rays/render/texturing.h"
 #include "rays/render/tracer.h"
 
@@ -98,6 +99,10 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
 Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                       PathInfo* info) const {
     const Object& o = shadedObject(scene_.objects, hit);
+    if (const PovSurface& s = povSurfaceOf(o.material); s.texture >= 0 || s.interiorTexture >= 0) {
+        const int node = povTextureSeen(s, dot(ray.dir, hit.geomNormal) < 0);
+        if (node >= 0) return shadePovTextured(ray, hit, r, segmentFade, ctx, info, node);
+    }
     PovPoint pt;
     pt.object = hit.object;
     pt.material = &o.material;
@@ -138,48 +143,62 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
 Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, TraceContext& ctx,
                           PathInfo* info) const {
     const PovSurface& s = *pt.surface;
-    const double bailout = scene_.pov.adcBailout;
     const double ior = s.interior.ior;
     const double eta = pt.entering ? 1.0 / ior : ior;
     const Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), eta);
     Vec3 T = povFilterTint(pt.C, pt.filter, pt.transmit);
     if (s.finish.conserveEnergy) T *= Vec3(1.0) - R;
-    // A reflected ray stays on this side of the surface, a transmitted one crosses it. Only
-    // transmitted rays fade over their path inside an interior: reflected ones (total internal
-    // reflection included) do not, but the fade before them still counts for the light (measured).
-    PovRay reflected{.level = r.level + 1,
-                     .weight = r.weight,
-                     .interior = pt.entering ? r.interior : pt.object,
-                     .reflected = true};
-    if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
+    PovRay reflected = povReflectedRay(pt, r);
     auto trace = [&](Vec3 dir, const PovRay& child) {
         ++ctx.stats.secondaryRays;
         return tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, child, ctx, info);
     };
 
     Vec3 color;
-    if (maxAbsComponent(T) > 0) {
-        Vec3 dir = ray.dir;
-        int level = r.level;  // passing straight through (ior 1) keeps the level (measured)
-        if (ior != 1) {
-            // Total internal reflection: one reflected ray with the full weight replaces both the
-            // reflection and the transmission (measured).
-            if (!refractDir(ray.dir, pt.N, eta, dir)) return trace(normalize(reflect(ray.dir, pt.N)), reflected);
-            ++level;
-        }
-        const PovRay through{.level = level,
-                             .weight = r.weight * maxAbsComponent(T),
-                             .interior = pt.entering ? pt.object : -1,
-                             .fades = true,
-                             .reflected = r.reflected};
-        if (through.weight >= bailout) color += T * trace(dir, through);
-    }
+    // Total internal reflection: one reflected ray with the full weight replaces both the
+    // reflection and the transmission (measured).
+    if (!povTransmitted(ray, pt, r, T, ctx, info, color)) return trace(normalize(reflect(ray.dir, pt.N)), reflected);
     reflected.weight = r.weight * maxComponent(R);
-    if (maxComponent(R) > 0 && reflected.weight >= bailout) {
+    if (maxComponent(R) > 0 && reflected.weight >= scene_.pov.adcBailout) {
         const Vec3 seen = trace(normalize(reflect(ray.dir, pt.N)), reflected);
         color += R * povReflectionExponent(seen, s.finish.reflectionExponent);
     }
     return color;
+}
+
+// A reflected ray stays on this side of the surface, a transmitted one crosses it. Only
+// transmitted rays fade over their path inside an interior: reflected ones (total internal
+// reflection included) do not, but the fade before them still counts for the light (measured).
+Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) const {
+    PovRay reflected{.level = r.level + 1,
+                     .weight = r.weight,
+                     .interior = pt.entering ? r.interior : pt.object,
+                     .reflected = true};
+    if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
+    return reflected;
+}
+
+bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r, Vec3 T, TraceContext& ctx,
+                            PathInfo* info, Vec3& color) const {
+    if (!(maxAbsComponent(T) > 0)) return true;
+    const double ior = pt.surface->interior.ior;
+    const double eta = pt.entering ? 1.0 / ior : ior;
+    Vec3 dir = ray.dir;
+    int level = r.level;  // passing straight through (ior 1) keeps the level (measured)
+    if (ior != 1) {
+        if (!refractDir(ray.dir, pt.N, eta, dir)) return false;
+        ++level;
+    }
+    const PovRay through{.level = level,
+                         .weight = r.weight * maxAbsComponent(T),
+                         .interior = pt.entering ? pt.object : -1,
+                         .fades = true,
+                         .reflected = r.reflected};
+    if (through.weight >= scene_.pov.adcBailout) {
+        ++ctx.stats.secondaryRays;
+        color += T * tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, through, ctx, info);
+    }
+    return true;
 }
 
 int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& ctx, Vec3& color,
@@ -292,17 +311,21 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             continue;
         }
         if (!letsLightThrough(o.material, s)) return {};
-        Vec3 C = o.material.color;
-        double filter = o.material.filter, transmit = s.transmit;
-        if (s.pigment >= 0) {
-            const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t));
-            C = c.color, filter = c.filter, transmit = c.transmit;
+        if (const int node = povTextureSeen(s, dot(shadow.dir, h.geomNormal) < 0); node >= 0) {
+            tint *= povTextureTint(scene_, node, shadow.at(h.t));  // a layered or patterned texture: each layer tints
+        } else {
+            Vec3 C = o.material.color;
+            double filter = o.material.filter, transmit = s.transmit;
+            if (s.pigment >= 0) {
+                const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t));
+                C = c.color, filter = c.filter, transmit = c.transmit;
+            }
+            if (o.material.pigmentMap >= 0) {
+                Vec3 N = h.normal;
+                applyMaps(scene_, o, shadow.at(h.t), SurfaceUV{h.hasUV, h.u, h.v, h.dpdu}, C, N);
+            }
+            tint *= povFilterTint(C, filter, transmit);
         }
-        if (o.material.pigmentMap >= 0) {
-            Vec3 N = h.normal;
-            applyMaps(scene_, o, shadow.at(h.t), SurfaceUV{h.hasUV, h.u, h.v, h.dpdu}, C, N);
-        }
-        tint *= povFilterTint(C, filter, transmit);
         if (povFades(s.interior)) {
             if (dot(shadow.dir, h.geomNormal) < 0) {
                 if (openCount < kMaxOpenInteriors) open[openCount++] = Entry{h.object, h.t};

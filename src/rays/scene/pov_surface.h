@@ -51,6 +51,12 @@ struct PovSurface {
     int pigment = -1;
     bool pigmentTransparent = false;  ///< some colour of the pattern filters or transmits
     int normal = -1;  ///< the normal pattern: a root of Scene::normals, or -1 (the surface's own normal)
+    /// A layered or patterned texture: a node of Scene::povTextures, lit layer by layer (the fields
+    /// above then hold the layers' mix, for shading paths that know one look only); -1: plain.
+    int texture = -1;
+    /// interior_texture: a node of Scene::povTextures drawing the inner side (rays arriving from
+    /// inside, shadow rays leaving); -1: both sides look alike.
+    int interiorTexture = -1;
 
     bool operator==(const PovSurface&) const = default;
 };

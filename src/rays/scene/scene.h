@@ -13,6 +13,7 @@
 #include "rays/scene/mesh.h"
 #include "rays/scene/object.h"
 #include "rays/scene/pov_surface.h"
+#include "rays/scene/pov_texture.h"
 #include "rays/scene/text_shape.h"
 #include "rays/scene/shapes/shape_data.h"
 #include "rays/scene/texture.h"
@@ -38,6 +39,7 @@ struct Scene {
     /// POV-Ray scenes: surfaces referenced by Material::pov, and the scene-wide settings.
     std::vector<PovSurface> povSurfaces;
     PovGlobals pov;
+    PovTextures povTextures;  ///< layered and patterned textures referenced by PovSurface::texture
     pattern::PigmentTable pigments;  ///< POV-Ray pigment patterns referenced by PovSurface::pigment
     pattern::NormalTable normals;    ///< POV-Ray normals referenced by PovSurface::normal
 };
