@@ -30,6 +30,9 @@
 #include "render_command.h"
 #include "render_options.h"
 #include "scene_library.h"
+#ifdef RAYS_WITH_MPI
+#include "mpi/mpi_session.h"
+#endif
 
 using namespace rays;
 
@@ -259,10 +262,8 @@ int run(int argc, char** argv) {
     return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    cli::prepareHeap();
+// run() with its errors reported as exit statuses.
+int runMain(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const cli::Interrupted& e) {
@@ -278,4 +279,16 @@ int main(int argc, char** argv) {
         std::cerr << "rays: internal error: " << e.what() << '\n';
         return 1;
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    cli::prepareHeap();
+#ifdef RAYS_WITH_MPI
+    cli::mpi::start(&argc, &argv);  // only under mpirun / mpiexec / srun (apps/rays/mpi)
+    return cli::mpi::finish(runMain(argc, argv));
+#else
+    return runMain(argc, argv);
+#endif
 }
