@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The MPI render (docs/mpi.md) against the one-process render: `mpiexec -np 3 rays render ...`
 # (one thread per rank) must write the same file, byte for byte, as `rays render ... --threads 2`,
-# for plain, supersampled, jittered, filtered and feature-line renders; a failing run must exit
+# for plain, supersampled, jittered, filtered and feature-line renders and an animation's frames; a failing run must exit
 # non-zero and leave an existing output file alone.
 # Usage: mpi_render_test.sh RAYS MPIEXEC SOURCE_DIR
 set -uo pipefail
@@ -39,6 +39,23 @@ same lines png "$s/08-bunny-lines.pov" 120 90
 same lines-image png "$s/10-shadow-lines.pov" 96 72 --edges all --edge-method image
 same post png "$s/04-refraction.pov" 96 72 --post gaussian_blur_3
 same jpeg jpg "$s/11-textures.pov" 96 72
+
+# An animation: each frame is shared out like a still and comes out the same.
+cat >"$tmp/anim.pov" <<'POV'
+#version 3.7;
+camera { location <0, 1, -4> look_at <0, 0.5, 0> }
+light_source { <3, 5, -3> color rgb 1 }
+sphere { <clock * 2 - 1, 0.5, 0>, 0.5 pigment { color rgb <1, 0.3, 0.2> } }
+plane { y, 0 pigment { checker color rgb 1 color rgb 0.3 } }
+POV
+if "$rays" render "$tmp/anim.pov" 64 48 +KFF3 -q --threads 2 -o "$tmp/one_anim.png" &&
+   "${launch[@]}" "$rays" render "$tmp/anim.pov" 64 48 +KFF3 --threads 1 -o "$tmp/mpi_anim.png" 2>/dev/null &&
+   cmp -s "$tmp/one_anim1.png" "$tmp/mpi_anim1.png" && cmp -s "$tmp/one_anim3.png" "$tmp/mpi_anim3.png" &&
+   ! cmp -s "$tmp/mpi_anim1.png" "$tmp/mpi_anim3.png"; then
+  echo "ok   animation"
+else
+  echo "FAIL animation: frames differ or missing"; failures=$((failures + 1))
+fi
 
 # A run that fails on every rank exits non-zero, and the file already there stays as it was.
 echo "keep me" > "$tmp/keep.png"

@@ -228,6 +228,9 @@ int run(int argc, char** argv) {
                                : dialect == "povray" ? sdl::Dialect::Povray
                                                      : sdl::Dialect::Auto;
         job.language.strict = strict;
+#ifdef RAYS_WITH_MPI
+        if (cli::mpi::rank() > 0) job.quiet = true;  // rank 0 reports for all ranks
+#endif
         return cli::runFrames(job, cli::planFrames(pov.animation), pov.continueTrace, cli::runRender);
     }
     cli::applyOptions(flags, modern, s);
