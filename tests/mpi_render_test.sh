@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The MPI render (docs/mpi.md) against the one-process render: `mpiexec -np 3 rays render ...`
 # (one thread per rank) must write the same file, byte for byte, as `rays render ... --threads 2`,
-# for plain, supersampled, jittered, filtered and feature-line renders and an animation's frames; a failing run must exit
-# non-zero and leave an existing output file alone.
+# for plain, supersampled, jittered, filtered and feature-line renders and an animation's frames;
+# a failing or interrupted run must exit non-zero and leave an existing output file alone.
 # Usage: mpi_render_test.sh RAYS MPIEXEC SOURCE_DIR
 set -uo pipefail
 rays=$1 mpiexec=$2 src=$3
@@ -65,5 +65,19 @@ elif [ "$(cat "$tmp/keep.png")" != "keep me" ]; then
   echo "FAIL failure: the existing output was replaced"; failures=$((failures + 1))
 else
   echo "ok   failure"
+fi
+# Ctrl-C on the launcher stops every rank (Open MPI passes it on as SIGTERM): the run exits
+# non-zero and the existing file stays. The render takes tens of seconds; the signal comes after 2.
+echo "keep me" > "$tmp/stop.png"
+"${launch[@]}" "$rays" render "$s/02-soft-shadows.pov" 1600 1200 --ss 4 --threads 1 -o "$tmp/stop.png" >/dev/null 2>&1 &
+pid=$!
+sleep 2
+kill -INT $pid
+if wait $pid; then
+  echo "FAIL interrupt: exited 0"; failures=$((failures + 1))
+elif [ "$(cat "$tmp/stop.png")" != "keep me" ]; then
+  echo "FAIL interrupt: the existing output was replaced"; failures=$((failures + 1))
+else
+  echo "ok   interrupt"
 fi
 exit $((failures > 0))

@@ -129,20 +129,24 @@ ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSetting
     } else {
         busy = serveAsWorker(tiles, s);
     }
-    // Counters and busy times come together on rank 0 for the summary.
+    // Counters, rays and busy times come together on rank 0 for the summary.
     const TraceStats mine = tiles.stats();
     uint64_t counts[3] = {mine.primaryRays, mine.secondaryRays, mine.shadowRays}, sums[3] = {0, 0, 0};
     MPI_Reduce(counts, sums, 3, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
-    std::vector<double> busyAll(static_cast<size_t>(size()));
-    MPI_Gather(&busy, 1, MPI_DOUBLE, busyAll.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    const double perRank[2] = {busy, double(mine.total())};
+    std::vector<double> all(static_cast<size_t>(2 * size()));
+    MPI_Gather(perRank, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, 0, MPI_COMM_WORLD);
     if (rank() != 0) return ImageF{};
     stats.add(TraceStats{sums[0], sums[1], sums[2]});
     if (report) {
         double sum = 0, slowest = 0;
-        for (double b : busyAll) sum += b, slowest = std::max(slowest, b);
-        const double mean = sum / double(busyAll.size());
-        std::fprintf(stderr, "rays: mpi: %d ranks, busy s per rank:", size());
-        for (double b : busyAll) std::fprintf(stderr, " %.2f", b);
+        for (int r = 0; r < size(); ++r) sum += all[size_t(2 * r)], slowest = std::max(slowest, all[size_t(2 * r)]);
+        const double mean = sum / size();
+        std::fprintf(stderr, "rays: mpi: %d ranks, busy s (Mrays/s) per rank:", size());
+        for (int r = 0; r < size(); ++r) {
+            const double b = all[size_t(2 * r)], rays = all[size_t(2 * r + 1)];
+            std::fprintf(stderr, " %.2f (%.2f)", b, b > 0 ? rays / b * 1e-6 : 0.0);
+        }
         std::fprintf(stderr, "; load balance (slowest / mean) %.2f\n", mean > 0 ? slowest / mean : 1.0);
     }
     return img;

@@ -13,7 +13,7 @@ namespace rays::cli::mpi {
 /// Renders the image (settings.aaEdges must be off) on every rank; all ranks call it with the
 /// same scene and settings. Rank 0 returns the whole image and receives every rank's counters in
 /// stats, other ranks return an empty image. progress is called on rank 0 only; with report,
-/// rank 0 prints one line with each rank's busy time and the load balance.
+/// rank 0 prints one line with each rank's busy time and ray rate and the load balance.
 ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, TraceStats& stats,
                          const ProgressFn& progress, bool report);
 
