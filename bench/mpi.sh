@@ -30,6 +30,8 @@ opts=("$@")
 [ $# -eq 0 ] && opts=(--ss 2)
 rays=./build/rays
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# In containers the shared-memory transport cannot attach to other processes (ptrace is denied).
+export OMPI_MCA_btl_vader_single_copy_mechanism=${OMPI_MCA_btl_vader_single_copy_mechanism:-none}
 launch=(mpiexec)
 mpiexec --version 2>&1 | grep -qiE "open ?mpi|openrte" && launch+=(--oversubscribe)
 w=${size%x*} h=${size#*x}
