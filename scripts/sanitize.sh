@@ -22,7 +22,7 @@ stages=("$@")
 TSAN_TESTS='^(Distribution\.|ParsePieces\.|Edges/EdgeMethods\.|StencilTaps\.|StencilPass\.|WorkerPool\.|WideCollapse\.TwoThread|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt|FnMachine\.ThreadsShareOneTable)'
 
 configure() {  # DIR FLAGS
-  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=Sanitize -DRAYS_NATIVE=OFF -DRAYS_WERROR=OFF -DRAYS_STATIC_RUNTIME=OFF \
+  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=Sanitize -DRAYS_NATIVE=OFF -DRAYS_WERROR=OFF -DRAYS_STATIC_RUNTIME=OFF -DRAYS_MPI=OFF \
     -DCMAKE_CXX_FLAGS="$2 -O1 -g -fno-omit-frame-pointer" \
     -DCMAKE_EXE_LINKER_FLAGS="$2" >/dev/null
 }

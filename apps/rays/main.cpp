@@ -32,6 +32,9 @@
 #include "render_command.h"
 #include "render_options.h"
 #include "scene_library.h"
+#ifdef RAYS_WITH_MPI
+#include "mpi/mpi_session.h"
+#endif
 
 using namespace rays;
 
@@ -239,6 +242,9 @@ int run(int argc, char** argv) {
                                : dialect == "povray" ? sdl::Dialect::Povray
                                                      : sdl::Dialect::Auto;
         job.language.strict = strict;
+#ifdef RAYS_WITH_MPI
+        if (cli::mpi::rank() > 0) job.quiet = true;  // rank 0 reports for all ranks
+#endif
         return cli::runFrames(job, cli::planFrames(pov.animation), pov.continueTrace, cli::runRender);
     }
     cli::applyOptions(flags, modern, s);
@@ -273,8 +279,6 @@ int run(int argc, char** argv) {
     return 0;
 }
 
-}  // namespace
-
 // After a command that wrote to stdout (sceneinfo, the pixel commands, compare's figures, --help):
 // everything written must have arrived. Returns the exit status.
 int checkStdout(int status) {
@@ -282,8 +286,8 @@ int checkStdout(int status) {
     return status;
 }
 
-int main(int argc, char** argv) {
-    cli::prepareHeap();
+// run() with its errors reported as exit statuses.
+int runMain(int argc, char** argv) {
     try {
         return checkStdout(run(argc, argv));
     } catch (const cli::Interrupted& e) {
@@ -299,4 +303,16 @@ int main(int argc, char** argv) {
         std::cerr << "rays: internal error: " << printableMessage(e.what()) << '\n';
         return 1;
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    cli::prepareHeap();
+#ifdef RAYS_WITH_MPI
+    cli::mpi::start(&argc, &argv);  // only under mpirun / mpiexec / srun (apps/rays/mpi)
+    return cli::mpi::finish(runMain(argc, argv));
+#else
+    return runMain(argc, argv);
+#endif
 }

@@ -27,11 +27,24 @@
 #include "paths.h"
 #include "render_budget.h"
 #include "hdr_output.h"
+#ifdef RAYS_WITH_MPI
+#include "mpi/mpi_render.h"
+#include "mpi/mpi_session.h"
+#endif
 
 namespace rays::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// This process's place among the ranks of an MPI run (0 of 1 without MPI: apps/rays/mpi).
+#ifdef RAYS_WITH_MPI
+int worldRank() { return mpi::rank(); }
+int worldSize() { return mpi::size(); }
+#else
+constexpr int worldRank() { return 0; }
+constexpr int worldSize() { return 1; }
+#endif
 
 double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -198,23 +211,27 @@ int runRender(const RenderJob& job) {
     RenderSettings s = job.settings;
     s.linearOutput = hdrOutput;
     checkImageSize(s.width, s.height);
-    checkImageOutput(job.outputPath, "output", job);
+    // Under MPI only rank 0 writes files (the others may run where its folders do not exist).
+    const bool writer = worldRank() == 0;
     const unsigned aovKinds = parseAovList(job.aovs);
     const bool aovFiles = aovKinds != 0 && !isExrPath(job.outputPath);  // one PFM per AOV
-    if (aovFiles)
-        for (AovBit bit : kAovOrder)
-            if (aovKinds & bit) {
-                checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.scenePath);
-                checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.objPath);
-            }
-    if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
-    std::vector<NamedOutput> outputs = {{job.outputPath, "output image"},
-                                        {job.edges.maskPath, "edge mask"},
-                                        {job.savePartial ? partialImagePath(job.outputPath) : std::string(), "partial image"}};
-    if (aovFiles)
-        for (AovBit bit : kAovOrder)
-            if (aovKinds & bit) outputs.push_back({aovFilePath(job.outputPath, bit), "AOV file"});
-    checkOutputsDiffer(outputs);
+    if (writer) {
+        checkImageOutput(job.outputPath, "output", job);
+        if (aovFiles)
+            for (AovBit bit : kAovOrder)
+                if (aovKinds & bit) {
+                    checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.scenePath);
+                    checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.objPath);
+                }
+        if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
+        std::vector<NamedOutput> outputs = {{job.outputPath, "output image"},
+                                            {job.edges.maskPath, "edge mask"},
+                                            {job.savePartial ? partialImagePath(job.outputPath) : std::string(), "partial image"}};
+        if (aovFiles)
+            for (AovBit bit : kAovOrder)
+                if (aovKinds & bit) outputs.push_back({aovFilePath(job.outputPath, bit), "AOV file"});
+        checkOutputsDiffer(outputs);
+    }
 
     auto t0 = Clock::now();
     const Scene scene = loadJobScene(job, {job.outputPath, job.edges.maskPath});
@@ -232,10 +249,18 @@ int runRender(const RenderJob& job) {
     buffers.post = !job.post.empty();
     checkRenderBudget(s.width, s.height, resolveView(scene, s).samples, buffers);
     stopIfInterrupted(job, &scene, nullptr);
+    // Ranks share single-pass renders only; edge-guided AA and lines-only renders (no render) run
+    // on rank 0 alone for now, the other ranks stop here.
+    const bool distributed = worldSize() > 1 && !s.aaEdges && !edges.linesOnly;
+    if (worldSize() > 1 && !distributed) {
+        if (!writer) return 0;
+        if (!job.quiet) std::fprintf(stderr, "rays: mpi: %s renders on rank 0 alone\n", s.aaEdges ? "edge-guided AA" : "--lines-only");
+    }
 
     // The render records what each pixel centre saw for the lines when it can (centred samples);
     // the surface ids those records need are computed while the BVH is built.
-    const bool reuse = edges.enabled() && !edges.linesOnly && renderRecordsAreCentred(scene, s);
+    // Under MPI the records stay with the ranks that rendered the pixels: the lines trace their own.
+    const bool reuse = !distributed && edges.enabled() && !edges.linesOnly && renderRecordsAreCentred(scene, s);
     std::future<SurfaceIds> surfaceIds;
     if (reuse) surfaceIds = std::async(std::launch::async, [&scene] { return computeSurfaceIds(scene); });
 
@@ -246,7 +271,7 @@ int runRender(const RenderJob& job) {
 
     t0 = Clock::now();
     TraceStats stats;
-    ProgressBar bar(!job.quiet && isatty(STDERR_FILENO));
+    ProgressBar bar(writer && !job.quiet && isatty(STDERR_FILENO));
     std::unique_ptr<LineRecords> records;
     std::unique_ptr<StencilPass> stencil;
     RecordFn onRecord;
@@ -262,12 +287,20 @@ int runRender(const RenderJob& job) {
     }
     // A PNG of the render as it stands is compressed by the render's threads as rows finish.
     std::unique_ptr<PngStream> png;
-    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges) {
+    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges && !distributed) {
         png = std::make_unique<PngStream>(s.width, s.height);
         onRows = [&](const ImageF& rows, int y0, int y1, int) { png->rowsDone(rows, y0, y1); };
     }
-    ImageF img = edges.linesOnly ? ImageF(s.width, s.height)
-                                 : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord, onRows);
+    ImageF img;
+#ifdef RAYS_WITH_MPI
+    if (distributed) {
+        img = mpi::renderDistributed(scene, bvh, s, stats, [&](double f) { bar(f); }, !job.quiet);
+        if (!writer) return 0;  // rank 0 alone filters, draws the lines and writes
+    }
+#endif
+    if (!distributed)
+        img = edges.linesOnly ? ImageF(s.width, s.height)
+                              : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord, onRows);
     stopIfInterrupted(job, &scene, &img);
     if (!job.post.empty()) img = applyFilters(img, job.post, BorderMode::Clamp, s.threads);
     const double renderMs = msSince(t0);

@@ -19,7 +19,14 @@
 namespace rays {
 namespace {
 
-constexpr int kTile = 16;
+constexpr int kTile = TileRenderer::kTileSize;
+
+// A traced colour as the image holds it: course scenes as traced; POV-Ray scenes as POV-Ray writes
+// them, sRGB(c^assumed_gamma), or linear light for HDR files (linear, docs/aov.md).
+Vec3 pixelOutput(Vec3 c, bool povScene, bool linear, double assumedGamma) {
+    if (!povScene) return c;
+    return linear ? povLinearColor(c, assumedGamma) : povOutputColor(c, assumedGamma);
+}
 
 // Support radius (pixels, around the centre) and weight of the reconstruction filters.
 double filterRadius(PixelFilter f) {
@@ -174,6 +181,36 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
     return weightSum > 0 ? sum / weightSum : Vec3{};
 }
 
+TileRenderer::TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSettings& s)
+    : s_(s),
+      view_(resolveView(scene, s)),
+      // The same origins render() builds for a single-pass render (pinhole unless a lens spreads rays).
+      origins_(Tracer::buildSharedOrigins(scene, bvh, view_.aperture <= 0 ? &view_.rays.location : nullptr,
+                                          double(s.width) * double(s.height) * double(view_.samples), s.threads)),
+      tracer_(scene, bvh, s, &origins_),
+      povOutput_(scene.pov.enabled),
+      assumedGamma_(scene.pov.assumedGamma),
+      perThread_(size_t(resolveThreads(s.threads))) {}
+
+void TileRenderer::renderTile(int t, int worker, ImageF& img, int imgY0, const RecordFn& onRecord) {
+    const int x0 = (t % tilesX()) * kTileSize, y0 = (t / tilesX()) * kTileSize;
+    const int x1 = std::min(x0 + kTileSize, s_.width), y1 = std::min(y0 + kTileSize, s_.height);
+    TraceContext& ctx = perThread_[size_t(worker)];
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            PathInfo info;
+            const Vec3 c = renderPixel(tracer_, view_, s_, x, s_.height - 1 - y, ctx, onRecord ? &info : nullptr);
+            img.at(x, y - imgY0) = pixelOutput(c, povOutput_, s_.linearOutput, assumedGamma_);
+            if (onRecord) onRecord(x, y, info);
+        }
+}
+
+TraceStats TileRenderer::stats() const {
+    TraceStats sum;
+    for (const TraceContext& c : perThread_) sum.add(c.stats);
+    return sum;
+}
+
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
               const ProgressFn& progress, std::vector<uint8_t>* edgePixels, const RecordFn& onRecord,
               const RowsFn& onRows) {
@@ -190,10 +227,7 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     const bool povOutput = scene.pov.enabled;
     const double assumedGamma = scene.pov.assumedGamma;
     // HDR files (s.linearOutput) take linear light instead, unclamped (docs/aov.md).
-    auto pixelOut = [&](Vec3 c) {
-        if (!povOutput) return c;
-        return s.linearOutput ? povLinearColor(c, assumedGamma) : povOutputColor(c, assumedGamma);
-    };
+    auto pixelOut = [&](Vec3 c) { return pixelOutput(c, povOutput, s.linearOutput, assumedGamma); };
     const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
     const int tileCount = tilesX * tilesY;
     std::vector<TraceContext> perThread(size_t(resolveThreads(s.threads)));

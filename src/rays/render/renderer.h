@@ -15,6 +15,9 @@ namespace rays {
 /// Called from the coordinating thread about ten times a second with the fraction done (0..1).
 using ProgressFn = std::function<void(double fraction)>;
 
+/// Called, from worker threads, with a pixel's first-sample PathInfo (x right, y down from the top).
+using RecordFn = std::function<void(int x, int y, const PathInfo& info)>;
+
 /// Camera and sampling parameters resolved once per render (CLI overrides applied).
 struct ViewSetup {
     Camera camera;
@@ -32,6 +35,35 @@ ViewSetup resolveView(const Scene& scene, const RenderSettings& s);
 Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettings& s, int i, int j,
                  TraceContext& ctx, PathInfo* info = nullptr);
 
+/// Single-pass pixels tile by tile, for a driver that hands the tiles out itself (the MPI render,
+/// apps/rays/mpi): each tile comes out exactly as render() makes it (without aaEdges), whatever
+/// the order, thread or process. Tiles are kTileSize² pixels, numbered row by row from the top left.
+class TileRenderer {
+public:
+    static constexpr int kTileSize = 16;
+    /// Prepares the camera, the shared ray origins and the tracer; threads = resolveThreads(s.threads).
+    TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSettings& s);
+    TileRenderer(const TileRenderer&) = delete;  // the tracer points at origins_
+    TileRenderer& operator=(const TileRenderer&) = delete;
+    int tilesX() const { return (s_.width + kTileSize - 1) / kTileSize; }
+    int tilesY() const { return (s_.height + kTileSize - 1) / kTileSize; }
+    /// Writes tile t's pixels into img, whose row 0 is image row imgY0 (top row first), from worker
+    /// `worker` (< resolveThreads(s.threads)); onRecord as for render(). Tiles may run concurrently
+    /// on different workers.
+    void renderTile(int t, int worker, ImageF& img, int imgY0 = 0, const RecordFn& onRecord = {});
+    /// The counters of all tiles rendered so far (call once no tile is running).
+    TraceStats stats() const;
+
+private:
+    const RenderSettings& s_;
+    ViewSetup view_;
+    SharedOrigins origins_;
+    Tracer tracer_;
+    bool povOutput_;
+    double assumedGamma_;
+    std::vector<TraceContext> perThread_;
+};
+
 /// Renders the whole image (top row first). Scenes with Scene::pov.enabled come out as POV-Ray
 /// writes them (render/pov_output.h: sRGB(c^assumed_gamma), clamped to [0, 1]); course scenes as
 /// traced. Deterministic: the result is bit-identical for any thread count. stats receives the summed counters. With settings.aaEdges, pass one renders
@@ -44,7 +76,6 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
 /// once every pixel of image rows [y0, y1) (top row first) has been rendered and recorded: work
 /// that needs finished rows (the feature lines, the PNG encoder) can start on the render's own
 /// threads while the render goes on. It may read those rows of the image, nothing else.
-using RecordFn = std::function<void(int x, int y, const PathInfo& info)>;
 using RowsFn = std::function<void(const ImageF& img, int y0, int y1, int worker)>;
 ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, TraceStats& stats,
               const ProgressFn& progress = {}, std::vector<uint8_t>* edgePixels = nullptr,

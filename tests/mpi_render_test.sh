@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The MPI render (docs/mpi.md) against the one-process render: `mpiexec -np 3 rays render ...`
+# (one thread per rank) must write the same file, byte for byte, as `rays render ... --threads 2`,
+# for plain, supersampled, jittered, filtered and feature-line renders and an animation's frames;
+# a failing run must exit non-zero and leave an existing output file alone.
+# Usage: mpi_render_test.sh RAYS MPIEXEC SOURCE_DIR
+set -uo pipefail
+rays=$1 mpiexec=$2 src=$3
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI containers run as root
+# In containers the shared-memory transport cannot attach to other processes (ptrace is denied).
+export OMPI_MCA_btl_vader_single_copy_mechanism=${OMPI_MCA_btl_vader_single_copy_mechanism:-none}
+launch=("$mpiexec" -np 3)
+"$mpiexec" --version 2>&1 | grep -qiE "open ?mpi|openrte" && launch+=(--oversubscribe)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+
+# same NAME EXT ARGS...: renders ARGS once without MPI and once on 3 ranks; the files must match.
+same() {
+  local name=$1 ext=$2
+  shift 2
+  "$rays" render "$@" -q --threads 2 -o "$tmp/one_$name.$ext" || { echo "FAIL $name: one-process render failed"; failures=$((failures + 1)); return; }
+  if ! "${launch[@]}" "$rays" render "$@" --threads 1 -o "$tmp/mpi_$name.$ext" 2>"$tmp/err_$name"; then
+    echo "FAIL $name: MPI render failed:"; cat "$tmp/err_$name"; failures=$((failures + 1)); return
+  fi
+  if ! cmp -s "$tmp/one_$name.$ext" "$tmp/mpi_$name.$ext"; then
+    echo "FAIL $name: images differ"; failures=$((failures + 1)); return
+  fi
+  # The run was really shared: rank 0's summary names three ranks.
+  if ! grep -q "rays: mpi: 3 ranks" "$tmp/err_$name"; then
+    echo "FAIL $name: no three-rank summary:"; cat "$tmp/err_$name"; failures=$((failures + 1)); return
+  fi
+  echo "ok   $name"
+}
+
+s=$src/scenes
+same plain png "$s/01-demo.pov" 160 120
+same ss png "$s/02-soft-shadows.pov" 96 72 --ss 2
+same spp png "$s/06-depth-of-field.pov" 80 64 --spp 4 --aa random
+same lines png "$s/08-bunny-lines.pov" 120 90
+same lines-image png "$s/10-shadow-lines.pov" 96 72 --edges all --edge-method image
+same post png "$s/04-refraction.pov" 96 72 --post gaussian_blur_3
+same jpeg jpg "$s/11-textures.pov" 96 72
+
+# An animation: each frame is shared out like a still and comes out the same.
+cat >"$tmp/anim.pov" <<'POV'
+#version 3.7;
+camera { location <0, 1, -4> look_at <0, 0.5, 0> }
+light_source { <3, 5, -3> color rgb 1 }
+sphere { <clock * 2 - 1, 0.5, 0>, 0.5 pigment { color rgb <1, 0.3, 0.2> } }
+plane { y, 0 pigment { checker color rgb 1 color rgb 0.3 } }
+POV
+if "$rays" render "$tmp/anim.pov" 64 48 +KFF3 -q --threads 2 -o "$tmp/one_anim.png" &&
+   "${launch[@]}" "$rays" render "$tmp/anim.pov" 64 48 +KFF3 --threads 1 -o "$tmp/mpi_anim.png" 2>/dev/null &&
+   cmp -s "$tmp/one_anim1.png" "$tmp/mpi_anim1.png" && cmp -s "$tmp/one_anim3.png" "$tmp/mpi_anim3.png" &&
+   ! cmp -s "$tmp/mpi_anim1.png" "$tmp/mpi_anim3.png"; then
+  echo "ok   animation"
+else
+  echo "FAIL animation: frames differ or missing"; failures=$((failures + 1))
+fi
+
+# A run that fails on every rank exits non-zero, and the file already there stays as it was.
+echo "keep me" > "$tmp/keep.png"
+if "${launch[@]}" "$rays" render "$tmp/missing.pov" 32 32 --threads 1 -o "$tmp/keep.png" >/dev/null 2>&1; then
+  echo "FAIL failure: a missing scene exited 0"; failures=$((failures + 1))
+elif [ "$(cat "$tmp/keep.png")" != "keep me" ]; then
+  echo "FAIL failure: the existing output was replaced"; failures=$((failures + 1))
+else
+  echo "ok   failure"
+fi
+exit $((failures > 0))
