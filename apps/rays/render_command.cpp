@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <future>
 #include <memory>
+#include <optional>
 #include <iostream>
 
 #include "rays/accel/bvh.h"
@@ -23,6 +24,7 @@
 #include "interrupt.h"
 #include "paths.h"
 #include "render_budget.h"
+#include "render_limits.h"
 
 namespace rays::cli {
 namespace {
@@ -187,11 +189,12 @@ Scene loadJobScene(const RenderJob& job) {
 int runRender(const RenderJob& job) {
     InterruptScope interruptScope;  // Ctrl-C / SIGTERM stop the render cleanly (exit 130 / 143)
     const RenderSettings& s = job.settings;
-    checkImageSize(s.width, s.height);
+    checkSettingsLimits(s);  // every form of the command line comes through here
     checkImageOutput(job.outputPath, "output", job);
     if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
 
     auto t0 = Clock::now();
+    std::optional<QuitAtOnce> loading(std::in_place);  // nothing written yet: a signal ends it at once
     const Scene scene = loadJobScene(job);
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
@@ -205,7 +208,7 @@ int runRender(const RenderJob& job) {
     buffers.lines = edges.enabled() || edges.linesOnly;
     buffers.mask = !job.edges.maskPath.empty();
     buffers.post = !job.post.empty();
-    checkRenderBudget(s.width, s.height, resolveView(scene, s).samples, buffers);
+    checkRenderBudget(s.width, s.height, resolveView(scene, s).samples, buffers, sceneBytes(scene));
     stopIfInterrupted(job, &scene, nullptr);
 
     // The render records what each pixel centre saw for the lines when it can (centred samples);
@@ -217,6 +220,7 @@ int runRender(const RenderJob& job) {
     t0 = Clock::now();
     const Bvh bvh(scene.objects);
     const double buildMs = msSince(t0);
+    loading.reset();
     stopIfInterrupted(job, &scene, nullptr);
 
     t0 = Clock::now();

@@ -1,5 +1,6 @@
 #include "rays/io/file_text.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 
@@ -16,21 +17,33 @@
 namespace rays {
 
 #ifdef RAYS_HAVE_POSIX_FILES
-FileText::FileText(const std::string& path) {
+FileText::FileText(const std::string& path, size_t maxBytes) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return;  // CannotOpen
     struct stat st {};
     // A regular file's length sizes the buffer; anything else grows it as it arrives.
     size_t capacity = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 ? size_t(st.st_size) : 0;
+    if (capacity > maxBytes) {
+        ::close(fd);
+        status_ = Status::TooLarge;
+        return;
+    }
     capacity = capacity > 0 ? capacity + 1 : size_t(1) << 16;  // +1: the end of the file is seen in one read
     data_.reset(new char[capacity]);
     status_ = Status::Ok;
     for (;;) {
+        if (size_ > maxBytes) {  // grown past the ceiling (a pipe, /dev/zero, a file still growing)
+            data_.reset();
+            size_ = 0;
+            status_ = Status::TooLarge;
+            break;
+        }
         if (size_ == capacity) {
-            std::unique_ptr<char[]> bigger(new char[2 * capacity]);
+            const size_t grown = std::min(2 * capacity, maxBytes + 1);  // never far past the ceiling
+            std::unique_ptr<char[]> bigger(new char[grown]);
             std::memcpy(bigger.get(), data_.get(), size_);
             data_ = std::move(bigger);
-            capacity *= 2;
+            capacity = grown;
         }
         const ssize_t n = ::read(fd, data_.get() + size_, capacity - size_);
         if (n > 0) {
@@ -45,12 +58,16 @@ FileText::FileText(const std::string& path) {
     ::close(fd);
 }
 #else
-FileText::FileText(const std::string& path) {
+FileText::FileText(const std::string& path, size_t maxBytes) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return;  // CannotOpen
     const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad()) {
         status_ = Status::CannotRead;
+        return;
+    }
+    if (all.size() > maxBytes) {
+        status_ = Status::TooLarge;
         return;
     }
     data_.reset(new char[all.size() + 1]);
@@ -59,5 +76,12 @@ FileText::FileText(const std::string& path) {
     status_ = Status::Ok;
 }
 #endif
+
+std::string FileText::describe(size_t bytes) {
+    if (bytes >= (size_t(1) << 30) && bytes % (size_t(1) << 30) == 0) return std::to_string(bytes >> 30) + " GiB";
+    if (bytes >= (size_t(1) << 20) && bytes % (size_t(1) << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+    if (bytes >= 1024 && bytes % 1024 == 0) return std::to_string(bytes >> 10) + " KiB";
+    return std::to_string(bytes) + " bytes";
+}
 
 }  // namespace rays

@@ -11,13 +11,21 @@
 
 namespace rays {
 
+/// The largest text file Rays reads: scene files, include files, #read files and OBJ files (1 GiB).
+/// The reader's tokens take up to 12 bytes per byte of text on top, so a bigger file would not
+/// leave room for the render on most machines; /dev/zero stops here instead of filling memory.
+inline constexpr size_t kMaxTextFileBytes = size_t(1) << 30;
+
 class FileText {
 public:
-    enum class Status { Ok, CannotOpen, CannotRead };
+    enum class Status { Ok, CannotOpen, CannotRead, TooLarge };
 
-    explicit FileText(const std::string& path);
+    /// Reads at most maxBytes; a longer file (or an endless source) gives TooLarge.
+    explicit FileText(const std::string& path, size_t maxBytes = kMaxTextFileBytes);
 
     Status status() const { return status_; }
+    /// "1 GiB", "64 KiB": a ceiling for messages.
+    static std::string describe(size_t bytes);
     /// The contents (valid while this object lives) when status() is Ok.
     std::string_view text() const { return {data_.get(), size_}; }
 

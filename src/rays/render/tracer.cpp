@@ -10,6 +10,7 @@
 #include "rays/render/area_light.h"
 #include "rays/render/shading.h"
 #include "rays/render/texturing.h"
+#include "rays/util/stack_room.h"
 
 namespace rays {
 namespace {
@@ -239,7 +240,7 @@ void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followS
         out.setHit(hit.t, P, N);
         if (countShadows) out.blockedLights = int16_t(blockedLightsAt(P, N, ctx));
     }
-    if (!followSecondary || depth >= settings_.maxDepth || out.count >= PathInfo::kMaxIds) return;
+    if (!followSecondary || depth >= settings_.maxDepth || out.count >= PathInfo::kMaxIds || stackNearlyFull()) return;
     const SecondaryWeights w = secondaryWeights(o.material, ray.dir, N, entering, settings_.fresnel);
     if (w.wRefl > 0) {
         const Vec3 R = normalize(reflect(ray.dir, N));
@@ -349,7 +350,7 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
         const bool countBlocked = info && f.kind == TraceRecord::Kind::Primary;
         blocked = localShading(m, model, P, N, V, ctx, diffuse, specular, countBlocked);
         ctx.surfaceObject = -1;
-        if (settings_.gi && f.giLevel < settings_.giBounces)
+        if (settings_.gi && f.giLevel < settings_.giBounces && !stackNearlyFull())
             ambient = m.diffuse * m.color * gatherIndirect(P, N, f, ctx);
         else
             ambient = m.ambient * m.color;
@@ -360,7 +361,7 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     }
 
     Vec3 reflColor, transColor;
-    const bool recurse = f.depth < settings_.maxDepth;
+    const bool recurse = f.depth < settings_.maxDepth && !stackNearlyFull();  // never past the stack's end
     Frame child = f;
     child.depth = f.depth + 1;
     if (recurse && wRefl > 0) {
