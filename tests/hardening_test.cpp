@@ -17,6 +17,7 @@
 #include "rays/io/polygon_triangulate.h"
 #include "rays/io/scene_parser.h"
 #include "rays/render/tracer.h"
+#include "rays/scene/shapes/prism.h"
 #include "support/files.h"
 #include "support/process.h"
 
@@ -222,6 +223,43 @@ TEST(HardeningStack, PovTraceLevelsStopAtTheStacksEnd) {
         done = true;
     });
     EXPECT_TRUE(done);
+}
+
+}  // namespace
+
+namespace {
+
+// ---- other loaders ------------------------------------------------------------------------------
+
+TEST(HardeningPrism, LongOutlinesGetTheSameOutwardSidesAsEdgeByEdge) {
+    // A star outline of 2000 points with a square hole: the long outline is decided by one edge
+    // (linear time), and every edge's side agrees with testing it against the whole outline.
+    std::vector<Vec3> pts;
+    const int n = 2000;
+    for (int i = 0; i <= n; ++i) {
+        const double a = 2 * std::numbers::pi * (i % n) / n, r = i % 2 ? 0.6 : 1.0;
+        pts.push_back({r * std::cos(a), 0, r * std::sin(a)});
+    }
+    for (const Vec3 q : {Vec3{-0.2, 0, -0.2}, Vec3{0.2, 0, -0.2}, Vec3{0.2, 0, 0.2}, Vec3{-0.2, 0, 0.2}, Vec3{-0.2, 0, -0.2}})
+        pts.push_back(q);
+    ShapeData data;
+    ASSERT_TRUE(makePrism(pts, 0, 1, data));
+    const std::vector<double>& e = data.values;
+    ASSERT_EQ(e.size(), size_t(5 * (n + 4)));
+    auto inside = [&](double px, double pz) {
+        bool in = false;
+        for (size_t i = 0; i < e.size(); i += 5)
+            if ((e[i + 1] > pz) != (e[i + 3] > pz) && px < e[i] + (pz - e[i + 1]) * (e[i + 2] - e[i]) / (e[i + 3] - e[i + 1]))
+                in = !in;
+        return in;
+    };
+    size_t wrong = 0;
+    for (size_t i = 0; i < e.size(); i += 5) {
+        const double dx = e[i + 2] - e[i], dz = e[i + 3] - e[i + 1], len = std::hypot(dx, dz);
+        const double mx = 0.5 * (e[i] + e[i + 2]) + 1e-6 * dz / len, mz = 0.5 * (e[i + 1] + e[i + 3]) - 1e-6 * dx / len;
+        if ((inside(mx, mz) ? -1.0 : 1.0) != e[i + 4]) ++wrong;
+    }
+    EXPECT_EQ(wrong, 0u);
 }
 
 }  // namespace
