@@ -376,6 +376,9 @@ std::vector<BadInput> catalogue() {
                  "/dev/zero: error: scene file is larger than 1 GiB (the limit for scene text)"});
     t.push_back({"kernel-endless", {{"in.png", pngBytes(16, 12)}}, {"filter", "in.png", "out.png", "kernel:/dev/zero"}, 2,
                  "/dev/zero: error: kernel file is larger than 64 MiB"});
+    t.push_back({"filter-over-memory-limit", {{"in.png", pngBytes(256, 256)}}, {"filter", "in.png", "out.png", "box_blur_3"}, 2,
+                 "rays: error: filtering a 256x256 image needs about 1.9 MiB, more than the memory limit of 1.0 MiB (RAYS_MEMORY_LIMIT)",
+                 "out.png", "RAYS_MEMORY_LIMIT=1M"});
     t.push_back({"texture-over-memory-limit",
                  {{"scene.pov", kCamera + "sphere { <0,0,0>, 2 pigment { image_map { png \"tex.png\" } } }\n"},
                   {"tex.png", pngDeclaring(16384, 16384, 70000)}},

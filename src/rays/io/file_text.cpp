@@ -21,14 +21,17 @@ FileText::FileText(const std::string& path, size_t maxBytes) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return;  // CannotOpen
     struct stat st {};
-    // A regular file's length sizes the buffer; anything else grows it as it arrives.
-    size_t capacity = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 ? size_t(st.st_size) : 0;
+    // A regular file's length sizes the buffer; anything else (a pipe, a device) gets the ceiling's
+    // worth of address space, of which only the pages read are ever touched: no copies as it grows,
+    // so an endless source costs maxBytes of memory at most.
+    const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    size_t capacity = regular && st.st_size > 0 ? size_t(st.st_size) : 0;
     if (capacity > maxBytes) {
         ::close(fd);
         status_ = Status::TooLarge;
         return;
     }
-    capacity = capacity > 0 ? capacity + 1 : size_t(1) << 16;  // +1: the end of the file is seen in one read
+    capacity = capacity > 0 ? capacity + 1 : regular ? size_t(1) << 16 : maxBytes + 1;  // +1: the end is seen in one read
     data_.reset(new char[capacity]);
     status_ = Status::Ok;
     for (;;) {

@@ -1,7 +1,7 @@
 // FileText: the whole contents of a file, opened once and read into memory. The buffer is sized
 // from the file's length and left uninitialised before the read (a zero-filled std::string would
 // touch every page twice); a file whose length is unknown (a pipe such as `<(make-scene)`) is read
-// in chunks from the same descriptor. Copying instead of mapping the file keeps a file truncated
+// into a buffer of the ceiling's size whose pages are touched only as they fill. Copying instead of mapping the file keeps a file truncated
 // by another program mid-read an ordinary short read, not a SIGBUS.
 #pragma once
 #include <cstddef>
