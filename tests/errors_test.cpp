@@ -371,6 +371,9 @@ std::vector<BadInput> catalogue() {
     t.push_back({"mirrors-depth-1000", {{"scene.pov", kMirrors}}, render({"--depth", "1000"}), 0, ""});
     t.push_back({"gi-bounces-10^4", {{"scene.pov", kScene}}, render({"-gi_bounces=10000"}), 2,
                  "rays: error: gi_bounces must be a whole number from 1 to 1000, got '10000'"});
+    t.push_back({"pov-frames-10^9", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+KFF999999999", "+Oout.png"}, 2,
+                 "rays: error: the animation has 999999999 frames to render, more than the limit of 1000000 per run (render it in "
+                 "parts with Subset_Start_Frame and Subset_End_Frame, +SF +EF)"});
     // ---- issue 27: every input within a ceiling ----
     t.push_back({"scene-endless", {}, {"render", "/dev/zero", "16", "12", "-o", "out.png", "-q"}, 2,
                  "/dev/zero: error: scene file is larger than 1 GiB (the limit for scene text)"});
