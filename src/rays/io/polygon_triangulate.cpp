@@ -143,7 +143,9 @@ private:
                 }
             }
             if (xmin > xmax) continue;
-            const int gx0 = cellX(xmin), gx1 = cellX(xmax);
+            // Widened by a rounding's worth: a corner on the triangle's edge must not be missed.
+            const double slack = 1e-9 * (std::fabs(xmin) + std::fabs(xmax) + 1.0);
+            const int gx0 = cellX(xmin - slack), gx1 = cellX(xmax + slack);
             for (int gx = gx0; gx <= gx1; ++gx) {
                 const size_t cell = size_t(gy * gw_ + gx);
                 ++work_;
