@@ -96,9 +96,13 @@ for t in "${targets[@]}"; do
   # at most 16 KB like the seeds (the deep-nesting regression inputs are longer and load truncated).
   extra=()
   [ "$t" = pov ] && extra=(-close_fd_mask=2 -max_len=16384)
-  [ $scaled = 1 ] && extra+=(-max_len=4096)
-  [ $scaled = 1 ] && log="$build/logs/$t-scaled.log"
-  echo "== fuzz_$t for ${secs}s$([ $scaled = 1 ] && echo ', size-scaling mode') (log: $log)" >&2
+  mode=""
+  if [ $scaled = 1 ]; then
+    extra+=(-max_len=4096)
+    log="$build/logs/$t-scaled.log"
+    mode=" (size-scaling mode)"
+  fi
+  echo "== fuzz_$t for ${secs}s$mode (log: $log)" >&2
   set +e
   (cd "$work" && env "${scaleEnv[@]}" TMPDIR=${TMPDIR:-/tmp} nice -n 10 "$exe" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 \
       -print_final_stats=1 -artifact_prefix="$artifacts/" "${dict[@]}" "${extra[@]}" ${FUZZ_FLAGS:-} "$corpus" "$seedDir") >"$log" 2>&1
@@ -112,7 +116,7 @@ for t in "${targets[@]}"; do
     verdict="FINDING (exit $rc): $(grep -m1 -E 'ERROR: |runtime error|==ERROR|SUMMARY' "$log" || echo 'see log')"
     status=1
   fi
-  summary+=("fuzz_$t$([ $scaled = 1 ] && echo ' (scaled)'): ${secs}s, ${runs:-?} executions, corpus $units files: $verdict")
+  summary+=("fuzz_$t$mode: ${secs}s, ${runs:-?} executions, corpus $units files: $verdict")
 done
 
 echo "== summary" >&2
