@@ -272,4 +272,48 @@ inline void fuzzPov(const uint8_t* data, size_t size) {
     }
 }
 
+// ---- size-scaling mode ----------------------------------------------------------------------------
+
+/// True when RAYS_FUZZ_SCALE is set (fuzz/run.sh --scaled): the targets then read their input
+/// through scaledInput.
+inline bool scaling() {
+    static const bool on = std::getenv("RAYS_FUZZ_SCALE") != nullptr;
+    return on;
+}
+
+/// Size-scaling mode (issue 27: the quadratic OBJ polygon was not found by fuzzing, whose inputs
+/// stay small): the input's first byte k sets a count 2^(k mod 18) (1 to 131072), and each region
+/// written between a pair of "@@" markers is repeated that many times (the whole result at most
+/// 32 MiB). A few bytes such as "\x10f@@ 1@@\n" then make a face of 65536 corners, so work that
+/// grows faster than its input shows up as a libFuzzer timeout (-timeout) or out-of-memory report.
+inline std::string scaledInput(const uint8_t* data, size_t size) {
+    if (size == 0) return {};
+    const size_t count = size_t(1) << (data[0] % 18);
+    constexpr size_t kMaxBytes = size_t(32) << 20;
+    const std::string_view in(reinterpret_cast<const char*>(data + 1), size - 1);
+    std::string out;
+    size_t pos = 0;
+    while (pos < in.size()) {
+        const size_t open = in.find("@@", pos);
+        const size_t close = open == std::string_view::npos ? open : in.find("@@", open + 2);
+        if (close == std::string_view::npos) {
+            out.append(in.substr(pos));
+            break;
+        }
+        out.append(in.substr(pos, open - pos));
+        const std::string_view body = in.substr(open + 2, close - open - 2);
+        for (size_t i = 0; i < count && out.size() + body.size() <= kMaxBytes; ++i) out.append(body);
+        pos = close + 2;
+    }
+    return out;
+}
+
+/// Runs target on the input as it is, or in size-scaling mode on its expansion.
+template <class Target>
+void run(Target target, const uint8_t* data, size_t size) {
+    if (!scaling()) return target(data, size);
+    const std::string big = scaledInput(data, size);
+    target(reinterpret_cast<const uint8_t*>(big.data()), big.size());
+}
+
 }  // namespace rays::fuzz

@@ -5,6 +5,6 @@
 #include "entry_points.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    rays::fuzz::fuzzScene(data, size);
+    rays::fuzz::run(rays::fuzz::fuzzScene, data, size);  // scaled when RAYS_FUZZ_SCALE is set
     return 0;
 }

@@ -3,6 +3,12 @@
 # them one after another, each for SECONDS (default 600), niced, one process at a time.
 #
 #   fuzz/run.sh [SECONDS] [TARGET ...]      targets: scene obj kernel image pov (default: all five)
+#   fuzz/run.sh --scaled [SECONDS] [TARGET ...]   size-scaling mode: scene obj kernel pov (default)
+#
+# Size-scaling mode (RAYS_FUZZ_SCALE=1, entry_points.h scaledInput): the first byte of an input sets a
+# count 2^(k mod 18) and each "@@...@@" region is repeated that many times, so small inputs reach the
+# sizes where work that grows faster than its input shows (as a -timeout=10 report). Its seeds are in
+# fuzz/seeds-scaled/TARGET, its corpora in build-fuzz/corpus-scaled/TARGET.
 #
 # Corpora grow in build-fuzz/corpus/TARGET (kept between runs); the seeds (project scenes, the files in
 # fuzz/seeds/, generated images, the saved regression inputs in tests/regressions/, and for pov the
@@ -14,10 +20,17 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 
+scaled=0
+if [ "${1:-}" = --scaled ]; then
+  scaled=1
+  shift
+fi
 secs=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene obj kernel image pov)
+if [ ${#targets[@]} -eq 0 ]; then
+  if [ $scaled = 1 ]; then targets=(scene obj kernel pov); else targets=(scene obj kernel image pov); fi
+fi
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
 
@@ -63,6 +76,14 @@ for t in "${targets[@]}"; do
   exe="$build/fuzz_$t"
   [ -x "$exe" ] || { echo "unknown target '$t' (scene obj kernel image pov)" >&2; exit 2; }
   corpus="$build/corpus/$t"
+  seedDir="$seeds/$t"
+  scaleEnv=()
+  if [ $scaled = 1 ]; then
+    [ -d "fuzz/seeds-scaled/$t" ] || { echo "no size-scaling seeds for '$t'" >&2; exit 2; }
+    corpus="$build/corpus-scaled/$t"
+    seedDir="$root/fuzz/seeds-scaled/$t"
+    scaleEnv=(RAYS_FUZZ_SCALE=1)
+  fi
   artifacts="$build/artifacts/$t"
   work="$build/work/$t"
   log="$build/logs/$t.log"
@@ -75,10 +96,16 @@ for t in "${targets[@]}"; do
   # at most 16 KB like the seeds (the deep-nesting regression inputs are longer and load truncated).
   extra=()
   [ "$t" = pov ] && extra=(-close_fd_mask=2 -max_len=16384)
-  echo "== fuzz_$t for ${secs}s (log: $log)" >&2
+  mode=""
+  if [ $scaled = 1 ]; then
+    extra+=(-max_len=4096)
+    log="$build/logs/$t-scaled.log"
+    mode=" (size-scaling mode)"
+  fi
+  echo "== fuzz_$t for ${secs}s$mode (log: $log)" >&2
   set +e
-  (cd "$work" && TMPDIR=${TMPDIR:-/tmp} nice -n 10 "$exe" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 \
-      -print_final_stats=1 -artifact_prefix="$artifacts/" "${dict[@]}" "${extra[@]}" ${FUZZ_FLAGS:-} "$corpus" "$seeds/$t") >"$log" 2>&1
+  (cd "$work" && env "${scaleEnv[@]}" TMPDIR=${TMPDIR:-/tmp} nice -n 10 "$exe" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 \
+      -print_final_stats=1 -artifact_prefix="$artifacts/" "${dict[@]}" "${extra[@]}" ${FUZZ_FLAGS:-} "$corpus" "$seedDir") >"$log" 2>&1
   rc=$?
   set -e
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
@@ -89,7 +116,7 @@ for t in "${targets[@]}"; do
     verdict="FINDING (exit $rc): $(grep -m1 -E 'ERROR: |runtime error|==ERROR|SUMMARY' "$log" || echo 'see log')"
     status=1
   fi
-  summary+=("fuzz_$t: ${secs}s, ${runs:-?} executions, corpus $units files: $verdict")
+  summary+=("fuzz_$t$mode: ${secs}s, ${runs:-?} executions, corpus $units files: $verdict")
 done
 
 echo "== summary" >&2

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <stdlib.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <chrono>
@@ -66,6 +67,39 @@ std::string pngBytes(int w, int h) {
     const std::vector<uint8_t> png = rays::encodeImage("png", img);
     return std::string(png.begin(), png.end());
 }
+
+// The header of a w×h RGB PNG followed by `dataBytes` of zeros as its image data: the declared size
+// is all a reader sees before it decides to allocate.
+std::string pngDeclaring(int w, int h, size_t dataBytes) {
+    auto be32 = [](uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+    auto chunk = [&](const std::string& type, const std::string& data) {
+        const std::string body = type + data;
+        const uint32_t crc = uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size())));
+        return be32(uint32_t(data.size())) + body + be32(crc);
+    };
+    const std::string ihdr = be32(uint32_t(w)) + be32(uint32_t(h)) + std::string("\x08\x02\x00\x00\x00", 5);
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", std::string(dataBytes, '\0')) +
+           chunk("IEND", "");
+}
+
+// Four 2048×2048 textures (12 MiB of texels each) on four spheres.
+std::vector<File> fourTextures() {
+    const std::vector<uint8_t> png = rays::encodeImage("png", rays::Image8(2048, 2048, 3));
+    std::vector<File> files;
+    std::string body;
+    for (int i = 0; i < 4; ++i) {
+        const std::string name = "tex" + std::to_string(i) + ".png";
+        files.push_back({name, std::string(png.begin(), png.end())});
+        body += "sphere { <" + std::to_string(i) + ",0,0>, 1 pigment { image_map { png \"" + name + "\" } } }\n";
+    }
+    files.push_back({"scene.pov", kCamera + body});
+    return files;
+}
+
+// Two facing mirrors seen between them.
+const std::string kMirrors = kCamera + kLight +
+                             "plane { <0,0,1>, -1 pigment { color rgb 1 } finish { reflection 1 } }\n"
+                             "plane { <0,0,-1>, -20 pigment { color rgb 1 } finish { reflection 1 } }\n";
 
 // A scene with `body` after the camera (and, with a light, after the light too).
 std::vector<File> scene(const std::string& body, bool light = false) {
@@ -197,8 +231,8 @@ std::vector<BadInput> catalogue() {
                  "(1.1e12) per image"});
     t.push_back({"buffers-over-memory-limit", {{"scene.pov", kScene}},
                  {"render", "scene.pov", "8192", "8192", "--edges", "all", "-o", "out.png"}, 2,
-                 "rays: error: a 8192x8192 render with these options needs about 9.1 GiB of image buffers, more than "
-                 "the memory limit of 1.0 GiB (RAYS_MEMORY_LIMIT)",
+                 "rays: error: a 8192x8192 render with these options needs about 9.1 GiB of image buffers and 0.0 MiB "
+                 "for the scene, more than the memory limit of 1.0 GiB (RAYS_MEMORY_LIMIT)",
                  "out.png", "RAYS_MEMORY_LIMIT=1G"});
     t.push_back({"depth-0", {{"scene.pov", kCamera + kLight +
                                                "sphere { <0,0,0>, 2 pigment { color rgb 1 } finish { ambient 0.2 diffuse 0.6 reflection 0.5 } }\n"}},
@@ -329,6 +363,36 @@ std::vector<BadInput> catalogue() {
     t.push_back({"pov-strict", {{"scene.pov", pov + povScene + "julia_fractal { <0, 0, 0, 0> }\nsphere { 0, 1 }\n"}},
                  {"render", "scene.pov", "16", "12", "-o", "out.png", "-q", "--strict"}, 2,
                  "scene.pov:4:1: error: not rendered yet: julia_fractal (--strict)"});
+    // ---- issue 27: every form of the command line within the same limits ----
+    t.push_back({"positional-depth-10^4", {{"scene.pov", kScene}}, {"16", "12", "scene.pov", "out.png", "0", "1", "10000"}, 2,
+                 "rays: error: the recursion depth must be a whole number from 0 to 1000, got 10000"});
+    t.push_back({"positional-spp-10^9", {{"scene.pov", kScene}}, {"16", "12", "scene.pov", "out.png", "0", "999999999", "6"}, 2,
+                 "rays: error: the number of samples per pixel must be a whole number from 1 to 65536, got 999999999"});
+    t.push_back({"mirrors-depth-1000", {{"scene.pov", kMirrors}}, render({"--depth", "1000"}), 0, ""});
+    t.push_back({"gi-bounces-10^4", {{"scene.pov", kScene}}, render({"-gi_bounces=10000"}), 2,
+                 "rays: error: gi_bounces must be a whole number from 1 to 1000, got '10000'"});
+    t.push_back({"pov-frames-10^9", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+KFF999999999", "+Oout.png"}, 2,
+                 "rays: error: the animation has 999999999 frames to render, more than the limit of 1000000 per run (render it in "
+                 "parts with Subset_Start_Frame and Subset_End_Frame, +SF +EF)"});
+    // ---- issue 27: every input within a ceiling ----
+    t.push_back({"scene-endless", {}, {"render", "/dev/zero", "16", "12", "-o", "out.png", "-q"}, 2,
+                 "/dev/zero: error: scene file is larger than 1 GiB (the limit for scene text)"});
+    t.push_back({"kernel-endless", {{"in.png", pngBytes(16, 12)}}, {"filter", "in.png", "out.png", "kernel:/dev/zero"}, 2,
+                 "/dev/zero: error: kernel file is larger than 64 MiB"});
+    t.push_back({"filter-over-memory-limit", {{"in.png", pngBytes(256, 256)}}, {"filter", "in.png", "out.png", "box_blur_3"}, 2,
+                 "rays: error: filtering a 256x256 image needs about 1.9 MiB, more than the memory limit of 1.0 MiB (RAYS_MEMORY_LIMIT)",
+                 "out.png", "RAYS_MEMORY_LIMIT=1M"});
+    t.push_back({"texture-over-memory-limit",
+                 {{"scene.pov", kCamera + "sphere { <0,0,0>, 2 pigment { image_map { png \"tex.png\" } } }\n"},
+                  {"tex.png", pngDeclaring(16384, 16384, 70000)}},
+                 render(), 2,
+                 "scene.pov:2:47: error: tex.png: cannot read image: a 16384x16384 image needs 1.5 GiB to decode, more than "
+                 "the memory limit of 1.0 GiB (RAYS_MEMORY_LIMIT)",
+                 "out.png", "RAYS_MEMORY_LIMIT=1G"});
+    t.push_back({"textures-over-memory-limit", fourTextures(), render(), 2,
+                 "rays: error: a 16x12 render with these options needs about 0.0 MiB of image buffers and 48.0 MiB for the "
+                 "scene, more than the memory limit of 40.0 MiB (RAYS_MEMORY_LIMIT)",
+                 "out.png", "RAYS_MEMORY_LIMIT=40M"});
     return t;
 }
 

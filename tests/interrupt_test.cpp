@@ -7,6 +7,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -204,8 +205,9 @@ TEST(Interrupt, SavePartialKeepsTheRenderedTiles) {
 
 TEST(Interrupt, SecondSignalQuitsAtOnce) {
     TempDir dir, logs;
-    // One thread and a 1024x1024 area light: a single tile takes minutes, so the first signal alone
-    // would be honoured only after it; the second one ends the process right away.
+    // One thread, a 1024x1024 area light and 64 samples per pixel: a single pixel takes many
+    // seconds, so the first signal alone is honoured only after it (the render looks at the flag
+    // between pixels); the second one ends the process right away.
     std::ofstream(dir.path() / "scene.pov")
         << "camera { location <0,2,12> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
            "light_source { <-4,10,6> color rgb 1.2 area_light <2,0,0>, <0,0,2>, 1024, 1024 }\n"
@@ -214,7 +216,7 @@ TEST(Interrupt, SecondSignalQuitsAtOnce) {
     for (const auto delay : kDelays) {
         const auto start = std::chrono::steady_clock::now();
         const SignalledRun r = runAndSignal(dir.path(), logs.path() / "err.txt",
-                                            {"render", "scene.pov", "640", "480", "--threads", "1", "-o", "out.png"},
+                                            {"render", "scene.pov", "640", "480", "--spp", "64", "--threads", "1", "-o", "out.png"},
                                             SIGINT, delay, std::chrono::seconds(60), std::chrono::milliseconds(300));
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - delay.count() / 1000.0;
@@ -227,6 +229,46 @@ TEST(Interrupt, SecondSignalQuitsAtOnce) {
         EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"scene.pov"});
         break;
     }
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 27: the first signal stops any phase within about a second.
+
+TEST(Interrupt, OneTileCoveringTheWholeImageStopsWithinItsPixels) {
+    // 16x12 is one tile; a 32x32 area light at 1024 samples per pixel makes each pixel slow and
+    // the tile minutes long. Before, the first signal waited for the tile to finish.
+    TempDir dir, logs;
+    std::ofstream(dir.path() / "scene.pov")
+        << "camera { location <0,2,12> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
+           "light_source { <-4,10,6> color rgb 1.2 area_light <2,0,0>, <0,0,2>, 32, 32 jitter }\n"
+           "plane { <0,0,1>, -20 pigment { color rgb 1 } finish { diffuse 0.7 } }\n"
+           "sphere { <0,0.5,0>, 1.5 pigment { color rgb 1 } finish { diffuse 0.7 } }\n";
+    const SignalledRun r = runAndSignal(dir.path(), logs.path() / "err.txt",
+                                        {"render", "scene.pov", "16", "12", "--spp", "1024", "--threads", "1", "-o", "out.png"},
+                                        SIGINT, kDelay, std::chrono::seconds(20));
+    ASSERT_FALSE(r.finishedBeforeSignal) << r.err;
+    EXPECT_EQ(r.termSignal, 0);
+    EXPECT_EQ(r.exitCode, 130) << r.err;
+    EXPECT_EQ(r.err.find("interrupted again"), std::string::npos) << r.err;  // the first signal was enough
+    EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"scene.pov"});
+}
+
+TEST(Interrupt, LoadingStopsAtTheFirstSignalEvenInsideALibraryCall) {
+    // A scene file that is a FIFO nobody writes: opening it blocks for ever, in code that never
+    // looks at the flag (as tinyobjloader reading an OBJ or stb_image decoding a texture does).
+    // Loading writes nothing, so the first signal ends the process at once.
+    TempDir dir, logs;
+    ASSERT_EQ(::mkfifo((dir.path() / "scene.pov").c_str(), 0644), 0);
+    const SignalledRun r = runAndSignal(dir.path(), logs.path() / "err.txt",
+                                        {"render", "scene.pov", "16", "12", "-o", "out.png"}, SIGINT, kDelay,
+                                        std::chrono::seconds(20));
+    ASSERT_FALSE(r.finishedBeforeSignal) << r.err;
+    EXPECT_EQ(r.exitCode, 130) << r.err;
+    EXPECT_EQ(r.err, "\nrays: interrupted: stopping (signal again to quit at once)\nrays: interrupted; no image written\n");
+    EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"scene.pov"});
 }
 
 }  // namespace

@@ -166,3 +166,37 @@ TEST(RegressionsPng, EmptyIdatChunkInAValidPngIsHarmless) {
 }
 
 }  // namespace
+
+namespace {
+
+// Size-scaling mode (fuzz/run.sh --scaled): "@@" regions repeated 2^(first byte mod 18) times.
+TEST(FuzzScaling, RegionsAreRepeatedByTheFirstBytesPowerOfTwo) {
+    const std::string in = std::string("\x03") + "f@@ 1@@\n";
+    const std::string out = rays::fuzz::scaledInput(reinterpret_cast<const uint8_t*>(in.data()), in.size());
+    EXPECT_EQ(out, "f 1 1 1 1 1 1 1 1\n");
+    const std::string plain = std::string("\x05") + "no markers @@ here";
+    EXPECT_EQ(rays::fuzz::scaledInput(reinterpret_cast<const uint8_t*>(plain.data()), plain.size()), "no markers @@ here");
+}
+
+// Every size-scaling seed, expanded (up to 65536 repetitions: a face of 65536 corners, a prism of
+// 65537 points, 4096 nested unions), runs through its target and ends normally.
+TEST(FuzzScaling, EverySeedRunsThroughItsTarget) {
+    const fs::path dir = fs::path(RAYS_SOURCE_DIR) / "fuzz" / "seeds-scaled";
+    size_t seeds = 0;
+    for (const auto& target : fs::directory_iterator(dir))
+        for (const auto& seed : fs::directory_iterator(target.path())) {
+            const std::string bytes = readFile(seed.path());
+            const std::string big = rays::fuzz::scaledInput(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+            const auto* data = reinterpret_cast<const uint8_t*>(big.data());
+            const std::string t = target.path().filename().string();
+            if (t == "obj") rays::fuzz::fuzzObj(data, big.size());
+            else if (t == "kernel") rays::fuzz::fuzzKernel(data, big.size());
+            else if (t == "scene") rays::fuzz::fuzzScene(data, big.size());
+            else if (t == "pov") rays::fuzz::fuzzPov(data, big.size());
+            else ADD_FAILURE() << "no target " << t;
+            ++seeds;
+        }
+    EXPECT_GE(seeds, 10u);
+}
+
+}  // namespace

@@ -72,7 +72,8 @@ TEST(Texturing, KnownPointsLandOnKnownTexels) {
     Texture t;
     t.width = t.height = 4;
     const Image8 img = codedTexture();
-    for (uint8_t b : img.pixels) t.rgb.push_back(float(b / 255.0));
+    t.rgb = img.pixels;
+    for (int b = 0; b < 256; ++b) t.decode[size_t(b)] = float(b / 255.0);
     auto texelAt = [&](int mapType, Vec3 p) {
         double u, v;
         mapCoordinates(mapType, p, u, v);

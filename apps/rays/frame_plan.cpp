@@ -45,6 +45,9 @@ FramePlan planFrames(const AnimationOptions& a) {
     // POV-Ray: Final_Frame 0 (or unset, -1) is a still, and so is Initial_Frame=Final_Frame=1 (frame
     // 0, clock_on 0, output not numbered; measured: +KFI3 +KFF3 is an animation of frame 3).
     if (a.finalFrame < 1 || (a.finalFrame == 1 && a.initialFrame == 1 && !a.cyclic)) return stillPlan(a);
+    if (a.finalFrame > kMaxFrameNumber || a.initialFrame > kMaxFrameNumber)
+        throw Error("rays: error: frame numbers go up to " + std::to_string(kMaxFrameNumber) + ", got " +
+                    std::to_string(std::max(a.finalFrame, a.initialFrame)));
     const int initial = a.initialFrame;
     const int last = std::max(a.finalFrame, initial);  // a final frame before the initial one is the initial one
     // Cyclic_Animation: the clock runs as if there were one more frame, so the last frame rendered
@@ -67,12 +70,17 @@ FramePlan planFrames(const AnimationOptions& a) {
         throw Error("rays: error: Subset_End_Frame selects frame " + std::to_string(end) +
                     ", before the subset's first frame " + std::to_string(first) + ": no frame to render");
 
+    const int step = std::max(1, a.frameStep);
+    const int64_t frames = (int64_t(end) - first) / step + 1;
+    if (frames > kMaxFramesPerRun)
+        throw Error("rays: error: the animation has " + std::to_string(frames) + " frames to render, more than the limit of " +
+                    std::to_string(kMaxFramesPerRun) + " per run (render it in parts with Subset_Start_Frame and Subset_End_Frame, +SF +EF)");
     FramePlan p;
     p.animated = true;
     p.digits = decimalDigits(finalFrame);
-    for (int f = first; f <= end; f += std::max(1, a.frameStep)) {
+    for (int64_t f = first; f <= end; f += step) {
         sdl::AnimationClock c;
-        c.frameNumber = f;
+        c.frameNumber = int(f);
         c.clock = span > 0 ? a.initialClock + (a.finalClock - a.initialClock) * double(f - initial) / span : a.initialClock;
         c.clockDelta = delta;
         c.initialFrame = initial;

@@ -2,6 +2,7 @@
 // installed povray 3.7 binary): which frames an animation renders, each frame's clock identifiers
 // (sdl::AnimationClock) and the numbered output file names. Pure functions of plain values.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,11 @@ struct FramePlan {
     bool animated = false;  ///< numbered output files (the animation loop)
     int digits = 0;         ///< digits of the frame number in file names (those of final_frame)
 };
+
+/// Frame numbers (Initial_Frame, Final_Frame) are at most this: 9 digits in file names.
+inline constexpr int kMaxFrameNumber = 999999999;
+/// Frames one run renders at most (each frame's clock is planned up front).
+inline constexpr int64_t kMaxFramesPerRun = 1000000;
 
 /// The frames POV-Ray 3.7 renders for these options; throws Error ("rays: error: ...") for a subset
 /// that selects no frame.

@@ -15,6 +15,7 @@ std::atomic<bool> stopRequested{false};
 std::atomic<int> signalCount{0};
 std::atomic<int> lastSignal{0};
 std::atomic<int> criticalDepth{0};
+std::atomic<int> quitAtOnceDepth{0};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
 
 struct sigaction previousInt, previousTerm;
@@ -32,6 +33,10 @@ extern "C" void onSignal(int sig) {
     stopRequested.store(true);
     if (signalCount.fetch_add(1) == 0) {
         say("\nrays: interrupted: stopping (signal again to quit at once)\n");
+        if (quitAtOnceDepth.load() > 0 && criticalDepth.load() == 0) {
+            say("rays: interrupted; no image written\n");
+            ::_exit(128 + sig);
+        }
     } else if (criticalDepth.load() == 0) {
         say("rays: interrupted again: quitting\n");
         ::_exit(128 + sig);
@@ -66,6 +71,15 @@ bool interrupted() { return stopRequested.load(); }
 void throwIfInterrupted() {
     if (stopRequested.load()) throw Interrupted(lastSignal.load() ? lastSignal.load() : SIGINT);
 }
+
+QuitAtOnce::QuitAtOnce() {
+    quitAtOnceDepth.fetch_add(1);
+    if (stopRequested.load()) {
+        quitAtOnceDepth.fetch_sub(1);
+        throwIfInterrupted();
+    }
+}
+QuitAtOnce::~QuitAtOnce() { quitAtOnceDepth.fetch_sub(1); }
 
 CriticalSection::CriticalSection() { criticalDepth.fetch_add(1); }
 CriticalSection::~CriticalSection() { criticalDepth.fetch_sub(1); }

@@ -32,6 +32,18 @@ public:
     InterruptScope& operator=(const InterruptScope&) = delete;
 };
 
+/// While alive (inside an InterruptScope), the first signal ends the process at once, with the
+/// messages and the exit status of a stop at a checkpoint: for phases that write nothing and run
+/// code that does not look at the flag (loading the scene, its OBJ files and textures, building
+/// the BVH). Main thread only.
+class QuitAtOnce {
+public:
+    QuitAtOnce();  ///< throws Interrupted when a signal already arrived
+    ~QuitAtOnce();
+    QuitAtOnce(const QuitAtOnce&) = delete;
+    QuitAtOnce& operator=(const QuitAtOnce&) = delete;
+};
+
 /// True once a signal arrived inside an InterruptScope.
 bool interrupted();
 /// Throws Interrupted when interrupted().

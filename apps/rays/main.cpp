@@ -30,6 +30,7 @@
 #include "pov_settings.h"
 #include "rays/image/filter.h"
 #include "render_command.h"
+#include "render_limits.h"
 #include "render_options.h"
 #include "scene_library.h"
 #ifdef RAYS_WITH_MPI
@@ -261,12 +262,12 @@ int run(int argc, char** argv) {
         printSceneInfo(std::cout, cli::loadJobScene(job));
         return 0;
     }
-    cli::checkImageSize(width, height);
+    s.width = width;
+    s.height = height;
+    cli::checkSettingsLimits(s);
     if (px < 0 || px >= width || py < 0 || py >= height)
         throw Error("rays: error: pixel [" + std::to_string(px) + ", " + std::to_string(py) + "] is outside the " +
                     std::to_string(width) + "x" + std::to_string(height) + " image");
-    s.width = width;
-    s.height = height;
     const Scene sc = cli::loadJobScene(job);
     if (pixelray->parsed()) {
         printPixelRay(std::cout, sc, s, px, py);

@@ -20,6 +20,9 @@ namespace rays::cli {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// Largest INI file read (16 MiB): POV-Ray's INI files are a few KiB; /dev/zero stops here.
+constexpr size_t kMaxIniFileBytes = size_t(16) << 20;
 using pov::Form;
 using pov::Key;
 using pov::Kind;
@@ -401,13 +404,15 @@ void PovOptionReader::readIniFile(const std::string& path, const std::string& se
     const std::string origin = from.empty() ? std::string() : " (named " + from + ")";
     if (iniStack_.size() >= 10)
         throw Error("rays: error: " + name + ": INI files nested more than 10 deep" + origin);
-    std::ifstream in(name, std::ios::binary);
     std::error_code ec;
-    if (!in || fs::is_directory(name, ec)) throw Error("rays: error: cannot open INI file '" + name + "'" + origin);
-    std::ostringstream text;
-    text << in.rdbuf();
+    const FileText text(name, TextForm::Bytes, kMaxIniFileBytes);
+    if (text.status() == FileText::Status::CannotOpen || fs::is_directory(name, ec))
+        throw Error("rays: error: cannot open INI file '" + name + "'" + origin);
+    if (text.status() == FileText::Status::CannotRead) throw Error("rays: error: cannot read INI file '" + name + "'" + origin);
+    if (text.status() == FileText::Status::TooLarge)
+        throw Error("rays: error: INI file '" + name + "' is larger than " + FileText::describe(kMaxIniFileBytes) + origin);
     iniStack_.push_back(name);
-    readIniText(text.str(), name, section);
+    readIniText(std::string(text.text()), name, section);
     iniStack_.pop_back();
 }
 

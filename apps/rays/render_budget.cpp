@@ -1,13 +1,12 @@
 #include "render_budget.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
 
 #include "rays/error.h"
 #include "rays/npr/edge_classify.h"
 #include "rays/render/tracer.h"
+#include "rays/util/memory_limit.h"
 
 namespace rays::cli {
 
@@ -21,35 +20,17 @@ uint64_t bytesPerPixel(const BufferFeatures& f) {
     return b;
 }
 
-uint64_t memoryLimit() {
-    if (const char* env = std::getenv("RAYS_MEMORY_LIMIT")) {
-        char* end = nullptr;
-        const double v = std::strtod(env, &end);
-        double unit = 1;
-        switch (*end) {
-            case 'K': case 'k': unit = 1024.0; ++end; break;
-            case 'M': case 'm': unit = 1024.0 * 1024; ++end; break;
-            case 'G': case 'g': unit = 1024.0 * 1024 * 1024; ++end; break;
-            case 'T': case 't': unit = 1024.0 * 1024 * 1024 * 1024; ++end; break;
-            default: break;
-        }
-        if (end != env && *end == '\0' && v > 0 && v * unit < 1.8e19) return uint64_t(v * unit);
-        throw Error(std::string("rays: error: RAYS_MEMORY_LIMIT must be a positive number of bytes with an optional K, M, G or T suffix, got '") +
-                    env + "'");
-    }
-    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
-    if (pages > 0 && page > 0) return uint64_t(pages) * uint64_t(page);
-    return uint64_t(16) << 30;
+uint64_t sceneBytes(const Scene& scene) {
+    // Per object of the scene's BVH (built after this check): its share of the 8-wide nodes, the
+    // leaf slots and the build's bins (accel/object_bvh.h, triangle_bvh.h), generously.
+    constexpr uint64_t kBvhPerObject = 160;
+    uint64_t b = scene.objects.capacity() * (sizeof(Object) + kBvhPerObject);
+    for (const Texture& t : scene.textures) b += t.bytes();
+    for (const auto& m : scene.meshes) b += m->memoryBytes();  // its own BVH included
+    return b;
 }
 
-std::string formatBytes(double bytes) {
-    char buf[32];
-    if (bytes >= double(uint64_t(1) << 30)) std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / double(uint64_t(1) << 30));
-    else std::snprintf(buf, sizeof buf, "%.1f MiB", bytes / double(1 << 20));
-    return buf;
-}
-
-void checkRenderBudget(int width, int height, int samplesPerPixel, const BufferFeatures& f) {
+void checkRenderBudget(int width, int height, int samplesPerPixel, const BufferFeatures& f, uint64_t heldBytes) {
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
     const double samples = double(width) * double(height) * double(samplesPerPixel);
     if (samples > kMaxSamplesPerImage) {
@@ -58,12 +39,12 @@ void checkRenderBudget(int width, int height, int samplesPerPixel, const BufferF
         throw Error("rays: error: " + size + " at " + std::to_string(samplesPerPixel) + " samples per pixel is " + buf +
                     " samples, more than the limit of 2^40 (1.1e12) per image");
     }
-    const double need = double(width) * double(height) * double(bytesPerPixel(f));
+    const double buffers = double(width) * double(height) * double(bytesPerPixel(f));
     const uint64_t limit = memoryLimit();
-    if (need > double(limit))
-        throw Error("rays: error: a " + size + " render with these options needs about " + formatBytes(need) +
-                    " of image buffers, more than the memory limit of " + formatBytes(double(limit)) +
-                    (std::getenv("RAYS_MEMORY_LIMIT") ? " (RAYS_MEMORY_LIMIT)" : " (physical memory)"));
+    if (buffers + double(heldBytes) > double(limit))
+        throw Error("rays: error: a " + size + " render with these options needs about " + formatBytes(buffers) +
+                    " of image buffers and " + formatBytes(double(heldBytes)) + " for the scene, more than the memory limit of " +
+                    formatBytes(double(limit)) + memoryLimitSource());
 }
 
 }  // namespace rays::cli

@@ -8,6 +8,7 @@
 
 #include "rays/npr/edge_settings.h"
 #include "rays/render/settings.h"
+#include "rays/scene/scene.h"
 
 namespace rays::cli {
 
@@ -25,15 +26,12 @@ struct BufferFeatures {
 /// Estimated bytes of image buffers per pixel.
 uint64_t bytesPerPixel(const BufferFeatures& f);
 
-/// The memory limit in bytes: $RAYS_MEMORY_LIMIT when set (a number with an optional K, M, G or T
-/// suffix, powers of 1024), else the machine's physical memory (16 GiB when unknown).
-uint64_t memoryLimit();
-
-/// "1.5 GiB", "312.0 MiB".
-std::string formatBytes(double bytes);
+/// Bytes the loaded scene holds while it renders, estimated: its textures, its meshes with their
+/// triangle BVHs, and its objects with the object BVH.
+uint64_t sceneBytes(const Scene& scene);
 
 /// Throws Error "rays: error: ..." when width × height × samples exceeds kMaxSamplesPerImage or the
-/// estimated buffers exceed memoryLimit().
-void checkRenderBudget(int width, int height, int samplesPerPixel, const BufferFeatures& f);
+/// estimated buffers plus `heldBytes` (sceneBytes) exceed memoryLimit() (util/memory_limit.h).
+void checkRenderBudget(int width, int height, int samplesPerPixel, const BufferFeatures& f, uint64_t heldBytes);
 
 }  // namespace rays::cli

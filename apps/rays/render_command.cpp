@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <future>
 #include <memory>
+#include <optional>
 #include <iostream>
 
 #include "rays/accel/bvh.h"
@@ -31,6 +32,7 @@
 #include "mpi/mpi_render.h"
 #include "mpi/mpi_session.h"
 #endif
+#include "render_limits.h"
 
 namespace rays::cli {
 namespace {
@@ -211,6 +213,7 @@ int runRender(const RenderJob& job) {
     RenderSettings s = job.settings;
     s.linearOutput = hdrOutput;
     checkImageSize(s.width, s.height);
+    checkSettingsLimits(s);  // every form of the command line comes through here
     // Under MPI only rank 0 writes files (the others may run where its folders do not exist).
     const bool writer = worldRank() == 0;
     const unsigned aovKinds = parseAovList(job.aovs);
@@ -234,6 +237,7 @@ int runRender(const RenderJob& job) {
     }
 
     auto t0 = Clock::now();
+    std::optional<QuitAtOnce> loading(std::in_place);  // nothing written yet: a signal ends it at once
     const Scene scene = loadJobScene(job, {job.outputPath, job.edges.maskPath});
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
@@ -247,7 +251,7 @@ int runRender(const RenderJob& job) {
     buffers.lines = edges.enabled() || edges.linesOnly;
     buffers.mask = !job.edges.maskPath.empty();
     buffers.post = !job.post.empty();
-    checkRenderBudget(s.width, s.height, resolveView(scene, s).samples, buffers);
+    checkRenderBudget(s.width, s.height, resolveView(scene, s).samples, buffers, sceneBytes(scene));
     stopIfInterrupted(job, &scene, nullptr);
     // Ranks share single-pass renders only; edge-guided AA and lines-only renders (no render) run
     // on rank 0 alone for now, the other ranks stop here.
@@ -267,6 +271,7 @@ int runRender(const RenderJob& job) {
     t0 = Clock::now();
     const Bvh bvh(scene.objects);
     const double buildMs = msSince(t0);
+    loading.reset();
     stopIfInterrupted(job, &scene, nullptr);
 
     t0 = Clock::now();

@@ -6,17 +6,18 @@
 
 #include "flag_values.h"
 #include "rays/error.h"
+#include "render_limits.h"
 
 namespace rays::cli {
 namespace {
 
 [[noreturn]] void bad(const std::string& msg) { throw Error("rays: error: " + msg); }
 
-int positiveInt(const std::string& text, const char* what) {
+int positiveInt(const std::string& text, const char* what, int most) {
     char* end = nullptr;
     const long v = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || v < 1 || v > 65536)
-        bad(std::string(what) + " must be a whole number from 1 to 65536, got '" + text + "'");
+    if (text.empty() || *end != '\0' || v < 1 || v > most)
+        bad(std::string(what) + " must be a whole number from 1 to " + std::to_string(most) + ", got '" + text + "'");
     return int(v);
 }
 
@@ -60,7 +61,7 @@ void addCourseFlags(CLI::App* cmd, CourseFlags& f) {
     cmd->add_flag("--fresnel", f.fresnel, "Schlick Fresnel on reflection/refraction (course: -fresnel)");
     cmd->add_flag("--beers", f.beers, "Beer's law attenuation inside refractive objects (course: -beers)");
     cmd->add_flag("--sds", f.sds, "accepted for the course; Rays always uses its BVH (course: -sds)");
-    cmd->add_option("--ss", f.ss, "N×N regular supersampling grid per pixel (course: -ss=N)")->check(CLI::Range(1, 64));
+    cmd->add_option("--ss", f.ss, "N×N regular supersampling grid per pixel (course: -ss=N)")->check(CLI::Range(1, kMaxSupersampleGrid));
     cmd->add_flag("--gi", f.gi, "global illumination: cosine-weighted hemisphere samples replace the ambient term (course: -gi)");
     cmd->add_option("--gi_samples", f.giSamples, "GI samples at the first and later bounces, e.g. 64,16 (course: -gi_samples=)");
     cmd->add_option("--gi_bounces", f.giBounces, "levels of indirect light (default 2; course: -gi_bounces=)");
@@ -69,16 +70,16 @@ void addCourseFlags(CLI::App* cmd, CourseFlags& f) {
 void addModernOptions(CLI::App* cmd, ModernOptions& o, RenderSettings& s) {
     cmd->add_option("--shading", o.shading, "blinn-phong | cook-torrance | oren-nayar | lambert | flat | normals");
     cmd->add_option("--aa", o.aa, "sample placement: grid | random | stratified (default stratified with --spp, else grid)");
-    cmd->add_option("--spp", o.spp, "samples per pixel (grid and stratified use the nearest square)")->check(CLI::Range(1, 65536));
+    cmd->add_option("--spp", o.spp, "samples per pixel (grid and stratified use the nearest square)")->check(CLI::Range(1, kMaxSamplesPerPixel));
     cmd->add_option("--filter", o.filter, "reconstruction filter: box | tent | gaussian (default box)");
     cmd->add_flag("--aa-edges", o.aaEdges, "edge-guided anti-aliasing: supersample only where object ids or shadows change");
-    cmd->add_option("--area-samples", o.areaSamples, "samples per axis for every area light (overrides the scene)")->check(CLI::Range(1, 1024));
+    cmd->add_option("--area-samples", o.areaSamples, "samples per axis for every area light (overrides the scene)")->check(CLI::Range(1, kMaxAreaSamples));
     cmd->add_option("--aperture", o.aperture, "lens radius for depth of field (overrides the camera's aperture)")->check(atLeast(0, false));
     cmd->add_option("--focal-distance", o.focalDistance, "distance to the focal plane along the view direction")->check(atLeast(0, true));
-    cmd->add_option("--dof-samples", o.dofSamples, "samples per pixel with depth of field (overrides blur_samples)")->check(CLI::Range(1, 65536));
+    cmd->add_option("--dof-samples", o.dofSamples, "samples per pixel with depth of field (overrides blur_samples)")->check(CLI::Range(1, kMaxSamplesPerPixel));
     cmd->add_flag("--gi-physical", s.giPhysical, "global illumination with the physically based (Lambertian) estimator kd*C*E instead of the course's plain mean E (implies --gi)");
-    cmd->add_option("--depth", s.maxDepth, "recursion depth for reflection and refraction (default 6)")->check(CLI::Range(0, 1000));
-    cmd->add_option("--threads", s.threads, "worker threads (default: all cores)")->check(CLI::Range(0, 1024));
+    cmd->add_option("--depth", s.maxDepth, "recursion depth for reflection and refraction (default 6)")->check(CLI::Range(0, kMaxDepth));
+    cmd->add_option("--threads", s.threads, "worker threads (default: all cores)")->check(CLI::Range(0, kMaxThreads));
     cmd->add_option("--seed", s.seed, "random seed for jittered samples, area lights, lens and GI")->check(unsigned64Check());
     cmd->add_option("--camera", s.cameraIndex, "index of the camera in the scene (default 0)")->check(atLeast(0, false));
 }
@@ -97,11 +98,11 @@ void applyOptions(const CourseFlags& f, const ModernOptions& o, RenderSettings& 
     if (f.gi || s.giPhysical || !f.giSamples.empty() || !f.giBounces.empty()) s.gi = true;
     if (!f.giSamples.empty()) {
         const size_t comma = f.giSamples.find(',');
-        s.giSamples[0] = positiveInt(f.giSamples.substr(0, comma), "gi_samples");
+        s.giSamples[0] = positiveInt(f.giSamples.substr(0, comma), "gi_samples", kMaxGiSamples);
         s.giSamples[1] = comma == std::string::npos ? std::max(1, s.giSamples[0] / 4)
-                                                     : positiveInt(f.giSamples.substr(comma + 1), "gi_samples");
+                                                     : positiveInt(f.giSamples.substr(comma + 1), "gi_samples", kMaxGiSamples);
     }
-    if (!f.giBounces.empty()) s.giBounces = positiveInt(f.giBounces, "gi_bounces");
+    if (!f.giBounces.empty()) s.giBounces = positiveInt(f.giBounces, "gi_bounces", kMaxGiBounces);
     if (!f.gi && (!f.giSamples.empty() || !f.giBounces.empty()))  // once the values are known to be good
         std::fprintf(stderr, "rays: warning: %s turns global illumination on (as -gi)\n",
                      f.giSamples.empty() ? "-gi_bounces" : "-gi_samples");

@@ -272,12 +272,13 @@ KernelSpec parseKernelText(const std::string& text, const std::string& file) {
 KernelSpec loadKernelFile(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) failFile(path, "cannot read kernel file: is a directory");
-    std::ifstream f(path, std::ios::binary);
-    if (!f) failFile(path, std::string("cannot read kernel file: ") + std::strerror(errno));
-    std::ostringstream ss;
-    ss << f.rdbuf();
-    if (f.bad()) failFile(path, "cannot read kernel file");
-    return parseKernelText(ss.str(), path);
+    const FileText text(path, TextForm::Bytes, kMaxKernelFileBytes);
+    if (text.status() == FileText::Status::CannotOpen)
+        failFile(path, std::string("cannot read kernel file: ") + std::strerror(errno));
+    if (text.status() == FileText::Status::CannotRead) failFile(path, "cannot read kernel file");
+    if (text.status() == FileText::Status::TooLarge)
+        failFile(path, "kernel file is larger than " + FileText::describe(kMaxKernelFileBytes));
+    return parseKernelText(std::string(text.text()), path);
 }
 
 }  // namespace rays

@@ -37,6 +37,8 @@ struct KernelSpec {
 
 /// Largest N accepted for box_blur_N, gaussian_blur_N and for custom kernel sides.
 inline constexpr int kMaxKernelSize = 1001;
+/// Largest kernel file read (64 MiB): room for 1001 × 1001 numbers of up to 60 characters.
+inline constexpr size_t kMaxKernelFileBytes = size_t(64) << 20;
 /// Largest N accepted for median_N (the cost grows with N²).
 inline constexpr int kMaxMedianSize = 51;
 

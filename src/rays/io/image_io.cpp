@@ -20,6 +20,7 @@
 #include "rays/error.h"
 #include "rays/io/image_guard.h"
 #include "rays/io/output_files.h"
+#include "rays/util/memory_limit.h"
 
 #define STBI_NO_STDIO
 #define STBI_ONLY_PNG
@@ -384,6 +385,17 @@ namespace {
 
 bool isJpeg(const std::vector<uint8_t>& b) { return b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF; }
 
+// Refuses, before anything is allocated, a decode needing more than the memory limit: `copies`
+// images of w×h×channels bytes (stb_image's buffer and the Image8 it is copied into).
+template <class Fail>
+void checkDecodeBudget(int w, int h, int channels, int copies, Fail&& failRead) {
+    const double need = double(w) * double(h) * double(channels) * copies;
+    const uint64_t limit = memoryLimit();
+    if (need > double(limit))
+        failRead("a " + std::to_string(w) + "x" + std::to_string(h) + " image needs " + formatBytes(need) +
+                 " to decode, more than the memory limit of " + formatBytes(double(limit)) + memoryLimitSource());
+}
+
 std::string tooLargeMessage(int w, int h) {
     return "image is " + std::to_string(w) + "x" + std::to_string(h) +
            ", larger than the limit (65536 per side and 268435456 pixels)";
@@ -405,6 +417,7 @@ Image8 decodeJpeg(const std::vector<uint8_t>& bytes, Fail&& failRead) {
         failRead(tooLargeMessage(w, h));
     if (const std::string why = imageSizeHazard(bytes.data(), bytes.size(), w, h); !why.empty()) failRead(why);
     if (colorspace == TJCS_CMYK || colorspace == TJCS_YCCK) failRead("CMYK JPEG images are not supported");
+    checkDecodeBudget(w, h, colorspace == TJCS_GRAY ? 1 : 3, 1, failRead);
     Image8 img;
     img.width = w;
     img.height = h;
@@ -454,6 +467,7 @@ Image8 readImage(const std::string& path) {
         (infoW > kMaxImageSide || infoH > kMaxImageSide || uint64_t(infoW) * uint64_t(infoH) > kMaxImagePixels))
         failRead(tooLargeMessage(infoW, infoH));
     if (const std::string why = imageSizeHazard(bytes.data(), bytes.size(), infoW, infoH); !why.empty()) failRead(why);
+    checkDecodeBudget(infoW, infoH, std::clamp(infoC, 1, 4), 2, failRead);
 
     int w = 0, h = 0, comp = 0;
     stbi_uc* px = stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &comp, 0);

@@ -1,6 +1,7 @@
 // OBJ loading: a strict pre-scan of our own (tinyobjloader silently reads bad numbers as 0 and only warns,
 // without a usable line number, about out-of-range indices), then tinyobjloader for the actual parse.
 #include "rays/io/obj_loader.h"
+#include "rays/io/polygon_triangulate.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -20,6 +21,7 @@
 #include <zlib.h>
 
 #include "rays/error.h"
+#include "rays/io/file_text.h"
 
 namespace rays {
 namespace {
@@ -41,33 +43,30 @@ std::string readGzipFile(const std::string& path) {
             failFile(path, "cannot read compressed OBJ file: " + why);
         }
         if (n == 0) break;
+        if (text.size() + size_t(n) > kMaxTextFileBytes) {
+            gzclose(f);
+            failFile(path, "OBJ file is larger than " + FileText::describe(kMaxTextFileBytes) + " decompressed");
+        }
         text.append(chunk, size_t(n));
     }
     gzclose(f);
     return text;
 }
 
+// The OBJ file's text as source text (byte-order mark skipped, lone CRs end lines), at most
+// kMaxTextFileBytes (an endless source such as /dev/zero stops there); a .gz file decompressed.
 std::string readWholeFile(const std::string& path) {
-    if (isGzipName(path)) return readGzipFile(path);
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) failFile(path, std::string("cannot open OBJ file: ") + std::strerror(errno));
-    std::string text;
-    struct stat st {};
-    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) text.reserve(size_t(st.st_size));
-    char chunk[1 << 16];
-    for (;;) {
-        const ssize_t n = ::read(fd, chunk, sizeof chunk);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            const int e = errno;
-            ::close(fd);
-            failFile(path, std::string("cannot read OBJ file: ") + std::strerror(e));
-        }
-        if (n == 0) break;
-        text.append(chunk, size_t(n));
+    if (isGzipName(path)) {
+        std::string text = readGzipFile(path);
+        const size_t start = makeSourceText(text.data(), text.size());
+        return text.erase(0, start);
     }
-    ::close(fd);
-    return text;
+    FileText text(path, TextForm::Source);
+    if (text.status() == FileText::Status::CannotOpen) failFile(path, std::string("cannot open OBJ file: ") + std::strerror(errno));
+    if (text.status() == FileText::Status::CannotRead) failFile(path, "cannot read OBJ file");
+    if (text.status() == FileText::Status::TooLarge)
+        failFile(path, "OBJ file is larger than " + FileText::describe(kMaxTextFileBytes));
+    return std::string(text.text());
 }
 
 // MTL files as tinyobjloader's MaterialFileReader finds them (the OBJ's folder, or as named), read
@@ -109,7 +108,8 @@ class PreScanner {
 public:
     PreScanner(const std::string& path, std::string_view text) : path_(path), text_(text) {}
 
-    void run() {
+    /// Validates the text; returns the corner count of each face, in file order.
+    std::vector<uint32_t> run() {
         const char* p = text_.data();
         const char* const end = p + text_.size();
         while (p < end) {
@@ -124,6 +124,7 @@ public:
             const int count = counts_[f.kind];
             if (f.index > count) fail(f.line, outOfRange(f.kind, f.index, count, false));
         }
+        return std::move(faceCorners_);
     }
 
 private:
@@ -232,6 +233,7 @@ private:
             ++corners;
         }
         if (corners < 3) fail(line_, "face needs at least 3 vertices, got " + std::to_string(corners));
+        faceCorners_.push_back(uint32_t(corners));
     }
 
     void checkIndex(std::string_view s, int kind, std::string_view field) {
@@ -254,6 +256,7 @@ private:
     int line_ = 0;
     int counts_[3] = {0, 0, 0};
     std::vector<Pending> forward_;
+    std::vector<uint32_t> faceCorners_;  ///< tinyobjloader keeps only the low 8 bits of these
 };
 
 /// The line number in a tinyobjloader message ("... line 12.)", "line: 12"), or 0.
@@ -292,11 +295,10 @@ std::vector<std::string> messageLines(const std::string& msg) {
 
 ObjMesh loadObj(const std::string& path) {
     std::string text = readWholeFile(path);
-    // A UTF-8 byte-order mark (some editors write one) is not part of the first statement.
-    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
-    PreScanner(path, text).run();
+    const std::vector<uint32_t> faceCorners = PreScanner(path, text).run();
 
     // The text read once is what tinyobjloader parses; MTL files are searched in the OBJ's folder.
+    // Polygons are triangulated here, in linear time (polygon_triangulate.h), not by tinyobjloader.
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
@@ -307,7 +309,7 @@ ObjMesh loadObj(const std::string& path) {
     {
         std::stringbuf buffer(std::move(text));
         std::istream in(&buffer);
-        ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &mtlReader, true, false);
+        ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &mtlReader, false, false);
     }
     for (const std::string& w : messageLines(warning)) std::cerr << formatWarning(SourceLoc{path, 0, 0}, w) << "\n";
     if (!ok) {
@@ -343,30 +345,41 @@ ObjMesh loadObj(const std::string& path) {
         mesh.materials.push_back(std::move(mat));
     }
 
-    size_t total = 0;
-    for (const tinyobj::shape_t& s : shapes) total += s.mesh.num_face_vertices.size();
+    size_t total = 0;  // triangles: a polygon of n corners makes n - 2
+    for (const uint32_t n : faceCorners) total += n - 2;
     mesh.faces.reserve(total);
     mesh.faceMaterial.reserve(total);
     const int nv = int(mesh.positions.size()), nn = int(mesh.normals.size()), nt = int(mesh.uvs.size());
     const int nm = int(mesh.materials.size());
+    // tinyobjloader lists the faces in file order, shape after shape, and keeps each one's corner
+    // count in a byte: the pre-scan's counts are the true ones.
+    std::vector<Vec3> corners;
+    size_t face = 0;
     for (const tinyobj::shape_t& s : shapes) {
         size_t k = 0;
-        for (size_t f = 0; f < s.mesh.num_face_vertices.size(); ++f) {
-            const size_t n = s.mesh.num_face_vertices[f];
-            if (n == 3) {
-                ObjMesh::Face face;
-                for (int c = 0; c < 3; ++c) {
-                    const tinyobj::index_t& idx = s.mesh.indices[k + size_t(c)];
-                    // The pre-scan guarantees these; check anyway rather than hand out bad indices.
-                    if (idx.vertex_index < 0 || idx.vertex_index >= nv || idx.normal_index >= nn ||
-                        idx.texcoord_index >= nt)
-                        failFile(path, "face index out of range");
-                    face.v[size_t(c)] = idx.vertex_index;
-                    face.n[size_t(c)] = idx.normal_index < 0 ? -1 : idx.normal_index;
-                    face.t[size_t(c)] = idx.texcoord_index < 0 ? -1 : idx.texcoord_index;
+        for (size_t f = 0; f < s.mesh.num_face_vertices.size(); ++f, ++face) {
+            if (face >= faceCorners.size() || uint8_t(faceCorners[face]) != s.mesh.num_face_vertices[f] ||
+                k + faceCorners[face] > s.mesh.indices.size())
+                failFile(path, "faces read differently by the pre-scan and tinyobjloader");
+            const size_t n = faceCorners[face];
+            corners.clear();
+            for (size_t c = 0; c < n; ++c) {
+                const tinyobj::index_t& idx = s.mesh.indices[k + c];
+                // The pre-scan guarantees these; check anyway rather than hand out bad indices.
+                if (idx.vertex_index < 0 || idx.vertex_index >= nv || idx.normal_index >= nn || idx.texcoord_index >= nt)
+                    failFile(path, "face index out of range");
+                corners.push_back(mesh.positions[size_t(idx.vertex_index)]);
+            }
+            const int m = f < s.mesh.material_ids.size() ? s.mesh.material_ids[f] : -1;
+            for (const std::array<int, 3>& tri : triangulatePolygon(corners)) {
+                ObjMesh::Face out;
+                for (size_t c = 0; c < 3; ++c) {
+                    const tinyobj::index_t& idx = s.mesh.indices[k + size_t(tri[c])];
+                    out.v[c] = idx.vertex_index;
+                    out.n[c] = idx.normal_index < 0 ? -1 : idx.normal_index;
+                    out.t[c] = idx.texcoord_index < 0 ? -1 : idx.texcoord_index;
                 }
-                const int m = f < s.mesh.material_ids.size() ? s.mesh.material_ids[f] : -1;
-                mesh.faces.push_back(face);
+                mesh.faces.push_back(out);
                 mesh.faceMaterial.push_back(m >= 0 && m < nm ? m : -1);
             }
             k += n;

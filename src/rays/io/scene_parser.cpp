@@ -812,6 +812,8 @@ Scene loadScene(const std::string& path, const ParseOptions& options) {
     const FileText file(path, TextForm::Source);
     if (file.status() == FileText::Status::CannotOpen) failFile(path, "cannot open scene file");
     if (file.status() == FileText::Status::CannotRead) failFile(path, "cannot read scene file");
+    if (file.status() == FileText::Status::TooLarge)
+        failFile(path, "scene file is larger than " + FileText::describe(kMaxTextFileBytes) + " (the limit for scene text)");
     const sdl::Dialect dialect = options.language.dialect;
     if (dialect == sdl::Dialect::Povray || (dialect == sdl::Dialect::Auto && pov::looksLikePovray(file.text()))) {
         const std::filesystem::path p(path);

@@ -246,8 +246,13 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         parallelFor(tileCount, s.threads, [&](int t, int w) {
             const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
             const int x1 = std::min(x0 + kTile, s.width), y1 = std::min(y0 + kTile, s.height);
+            // The cancel flag is looked at for every pixel, so a signal stops even a render of one
+            // big, slow tile within about a pixel's time; an unfinished tile stays not done.
             for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) pixel(x, y, perThread[size_t(w)]);
+                for (int x = x0; x < x1; ++x) {
+                    if (cancelled()) return;
+                    pixel(x, y, perThread[size_t(w)]);
+                }
             if (firstPass) tileDone[size_t(t)] = 1;
             // The last tile of its row: the other tiles' pixels are visible here (acq_rel).
             if (rowTilesLeft && rowTilesLeft[size_t(t / tilesX)].fetch_sub(1, std::memory_order_acq_rel) == 1)

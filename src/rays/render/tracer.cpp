@@ -10,6 +10,7 @@
 #include "rays/render/area_light.h"
 #include "rays/render/shading.h"
 #include "rays/render/texturing.h"
+#include "rays/util/stack_room.h"
 
 namespace rays {
 namespace {
@@ -244,7 +245,7 @@ void Tracer::probeRec(const Ray& ray, int depth, bool countShadows, bool followS
         out.setHit(hit.t, P, N);
         if (countShadows) out.blockedLights = int16_t(blockedLightsAt(P, N, ctx));
     }
-    if (!followSecondary || depth >= settings_.maxDepth || out.count >= PathInfo::kMaxIds) return;
+    if (!followSecondary || depth >= settings_.maxDepth || out.count >= PathInfo::kMaxIds || stackNearlyFull()) return;
     const SecondaryWeights w = secondaryWeights(o.material, ray.dir, N, entering, settings_.fresnel);
     // As trace(): refraction first, origins offset along the normal.
     if (w.wTrans > 0) {
@@ -295,7 +296,8 @@ Vec3 Tracer::gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) c
 
 Vec3 Tracer::ambientTerm(const Material& m, Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const {
     if (!settings_.gi) return m.ambient * m.color;
-    if (f.giLevel >= settings_.giBounces) return {};  // the last level: no ambient light at all
+    // The last level has no ambient light at all; so has a level that would run past the stack's end.
+    if (f.giLevel >= settings_.giBounces || stackNearlyFull()) return {};
     const Vec3 E = gatherIndirect(P, N, f, ctx);
     return settings_.giPhysical ? m.diffuse * m.color * E : E;
 }
@@ -372,7 +374,7 @@ Tracer::Result Tracer::trace(const Ray& ray, const Frame& f, TraceContext& ctx, 
     }
 
     Vec3 reflColor, transColor;
-    const bool recurse = f.depth < settings_.maxDepth;
+    const bool recurse = f.depth < settings_.maxDepth && !stackNearlyFull();  // never past the stack's end
     Frame child = f;
     child.depth = f.depth + 1;
     // Refraction first, as the course traces (and printrays prints) them. Both rays leave P

@@ -12,6 +12,7 @@
 #include "rays/render/pov_pigment.h"
 #include "rays/render/pov_texture.h"
 #include "rays/render/texturing.h"
+#include "rays/util/stack_room.h"
 #include "rays/render/tracer.h"
 
 namespace rays {
@@ -136,7 +137,8 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
         info->blockedLights = int16_t(blocked);
         info->setHit(hit.t, pt.P, pt.N);
     }
-    if (r.level >= scene_.pov.maxTraceLevel) return color;  // no further rays at the last level
+    // No further rays at the last level, nor where the thread's stack is nearly used up.
+    if (r.level >= scene_.pov.maxTraceLevel || stackNearlyFull()) return color;
     return color + povSecondary(ray, pt, r, ctx, info);
 }
 

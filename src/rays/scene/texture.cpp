@@ -9,8 +9,8 @@ namespace rays {
 Vec3 Texture::texel(int x, int y) const {
     x = ((x % width) + width) % width;
     y = ((y % height) + height) % height;
-    const float* p = &rgb[(size_t(y) * size_t(width) + size_t(x)) * 3];
-    return {p[0], p[1], p[2]};
+    const uint8_t* p = &rgb[(size_t(y) * size_t(width) + size_t(x)) * 3];
+    return {decode[p[0]], decode[p[1]], decode[p[2]]};
 }
 
 Vec3 Texture::sample(double u, double v, bool bilinear) const {
@@ -27,19 +27,24 @@ Vec3 Texture::sample(double u, double v, bool bilinear) const {
 }
 
 Texture loadTexture(const std::string& path, double gamma) {
-    const Image8 img = readImage(path);
+    Image8 img = readImage(path);
     Texture t;
     t.path = path;
     t.width = img.width;
     t.height = img.height;
-    t.rgb.resize(size_t(img.width) * size_t(img.height) * 3);
-    for (size_t i = 0; i < size_t(img.width) * size_t(img.height); ++i) {
+    for (int b = 0; b < 256; ++b) {
+        const double value = b / 255.0;
+        t.decode[size_t(b)] = float(gamma == 1.0 ? value : std::pow(value, gamma));
+    }
+    const size_t n = size_t(img.width) * size_t(img.height);
+    if (img.channels == 3) {
+        t.rgb = std::move(img.pixels);  // no copy of a big image
+        return t;
+    }
+    t.rgb.resize(n * 3);
+    for (size_t i = 0; i < n; ++i) {
         const uint8_t* p = &img.pixels[i * size_t(img.channels)];
-        for (int c = 0; c < 3; ++c) {
-            const uint8_t byte = img.channels >= 3 ? p[c] : p[0];
-            const double value = byte / 255.0;
-            t.rgb[i * 3 + size_t(c)] = float(gamma == 1.0 ? value : std::pow(value, gamma));
-        }
+        for (size_t c = 0; c < 3; ++c) t.rgb[i * 3 + c] = img.channels >= 3 ? p[c] : p[0];
     }
     return t;
 }

@@ -52,9 +52,9 @@ void Interpreter::dirFopen(const Loc& at) {
     if (mode == Kw::read) {
         const std::string path = findFile(file);
         if (path.empty()) error(at, "cannot find \"" + file + "\" to read");
-        FileText text(path, TextForm::Source);
+        FileText text(path, TextForm::Source, kMaxReadFile);
+        if (text.status() == FileText::Status::TooLarge) error(at, "\"" + file + "\" is larger than 64 MiB");
         if (text.status() != FileText::Status::Ok) error(at, "cannot read \"" + file + "\"");
-        if (text.text().size() > kMaxReadFile) error(at, "\"" + file + "\" is larger than 64 MiB");
         h->content.assign(text.text());
     } else {
         const fs::path p = fs::path(file).is_absolute() ? fs::path(file) : fs::path(sceneFolder_) / file;

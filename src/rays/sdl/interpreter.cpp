@@ -2,7 +2,6 @@
 // expands macros on the way, macro calls and returns, the top-level loop and messages.
 #include "rays/sdl/interpreter.h"
 
-#include <pthread.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include "rays/io/file_text.h"
 #include "rays/sdl/frames.h"
 #include "rays/sdl/lexer.h"
+#include "rays/util/stack_room.h"
 
 namespace rays::sdl {
 
@@ -27,28 +27,6 @@ Interpreter::Interpreter(const LanguageOptions& options, ItemHost& host, Diagnos
 
 Interpreter::~Interpreter() = default;
 
-namespace {
-
-// Stack kept free below the deepest nesting level: room for the work between two NestGuards and
-// for throwing the error.
-constexpr size_t kStackReserve = size_t(256) << 10;
-
-// The lowest stack address a parse on this thread may nest down to (the stack grows down on the
-// platforms Rays builds for); 0 when the thread's stack is unknown.
-uintptr_t threadStackFloor() {
-    thread_local const uintptr_t floor = [] {
-        pthread_attr_t attr;
-        if (pthread_getattr_np(pthread_self(), &attr) != 0) return uintptr_t(0);
-        void* low = nullptr;
-        size_t size = 0;
-        const bool known = pthread_attr_getstack(&attr, &low, &size) == 0 && low;
-        pthread_attr_destroy(&attr);
-        return known ? uintptr_t(low) + std::min(kStackReserve, size / 2) : uintptr_t(0);
-    }();
-    return floor;
-}
-
-}  // namespace
 
 void Interpreter::tooDeep() {
     const bool counted = nesting_ > limits_.nesting;
@@ -77,6 +55,8 @@ const SourceFile& Interpreter::openFile(const std::string& path, const std::stri
     FileText text(path, TextForm::Source);
     if (text.status() == FileText::Status::CannotOpen) failFile(shownName, "cannot open file");
     if (text.status() == FileText::Status::CannotRead) failFile(shownName, "cannot read file");
+    if (text.status() == FileText::Status::TooLarge)
+        failFile(shownName, "file is larger than " + FileText::describe(kMaxTextFileBytes) + " (the limit for scene text)");
     auto f = std::make_unique<SourceFile>();
     f->id = uint32_t(files_.size());
     f->path = path;

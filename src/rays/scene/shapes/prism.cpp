@@ -22,6 +22,7 @@ bool insideOutline(const std::vector<double>& e, double px, double pz) {
 
 bool makePrism(const std::vector<Vec3>& pts, double y0, double y1, ShapeData& data) {
     std::vector<double>& e = data.values;
+    std::vector<size_t> loops;  // where each closed outline's edges start in e
     auto add = [&](Vec3 a, Vec3 b) {
         if (a == b) return;
         e.insert(e.end(), {a.x, a.z, b.x, b.z, 1.0});
@@ -31,21 +32,38 @@ bool makePrism(const std::vector<Vec3>& pts, double y0, double y1, ShapeData& da
         data.bounds.extend(Vec3{pts[i].x, y0, pts[i].z});
         data.bounds.extend(Vec3{pts[i].x, y1, pts[i].z});
         if (i > start && pts[i] == pts[start]) {
+            loops.push_back(e.size());
             for (size_t k = start; k < i; ++k) add(pts[k], pts[k + 1]);
             start = i + 1;
         }
     }
     if (pts.size() - start >= 2) {  // an unclosed last sub-prism is closed
+        loops.push_back(e.size());
         for (size_t k = start; k + 1 < pts.size(); ++k) add(pts[k], pts[k + 1]);
         add(pts.back(), pts[start]);
     }
+    loops.push_back(e.size());
     // Each edge's outward side: a point just off its middle on that side is outside.
-    for (size_t i = 0; i < e.size(); i += kStride) {
+    auto outward = [&](size_t i) {
         const double dx = e[i + 2] - e[i], dz = e[i + 3] - e[i + 1];
         const double len = std::sqrt(dx * dx + dz * dz);
         const double eps = 1e-7 * (1 + len);
         const double mx = 0.5 * (e[i] + e[i + 2]) + eps * dz / len, mz = 0.5 * (e[i + 1] + e[i + 3]) - eps * dx / len;
-        if (insideOutline(e, mx, mz)) e[i + 4] = -1;
+        return insideOutline(e, mx, mz) ? -1.0 : 1.0;
+    };
+    // Testing every edge against the whole outline is quadratic (issue 27: 100k points took 20 s).
+    // The edges of one simple closed outline all have the outside on the same hand, so a long one
+    // is decided by its first edge; short ones (and so self-crossing small outlines) edge by edge.
+    constexpr size_t kEdgeByEdge = 256;
+    for (size_t l = 0; l + 1 < loops.size(); ++l) {
+        const size_t b = loops[l], end = loops[l + 1];
+        if (b == end) continue;
+        if ((end - b) / kStride <= kEdgeByEdge) {
+            for (size_t i = b; i < end; i += kStride) e[i + 4] = outward(i);
+        } else {
+            const double side = outward(b);
+            for (size_t i = b; i < end; i += kStride) e[i + 4] = side;
+        }
     }
     return !e.empty();
 }
