@@ -133,6 +133,18 @@ TEST(PovIsosurface, TransformsLikeOtherShapes) {
     EXPECT_NEAR(shoot(s, {0, 5, 0}, {0, -1, 0}).t, 3, kAcc);
 }
 
+TEST(PovIsosurface, NotANumberAndTooLowGradientsStillEnd) {
+    // sqrt(x) is NaN for x < 0: the march goes on by the accuracy there and ends; from +x the
+    // surface sqrt(x) = 0.5 is found.
+    const Scene s = build("isosurface { function { sqrt(x) - 0.5 } }");
+    EXPECT_NEAR(shoot(s, {5, 0, 0}, {-1, 0, 0}).t, 4.75, kAcc);
+    (void)shoot(s, {-5, 0.1, 0}, {1, 0, 0});
+    // A max_gradient far below the function's (200) steps over the thin shells: fewer hits, but
+    // an answer.
+    const Scene low = build("isosurface { function { sin(200*x) } max_gradient 0.01 }");
+    EXPECT_LT(test::allHitsPov(low, {-5, 0.1, 0}, {1, 0, 0}, 1e-7).size(), 16u);
+}
+
 TEST(PovIsosurface, PatternFunctionsAreNotedAndLeftOut) {
     std::vector<std::string> warnings;
     const Scene s = build(

@@ -125,7 +125,9 @@ bool hitIsosurface(const Object& o, const Ray& r, double tMin, double tMax, Shap
     const double g = o.data->values[kMaxGradient] * len;  // the bound per unit of t
     const double minStep = std::max(accuracy / len, (end - a) / kMaxSteps);
     for (;;) {
-        const double b = std::min(a + std::max(std::fabs(va) / g, minStep), end);
+        double step = std::fabs(va) / g;  // NaN (sqrt of a negative number, say) steps the least
+        if (!(step > minStep)) step = minStep;
+        const double b = a + step < end ? a + step : end;
         const double vb = value(o, r.at(b));
         if ((va < 0) != (vb < 0)) {
             double lo = a, hi = b;
