@@ -206,7 +206,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep: case Kw::b_spline:
                 terms_.push_back(&e);  // polynomial's terms, a prism's, lathe's or sphere_sweep's kind
                 break;
-            case Kw::open: open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism || kind == Kw::sor; break;
+            case Kw::open:
+                open = kind == Kw::cone || kind == Kw::cylinder || kind == Kw::prism || kind == Kw::sor ||
+                       kind == Kw::isosurface;
+                break;
             case Kw::ttf: case Kw::internal: font = &e; break;
             default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
         }
@@ -268,6 +271,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         }
         case Kw::text: addText(font, args, item.loc, toWorld, own ? *own : fallback_, inverse); break;
         case Kw::blob: addBlob(item.loc, toWorld, own ? *own : fallback_, inverse); break;
+        case Kw::isosurface: addIsosurface(entries, item.loc, toWorld, own ? *own : fallback_, open, inverse); break;
         default:
             addPrimitive(kind, args, item.loc, toWorld, own ? *own : fallback_, open, inverse);
             terms_.clear();

@@ -52,6 +52,9 @@ private:
     bool collectBlobEntry(Kw kind, const Entry& e);
     void addBlob(const sdl::Loc& at, const Transform& toWorld, const Appearance& look, bool inverse);
     BlobComponent blobComponent(const Item& component, const Transform& toWorld, Appearance& own);
+    /// Isosurfaces (scene_builder_iso.cpp): the object from the isosurface's entries.
+    void addIsosurface(const std::vector<const Entry*>& entries, const sdl::Loc& at, const Transform& toWorld,
+                       const Appearance& look, bool open, bool inverse);
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look, bool inverse);
     /// True, with its look (texture space → world) in out, when a mesh2's texture_list holds one
     /// texture that every face names; otherwise false (a texture_list is noted).

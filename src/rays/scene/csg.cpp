@@ -5,6 +5,7 @@
 
 #include "rays/scene/text_shape.h"
 #include "rays/scene/shapes/blob.h"
+#include "rays/scene/shapes/isosurface.h"
 #include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/poly.h"
 #include "rays/scene/shapes/prism.h"
@@ -212,6 +213,7 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::Superellipsoid: return insideSuperellipsoid(o, p);
         case ShapeType::Prism: return insidePrism(o, p);
         case ShapeType::Blob: return insideBlob(o, p);
+        case ShapeType::Isosurface: return insideIsosurface(o, p);
         case ShapeType::Lathe: return insideLathe(o, p);
         case ShapeType::Sor: return insideSor(o, p);
         case ShapeType::SphereSweep: return insideSphereSweep(o, p);

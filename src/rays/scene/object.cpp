@@ -8,6 +8,7 @@
 #include "rays/scene/mesh.h"
 #include "rays/scene/text_shape.h"
 #include "rays/scene/shapes/blob.h"
+#include "rays/scene/shapes/isosurface.h"
 #include "rays/scene/shapes/disc.h"
 #include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/polygon.h"
@@ -37,6 +38,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Superellipsoid: return "Superellipsoid";
         case ShapeType::Prism: return "Prism";
         case ShapeType::Blob: return "Blob";
+        case ShapeType::Isosurface: return "Isosurface";
         case ShapeType::Lathe: return "Lathe";
         case ShapeType::Sor: return "Sor";
         case ShapeType::SphereSweep: return "SphereSweep";
@@ -233,6 +235,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Superellipsoid: found = hitSuperellipsoid(o, r, tMin, tMax, h); break;
         case ShapeType::Prism: found = hitPrism(o, r, tMin, tMax, h); break;
         case ShapeType::Blob: found = hitBlob(o, r, tMin, tMax, h); break;
+        case ShapeType::Isosurface: found = hitIsosurface(o, r, tMin, tMax, h); break;
         case ShapeType::Lathe: found = hitLathe(o, r, tMin, tMax, h); break;
         case ShapeType::Sor: found = hitSor(o, r, tMin, tMax, h); break;
         case ShapeType::SphereSweep: found = hitSphereSweep(o, r, tMin, tMax, h); break;
@@ -269,7 +272,9 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Torus: b = torusBounds(o); break;
         case ShapeType::Disc: b = discBounds(o); break;
         case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: case ShapeType::Blob:
-        case ShapeType::Lathe: case ShapeType::Sor: case ShapeType::SphereSweep: b = o.data->bounds; break;
+        case ShapeType::Lathe: case ShapeType::Sor: case ShapeType::SphereSweep: case ShapeType::Isosurface:
+            b = o.data->bounds;
+            break;
         case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;
         case ShapeType::Cone: {
             const double r = std::max(o.r0, o.r1);

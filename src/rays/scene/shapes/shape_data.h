@@ -1,12 +1,17 @@
 // Parameters of a shape that do not fit in Object's fixed fields (polygon edges, polynomial
 // coefficients), owned by the Scene; Object::data points at them.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "rays/geometry/ray.h"
 #include "rays/scene/object.h"
 
 namespace rays {
+
+namespace fn {
+struct Program;
+}
 
 /// A node of a box tree over a shape's pieces: a leaf holds pieces [first, first + count), an inner
 /// node (count 0) its two children at nodes first and first + 1.
@@ -21,6 +26,7 @@ struct ShapeData {
     Bounds bounds;               ///< object-space bounds (empty: unbounded)
     std::vector<BoxNode> tree;   ///< Blob only: its components' box tree (root first)
     std::vector<Object> parts;   ///< Blob only: copies of the object with a component's texture (ShapeHit::part)
+    std::shared_ptr<const fn::Program> function;  ///< Isosurface only: its function (rays/fn)
 };
 
 }  // namespace rays
