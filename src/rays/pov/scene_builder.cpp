@@ -537,6 +537,7 @@ Scene SceneBuilder::finish(const std::string& fileName) {
     // Without assumed_gamma POV-Ray 3.7 works in linear light (1.0) for #version 3.7 scenes and
     // writes older scenes' colours as they are (0) (measured with POV-Ray 3.7.0.10).
     if (!gammaSet_) scene_.pov.assumedGamma = version_ >= 3.7 ? 1.0 : 0.0;
+    scene_.pigments.setWorkingGamma(scene_.pov.assumedGamma);
     scene_.pov.version = version_;
     if (scene_.cameras.empty()) {
         Camera c;  // POV-Ray's default camera: at the origin looking along +z, right 1.33x, up y

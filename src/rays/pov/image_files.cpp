@@ -1,0 +1,55 @@
+#include "rays/pov/image_files.h"
+
+#include <filesystem>
+
+#include "rays/error.h"
+#include "rays/io/image_io.h"
+
+namespace rays::pov {
+
+bool ImageFiles::isImageType(Kw k) {
+    switch (k) {
+        case Kw::gif: case Kw::iff: case Kw::jpeg: case Kw::pgm: case Kw::png: case Kw::pot: case Kw::ppm:
+        case Kw::sys: case Kw::tga: case Kw::tiff: case Kw::exr: case Kw::hdr:
+            return true;
+        default: return false;
+    }
+}
+
+const ImageFile& ImageFiles::load(const Entry& e) {
+    if (e.args.empty() || e.args[0].type != sdl::VType::String)
+        throw Error(notes_.where(e.loc) + ": error: " + std::string(sdl::keywordName(e.kw())) +
+                    " needs the image file's name as a string");
+    const std::string name = e.args[0].str();
+    std::string path = find_ ? find_(name) : std::string();
+    if (path.empty() && std::filesystem::is_regular_file(name)) path = name;
+    if (path.empty())
+        throw Error(notes_.where(e.loc) + ": error: cannot find the image file \"" + name +
+                    "\" (looked in the scene's folder and the library paths)");
+    if (const auto it = files_.find(path); it != files_.end()) return it->second;
+    ImageFile f;
+    f.type = e.kw();
+    try {
+        f.image = std::make_shared<const Image8>(readImage(path));
+    } catch (const Error& err) {
+        // readImage says "PATH: error: WHY": the keyword's place comes first.
+        const std::string m = err.what();
+        const size_t at = m.find("error: ");
+        throw Error(notes_.where(e.loc) + ": error: " + path + ": " + (at == std::string::npos ? m : m.substr(at + 7)));
+    }
+    f.png = readPngInfo(path);
+    return files_.emplace(path, std::move(f)).first->second;
+}
+
+pattern::FileGamma ImageFiles::defaultGamma(const ImageFile& f) {
+    using pattern::FileGamma;
+    if (f.png.png) {
+        if (f.png.srgb || f.png.gamma == 0) return {FileGamma::Kind::Srgb, 1};
+        return {FileGamma::Kind::Power, f.png.gamma};
+    }
+    if (f.type == Kw::ppm || f.type == Kw::pgm) return {FileGamma::Kind::Linear, 1};
+    if (f.type == Kw::exr || f.type == Kw::hdr) return {FileGamma::Kind::Linear, 1};
+    return {FileGamma::Kind::Srgb, 1};
+}
+
+}  // namespace rays::pov
