@@ -2,6 +2,9 @@
 
 #include <cstring>
 #include <fstream>
+#include <memory>
+
+#include <spng.h>
 
 namespace rays {
 
@@ -47,6 +50,39 @@ PngInfo readPngInfo(const std::string& path) {
     in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
     bytes.resize(size_t(in.gcount()));
     return pngInfoOf(bytes.data(), bytes.size());
+}
+
+bool readPngSamples(const std::string& path, PngSamples& out) {
+    const PngInfo info = readPngInfo(path);
+    if (!info.png || (info.bitDepth != 8 && info.bitDepth != 16)) return false;
+    if (info.colorType != 0 && info.colorType != 3 && info.colorType != 4) return false;
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return false;
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(f, std::fclose);
+    std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> ctx{spng_ctx_new(0), spng_ctx_free};
+    if (!ctx || spng_set_png_file(ctx.get(), f) != 0) return false;
+    // The same limits readImage keeps (image_io).
+    spng_set_image_limits(ctx.get(), 65536, 65536);
+    spng_set_chunk_limits(ctx.get(), 1 << 26, 1 << 28);
+    spng_ihdr ihdr{};
+    if (spng_get_ihdr(ctx.get(), &ihdr) != 0) return false;
+    if (uint64_t(ihdr.width) * ihdr.height > (uint64_t(1) << 28)) return false;
+    size_t size = 0;
+    if (spng_decoded_image_size(ctx.get(), SPNG_FMT_PNG, &size) != 0) return false;
+    std::vector<uint8_t> raw(size);
+    if (spng_decode_image(ctx.get(), raw.data(), size, SPNG_FMT_PNG, 0) != 0) return false;
+    const size_t n = size_t(ihdr.width) * ihdr.height;
+    const size_t bytes = ihdr.bit_depth / 8, perPixel = bytes * (ihdr.color_type == 4 ? 2 : 1);
+    if (raw.size() < n * perPixel) return false;
+    out.width = int(ihdr.width);
+    out.height = int(ihdr.height);
+    out.maxValue = ihdr.bit_depth == 16 ? 65535 : 255;
+    out.samples.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const uint8_t* p = raw.data() + i * perPixel;
+        out.samples[i] = bytes == 2 ? uint16_t(p[0] << 8 | p[1]) : p[0];  // PNG's samples are big-endian
+    }
+    return true;
 }
 
 }  // namespace rays

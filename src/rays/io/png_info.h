@@ -24,4 +24,16 @@ PngInfo readPngInfo(const std::string& path);
 /// The PngInfo of a PNG file's bytes (as readPngInfo).
 PngInfo pngInfoOf(const uint8_t* data, size_t size);
 
+/// One sample per pixel as the file stores it, top row first: the palette index of a palette
+/// image, the grey of a grey image (alpha dropped); 8- or 16-bit (maxValue 255 or 65535).
+struct PngSamples {
+    int width = 0, height = 0;
+    int maxValue = 255;
+    std::vector<uint16_t> samples;
+};
+
+/// The samples of a PNG file of colour type grey, grey + alpha or palette with 8- or 16-bit
+/// samples; false for other files (colour images, 1–4 bit samples, not a PNG, unreadable).
+bool readPngSamples(const std::string& path, PngSamples& out);
+
 }  // namespace rays

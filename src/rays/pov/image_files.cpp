@@ -16,26 +16,34 @@ bool ImageFiles::isImageType(Kw k) {
     }
 }
 
+bool ImageFiles::isReadableType(Kw k) {
+    return k == Kw::png || k == Kw::jpeg || k == Kw::gif || k == Kw::tga || k == Kw::ppm || k == Kw::pgm;
+}
+
 const ImageFile& ImageFiles::load(const Entry& e) {
     if (e.args.empty() || e.args[0].type != sdl::VType::String)
         throw Error(notes_.where(e.loc) + ": error: " + std::string(sdl::keywordName(e.kw())) +
                     " needs the image file's name as a string");
-    const std::string name = e.args[0].str();
+    return load(e.args[0].str(), e.kw(), e.loc);
+}
+
+const ImageFile& ImageFiles::load(const std::string& name, Kw type, const sdl::Loc& at) {
     std::string path = find_ ? find_(name) : std::string();
     if (path.empty() && std::filesystem::is_regular_file(name)) path = name;
     if (path.empty())
-        throw Error(notes_.where(e.loc) + ": error: cannot find the image file \"" + name +
+        throw Error(notes_.where(at) + ": error: cannot find the image file \"" + name +
                     "\" (looked in the scene's folder and the library paths)");
     if (const auto it = files_.find(path); it != files_.end()) return it->second;
     ImageFile f;
-    f.type = e.kw();
+    f.type = type;
+    f.path = path;
     try {
         f.image = std::make_shared<const Image8>(readImage(path));
     } catch (const Error& err) {
         // readImage says "PATH: error: WHY": the keyword's place comes first.
         const std::string m = err.what();
-        const size_t at = m.find("error: ");
-        throw Error(notes_.where(e.loc) + ": error: " + path + ": " + (at == std::string::npos ? m : m.substr(at + 7)));
+        const size_t cut = m.find("error: ");
+        throw Error(notes_.where(at) + ": error: " + path + ": " + (cut == std::string::npos ? m : m.substr(cut + 7)));
     }
     f.png = readPngInfo(path);
     return files_.emplace(path, std::move(f)).first->second;

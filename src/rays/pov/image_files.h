@@ -19,6 +19,7 @@ struct ImageFile {
     std::shared_ptr<const Image8> image;
     PngInfo png;
     Kw type = Kw::png;  ///< the keyword naming the file type
+    std::string path;   ///< where it was found
 };
 
 class ImageFiles {
@@ -28,8 +29,13 @@ public:
     /// The file of an image type entry (`png "name"`), read on first use; throws Error
     /// "FILE:LINE:COL: error: ..." when it cannot be found or read.
     const ImageFile& load(const Entry& typeEntry);
+    /// The file `name` of a type (png when none was written: POV-Ray's default output type), as load.
+    const ImageFile& load(const std::string& name, Kw type, const sdl::Loc& at);
     /// True for the keywords naming an image file type (png, jpeg, gif, tga, ppm, pgm, sys, iff, tiff ...).
     static bool isImageType(Kw k);
+    /// True for the types Rays reads (png, jpeg, gif, tga, ppm, pgm); the others (pot, sys, iff,
+    /// tiff, exr, hdr) are noted by the callers.
+    static bool isReadableType(Kw k);
     /// POV-Ray 3.7's default gamma of an image_map file: PNG by its sRGB or gAMA chunk (sRGB
     /// without), PPM and PGM as the working space (linear), other formats sRGB.
     static pattern::FileGamma defaultGamma(const ImageFile& f);

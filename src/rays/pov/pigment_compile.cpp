@@ -319,6 +319,13 @@ void PigmentCompiler::readImageMap(const Item& map, State& s) {
         if (e.positional()) continue;
         const Kw k = e.kw();
         const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
+        if (ImageFiles::isImageType(k) && !ImageFiles::isReadableType(k)) {
+            s.unrendered = true;
+            s.pattern = false;
+            notes_.note(std::string(s.what) + " image_map of a " + std::string(sdl::keywordName(k)) + " file", e.loc,
+                        "(drawn in its mean colour)");
+            return;
+        }
         if (ImageFiles::isImageType(k)) {
             file = &images_.load(e);
             continue;
