@@ -68,9 +68,9 @@ bool readPngSamples(const std::string& path, PngSamples& out) {
     if (spng_get_ihdr(ctx.get(), &ihdr) != 0) return false;
     if (uint64_t(ihdr.width) * ihdr.height > (uint64_t(1) << 28)) return false;
     size_t size = 0;
-    if (spng_decoded_image_size(ctx.get(), SPNG_FMT_PNG, &size) != 0) return false;
+    if (spng_decoded_image_size(ctx.get(), SPNG_FMT_RAW, &size) != 0) return false;
     std::vector<uint8_t> raw(size);
-    if (spng_decode_image(ctx.get(), raw.data(), size, SPNG_FMT_PNG, 0) != 0) return false;
+    if (spng_decode_image(ctx.get(), raw.data(), size, SPNG_FMT_RAW, 0) != 0) return false;
     const size_t n = size_t(ihdr.width) * ihdr.height;
     const size_t bytes = ihdr.bit_depth / 8, perPixel = bytes * (ihdr.color_type == 4 ? 2 : 1);
     if (raw.size() < n * perPixel) return false;
@@ -80,7 +80,7 @@ bool readPngSamples(const std::string& path, PngSamples& out) {
     out.samples.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const uint8_t* p = raw.data() + i * perPixel;
-        out.samples[i] = bytes == 2 ? uint16_t(p[0] << 8 | p[1]) : p[0];  // PNG's samples are big-endian
+        out.samples[i] = bytes == 2 ? uint16_t(p[0] << 8 | p[1]) : p[0];  // SPNG_FMT_RAW: big-endian
     }
     return true;
 }

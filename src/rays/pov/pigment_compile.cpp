@@ -316,7 +316,11 @@ void PigmentCompiler::readImageMap(const Item& map, State& s) {
     const ImageFile* file = nullptr;
     bool gammaSet = false;
     for (const Entry& e : map.entries) {
-        if (e.positional()) continue;
+        if (e.positional()) {  // `image_map { "file.png" }`: the file without its type (png)
+            for (const Value& v : e.args)
+                if (v.type == VType::String) file = &images_.load(v.str(), Kw::png, e.loc);
+            continue;
+        }
         const Kw k = e.kw();
         const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
         if (ImageFiles::isImageType(k) && !ImageFiles::isReadableType(k)) {
