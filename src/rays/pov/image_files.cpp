@@ -28,8 +28,17 @@ const ImageFile& ImageFiles::load(const Entry& e) {
 }
 
 const ImageFile& ImageFiles::load(const std::string& name, Kw type, const sdl::Loc& at) {
-    std::string path = find_ ? find_(name) : std::string();
-    if (path.empty() && std::filesystem::is_regular_file(name)) path = name;
+    auto find = [&](const std::string& n) {
+        std::string p = find_ ? find_(n) : std::string();
+        if (p.empty() && std::filesystem::is_regular_file(n)) p = n;
+        return p;
+    };
+    std::string path = find(name);
+    // A name without an extension is tried with the image types' extensions too, as POV-Ray does
+    // (cliche.pov's `image_map { "sign" }` reads sign.jpg); the file's bytes tell its format.
+    if (path.empty() && !std::filesystem::path(name).has_extension())
+        for (const char* ext : {".png", ".tga", ".jpg", ".jpeg", ".gif", ".ppm", ".pgm"})
+            if (path.empty()) path = find(name + ext);
     if (path.empty())
         throw Error(notes_.where(at) + ": error: cannot find the image file \"" + name +
                     "\" (looked in the scene's folder and the library paths)");
