@@ -19,6 +19,7 @@ enum class PatternKind : uint8_t {
     Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
     Average,  ///< the weighted mean of a pigment_map's pigments
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
+    ImageMap,  ///< an image_map: PigmentTable::images[node.image]
 };
 
 /// True for checker, hexagon and brick (a list of 2 or 3 colours, no wave, no map).

@@ -29,6 +29,7 @@ Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
     const PigmentNode& node = nodes[size_t(n)];
     if (node.kind == PatternKind::Solid) return node.color;
     p = inNodeSpace(node, p);
+    if (node.kind == PatternKind::ImageMap) return images[size_t(node.image)].color(p);
     const MapEntry* map = entries.data() + node.mapBegin;
     // Entries that are pigments are evaluated at the point in this pigment's space (the outer
     // pigment's transformations move its map's pigments too).
@@ -71,6 +72,10 @@ Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
 bool PigmentTable::mayLetLightThrough(int n) const {
     const PigmentNode& node = nodes[size_t(n)];
     if (node.color.filter != 0 || node.color.transmit != 0) return true;
+    if (node.kind == PatternKind::ImageMap) {
+        const ImageMap& m = images[size_t(node.image)];
+        return m.filterAll != 0 || m.transmitAll != 0 || !m.palette.empty() || m.once || m.image->channels % 2 == 0;
+    }
     for (int i = 0; i < node.mapCount; ++i) {
         const MapEntry& e = entries[size_t(node.mapBegin + i)];
         if (e.pigment >= 0 ? mayLetLightThrough(e.pigment) : (e.color.filter != 0 || e.color.transmit != 0))

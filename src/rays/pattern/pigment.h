@@ -9,6 +9,7 @@
 
 #include "rays/math/transform.h"
 #include "rays/pattern/color_map.h"
+#include "rays/pattern/image_map.h"
 #include "rays/pattern/pattern.h"
 #include "rays/pattern/warp.h"
 #include "rays/pattern/wave.h"
@@ -24,6 +25,7 @@ struct PigmentNode {
     Wave wave;
     int mapBegin = 0, mapCount = 0;  ///< PigmentTable::entries: the map, or a block pattern's list
     Rgbft color;                     ///< Solid's colour
+    int image = -1;                  ///< ImageMap: PigmentTable::images
 };
 
 /// A pigment as an object uses it: world space → texture space, then the node.
@@ -38,6 +40,12 @@ struct PigmentTable {
     std::vector<PigmentRoot> roots;
     std::vector<std::shared_ptr<const fn::Program>> programs;  ///< function patterns' programs, kept alive
     std::vector<WarpStep> warps;  ///< each node's steps, outermost (written last) first
+    std::vector<ImageMap> images;  ///< image_map pigments (their images shared per file)
+
+    /// Decodes the image maps' texels into the scene's working gamma (assumed_gamma; 0 legacy).
+    void setWorkingGamma(double assumedGamma) {
+        for (ImageMap& m : images) m.setWorkingGamma(assumedGamma);
+    }
 
     /// The colour of node n at p, p in the space enclosing the node.
     Rgbft evaluate(int n, Vec3 p) const;

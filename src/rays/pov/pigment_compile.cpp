@@ -220,6 +220,10 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
                 kind == PatternKind::Wood || kind == PatternKind::Marble ? WaveType::Triangle : WaveType::Ramp;
         return;
     }
+    if (k == Kw::image_map && !s.normal) {
+        readImageMap(e.args[0].item(), s);
+        return;
+    }
     if (isPatternType(k) || k == Kw::image_map) {
         s.unrendered = true;
         s.pattern = false;
@@ -304,6 +308,81 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
     s.warped = true;
 }
 
+// image_map { TYPE "file" [gamma G] [map_type M] [once] [interpolate N] [filter|transmit all|N, A] }
+// (POV-Ray 3.7 reference, "Image Map", "Bitmap Modifiers"). The node has no map: the image gives
+// the colour.
+void PigmentCompiler::readImageMap(const Item& map, State& s) {
+    pattern::ImageMap m;
+    const ImageFile* file = nullptr;
+    bool gammaSet = false;
+    for (const Entry& e : map.entries) {
+        if (e.positional()) {  // `image_map { "file.png" }`: the file without its type (png)
+            for (const Value& v : e.args)
+                if (v.type == VType::String) file = &images_.load(v.str(), Kw::png, e.loc);
+            continue;
+        }
+        const Kw k = e.kw();
+        const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
+        if (ImageFiles::isImageType(k) && !ImageFiles::isReadableType(k)) {
+            s.unrendered = true;
+            s.pattern = false;
+            notes_.note(std::string(s.what) + " image_map of a " + std::string(sdl::keywordName(k)) + " file", e.loc,
+                        "(drawn in its mean colour)");
+            return;
+        }
+        if (ImageFiles::isImageType(k)) {
+            file = &images_.load(e);
+            continue;
+        }
+        switch (k) {
+            case Kw::function:
+                s.unrendered = true;
+                s.pattern = false;
+                notes_.note(std::string(s.what) + " image_map of a function", e.loc, "(drawn in its mean colour)");
+                return;
+            case Kw::map_type: m.mapType = int(num(0)); break;
+            case Kw::once: m.once = true; break;
+            case Kw::interpolate: m.interpolate = int(num(0)); break;
+            case Kw::gamma: {
+                const double g = num(0);
+                // `gamma srgb` reads as a negative number (as assumed_gamma's).
+                m.fileGamma = g <= 0 ? pattern::FileGamma{pattern::FileGamma::Kind::Srgb, 1}
+                                     : pattern::FileGamma{pattern::FileGamma::Kind::Power, g};
+                gammaSet = true;
+                break;
+            }
+            case Kw::filter: case Kw::transmit: {
+                const double index = num(0), amount = num(1);
+                if (index < 0) {
+                    (k == Kw::filter ? m.filterAll : m.transmitAll) = amount;
+                } else if (file) {
+                    const size_t i = size_t(index);
+                    if (i < file->png.palette.size()) {
+                        const auto& c = file->png.palette[i];
+                        m.palette.push_back({c[0], c[1], c[2], k == Kw::transmit, float(amount)});
+                    }
+                }
+                break;
+            }
+            default: break;
+        }
+    }
+    if (!file) throw Error(notes_.where(map.loc) + ": error: image_map needs an image file (png \"FILE\" ...)");
+    if (m.mapType != 0 && m.mapType != 1 && m.mapType != 2 && m.mapType != 5) {
+        notes_.note("image_map map_type " + std::to_string(m.mapType), map.loc, "(mapped as map_type 0)");
+        m.mapType = 0;
+    }
+    m.image = file->image;
+    if (!gammaSet) m.fileGamma = ImageFiles::defaultGamma(*file);
+    m.setWorkingGamma(1.0);  // until the scene's assumed_gamma is known (PigmentTable::setWorkingGamma)
+    s.pattern = true;
+    s.unrendered = false;
+    s.node.kind = PatternKind::ImageMap;
+    s.node.image = int(table_.images.size());
+    s.list.clear();
+    table_.images.push_back(std::move(m));
+}
+
 int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Placed>& entries,
                                       const std::vector<double>& values) {
     State s;
@@ -366,11 +445,33 @@ int PigmentCompiler::layered(const Placed& below, const Placed& top) {
     return int(table_.nodes.size()) - 1;
 }
 
+// The node's warps (with its transformations among them) or its transformation.
+void PigmentCompiler::place(const State& s, pattern::PigmentNode& node) {
+    if (s.warped) {
+        // The point meets the steps written last first; transformations are inverted.
+        node.warpBegin = int(table_.warps.size());
+        for (auto it = s.steps.rbegin(); it != s.steps.rend(); ++it) {
+            pattern::WarpStep step = *it;
+            if (step.kind == pattern::WarpStep::Kind::Transform) {
+                if (step.toInner.determinant() == 0) continue;
+                step.toInner = step.toInner.inverse();
+            }
+            table_.warps.push_back(step);
+        }
+        node.warpCount = int(table_.warps.size()) - node.warpBegin;
+    } else if (s.transformed && s.transform.determinant() != 0) {
+        node.transformed = true;
+        node.toPattern = s.transform.inverse();
+    }
+}
+
 int PigmentCompiler::emit(State& s) {
     pattern::PigmentNode node = s.node;
     if (!s.pattern) {
         node.kind = PatternKind::Solid;
         node.mapCount = 0;
+    } else if (node.kind == PatternKind::ImageMap) {
+        place(s, node);
     } else {
         std::vector<MapEntry> entries;
         if (pattern::isBlockPattern(node.kind)) {
@@ -385,22 +486,7 @@ int PigmentCompiler::emit(State& s) {
         node.mapBegin = int(table_.entries.size());
         node.mapCount = int(entries.size());
         table_.entries.insert(table_.entries.end(), entries.begin(), entries.end());
-        if (s.warped) {
-            // The point meets the steps written last first; transformations are inverted.
-            node.warpBegin = int(table_.warps.size());
-            for (auto it = s.steps.rbegin(); it != s.steps.rend(); ++it) {
-                pattern::WarpStep step = *it;
-                if (step.kind == pattern::WarpStep::Kind::Transform) {
-                    if (step.toInner.determinant() == 0) continue;
-                    step.toInner = step.toInner.inverse();
-                }
-                table_.warps.push_back(step);
-            }
-            node.warpCount = int(table_.warps.size()) - node.warpBegin;
-        } else if (s.transformed && s.transform.determinant() != 0) {
-            node.transformed = true;
-            node.toPattern = s.transform.inverse();
-        }
+        place(s, node);
     }
     table_.nodes.push_back(node);
     return int(table_.nodes.size()) - 1;

@@ -8,6 +8,7 @@
 
 #include "rays/pattern/normal.h"
 #include "rays/pattern/pigment.h"
+#include "rays/pov/image_files.h"
 #include "rays/pov/item_values.h"
 #include "rays/pov/not_rendered.h"
 
@@ -28,6 +29,8 @@ public:
     /// pattern, or with only patterns Rays does not render: those are noted).
     int compile(const Item& pigment);
     const pattern::PigmentTable& table() const { return table_; }
+    /// The scene's image files (image maps here; height fields share them).
+    ImageFiles& imageFiles() { return images_; }
     /// A pigment seen through a transformation (its texture space → the enclosing one); node -1
     /// stands for the flat colour.
     struct Placed {
@@ -52,9 +55,11 @@ private:
     void read(const Item& pigment, State& s, int depth);
     void readEntry(const Entry& e, State& s, int depth);
     void readWarp(const Item& warp, State& s);
+    void readImageMap(const Item& map, State& s);
     void readColorMap(const Item& map, State& s, int depth);
     void readPigmentMap(const Item& map, State& s, int depth);
     int emit(State& s);
+    void place(const State& s, pattern::PigmentNode& node);
     int nested(const Item& pigment, int depth);
     int placed(const Placed& p);
 
@@ -63,6 +68,7 @@ private:
     std::unordered_map<const Item*, int> done_;  ///< pigment items compiled (-1: flat)
     pattern::NormalTable* normalTable_ = nullptr;
     std::unique_ptr<NormalCompiler> normals_;  ///< made on the first normal
+    ImageFiles images_{notes_};
 };
 
 }  // namespace rays::pov

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "rays/error.h"
+#include "rays/pov/build_height_field.h"
 #include "rays/pov/build_mesh.h"
 #include "rays/pov/build_shapes.h"
 #include "rays/pov/grammar.h"
@@ -189,6 +190,11 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
         const Kw k = e.kw();
         if (collectBlobEntry(kind, e)) continue;
+        if (kind == Kw::height_field &&
+            (ImageFiles::isImageType(k) || k == Kw::function || k == Kw::smooth || k == Kw::water_level)) {
+            terms_.push_back(&e);  // the field's source and modifiers (build_height_field)
+            continue;
+        }
         if ((kind == Kw::union_ || kind == Kw::merge || kind == Kw::light_group || kind == Kw::difference ||
              kind == Kw::intersection) && isObjectKind(k)) {
             children.push_back(&e.args[0].item());
@@ -362,6 +368,17 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
                 if (length(o.n0) == 0 || length(o.n1) == 0 || length(o.n2) == 0) o.smooth = false;
                 else o.n0 = normalize(o.n0), o.n1 = normalize(o.n1), o.n2 = normalize(o.n2);
             }
+            break;
+        }
+        case Kw::height_field: {
+            auto data = std::make_unique<ShapeData>();
+            std::string name;  // `height_field { "file.png" }`: the file without its type
+            for (const Value* v : a)
+                if (v->type == VType::String) name = v->str();
+            if (!buildHeightField(terms_, name, at, pigments_.imageFiles(), notes_, *data, o.smooth)) return;
+            o.type = ShapeType::HeightField;
+            o.data = data.get();
+            scene_.shapeData.push_back(std::move(data));
             break;
         }
         default: {
@@ -541,6 +558,7 @@ Scene SceneBuilder::finish(const std::string& fileName) {
     // Without assumed_gamma POV-Ray 3.7 works in linear light (1.0) for #version 3.7 scenes and
     // writes older scenes' colours as they are (0) (measured with POV-Ray 3.7.0.10).
     if (!gammaSet_) scene_.pov.assumedGamma = version_ >= 3.7 ? 1.0 : 0.0;
+    scene_.pigments.setWorkingGamma(scene_.pov.assumedGamma);
     scene_.pov.version = version_;
     if (scene_.cameras.empty()) {
         Camera c;  // POV-Ray's default camera: at the origin looking along +z, right 1.33x, up y

@@ -29,7 +29,10 @@ public:
     /// not grow its arrays step by step.
     void reserve(size_t n);
     /// How file names in the scene (text's fonts) are found: the path, or "" when none is found.
-    void setFileFinder(std::function<std::string(const std::string&)> find) { findFile_ = std::move(find); }
+    void setFileFinder(std::function<std::string(const std::string&)> find) {
+        findFile_ = std::move(find);
+        pigments_.imageFiles().setFileFinder(findFile_);
+    }
     /// Reads fonts through cache (kept by the caller, outliving the builder) instead of its own.
     void setFontCache(FontCache* cache) { fonts_ = cache ? cache : &ownFonts_; }
     /// Adds one top-level item.

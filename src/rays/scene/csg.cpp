@@ -5,6 +5,7 @@
 
 #include "rays/scene/text_shape.h"
 #include "rays/scene/shapes/blob.h"
+#include "rays/scene/shapes/height_field.h"
 #include "rays/scene/shapes/isosurface.h"
 #include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/poly.h"
@@ -217,6 +218,7 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::Lathe: return insideLathe(o, p);
         case ShapeType::Sor: return insideSor(o, p);
         case ShapeType::SphereSweep: return insideSphereSweep(o, p);
+        case ShapeType::HeightField: return insideHeightField(o, p);
         case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Disc: case ShapeType::Polygon: return -1;
     }
     return -1;

@@ -10,6 +10,7 @@
 #include "rays/scene/shapes/blob.h"
 #include "rays/scene/shapes/isosurface.h"
 #include "rays/scene/shapes/disc.h"
+#include "rays/scene/shapes/height_field.h"
 #include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
@@ -40,6 +41,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Blob: return "Blob";
         case ShapeType::Isosurface: return "Isosurface";
         case ShapeType::Lathe: return "Lathe";
+        case ShapeType::HeightField: return "HeightField";
         case ShapeType::Sor: return "Sor";
         case ShapeType::SphereSweep: return "SphereSweep";
     }
@@ -239,6 +241,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Lathe: found = hitLathe(o, r, tMin, tMax, h); break;
         case ShapeType::Sor: found = hitSor(o, r, tMin, tMax, h); break;
         case ShapeType::SphereSweep: found = hitSphereSweep(o, r, tMin, tMax, h); break;
+        case ShapeType::HeightField: return hitHeightField(o, r, tMin, tMax, h);  // sets both normals
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
     if (found) h.geomNormal = h.normal;
@@ -272,7 +275,7 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Torus: b = torusBounds(o); break;
         case ShapeType::Disc: b = discBounds(o); break;
         case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: case ShapeType::Blob:
-        case ShapeType::Lathe: case ShapeType::Sor: case ShapeType::SphereSweep: case ShapeType::Isosurface:
+        case ShapeType::Lathe: case ShapeType::Sor: case ShapeType::SphereSweep: case ShapeType::Isosurface: case ShapeType::HeightField:
             b = o.data->bounds;
             break;
         case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;

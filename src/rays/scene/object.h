@@ -10,7 +10,7 @@
 namespace rays {
 
 enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg, Text,
-    Torus, Disc, Polygon, Poly, Superellipsoid, Prism, Blob, Lathe, Sor, SphereSweep, Isosurface };  // scene/shapes/*.h
+    Torus, Disc, Polygon, Poly, Superellipsoid, Prism, Blob, Lathe, Sor, SphereSweep, Isosurface, HeightField };  // scene/shapes/*.h
 
 struct Mesh;
 struct Csg;
@@ -32,13 +32,13 @@ struct Object {
     //   Torus, Disc, Polygon, Poly: see their headers in scene/shapes
     Vec3 p0, p1, p2;
     double r0 = 0, r1 = 0;
-    bool smooth = false;  ///< Triangle only: interpolate the vertex normals n0, n1, n2
+    bool smooth = false;  ///< Triangle: interpolate the vertex normals n0, n1, n2; HeightField: its grid's
     Vec3 n0, n1, n2;
     bool open = false;    ///< Cone, Prism and Sor: no caps (POV-Ray's `open`)
     const Mesh* mesh = nullptr;  ///< Mesh only: the geometry (owned by the Scene)
     const Csg* csg = nullptr;    ///< Csg only: the tree (owned by the Scene)
     const TextShape* text = nullptr;  ///< Text only: the glyph outlines, in object space (owned by the Scene)
-    const ShapeData* data = nullptr;  ///< Polygon, Poly, Prism, Blob, Lathe, Sor, SphereSweep, Isosurface: their numbers (owned by the Scene)
+    const ShapeData* data = nullptr;  ///< Polygon, Poly, Prism, Blob, Lathe, Sor, SphereSweep, Isosurface, HeightField: their numbers (owned by the Scene)
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
     bool localSpace = false;   ///< rays are mapped through toObject before intersecting

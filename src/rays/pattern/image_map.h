@@ -1,0 +1,54 @@
+// POV-Ray's image_map pigment (POV-Ray 3.7 reference, "Image Map", "Bitmap Modifiers"): an 8-bit
+// image projected onto the object — map_type 0 planar (the unit square x, y in [0, 1] of the xy
+// plane, repeated unless `once`), 1 spherical, 2 cylindrical, 5 torus — with `interpolate 2`
+// (bilinear) or `4` (normalised distance), `filter`/`transmit` (all texels or one palette entry)
+// and the image's alpha as transmit. Texels stay 8-bit; a 256-entry table per map decodes them
+// into the scene's working gamma.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "rays/image/image.h"
+#include "rays/pattern/color_map.h"
+
+namespace rays::pattern {
+
+/// How an image file's values are encoded (POV-Ray 3.7 tutorial, "Gamma in Input Images").
+struct FileGamma {
+    enum class Kind : uint8_t { Linear, Srgb, Power } kind = Kind::Srgb;
+    double gamma = 1;  ///< Power: the value is v^gamma in linear light
+};
+
+/// One palette entry's filter or transmit (`filter N, F`): the texels whose colour is palette
+/// entry N's get it.
+struct PaletteAmount {
+    uint8_t r = 0, g = 0, b = 0;
+    bool transmit = false;
+    float amount = 0;
+};
+
+struct ImageMap {
+    std::shared_ptr<const Image8> image;  ///< 1..4 channels, top row first (shared per file)
+    int mapType = 0;                      ///< 0 planar, 1 spherical, 2 cylindrical, 5 torus
+    int interpolate = 0;                  ///< 0 nearest, 2 bilinear, 4 normalised distance
+    bool once = false;
+    double filterAll = 0, transmitAll = 0;
+    std::vector<PaletteAmount> palette;  ///< per-entry amounts, matched by colour
+    double majorRadius = 1;              ///< map_type 5's torus
+    FileGamma fileGamma;
+    std::array<float, 256> decode{};  ///< byte → working-space value (setWorkingGamma)
+
+    /// Fills decode for the scene's assumed_gamma (0: legacy scene, bytes used as they are).
+    void setWorkingGamma(double assumedGamma);
+    /// The colour at p (the image map's pattern space).
+    Rgbft color(Vec3 p) const;
+    /// Texture coordinates (u, v) ∈ [0, 1)² (v = 0 at the bottom row) of p for the map type;
+    /// false where `once` leaves p outside the image.
+    bool coordinates(Vec3 p, double& u, double& v) const;
+    /// Texel (x, y) (y = 0 the top row) as a colour, with filter and transmit.
+    Rgbft texel(int x, int y) const;
+};
+
+}  // namespace rays::pattern

@@ -1,0 +1,203 @@
+// POV-Ray's image_map pigment (pattern/image_map.*, pov/pigment_compile, pov/image_files) and
+// height_field (scene/shapes/height_field.*, pov/build_height_field): texels of tiny generated
+// PNGs at known points for each map type, once, interpolate 2 and 4 (values measured with
+// POV-Ray 3.7 on the same 4×2 image), filter/transmit, file gamma; height field hits and normals
+// on tiny images (checked against POV-Ray's trace()) and functions, water_level and CSG inside.
+#include <gtest/gtest.h>
+
+#include <zlib.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "rays/error.h"
+#include "rays/io/image_io.h"
+#include "support/pov_scene.h"
+#include "support/process.h"
+
+namespace rays {
+namespace {
+
+// The 4×2 grey image: top row 0 80 160 240, bottom row 40 120 200 255.
+std::string greyImage(const test::TempDir& dir) {
+    Image8 img(4, 2, 1);
+    const uint8_t v[8] = {0, 80, 160, 240, 40, 120, 200, 255};
+    std::copy(v, v + 8, img.pixels.begin());
+    const std::string path = (dir.path() / "g42.png").string();
+    writeImage(path, img);
+    return path;
+}
+
+// The colour of the only object's pigment at p.
+pattern::Rgbft pigmentAt(const Scene& s, Vec3 p) {
+    const PovSurface& surface = s.povSurfaces.at(size_t(s.objects.at(0).material.pov));
+    return s.pigments.atRoot(surface.pigment, p);
+}
+
+Scene withMap(const std::string& path, const std::string& modifiers, const std::string& head = "#version 3.7;\n") {
+    return test::loadPov("plane { z, 0 pigment { image_map { png \"" + path + "\" " + modifiers + " } } }", head).scene;
+}
+
+TEST(PovImageMap, PlanarTexelsRepeatUnlessOnce) {
+    test::TempDir dir;
+    const std::string path = greyImage(dir);
+    const Scene s = withMap(path, "gamma 1.0");
+    EXPECT_NEAR(pigmentAt(s, {0.6, 0.75, 0}).rgb.x, 160 / 255.0, 1e-6);  // column 2, top row
+    EXPECT_NEAR(pigmentAt(s, {0.1, 0.25, 0}).rgb.y, 40 / 255.0, 1e-6);   // column 0, bottom row
+    EXPECT_NEAR(pigmentAt(s, {1.6, 0.75, 0}).rgb.z, 160 / 255.0, 1e-6);  // repeated
+    EXPECT_NEAR(pigmentAt(s, {-0.1, -0.75, 0}).rgb.x, 255 / 255.0, 1e-6);
+    const Scene once = withMap(path, "gamma 1.0 once");
+    EXPECT_NEAR(pigmentAt(once, {0.6, 0.75, 0}).rgb.x, 160 / 255.0, 1e-6);
+    EXPECT_EQ(pigmentAt(once, {1.6, 0.75, 0}).transmit, 1.0);  // outside: fully transparent
+    EXPECT_EQ(pigmentAt(once, {0.6, 0.75, 0}).transmit, 0.0);
+}
+
+TEST(PovImageMap, InterpolationMatchesPovRay) {
+    test::TempDir dir;
+    const std::string path = greyImage(dir);
+    // POV-Ray 3.7 wrote 88 (sRGB) there with interpolate 2 and 72 with interpolate 4.
+    const Vec3 p{0.1875, 0.8125, 0};
+    EXPECT_NEAR(pigmentAt(withMap(path, "gamma 1.0 interpolate 2"), p).rgb.x, 25 / 255.0, 1e-6);
+    EXPECT_NEAR(pigmentAt(withMap(path, "gamma 1.0 interpolate 4"), p).rgb.x, 16.7997 / 255.0, 1e-4);
+    EXPECT_NEAR(pigmentAt(withMap(path, "gamma 1.0"), p).rgb.x, 0.0, 1e-6);
+}
+
+TEST(PovImageMap, SphericalAndCylindricalMaps) {
+    test::TempDir dir;
+    const std::string path = greyImage(dir);
+    const Scene sph = withMap(path, "gamma 1.0 map_type 1");
+    EXPECT_NEAR(pigmentAt(sph, {1, 0.01, 0}).rgb.x, 0 / 255.0, 1e-6);     // +x, just north: top row, column 0
+    EXPECT_NEAR(pigmentAt(sph, {1, -0.01, 0}).rgb.x, 40 / 255.0, 1e-6);   // just south: bottom row
+    EXPECT_NEAR(pigmentAt(sph, {0, 0.5, 1}).rgb.x, 80 / 255.0, 1e-6);     // +z: a quarter turn, column 1
+    EXPECT_NEAR(pigmentAt(sph, {0, 0.5, 7}).rgb.x, 80 / 255.0, 1e-6);     // any radius
+    const Scene cyl = withMap(path, "gamma 1.0 map_type 2");
+    EXPECT_NEAR(pigmentAt(cyl, {0, 0.25, -1}).rgb.x, 255 / 255.0, 1e-6);  // −z: column 3, bottom row
+    EXPECT_NEAR(pigmentAt(cyl, {0, 1.75, -1}).rgb.x, 240 / 255.0, 1e-6);  // repeated in y
+    const Scene cylOnce = withMap(path, "gamma 1.0 map_type 2 once");
+    EXPECT_EQ(pigmentAt(cylOnce, {0, 1.75, -1}).transmit, 1.0);
+}
+
+TEST(PovImageMap, FilterAndTransmitAll) {
+    test::TempDir dir;
+    const std::string path = greyImage(dir);
+    const pattern::Rgbft c = pigmentAt(withMap(path, "filter all 0.25 transmit all 0.5"), {0.1, 0.1, 0});
+    EXPECT_DOUBLE_EQ(c.filter, 0.25);
+    EXPECT_DOUBLE_EQ(c.transmit, 0.5);
+    const Scene plain = withMap(path, "");
+    EXPECT_EQ(pigmentAt(plain, {0.1, 0.1, 0}).filter, 0.0);
+}
+
+TEST(PovImageMap, PngIsDecodedAsSrgbInVersion37AndRawInLegacyScenes) {
+    test::TempDir dir;
+    const std::string path = greyImage(dir);
+    const double v = 160 / 255.0, linear = std::pow((v + 0.055) / 1.055, 2.4);
+    EXPECT_NEAR(pigmentAt(withMap(path, ""), {0.6, 0.75, 0}).rgb.x, linear, 1e-6);
+    EXPECT_NEAR(pigmentAt(withMap(path, "", "#version 3.6;\n"), {0.6, 0.75, 0}).rgb.x, v, 1e-6);
+    // assumed_gamma 2.2: linear light in the working space, c = linear^(1/2.2).
+    const Scene g22 = withMap(path, "", "#version 3.7;\nglobal_settings { assumed_gamma 2.2 }\n");
+    EXPECT_NEAR(pigmentAt(g22, {0.6, 0.75, 0}).rgb.x, std::pow(linear, 1 / 2.2), 1e-6);
+    // An explicit gamma: v^gamma.
+    EXPECT_NEAR(pigmentAt(withMap(path, "gamma 2.0"), {0.6, 0.75, 0}).rgb.x, v * v, 1e-6);
+}
+
+TEST(PovImageMap, MissingFileIsAnErrorAtItsPlace) {
+    try {
+        test::loadPov("plane { z, 0 pigment { image_map { png \"no-such-image-file.png\" } } }");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("scene.pov:2:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("no-such-image-file.png"), std::string::npos) << e.what();
+    }
+}
+
+// A 16-bit grey PNG of w × h samples (row-major, top row first), written by hand.
+void write16(const std::string& path, int w, int h, const std::vector<uint16_t>& v) {
+    std::vector<uint8_t> raw;
+    for (int y = 0; y < h; ++y) {
+        raw.push_back(0);
+        for (int x = 0; x < w; ++x) {
+            raw.push_back(uint8_t(v[size_t(y * w + x)] >> 8));
+            raw.push_back(uint8_t(v[size_t(y * w + x)] & 255));
+        }
+    }
+    uLongf size = compressBound(uLong(raw.size()));
+    std::vector<uint8_t> z(size);
+    ASSERT_EQ(compress(z.data(), &size, raw.data(), uLong(raw.size())), Z_OK);
+    z.resize(size);
+    std::vector<uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    auto chunk = [&](const char* type, const std::vector<uint8_t>& body) {
+        const uint32_t n = uint32_t(body.size());
+        for (int s = 24; s >= 0; s -= 8) out.push_back(uint8_t(n >> s));
+        std::vector<uint8_t> tb(type, type + 4);
+        tb.insert(tb.end(), body.begin(), body.end());
+        out.insert(out.end(), tb.begin(), tb.end());
+        const uint32_t crc = uint32_t(crc32(0, tb.data(), uInt(tb.size())));
+        for (int s = 24; s >= 0; s -= 8) out.push_back(uint8_t(crc >> s));
+    };
+    chunk("IHDR", {0, 0, 0, uint8_t(w), 0, 0, 0, uint8_t(h), 16, 0, 0, 0, 0});
+    chunk("IDAT", z);
+    chunk("IEND", {});
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fwrite(out.data(), 1, out.size(), f);
+    std::fclose(f);
+}
+
+TEST(PovHeightField, TrianglesSplitAsPovRayAndNormalsFaceUp) {
+    test::TempDir dir;
+    Image8 img(2, 2, 1);
+    img.pixels = {255, 0, 0, 0};  // the top-left sample high: the corner x = 0, z = 1
+    const std::string path = (dir.path() / "hf22.png").string();
+    writeImage(path, img);
+    const Scene s = test::buildPov("height_field { png \"" + path + "\" }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(shapeName(s.objects[0].type), "HeightField");
+    // POV-Ray's trace(): (0.25, 0.75) → y 0.75, normal <0.707, 0.707, 0> (the far triangle, y = 1 − x);
+    // (0.25, 0.25) → y 0.25, normal <0, 0.707, −0.707> (the near one, y = z); (0.75, 0.25) → 0.25:
+    // the diagonal runs from x = 1, z = 0 to x = 0, z = 1.
+    Hit h = test::shootPov(s, {0.3, 5, 0.75}, {0, -1, 0});
+    ASSERT_TRUE(h.valid());
+    EXPECT_NEAR(5 - h.t, 0.7, 1e-9);
+    EXPECT_NEAR(length(h.normal - normalize(Vec3{1, 1, 0})), 0, 1e-9);
+    h = test::shootPov(s, {0.25, 5, 0.25}, {0, -1, 0});
+    EXPECT_NEAR(5 - h.t, 0.25, 1e-9);
+    EXPECT_NEAR(length(h.normal - normalize(Vec3{0, 1, -1})), 0, 1e-9);
+    EXPECT_NEAR(5 - test::shootPov(s, {0.75, 5, 0.25}, {0, -1, 0}).t, 0.25, 1e-9);
+    EXPECT_NEAR(5 - test::shootPov(s, {0.75, 5, 0.75}, {0, -1, 0}).t, 0.25, 1e-9);
+    EXPECT_FALSE(test::shootPov(s, {2, 5, 2}, {0, -1, 0}).valid());  // outside the unit square
+}
+
+TEST(PovHeightField, SixteenBitSamplesKeepTheirPrecision) {
+    test::TempDir dir;
+    const std::string path = (dir.path() / "hf16.png").string();
+    write16(path, 2, 2, {32768, 32768, 32768, 32768});
+    const Scene s = test::buildPov("height_field { png \"" + path + "\" }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_NEAR(5 - test::shootPov(s, {0.3, 5, 0.6}, {0, -1, 0}).t, 32768 / 65535.0, 1e-9);
+}
+
+TEST(PovHeightField, FunctionSmoothWaterLevelAndCsgInside) {
+    // y = x / 2 sampled on 3 × 3: a plane, hit at x / 2 with the normal <−0.5, 1, 0> normalised.
+    const Scene f = test::buildPov("height_field { function 3, 3 { x * 0.5 } }");
+    Hit h = test::shootPov(f, {0.5, 5, 0.3}, {0, -1, 0});
+    ASSERT_TRUE(h.valid());
+    EXPECT_NEAR(5 - h.t, 0.25, 1e-9);
+    EXPECT_NEAR(length(h.normal - normalize(Vec3{-0.5, 1, 0})), 0, 1e-9);
+    // smooth: the vertex normals of a plane are the plane's.
+    h = test::shootPov(test::buildPov("height_field { function 3, 3 { x * 0.5 } smooth }"), {0.4, 5, 0.3}, {0, -1, 0});
+    EXPECT_NEAR(length(h.normal - normalize(Vec3{-0.5, 1, 0})), 0, 1e-9);
+    // water_level 0.5 leaves out what lies below it.
+    const Scene w = test::buildPov("height_field { function 5, 5 { x } water_level 0.5 }");
+    EXPECT_FALSE(test::shootPov(w, {0.25, 5, 0.5}, {0, -1, 0}).valid());
+    EXPECT_NEAR(5 - test::shootPov(w, {0.75, 5, 0.5}, {0, -1, 0}).t, 0.75, 1e-9);
+    // Inside is below the surface: the sphere's top (above the field) is cut away by the
+    // intersection, leaving the field's surface at 0.5 inside the sphere.
+    const Scene c = test::buildPov(
+        "intersection { height_field { function 3, 3 { 0.5 } } sphere { <0.5, 0.5, 0.5>, 0.3 } }");
+    EXPECT_NEAR(5 - test::shootPov(c, {0.5, 5, 0.5}, {0, -1, 0}).t, 0.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace rays
