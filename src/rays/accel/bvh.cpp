@@ -99,6 +99,11 @@ Bvh::Bvh(const std::vector<Object>& objects) {
                 positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
             }
             triObject_.push_back(i);
+            // By triangleNormals itself: the same code, so the same rounding (an inline copy
+            // may be contracted into other fused multiply-adds).
+            Vec3 geom, shading;
+            triangleNormals(o, 0, 0, geom, shading);
+            triNormal_.push_back(geom);
             continue;
         }
         const Bounds b = worldBounds(o);
@@ -209,16 +214,28 @@ Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, do
     if (triangles_.intersect(floatRay(ray), float(tMin), upperT(best.t), th)) {
         // Refine in double precision on the triangle found (exact t and normal for the course's
         // printouts); fall back to the float hit at a grazing edge.
+        // The numbers of intersect() (triangleHitT, then triangleNormals) without its dispatch,
+        // and the flat normal computed once at build.
         const uint32_t id = triObject_[th.prim];
-        if (intersect(objects[id], ray, tMin, kInfinity, sh) && sh.t < best.t) {
-            take(best, id, sh);
+        const Object& o = objects[id];
+        double t, u, v;
+        if (triangleHitT(o, ray, tMin, kInfinity, t, u, v) && t < best.t) {
+            best.t = t;
+            best.object = int(id);
+            best.hasUV = false;
+            best.part = nullptr;
+            if (o.smooth) {
+                triangleNormals(o, u, v, best.geomNormal, best.normal);
+            } else {
+                best.geomNormal = triNormal_[th.prim];
+                best.normal = best.geomNormal;
+            }
         } else if (double(th.t) < best.t && double(th.t) > tMin) {
-            const Object& o = objects[id];
             best.t = th.t;
             best.object = int(id);
             best.hasUV = false;
             best.part = nullptr;
-            best.geomNormal = normalize(cross(o.p1 - o.p0, o.p2 - o.p0));
+            best.geomNormal = triNormal_[th.prim];
             best.normal = o.smooth ? normalize((1 - th.u - th.v) * o.n0 + th.u * o.n1 + th.v * o.n2) : best.geomNormal;
             if (dot(best.normal, best.geomNormal) < 0) best.normal = -best.normal;
         }

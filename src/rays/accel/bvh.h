@@ -124,6 +124,7 @@ private:
     std::vector<uint32_t> unbounded_;  ///< planes: always tested
     TriangleBvh triangles_;            ///< untransformed triangle objects
     std::vector<uint32_t> triObject_;  ///< triangle index in triangles_ → object index
+    std::vector<Vec3> triNormal_;      ///< triangle index in triangles_ → its unit geometric normal
     std::vector<Bounded> bounded_;     ///< the objects in objects_, in scene order
     std::vector<Plane> planes_;        ///< of the world-space triangles among them
     std::vector<int32_t> boundedOf_;   ///< object index → index in bounded_, or -1

@@ -49,6 +49,7 @@ void ObjectBvh::build(const std::vector<Prim>& prims) {
     nodes_.clear();
     blocks_.clear();
     spheres_.clear();
+    anySphere_ = false;
     if (prims.empty()) return;
     if (prims.size() > kMaxBlockIndex) throw std::length_error("too many objects for the BVH");
     TaskPool pool(prims.size() >= kParallelBuild ? 0 : 1);
@@ -75,6 +76,7 @@ void ObjectBvh::build(const std::vector<Prim>& prims) {
                 }
                 const Prim& p = prims[refs[job.firstRef + k + lane].id];
                 sphereSlot(p, b, int(lane));
+                anySphere_ = anySphere_ || std::isfinite(b.radius[lane]);
                 b.id[lane] = p.id;
                 spheres_[size_t(job.firstBlock + k / kBlockSize) * kBlockSize + lane] = exactSphere(p);
             }

@@ -72,6 +72,7 @@ private:
     std::vector<tribvh::WideNode, tribvh::HugePageAllocator<tribvh::WideNode>> nodes_;
     std::vector<objbvh::ShapeBlock> blocks_;
     std::vector<ExactSphere> spheres_;  ///< per slot (block * 4 + lane)
+    bool anySphere_ = false;            ///< some slot has a bounding sphere (finite radius)
 };
 
 }  // namespace rays

@@ -27,14 +27,26 @@ bool ObjectBvh::traverse(const float org[3], const float dir[3], float tMin, flo
     if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f) return false;
     const BoxRay br(org, dir);
 
-    const float dd = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
-    const float originSize = std::fabs(org[0]) + std::fabs(org[1]) + std::fabs(org[2]);
-    const bool filter = dd >= 1e-20f && dd <= 1e20f && originSize < 1e15f;
-    const VFloat4 ox = VFloat4::broadcast(org[0]), oy = VFloat4::broadcast(org[1]), oz = VFloat4::broadcast(org[2]);
-    const VFloat4 dx = VFloat4::broadcast(dir[0]), dy = VFloat4::broadcast(dir[1]), dz = VFloat4::broadcast(dir[2]);
-    const VFloat4 invDd = VFloat4::broadcast(1.0f / dd);
-    const VFloat4 invLen = VFloat4::broadcast(1.0f / std::sqrt(dd));
-    const VFloat4 originMargin = VFloat4::broadcast(0x1p-12f * originSize);
+    // The reject test's per-ray constants, only when some slot has a sphere (a scene of boxes
+    // would pay a square root and two divisions per ray for nothing).
+    struct Filter {
+        bool on = false;
+        VFloat4 ox, oy, oz, dx, dy, dz, invDd, invLen, originMargin;
+    } f;
+    if (anySphere_) {
+        const float dd = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
+        const float originSize = std::fabs(org[0]) + std::fabs(org[1]) + std::fabs(org[2]);
+        f.on = dd >= 1e-20f && dd <= 1e20f && originSize < 1e15f;
+        f.ox = VFloat4::broadcast(org[0]);
+        f.oy = VFloat4::broadcast(org[1]);
+        f.oz = VFloat4::broadcast(org[2]);
+        f.dx = VFloat4::broadcast(dir[0]);
+        f.dy = VFloat4::broadcast(dir[1]);
+        f.dz = VFloat4::broadcast(dir[2]);
+        f.invDd = VFloat4::broadcast(1.0f / dd);
+        f.invLen = VFloat4::broadcast(1.0f / std::sqrt(dd));
+        f.originMargin = VFloat4::broadcast(0x1p-12f * originSize);
+    }
     const VFloat4 vtMin = VFloat4::broadcast(tMin);
     const objbvh::ShapeBlock* blocks = blocks_.data();
     const ExactSphere* spheres = spheres_.data();
@@ -42,13 +54,14 @@ bool ObjectBvh::traverse(const float org[3], const float dir[3], float tMin, flo
     // Slots of block b that the ray may hit within [tMin, tBest].
     auto candidates = [&](const objbvh::ShapeBlock& b, float tBest) -> uint32_t {
         const VFloat4 radius = VFloat4::load(b.radius);
-        if (!filter) return bits(cmpLe(radius, radius));  // every used slot (NaN marks unused)
-        const VFloat4 ocx = VFloat4::load(b.cx) - ox, ocy = VFloat4::load(b.cy) - oy, ocz = VFloat4::load(b.cz) - oz;
-        const VFloat4 s = fmadd(ocx, dx, fmadd(ocy, dy, ocz * dz)) * invDd;
-        const VFloat4 qx = fnmadd(s, dx, ocx), qy = fnmadd(s, dy, ocy), qz = fnmadd(s, dz, ocz);
+        if (!f.on) return bits(cmpLe(radius, radius));  // every used slot (NaN marks unused)
+        const VFloat4 ocx = VFloat4::load(b.cx) - f.ox, ocy = VFloat4::load(b.cy) - f.oy;
+        const VFloat4 ocz = VFloat4::load(b.cz) - f.oz;
+        const VFloat4 s = fmadd(ocx, f.dx, fmadd(ocy, f.dy, ocz * f.dz)) * f.invDd;
+        const VFloat4 qx = fnmadd(s, f.dx, ocx), qy = fnmadd(s, f.dy, ocy), qz = fnmadd(s, f.dz, ocz);
         const VFloat4 dist2 = fmadd(qx, qx, fmadd(qy, qy, qz * qz));
-        const VFloat4 reach = radius + VFloat4::load(b.margin) + originMargin;
-        const VFloat4 span = reach * invLen;
+        const VFloat4 reach = radius + VFloat4::load(b.margin) + f.originMargin;
+        const VFloat4 span = reach * f.invLen;
         const VFloat4 inside = cmpLe(dist2, reach * reach) & cmpGe(s + span, vtMin) &
                                cmpLe(s - span, VFloat4::broadcast(tBest));
         return bits(inside);

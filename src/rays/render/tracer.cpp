@@ -104,9 +104,10 @@ bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext
         if (cached) ctx.lastBlocker[light] = ctx.surfaceObject;
         return true;
     }
-    if (cached && ctx.lastBlocker[light] >= 0 &&
-        bvh_.occludesObject(scene_.objects, uint32_t(ctx.lastBlocker[light]), shadow, kTMin, tMax))
-        return true;
+    if (cached && ctx.lastBlocker[light] >= 0) {
+        if (bvh_.occludesObject(scene_.objects, uint32_t(ctx.lastBlocker[light]), shadow, kTMin, tMax)) return true;
+        ctx.lastBlocker[light] = -1;  // a miss: no longer worth testing first (the walk re-finds it)
+    }
     const int blocker = cells.valid
                             ? bvh_.anyBlockerFrom(cells, scene_.objects, shadow, kTMin, tMax, fromLight->dist)
                             : bvh_.anyBlocker(scene_.objects, shadow, kTMin, tMax);

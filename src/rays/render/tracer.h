@@ -82,7 +82,7 @@ struct alignas(64) TraceContext {
     static constexpr int kCachedLights = 16;
     TraceStats stats;
     SampleRng rng{0, 0, 0, 0};
-    int lastBlocker[kCachedLights];
+    int lastBlocker[kCachedLights];  ///< per light: the object that blocked its last shadow ray (-1 after a miss)
     int surfaceObject = -1;  ///< the object being shaded (its shadow rays test it first when they go into it)
     TraceContext() { std::fill(std::begin(lastBlocker), std::end(lastBlocker), -1); }
 };

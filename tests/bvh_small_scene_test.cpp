@@ -1,0 +1,89 @@
+// Bvh on small scenes like the course's cornell.pov (a room of triangles, two transformed
+// boxes): the triangle tree's hits carry the same numbers as intersect() (the flat normal is
+// computed once at build), and an object tree without spheres (no reject test) finds the same
+// nearest hits and blockers as testing every object.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "rays/accel/bvh.h"
+#include "rays/scene/object.h"
+#include "support/objects.h"
+
+using namespace rays;
+using rays::test::makeObject;
+
+namespace {
+
+// A 10×10×10 room of 16 triangles (most of the scene: they go to the triangle tree) and two
+// rotated, scaled boxes.
+std::vector<Object> room() {
+    std::vector<Object> o;
+    auto quad = [&](Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+        o.push_back(makeObject(ShapeType::Triangle, a, b, c, 0, 0));
+        o.push_back(makeObject(ShapeType::Triangle, a, c, d, 0, 0));
+    };
+    quad({-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, {-5, 0, -5});
+    quad({5, 0, 5}, {5, 10, 5}, {5, 10, -5}, {5, 0, -5});
+    quad({-5, 0, 5}, {-5, 0, -5}, {-5, 10, -5}, {-5, 10, 5});
+    quad({5, 10, -5}, {-5, 10, -5}, {-5, 0, -5}, {5, 0, -5});
+    quad({-5, 10, 5}, {-5, 10, -5}, {-1, 10, -5}, {-1, 10, 5});
+    quad({5, 10, 5}, {1, 10, 5}, {1, 10, -5}, {5, 10, -5});
+    quad({-1, 10, 5}, {-1, 10, 1}, {1, 10, 1}, {1, 10, 5});
+    quad({-1, 10, -1}, {-1, 10, -5}, {1, 10, -5}, {1, 10, -1});
+    o.push_back(makeObject(ShapeType::Box, {-1, -1, -1}, {1, 1, 1}, {}, 0, 0,
+                           Transform::translate({1.4, 1.5, 2.5}) * Transform::scale({1.5, 1.5, 1.5}) *
+                               Transform::rotateCourse({0, -20, 0})));
+    o.push_back(makeObject(ShapeType::Box, {-1, -1, -1}, {1, 1, 1}, {}, 0, 0,
+                           Transform::translate({-1.9, 3, -1.5}) * Transform::scale({1.5, 3, 1.5}) *
+                               Transform::rotateCourse({0, 20, 0})));
+    return o;
+}
+
+Vec3 randomDirection(std::mt19937& rng) {
+    std::normal_distribution<double> n;
+    for (;;) {
+        const Vec3 d{n(rng), n(rng), n(rng)};
+        if (length(d) > 1e-3) return normalize(d);
+    }
+}
+
+}  // namespace
+
+TEST(BvhSmallScene, NearestHitsAndBlockersAreThoseOfEveryObjectsExactTest) {
+    const std::vector<Object> objects = room();
+    const Bvh bvh(objects);
+    ASSERT_EQ(bvh.triangleCount(), 16u);  // the room went to the triangle tree, the boxes did not
+    std::mt19937 rng(28);
+    std::uniform_real_distribution<double> u(-4.9, 4.9), h(0.1, 9.9), reach(0.1, 12);
+    int boxHits = 0, triangleHits = 0, blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray{{u(rng), h(rng), u(rng)}, randomDirection(rng)};
+        Hit want;
+        want.t = kInfinity;
+        ShapeHit sh;
+        for (size_t k = 0; k < objects.size(); ++k) {
+            if (!intersect(objects[k], ray, 1e-9, want.t, sh)) continue;
+            want.t = sh.t;
+            want.object = int(k);
+            want.normal = sh.normal;
+            want.geomNormal = sh.geomNormal;
+        }
+        const Hit got = bvh.closest(objects, ray, 1e-9, kInfinity);
+        ASSERT_EQ(got.object, want.object) << i;
+        if (!want.valid()) continue;
+        ASSERT_EQ(got.t, want.t) << i;  // bit for bit: the same formulas
+        ASSERT_EQ(got.normal, want.normal) << i;
+        ASSERT_EQ(got.geomNormal, want.geomNormal) << i;
+        (objects[size_t(want.object)].type == ShapeType::Box ? boxHits : triangleHits)++;
+        // A shadow ray of random length: blocked exactly when some object is within it.
+        const double tEnd = reach(rng);
+        bool any = false;
+        for (const Object& o : objects) any = any || occludes(o, ray, 1e-9, tEnd);
+        ASSERT_EQ(bvh.any(objects, ray, 1e-9, tEnd), any) << i;
+        blocked += any;
+    }
+    EXPECT_GT(boxHits, 1000);
+    EXPECT_GT(triangleHits, 10000);
+    EXPECT_GT(blocked, 0);
+}
