@@ -5,7 +5,7 @@
 #
 #   bench/mpi.sh [-n RUNS] [-s WxH] [-t THREADS] [SCENE.pov [RAYS OPTIONS...]]
 #
-# Defaults: 3 runs, 640x480, 2 threads (this machine's cores), ../shared's balls2.pov with --ss 2;
+# Defaults: 3 runs, 640x480, 2 threads (this machine's cores), the course's balls2.pov (bench/scenes/course) with --ss 2;
 # ranks 1 and 2 (2 ranks x 1 thread). Wall time includes mpiexec's start of the ranks (~0.3-0.5 s
 # here), "render" is the render phase Rays reports (hand-out, rendering and gathering). On a shared
 # machine the figures are noisy: compare runs from one session only.
@@ -24,7 +24,7 @@ while getopts "n:s:t:" opt; do
   esac
 done
 shift $((OPTIND - 1))
-scene=${1:-../shared/scenes/course/balls2.pov}
+scene=${1:-$(bench/course_scene.sh balls2)}
 [ $# -gt 0 ] && shift
 opts=("$@")
 [ $# -eq 0 ] && opts=(--ss 2)

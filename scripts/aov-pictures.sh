@@ -8,7 +8,7 @@ out=docs/images/aov
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out"
-"$rays" render --scene bunny-lines --obj ../shared/models/stanford-bunny.obj 320 240 --spp 4 \
+"$rays" render --scene bunny-lines 320 240 --spp 4 \
   --edges silhouette,occlusion,intersection,crease --aov all -o "$tmp/bunny.png" -q
 cp "$tmp/bunny.png" "$out/colour.png"
 for aov in depth normal albedo objectid materialid coverage edgetype; do
