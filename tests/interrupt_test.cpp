@@ -260,6 +260,10 @@ TEST(Interrupt, LoadingStopsAtTheFirstSignalEvenInsideALibraryCall) {
     // A scene file that is a FIFO nobody writes: opening it blocks for ever, in code that never
     // looks at the flag (as tinyobjloader reading an OBJ or stb_image decoding a texture does).
     // Loading writes nothing, so the first signal ends the process at once.
+#if defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "ThreadSanitizer holds a signal's handler until the blocked system call returns "
+                    "(here never); the optimised and AddressSanitizer builds run this test";
+#endif
     TempDir dir, logs;
     ASSERT_EQ(::mkfifo((dir.path() / "scene.pov").c_str(), 0644), 0);
     const SignalledRun r = runAndSignal(dir.path(), logs.path() / "err.txt",
