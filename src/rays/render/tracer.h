@@ -233,6 +233,9 @@ private:
         int interior = -1;
         Vec3 viewFade{1, 1, 1};
     };
+    /// The point hit on o as every POV-Ray shading path starts it: object, material, surface, P,
+    /// side, the ray's interior and the fade up to the hit (N, C, filter and transmit not yet set).
+    PovPoint povPointOf(const Ray& ray, const Hit& hit, const Object& o, const PovRay& r, Vec3 segmentFade) const;
     /// Colour of the surface hit: local light, reflection and transmission. segmentFade: how much
     /// the interior fades this ray up to the hit (1 when it does not).
     Vec3 shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,

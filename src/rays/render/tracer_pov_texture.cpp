@@ -36,15 +36,7 @@ bool layerLit(const PovSurface& s, double opacity, double nl) {
 
 Vec3 Tracer::shadePovTextured(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                               PathInfo* info, int texture) const {
-    const Object& o = shadedObject(scene_.objects, hit);
-    PovPoint pt;
-    pt.object = hit.object;
-    pt.material = &o.material;
-    pt.surface = &povSurfaceOf(o.material);
-    pt.P = ray.at(hit.t);
-    pt.entering = dot(ray.dir, hit.geomNormal) < 0;
-    pt.interior = r.interior;
-    pt.viewFade = r.faded * segmentFade;
+    const PovPoint pt = povPointOf(ray, hit, shadedObject(scene_.objects, hit), r, segmentFade);
     PovTextureChoice choices[kMaxTextureChoices];
     const int n = povTextureChoices(scene_, texture, pt.P, choices);
     if (n == 1) return shadePovLayers(ray, hit, pt, choices[0].begin, choices[0].count, r, ctx, info);

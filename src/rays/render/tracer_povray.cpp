@@ -97,6 +97,18 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
     return povFog(scene_.pov.fogs, seen, ray, hit.t);
 }
 
+Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object& o, const PovRay& r, Vec3 segmentFade) const {
+    PovPoint pt;
+    pt.object = hit.object;
+    pt.material = &o.material;
+    pt.surface = &povSurfaceOf(o.material);
+    pt.P = ray.at(hit.t);
+    pt.entering = dot(ray.dir, hit.geomNormal) < 0;
+    pt.interior = r.interior;
+    pt.viewFade = r.faded * segmentFade;
+    return pt;
+}
+
 Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                       PathInfo* info) const {
     const Object& o = shadedObject(scene_.objects, hit);
@@ -104,12 +116,7 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
         const int node = povTextureSeen(s, dot(ray.dir, hit.geomNormal) < 0);
         if (node >= 0) return shadePovTextured(ray, hit, r, segmentFade, ctx, info, node);
     }
-    PovPoint pt;
-    pt.object = hit.object;
-    pt.material = &o.material;
-    pt.surface = &povSurfaceOf(o.material);
-    pt.P = ray.at(hit.t);
-    pt.entering = dot(ray.dir, hit.geomNormal) < 0;
+    PovPoint pt = povPointOf(ray, hit, o, r, segmentFade);
     // The normal pattern tilts the shading normal (lighting, highlights, reflection, refraction);
     // inside or outside is still decided by the geometric normal.
     const Vec3 N = pt.surface->normal >= 0 ? povNormalAt(scene_, *pt.surface, pt.P, hit.normal) : hit.normal;
@@ -123,8 +130,6 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     }
     if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0)
         applyMaps(scene_, o, pt.P, SurfaceUV{hit.hasUV, hit.u, hit.v, hit.dpdu}, pt.C, pt.N);
-    pt.interior = r.interior;
-    pt.viewFade = r.faded * segmentFade;
 
     // The surface's own colour, weighted by its opacity; highlights are not (measured).
     const PovSurface& s = *pt.surface;
