@@ -69,9 +69,9 @@ TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
     expectValues("function { 1.2 } triangle_wave", {{{0, 0, 0}, 0.4}});
     expectValues("function { 1 } phase 0.0001", {{{0, 0, 0}, 0.00009}});
     expectValues("function { 2 } phase 0.0001", {{{0, 0, 0}, 0.0001}});
-    // Pigment functions give 0 outside the parse for now: a function calling one is noted.
-    const Built b = build("#declare P = function { pigment { checker } }\n"
-                          "sphere { 0, 1 pigment { function { P(x, y, z).x } } }");
+    // A pattern function of a pattern Rays does not render gives 0: a function calling one is noted.
+    const Built b = build("#declare P = function { pattern { spiral1 2 } }\n"
+                          "sphere { 0, 1 pigment { function { P(x, y, z) } } }");
     EXPECT_EQ(b.scene.povSurfaces.at(0).pigment, -1);
     ASSERT_EQ(b.warnings.size(), 1u);
     EXPECT_NE(b.warnings[0].find("pattern function calling a pattern or pigment function"), std::string::npos);

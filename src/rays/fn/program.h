@@ -10,6 +10,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "rays/fn/expr.h"
@@ -24,12 +25,17 @@ inline constexpr int kBatch = 32;
 
 /// A function supplied by the host (pattern, pigment, transform and spline functions): `inputs`
 /// arguments in, `outputs` values (1..5) out. `fn` must be safe to call from many threads at once.
+/// `data` is its per-call context (a compiled pattern, a matrix); `keep`, when set, owns it, so
+/// that every program calling the function keeps it alive (the renderer outlives the parse).
 struct HostFunction {
     using Fn = void (*)(const void* data, const double* in, double* out);
+    HostFunction(Fn f = nullptr, const void* d = nullptr, int in = 3, int out = 1, std::shared_ptr<const void> k = {})
+        : fn(f), data(d), inputs(in), outputs(out), keep(std::move(k)) {}
     Fn fn = nullptr;
     const void* data = nullptr;
     int inputs = 3;
     int outputs = 1;
+    std::shared_ptr<const void> keep;
 };
 
 /// Machine opcodes. Fields: d destination, a/b/c operand registers, k an immediate constant, aux

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <numbers>
 
 #include "rays/fn/compile.h"
@@ -143,10 +144,20 @@ double mandel(const PatternParams& m, Vec3 p) {
 }
 
 // A function pattern: the user function at (x, y, z) (further parameters 0), on this thread's
-// scratch (grown once per thread and program size, never per evaluation after that).
+// scratch (grown once per thread and program size, never per evaluation after that). A function
+// may call a pattern function whose pattern is a function again: each nesting level has its own
+// scratch (a deque: the outer levels' scratches stay where they are while it grows).
 double functionValue(const fn::Program& f, Vec3 p) {
-    thread_local fn::Scratch scratch;
+    thread_local std::deque<fn::Scratch> scratches;
+    thread_local size_t depth = 0;
+    if (depth == scratches.size()) scratches.emplace_back();
+    fn::Scratch& scratch = scratches[depth];
     if (!scratch.fitsScalar(f)) scratch.fit(f);
+    struct Level {
+        size_t& d;
+        explicit Level(size_t& depth) : d(depth) { ++d; }
+        ~Level() { --d; }
+    } level(depth);
     double args[fn::kMaxParams] = {p.x, p.y, p.z};
     return fn::eval(f, args, scratch);
 }

@@ -69,6 +69,18 @@ Rgbft PigmentTable::evaluate(int n, Vec3 p) const {
     return mix(entry(at.lo), entry(at.hi), at.t);
 }
 
+double PigmentTable::value(int n, Vec3 p) const {
+    const PigmentNode& node = nodes[size_t(n)];
+    switch (node.kind) {
+        case PatternKind::Solid: case PatternKind::Average: case PatternKind::Layered: case PatternKind::ImageMap:
+            return 0;
+        default: break;
+    }
+    p = inNodeSpace(node, p);
+    if (isBlockPattern(node.kind)) return blockIndex(node.kind, node.params, p);
+    return applyWave(node.wave, patternValue(node.kind, node.params, p));
+}
+
 bool PigmentTable::mayLetLightThrough(int n) const {
     const PigmentNode& node = nodes[size_t(n)];
     if (node.color.filter != 0 || node.color.transmit != 0) return true;

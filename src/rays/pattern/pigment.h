@@ -54,6 +54,10 @@ struct PigmentTable {
         const PigmentRoot& root = roots[size_t(r)];
         return evaluate(root.node, root.worldToTexture.point(world));
     }
+    /// The value of node n's pattern at p (p in the space enclosing the node), as a pattern
+    /// function gives it: after the node's transformations, warps, turbulence and wave, its map
+    /// ignored; a block pattern's list index (0, 1 or 2); 0 for nodes without a pattern value.
+    double value(int n, Vec3 p) const;
     /// True when some colour of node n filters or transmits.
     bool mayLetLightThrough(int n) const;
     /// Where node n's pattern puts p (p in the space enclosing the node): the place in its map, or

@@ -102,6 +102,12 @@ int PigmentCompiler::compile(const Item& pigment) {
     return n;
 }
 
+int PigmentCompiler::compileFunction(const Item& item) {
+    State s;
+    read(item, s, 0);
+    return s.unrendered ? -1 : emit(s);
+}
+
 // A pigment inside a map or list: always a node (a flat colour becomes a Solid node).
 int PigmentCompiler::nested(const Item& pigment, int depth) {
     State s;

@@ -5,6 +5,7 @@
 #include "rays/accel/bvh.h"
 #include "rays/pov/grammar.h"
 #include "rays/pov/item_values.h"
+#include "rays/pov/pattern_function.h"
 #include "rays/pov/scene_builder.h"
 
 namespace rays::pov {
@@ -40,6 +41,17 @@ const PovHost::Probe& PovHost::probe(const sdl::ItemRef& object) {
         slot->bvh = Bvh(slot->scene.objects);
     }
     return *slot;
+}
+
+// Pattern and pigment functions are compiled here, while parsing, so that calls made while
+// parsing and the render evaluate the same thing. What the pattern compiler notes (a warp Rays
+// leaves out) stays quiet: the function is evaluated without it; an unrendered pattern gives no
+// function, and its users are noted where they are built.
+fn::HostFunction PovHost::patternFunction(const sdl::Item& item, bool pigment) {
+    std::function<std::string(const sdl::Loc&)> where = where_;
+    if (!where) where = [](const sdl::Loc&) { return std::string(); };
+    NotRendered quiet(where, nullptr, false);
+    return compilePatternFunction(item, pigment, quiet, findFile_);
 }
 
 bool PovHost::startsItem(Kw k) const { return itemSpec(k) != nullptr; }

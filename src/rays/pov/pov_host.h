@@ -39,6 +39,7 @@ public:
     int inside(const sdl::ItemRef& object, const double point[3]) override;
     bool extent(const sdl::ItemRef& object, double lo[3], double hi[3]) override;
     std::array<double, 12> transformMatrix(const sdl::Item& transform) override;
+    fn::HostFunction patternFunction(const sdl::Item& item, bool pigment) override;
     /// How the objects built for trace() and the extents find files (text's fonts).
     void setFileFinder(std::function<std::string(const std::string&)> find) { findFile_ = std::move(find); }
     /// The fonts read while parsing, for the scene's builder to reuse.

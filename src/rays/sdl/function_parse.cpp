@@ -16,7 +16,7 @@
 
 namespace rays::sdl {
 
-// Pattern and pigment functions are evaluated by the renderer; while parsing they give 0.
+// The stand-in for a pattern or pigment function the host cannot evaluate: it gives 0.
 void evalZero(const void*, const double*, double* out) {
     for (int i = 0; i < 5; ++i) out[i] = 0;
 }
@@ -395,7 +395,10 @@ Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at
     if (k == Kw::pattern || k == Kw::pigment) {
         fv->kind = k == Kw::pattern ? FunctionValue::Kind::Pattern : FunctionValue::Kind::Pigment;
         fv->item = host_.readItem(*this);
-        host = fn::HostFunction{evalZero, nullptr, 3, k == Kw::pattern ? 1 : 5};
+        // The host compiles the pattern (its value) or the pigment (its colour) once; the same
+        // host function runs while parsing and in the render.
+        host = host_.patternFunction(*fv->item, k == Kw::pigment);
+        if (!host.fn) host = fn::HostFunction{evalZero, nullptr, 3, k == Kw::pattern ? 1 : 5};
     } else if (k == Kw::transform) {
         fv->kind = FunctionValue::Kind::Transform;
         fv->item = host_.readItem(*this);
@@ -403,13 +406,11 @@ Value Interpreter::parseFunctionBody(std::vector<uint32_t> params, const Loc& at
         const std::array<double, 12> m = host_.transformMatrix(*fv->item);
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 4; ++c) data->m[r][c] = m[size_t(r * 4 + c)];
-        host = fn::HostFunction{evalTransform, data.get(), 3, 3};
-        hostData_.push_back(std::move(data));
+        host = fn::HostFunction{evalTransform, data.get(), 3, 3, data};
     } else if (k == Kw::spline) {
         fv->kind = FunctionValue::Kind::Spline;
         fv->spline = parseSplineBlock();
-        host = fn::HostFunction{evalSpline, &fv->spline.spline(), 1, fv->spline.spline().dim};
-        hostData_.push_back(fv->spline.ref);
+        host = fn::HostFunction{evalSpline, &fv->spline.spline(), 1, fv->spline.spline().dim, fv->spline.ref};
     } else {
         if (k == Kw::internal) {
             // `function { internal(N) }` (functions.inc) takes the internal function's own parameters.
@@ -447,7 +448,8 @@ Value Interpreter::callFunction(const Value& fnValue, const Loc& at) {
         error(at, "the function takes " + std::to_string(want) + " arguments, " + std::to_string(a.size()) + " given");
     std::vector<double> args;
     for (size_t i = 0; i < a.size(); ++i) args.push_back(toFloat(a[i], at, "a function argument"));
-    if (fv.kind == FunctionValue::Kind::Pattern || fv.kind == FunctionValue::Kind::Pigment)
+    if ((fv.kind == FunctionValue::Kind::Pattern || fv.kind == FunctionValue::Kind::Pigment) &&
+        isPatternStub(fv.table->program(fv.index).hosts[0]))
         warning(at, "not rendered yet: pattern and pigment functions called while parsing (they give 0)");
     fn::Scratch scratch(fv.table->program(fv.index));
     // sum/prod repetitions and calls of other functions count against the parse's loop limit, as

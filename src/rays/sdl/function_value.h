@@ -1,7 +1,8 @@
 // A user function value (`function { ... }`): an entry of the parse's function table
 // (src/rays/fn), compiled from its body as it was read (macros in the body ran once, identifiers
-// of floats became constants). Pattern and pigment functions keep the item they wrap for the
-// renderer; transform and spline functions are evaluated by the table's host entries.
+// of floats became constants). Pattern, pigment, transform and spline functions are the table's
+// host entries (the host compiles pattern and pigment items: ItemHost::patternFunction); they
+// keep the item they wrap.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -25,7 +26,8 @@ struct FunctionValue {
     Value spline;                             ///< Spline
 };
 
-/// True for the host function standing in for a pattern or pigment function (it gives 0).
+/// True for the host function standing in for a pattern or pigment function that the host could
+/// not compile (it gives 0).
 bool isPatternStub(const fn::HostFunction& h);
 
 }  // namespace rays::sdl

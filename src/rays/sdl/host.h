@@ -7,6 +7,7 @@
 #include <array>
 #include <string>
 
+#include "rays/fn/program.h"
 #include "rays/sdl/item.h"
 #include "rays/sdl/keywords.h"
 
@@ -40,6 +41,16 @@ public:
     virtual std::array<double, 12> transformMatrix(const Item& transform) = 0;
     /// min_extent / max_extent: false when not supported.
     virtual bool extent(const ItemRef& object, double lo[3], double hi[3]) = 0;
+    /// `function { pattern { ... } }` (pigment = false: the pattern's value, one output) or
+    /// `function { pigment { ... } }` (the colour: red, green, blue, filter, transmit) compiled
+    /// into a host function of x, y, z that owns what it evaluates (HostFunction::keep). A function
+    /// with fn == nullptr when the host cannot evaluate the item (the caller uses a stand-in that
+    /// gives 0).
+    virtual fn::HostFunction patternFunction(const Item& item, bool pigment) {
+        (void)item;
+        (void)pigment;
+        return {};
+    }
 };
 
 }  // namespace rays::sdl

@@ -380,7 +380,6 @@ private:
     std::vector<std::string> deprecatedMessages_;
     RandomStreams random_;
     std::shared_ptr<fn::FunctionTable> functions_ = std::make_shared<fn::FunctionTable>();
-    std::vector<std::shared_ptr<void>> hostData_;  ///< what the table's host entries point at
     std::unordered_map<std::string, int> warnedTimes_;
 };
 
