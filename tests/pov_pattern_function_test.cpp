@@ -150,6 +150,14 @@ TEST(PovPatternFunction, FunctionPatternCallingAPigmentFunction) {
     EXPECT_NEAR(l.scene.pigments.atRoot(pig, {1.5, 0.5, 0.5}).rgb.x, 1, 1e-9);
 }
 
+TEST(PovPatternFunction, HeightFieldOfAPigmentFunctionTakesItsGray) {
+    // Measured with POV-Ray 3.7 (trace down onto the field): rgb <0.2, 0.5, 0.9> stands 0.456482
+    // high (its gray 0.4565, in 16 bits), pure red 0.296982.
+    const Scene s = test::buildPov("height_field { function 4, 4 { pigment { rgb <0.2, 0.5, 0.9> } } }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_NEAR(5 - test::shootPov(s, {0.5, 5, 0.5}, {0, -1, 0}).t, 0.456482, 2e-5);
+}
+
 TEST(PovPatternFunction, FunctionPatternsNestThroughPatternFunctions) {
     // Each level runs a function pattern on the same thread: a pigment's function calls a pattern
     // function whose pattern is a function calling another such pattern function.
