@@ -126,6 +126,26 @@ TEST(PovPatternFunction, IsosurfaceOnAPatternFunctionIsRendered) {
     EXPECT_NEAR(test::shootPov(s, {5, 0.1, 0.2}, {-1, 0, 0}).t, 5 - std::sqrt(1 - 0.05), 1e-3);
 }
 
+TEST(PovPatternFunction, IsosurfaceOnPatternAndPigmentFunctionsMatchesPovRayPixels) {
+    // A ball bumped by a marble pattern function and a leopard pigment function's red.
+    const Scene s = test::buildPov(
+        "global_settings { assumed_gamma 1 }\n"
+        "camera { location <0, 2, -5> look_at 0 angle 40 }\n"
+        "light_source { <-4, 6, -5> rgb 1 }\n"
+        "#declare P = function { pattern { marble scale 0.7 } }\n"
+        "#declare G = function { pigment { leopard color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] } scale 0.2 } }\n"
+        "isosurface { function { sqrt(x*x + y*y + z*z) - 1 - 0.15 * P(x, y, z) - 0.1 * G(x, y, z).red }\n"
+        "  contained_by { sphere { 0, 1.4 } } max_gradient 3 pigment { rgb <0.9, 0.6, 0.3> } }\n"
+        "plane { y, -1.3 pigment { rgb 0.7 } }\n");
+    // 0-255, POV-Ray 3.7.0.10 (+W160 +H120 -D -A +FP)
+    const test::PovPixel pixels[] = {
+        {80, 60, {200, 166, 121}, "ball"}, {70, 50, {182, 152, 110}, "ball"}, {90, 45, {205, 171, 125}, "ball"},
+        {65, 70, {163, 136, 98}, "ball"},  {95, 72, {168, 140, 101}, "ball"}, {80, 35, {206, 172, 125}, "ball"},
+        {60, 58, {200, 167, 121}, "ball"}, {100, 55, {137, 113, 81}, "ball"}, {80, 95, {134, 111, 79}, "ball"},
+        {20, 100, {170, 170, 170}, "floor"}, {140, 105, {75, 75, 75}, "floor (shadow)"}};
+    test::expectPovPixels(test::renderPov(s), pixels);
+}
+
 TEST(PovPatternFunction, IsosurfaceOnAPigmentFunctionIsRendered) {
     // The red of a black-to-red onion of period 3: 0.5 at r = 1.5.
     std::vector<std::string> warnings;
