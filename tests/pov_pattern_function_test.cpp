@@ -64,7 +64,7 @@ std::map<std::string, std::vector<double>> valueLines(const std::string& text) {
     return out;
 }
 
-// Every measured line is printed by Rays too, each value within 1e-6 (radial: 5e-5, below).
+// Every measured line is printed by Rays too, each value within 1e-6.
 void expectMeasured(const std::string& scene) {
     const Run run = runPov(readFile(kData + scene + ".pov"));
     for (const std::string& w : run.warnings) ADD_FAILURE() << w;
@@ -75,9 +75,7 @@ void expectMeasured(const std::string& scene) {
         const auto it = got.find(key);
         ASSERT_NE(it, got.end()) << key;
         ASSERT_EQ(it->second.size(), values.size()) << key;
-        // Rays' radial sits 1e-5 (a wrap by 1.00001) from POV-Ray's in part of the circle:
-        // the pigment pattern's own difference, not the function's.
-        const double tol = key.find("radial") != std::string::npos ? 5e-5 : 1e-6;
+        const double tol = 1e-6;
         // POV-Ray's colours are single precision: relative to the value past 1 (100 × .gray).
         for (size_t i = 0; i < values.size(); ++i)
             EXPECT_NEAR(it->second[i], values[i], tol * std::max(1.0, std::fabs(values[i]))) << key << " #" << i;

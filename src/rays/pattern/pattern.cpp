@@ -190,7 +190,13 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p) {
     switch (kind) {
         case PatternKind::Gradient: return gradientValue(p, params.vector);
         // The angle about y from +x towards −z, in [0.5, 1.5] before the wave wraps it (measured).
-        case PatternKind::Radial: return 1 - std::atan2(p.z, p.x) / kTwoPi;
+        case PatternKind::Radial: {
+            // Measured with POV-Ray 3.7 round the circle: the value runs from 0.25 (towards −z,
+            // turning towards −x) to 1.25, so that only the quarter from +x to −z (values above 1)
+            // meets the wave's wrap by 1.00001.
+            const double v = 1 - std::atan2(p.z, p.x) / kTwoPi;
+            return v > 1.25 ? v - 1 : v;
+        }
         case PatternKind::Onion: return frac(std::sqrt(dot(p, p)));
         case PatternKind::Spherical: return std::max(0.0, 1 - std::sqrt(dot(p, p)));
         case PatternKind::Cylindrical: return std::max(0.0, 1 - std::sqrt(p.x * p.x + p.z * p.z));
