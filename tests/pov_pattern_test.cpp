@@ -90,6 +90,24 @@ TEST(PovPattern, MandelMatchesPovRay) {
     EXPECT_NEAR(length(m.at({1, 1, 0}).rgb), 0, 1e-6);
 }
 
+TEST(PovPattern, JuliaMatchesPovRay) {
+    // Values printed by POV-Ray 3.7 (as the file's comment says; z starts at the point, c is fixed).
+    expectValues("julia <0.353, 0.288>, 30", {{{0.1, 0.2, 0}, 1}, {{-0.5, 0.3, 0}, 0.2}, {{0.7, -0.2, 0}, 0.1},
+                                               {{0.01, 0.01, 0}, 1}, {{1.5, 0.5, 0}, 0}});
+    // The built-in map is mandel's: cyan inside.
+    const Probe j = pigment("julia <0.353, 0.288>, 30");
+    EXPECT_NEAR(length(j.at({0.1, 0.2, 0}).rgb - Vec3{0, 1, 1}), 0, 1e-6);
+}
+
+TEST(PovPattern, Spiral1MatchesPovRay) {
+    // Values printed by POV-Ray 3.7: r + z + N·(turns about z from −y), triangle wave by default.
+    expectValues("spiral1 3", {{{0.3, 0.2, 0}, 0.782591}, {{0.3, 0.2, 0.25}, 0.717409}, {{-0.5, 0.1, 0.1}, 0.468735},
+                               {{0.1, -0.7, 0.6}, 0.749695}, {{1.3, 0.4, -0.2}, 0.1053}}, 2e-6);
+    expectValues("spiral1 2 scale 0.5 frequency 2", {{{0.3, 0.2, 0}, 0.366931}, {{0.3, 0.2, 0.25}, 0.366951},
+                                                     {{-0.5, 0.1, 0.1}, 0.627784}, {{0.1, -0.7, 0.6}, 0.637423},
+                                                     {{1.3, 0.4, -0.2}, 0.338863}}, 2e-6);
+}
+
 TEST(PovPattern, WaveTypesFrequencyAndPhaseMatchPovRay) {
     const Vec3 xs[] = {{0.1, 0, 0}, {0.3, 0, 0}, {0.5, 0, 0}, {0.75, 0, 0}, {0.95, 0, 0}, {1, 0, 0}, {-0.25, 0, 0}};
     struct Row {
