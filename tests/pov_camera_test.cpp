@@ -82,6 +82,19 @@ TEST(PovCamera, TransformationsApplyAfterEveryOtherItem) {
     EXPECT_GT(length(top.dir - plain.dir), 0.05);
 }
 
+TEST(PovCamera, LookAtMirrorsUnlessUpCrossDirectionPointsAlongRight) {
+    // look_at keeps POV-Ray's left-handed frame only when (up × direction)·right > 0; with up along
+    // the direction (0) or a negative product the image is mirrored (measured at the left edge; the
+    // tolerance covers this measurement's offset of perspective rays, ~0.007, far below the 0.6
+    // between the two sides).
+    const Vec3 plain{0.19686, -0.51543, 0.83401}, mirrored{0.83401, -0.51543, 0.19686};
+    constexpr double kSide = 0.01;
+    expectDir("location <-10,10,-10> right x up y look_at 0", 0, 50, plain, kSide);
+    expectDir("location <-10,10,-10> right x up z look_at 0", 0, 50, mirrored, kSide);
+    expectDir("location <-10,10,-10> right -x up z look_at 0", 0, 50, mirrored, kSide);
+    expectDir("location <-10,10,-10> right x up -y look_at 0", 0, 50, mirrored, kSide);
+}
+
 TEST(PovCamera, OrthographicWindowOfThePerspectiveView) {
     // No right or up: the perspective camera's view at the look_at point (right·dist/|direction|).
     expectHit("orthographic location 0 look_at 5*z", 100, 50, 3.2920, 0);

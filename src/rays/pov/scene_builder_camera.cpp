@@ -87,12 +87,12 @@ void SceneBuilder::addCamera(const Item& cam) {
                     // Looking along the sky vector: keep the right vector, made perpendicular.
                     r = right - dot(right, d) * d;
                     if (length(r) == 0) r = std::fabs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
-                    if (handed < 0) r = -r;
+                    if (handed <= 0) r = -r;
                 }
                 r = normalize(r);
                 dir = d * dl;
                 up = normalize(cross(d, r)) * ul;
-                right = r * (handed < 0 ? -rl : rl);
+                right = r * (handed <= 0 ? -rl : rl);  // up × direction along right: left-handed; else (0 too) mirrored (measured)
                 break;
             }
             case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
