@@ -34,12 +34,12 @@ Ray pixelRay(const std::string& body, int x, int y) {
     return CameraRays(loadCamera(body)).rayThrough(x + 0.5, kSize - 1 - y + 0.5, kSize, kSize);
 }
 
-void expectDir(const std::string& body, int x, int y, Vec3 want) {
+void expectDir(const std::string& body, int x, int y, Vec3 want, double tol = kMeasured) {
     SCOPED_TRACE(body + " at " + std::to_string(x) + "," + std::to_string(y));
     const Ray r = pixelRay(body, x, y);
-    EXPECT_NEAR(r.dir.x, want.x, kMeasured);
-    EXPECT_NEAR(r.dir.y, want.y, kMeasured);
-    EXPECT_NEAR(r.dir.z, want.z, kMeasured);
+    EXPECT_NEAR(r.dir.x, want.x, tol);
+    EXPECT_NEAR(r.dir.y, want.y, tol);
+    EXPECT_NEAR(r.dir.z, want.z, tol);
 }
 
 // Where the pixel's ray meets the plane z = 10 (x, y).
@@ -59,6 +59,40 @@ TEST(PovCamera, OrthographicWindowFromRightAndUp) {
     expectHit("orthographic location 0 right 4*x look_at 5*z", 0, 0, -1.9803, 0.4953);
     const Ray r = pixelRay("orthographic location 0 right 4*x up 3*y look_at <1,0,1>", 30, 40);
     EXPECT_NEAR(r.dir.x, r.dir.z, 1e-12);  // parallel rays along the view direction
+}
+
+TEST(PovCamera, TransformationsApplyAfterEveryOtherItem) {
+    // POV-Ray 3.7 moves the camera by its transformations after location, angle and look_at,
+    // wherever they stand: povray renders `location L rotate R look_at P`, `location L look_at P
+    // rotate R` and `rotate R location L look_at P` to identical images, and a shear before
+    // look_at survives it (the image keeps its converging verticals).
+    const std::string after = "location <0,1,-5> right x up y look_at <2,1,0> rotate y*30";
+    for (const std::string before : {"location <0,1,-5> right x up y rotate y*30 look_at <2,1,0>",
+                                     "rotate y*30 location <0,1,-5> right x up y look_at <2,1,0>"})
+        for (const auto& [x, y] : {std::pair{0, 0}, std::pair{50, 50}, std::pair{100, 30}}) {
+            const Ray a = pixelRay(before, x, y), b = pixelRay(after, x, y);
+            EXPECT_NEAR(length(a.dir - b.dir), 0, 1e-12) << before;
+            EXPECT_NEAR(length(a.origin - b.origin), 0, 1e-12) << before;
+        }
+    // The centre ray of the rotated camera no longer meets the look_at point (measured direction).
+    expectDir("location <0,1,-5> rotate y*30 look_at <2,1,0>", 50, 50, {0.787, 0, 0.617}, 3e-3);
+    // A shear in y then look_at: the rows of pixels keep the shear's tilt.
+    const std::string sheared = "location <0,1,-5> right x up y matrix <1,0,0, 0,1,-0.4, 0,0,1, 0,0,0> look_at <0,1,0>";
+    const Ray top = pixelRay(sheared, 50, 0), plain = pixelRay("location <0,1,-5> right x up y look_at <0,1,0>", 50, 0);
+    EXPECT_GT(length(top.dir - plain.dir), 0.05);
+}
+
+TEST(PovCamera, LookAtMirrorsUnlessUpCrossDirectionPointsAlongRight) {
+    // look_at keeps POV-Ray's left-handed frame only when (up × direction)·right > 0; with up along
+    // the direction (0) or a negative product the image is mirrored (measured at the left edge; the
+    // tolerance covers this measurement's offset of perspective rays, ~0.007, far below the 0.6
+    // between the two sides).
+    const Vec3 plain{0.19686, -0.51543, 0.83401}, mirrored{0.83401, -0.51543, 0.19686};
+    constexpr double kSide = 0.01;
+    expectDir("location <-10,10,-10> right x up y look_at 0", 0, 50, plain, kSide);
+    expectDir("location <-10,10,-10> right x up z look_at 0", 0, 50, mirrored, kSide);
+    expectDir("location <-10,10,-10> right -x up z look_at 0", 0, 50, mirrored, kSide);
+    expectDir("location <-10,10,-10> right x up -y look_at 0", 0, 50, mirrored, kSide);
 }
 
 TEST(PovCamera, OrthographicWindowOfThePerspectiveView) {

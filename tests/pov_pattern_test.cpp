@@ -70,7 +70,7 @@ TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
     expectValues("function { 1 } phase 0.0001", {{{0, 0, 0}, 0.00009}});
     expectValues("function { 2 } phase 0.0001", {{{0, 0, 0}, 0.0001}});
     // A pattern function of a pattern Rays does not render gives 0: a function calling one is noted.
-    const Built b = build("#declare P = function { pattern { spiral1 2 } }\n"
+    const Built b = build("#declare P = function { pattern { spiral2 2 } }\n"
                           "sphere { 0, 1 pigment { function { P(x, y, z) } } }");
     EXPECT_EQ(b.scene.povSurfaces.at(0).pigment, -1);
     ASSERT_EQ(b.warnings.size(), 1u);
@@ -88,6 +88,29 @@ TEST(PovPattern, MandelMatchesPovRay) {
     const Probe m = pigment("mandel 25");
     EXPECT_NEAR(length(m.at({0.5, 0.5, 0}).rgb - Vec3{0, 1, 1}), 0, 1e-6);
     EXPECT_NEAR(length(m.at({1, 1, 0}).rgb), 0, 1e-6);
+}
+
+TEST(PovPattern, JuliaMatchesPovRay) {
+    // Values printed by POV-Ray 3.7 (as the file's comment says; z starts at the point, c is fixed).
+    expectValues("julia <0.353, 0.288>, 30", {{{0.1, 0.2, 0}, 1}, {{-0.5, 0.3, 0}, 0.2}, {{0.7, -0.2, 0}, 0.1},
+                                               {{0.01, 0.01, 0}, 1}, {{1.5, 0.5, 0}, 0}});
+    // The built-in map is mandel's: cyan inside.
+    const Probe j = pigment("julia <0.353, 0.288>, 30");
+    EXPECT_NEAR(length(j.at({0.1, 0.2, 0}).rgb - Vec3{0, 1, 1}), 0, 1e-6);
+}
+
+TEST(PovPattern, Spiral1MatchesPovRay) {
+    // Values printed by POV-Ray 3.7: r + z + N·(turns about z from −y), triangle wave by default.
+    expectValues("spiral1 3", {{{0.3, 0.2, 0}, 0.782591}, {{0.3, 0.2, 0.25}, 0.717409}, {{-0.5, 0.1, 0.1}, 0.468735},
+                               {{0.1, -0.7, 0.6}, 0.749695}, {{1.3, 0.4, -0.2}, 0.1053}}, 2e-6);
+    expectValues("spiral1 2 scale 0.5 frequency 2", {{{0.3, 0.2, 0}, 0.366931}, {{0.3, 0.2, 0.25}, 0.366951},
+                                                     {{-0.5, 0.1, 0.1}, 0.627784}, {{0.1, -0.7, 0.6}, 0.637423},
+                                                     {{1.3, 0.4, -0.2}, 0.338863}}, 2e-6);
+    // As a pattern function (ramp wave): 0.391295690 printed by POV-Ray 3.7.
+    const Built f = build("#declare S = function { pattern { spiral1 3 ramp_wave } }\n"
+                          "#if (abs(S(0.3, 0.2, 0) - 0.3912957) < 1e-6) sphere { 0, 1 } #end");
+    EXPECT_TRUE(f.warnings.empty());
+    EXPECT_EQ(f.scene.objects.size(), 1u);
 }
 
 TEST(PovPattern, WaveTypesFrequencyAndPhaseMatchPovRay) {

@@ -22,7 +22,7 @@ std::vector<MapEntry> defaultMap(PatternKind kind) {
                     at(0.6, 1, 0.7, 0.4), at(1, 0.6, 0.3, 0)};
         case PatternKind::Radial:  // a colour wheel
             return {at(0, 0, 1, 1), at(0.333, 1, 1, 0), at(0.666, 1, 0, 1), at(1, 0, 1, 1)};
-        case PatternKind::Mandel:
+        case PatternKind::Mandel: case PatternKind::Julia:
             return {at(0, 0, 0, 0), at(0.015, 1, 0, 1), at(0.1, 0, 1, 1), at(1, 0, 1, 1)};
         case PatternKind::Bozo:
             return {at(0.4, 1, 1, 1), at(0.4, 0, 1, 0), at(0.6, 0, 1, 0), at(0.6, 0, 0, 1), at(0.8, 0, 0, 1),

@@ -105,13 +105,14 @@ double crackle(Vec3 p) {
     return std::clamp(0.8 * (d2 - d1), 0.0, 1.0);  // POV-Ray's spread: 0.18 ± 0.14 (measured)
 }
 
-// mandel (POV-Ray 3.7 reference, "Mandelbrot"): z starts at c = x + iy and becomes z^exponent + c
-// until |z|² > 4 or the iterations run out; the value comes from the exterior type (escaped:
-// 1 = iterations before escaping / ITERATIONS, measured to count from the first new z) or the
-// interior type (0 = 1, 1 = the smallest |z| of the orbit), 2–6 from the last z, 7 and 8 the
-// count modulo the factor; other types are multiplied by their factor.
-double mandel(const PatternParams& m, Vec3 p) {
-    double zr = p.x, zi = p.y, minAbs2 = zr * zr + zi * zi;
+// mandel and julia (POV-Ray 3.7 reference, "Mandelbrot", "Julia"): z becomes z^exponent + c until
+// |z|² > 4 or the iterations run out; mandel starts at z = c = x + iy, julia at z = x + iy with
+// its fixed c (both measured with povray 3.7's pattern functions). The value comes from the
+// exterior type (escaped: 1 = iterations before escaping / ITERATIONS, measured to count from
+// the first new z) or the interior type (0 = 1, 1 = the smallest |z| of the orbit), 2–6 from the
+// last z, 7 and 8 the count modulo the factor; other types are multiplied by their factor.
+double escapeTime(const PatternParams& m, double zr, double zi, double cr, double ci) {
+    double minAbs2 = zr * zr + zi * zi;
     int n = 0;
     for (; n < m.iterations; ++n) {
         double r = zr, i = zi;  // z^exponent by repeated multiplication
@@ -120,8 +121,8 @@ double mandel(const PatternParams& m, Vec3 p) {
             i = r * zi + i * zr;
             r = t;
         }
-        zr = r + p.x;
-        zi = i + p.y;
+        zr = r + cr;
+        zi = i + ci;
         const double a2 = zr * zr + zi * zi;
         if (a2 > 4) break;
         minAbs2 = std::min(minAbs2, a2);
@@ -141,6 +142,16 @@ double mandel(const PatternParams& m, Vec3 p) {
         case 8: return f != 0 ? std::fmod(double(n), f + 1) / f : 0;
         default: return 0;
     }
+}
+
+// spiral1 N (POV-Ray 3.7 reference, "Spiral1"; the formula measured with povray 3.7's pattern
+// functions): r + z + N·a, a the angle about z from −y towards +x in turns, in [0, 1), wrapped
+// with a period of 1.00001 (measured: 2.25 gives 0.24998).
+double spiral1(double arms, Vec3 p) {
+    constexpr double kPeriod = 1.00001;
+    const double turns = std::atan2(p.x, -p.y) / kTwoPi;  // (−0.5, 0.5]
+    const double v = std::sqrt(p.x * p.x + p.y * p.y) + p.z + arms * (turns < 0 ? turns + 1 : turns);
+    return v - kPeriod * std::floor(v / kPeriod);
 }
 
 // A function pattern: the user function at (x, y, z) (further parameters 0), on this thread's
@@ -212,7 +223,9 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p) {
         case PatternKind::Wood: return std::sqrt(p.x * p.x + p.y * p.y);
         case PatternKind::Wrinkles: return wrinkles(p);
         case PatternKind::Crackle: return crackle(p);
-        case PatternKind::Mandel: return mandel(params, p);
+        case PatternKind::Mandel: return escapeTime(params, p.x, p.y, p.x, p.y);
+        case PatternKind::Julia: return escapeTime(params, p.x, p.y, params.juliaR, params.juliaI);
+        case PatternKind::Spiral1: return spiral1(params.arms, p);
         case PatternKind::Function: {
             // Wrapped above 1 like gradient (measured: 1.2 gives 0.2 under triangle_wave 0.4).
             const double v = params.function ? functionValue(*params.function, p) : 0;

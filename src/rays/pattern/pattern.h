@@ -16,6 +16,8 @@ enum class PatternKind : uint8_t {
     Gradient, Radial, Onion, Spherical, Cylindrical, Planar, Boxed, Leopard,
     Bozo, Granite, Marble, Wood, Agate, Wrinkles, Crackle,
     Mandel,    ///< the Mandelbrot set in the x-y plane (exponent, exterior and interior colouring)
+    Julia,     ///< a Julia set in the x-y plane: mandel's iteration with a fixed c, z starting at the point
+    Spiral1,   ///< a spiral of N arms winding around z, one turn per unit along z
     Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
     Average,  ///< the weighted mean of a pigment_map's pigments
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
@@ -34,7 +36,9 @@ struct PatternParams {
     double mortar = 0.5;           ///< mortar
     double agateTurb = 1;          ///< agate_turb
     Turbulence turbulence;         ///< turbulence, octaves, omega, lambda
-    int iterations = 0, exponent = 2;  ///< mandel
+    int iterations = 0, exponent = 2;  ///< mandel, julia
+    double juliaR = 0, juliaI = 0;     ///< julia's complex constant c
+    double arms = 1;                   ///< spiral1's number of arms
     int exterior = 1, interior = 0;    ///< mandel's colouring types (0..8, 0..6)
     double exteriorFactor = 1, interiorFactor = 1;
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)

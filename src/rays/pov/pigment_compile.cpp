@@ -44,6 +44,8 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::average: out = PatternKind::Average; return true;
         case Kw::function: out = PatternKind::Function; return true;
         case Kw::mandel: out = PatternKind::Mandel; return true;
+        case Kw::julia: out = PatternKind::Julia; return true;
+        case Kw::spiral1: out = PatternKind::Spiral1; return true;
         default: return false;
     }
 }
@@ -208,6 +210,13 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
             s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
         }
         if (kind == PatternKind::Mandel) s.node.params.iterations = int(std::clamp(toFloat(e.args[0]), 0.0, 1e6));
+        if (kind == PatternKind::Julia) {  // julia <c>, ITERATIONS
+            const Vec3 c = toVec3(e.args[0]);
+            s.node.params.juliaR = c.x;
+            s.node.params.juliaI = c.y;
+            s.node.params.iterations = e.args.size() > 1 ? int(std::clamp(toFloat(e.args[1]), 0.0, 1e6)) : 0;
+        }
+        if (kind == PatternKind::Spiral1) s.node.params.arms = toFloat(e.args[0]);
         if (kind == PatternKind::Function) {
             const sdl::FunctionValue& f = e.args[0].fn();
             if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0 ||
@@ -223,7 +232,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         }
         if (!s.waveSet)
             s.node.wave.type =
-                kind == PatternKind::Wood || kind == PatternKind::Marble ? WaveType::Triangle : WaveType::Ramp;
+                kind == PatternKind::Wood || kind == PatternKind::Marble || kind == PatternKind::Spiral1
+                    ? WaveType::Triangle
+                    : WaveType::Ramp;
         return;
     }
     if (k == Kw::image_map && !s.normal) {

@@ -14,7 +14,8 @@ using sdl::VType;
 // POV-Ray 3.7 reference, "Placing the Camera": items apply in order; angle sets the direction's
 // length from the right vector's; look_at turns direction, right and up (right = sky × direction,
 // keeping the handedness of the vectors before it); transformations move the location and turn
-// the vectors.
+// the vectors after every other item, wherever they stand (measured with povray 3.7: `rotate`,
+// `translate` or a shearing `matrix` before `location` or `look_at` give the same image as after).
 void SceneBuilder::addCamera(const Item& cam) {
     Vec3 loc{0, 0, 0}, dir{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
     Vec3 lookAt{0, 0, 1};  // POV-Ray's default look_at point (measured: orthographic's window size)
@@ -31,20 +32,14 @@ void SceneBuilder::addCamera(const Item& cam) {
         }
     };
     collect(cam);
+    Transform moved;  // the camera's transformations, in file order
+    const Entry* lastTransform = nullptr;
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
         if (e.positional()) continue;
-        if (isTransformEntry(e)) {
-            Transform m;
-            applyTransform(e, m);
-            loc = m.point(loc);
-            lookAt = m.point(lookAt);
-            dir = m.vector(dir);
-            up = m.vector(up);
-            right = m.vector(right);
-            auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
-            if (!finite(loc) || !finite(lookAt) || !finite(dir) || !finite(up) || !finite(right))
-                throw Error(notes_.where(e.loc) + ": error: the camera's transformation overflows (its vectors are no longer finite)");
+        if (isTransformEntry(e)) {  // applied after every other item (measured: see above)
+            applyTransform(e, moved);
+            lastTransform = &e;
             continue;
         }
         switch (e.kw()) {
@@ -92,12 +87,12 @@ void SceneBuilder::addCamera(const Item& cam) {
                     // Looking along the sky vector: keep the right vector, made perpendicular.
                     r = right - dot(right, d) * d;
                     if (length(r) == 0) r = std::fabs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
-                    if (handed < 0) r = -r;
+                    if (handed <= 0) r = -r;
                 }
                 r = normalize(r);
                 dir = d * dl;
                 up = normalize(cross(d, r)) * ul;
-                right = r * (handed < 0 ? -rl : rl);
+                right = r * (handed <= 0 ? -rl : rl);  // up × direction along right: left-handed; else (0 too) mirrored (measured)
                 break;
             }
             case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
@@ -107,6 +102,17 @@ void SceneBuilder::addCamera(const Item& cam) {
             case Kw::bokeh: notes_.note("bokeh", e.loc); break;
             default: break;
         }
+    }
+    if (lastTransform) {
+        loc = moved.point(loc);
+        lookAt = moved.point(lookAt);
+        dir = moved.vector(dir);
+        up = moved.vector(up);
+        right = moved.vector(right);
+        auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+        if (!finite(loc) || !finite(lookAt) || !finite(dir) || !finite(up) || !finite(right))
+            throw Error(notes_.where(lastTransform->loc) +
+                        ": error: the camera's transformation overflows (its vectors are no longer finite)");
     }
     const double dl = length(dir);
     if (dl == 0) throw Error(notes_.where(cam.loc) + ": error: the camera's direction is zero");
