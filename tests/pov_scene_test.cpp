@@ -118,6 +118,25 @@ TEST(PovObjects, DefaultDirectiveChangesLaterObjectsOnly) {
     EXPECT_TRUE(near(b.scene.objects[2].material.color, {1, 1, 1}));
 }
 
+TEST(PovObjects, DefaultTextureBecomesTheDefaultTexture) {
+    // #default { texture {...} } (interior/iortest.pov's glass): objects without a texture, or with
+    // only an interior, show it; a later #default { finish } changes its finish only.
+    const Built b = build("#default { texture { pigment { rgbf <1, 0.5, 0.25, 0.7> } finish { ambient 0.2 diffuse 0 } } }\n"
+                          "sphere { 0, 1 }\nsphere { 0, 1 interior { ior 1.5 } }\n"
+                          "#default { finish { ambient 0.3 } }\nsphere { 0, 1 }");
+    ASSERT_EQ(b.error, "");
+    ASSERT_EQ(b.scene.objects.size(), 3u);
+    for (size_t i = 0; i < 3; ++i) {
+        const Material& m = b.scene.objects[i].material;
+        EXPECT_TRUE(near(m.color, {1, 0.5, 0.25})) << i;
+        EXPECT_DOUBLE_EQ(m.filter, 0.7) << i;
+        const PovSurface& s = b.scene.povSurfaces[size_t(m.pov)];
+        EXPECT_DOUBLE_EQ(s.finish.ambient.x, i == 2 ? 0.3 : 0.2) << i;
+        EXPECT_DOUBLE_EQ(s.finish.diffuse, 0) << i;
+    }
+    EXPECT_DOUBLE_EQ(b.scene.povSurfaces[size_t(b.scene.objects[1].material.pov)].interior.ior, 1.5);
+}
+
 TEST(PovObjects, FinishAndInteriorReachTheSurface) {
     const Built b = build(
         "sphere { 0, 1 pigment { rgbft <1, 0.5, 0.25, 0.1, 0.2> }\n"

@@ -94,13 +94,20 @@ void SceneBuilder::updateDefaults(const ParsedScene::Top& top) {
         defaultsApplied_ = 0;
         defaultsLook_ = Appearance{};
     }
-    if (top.defaultsCount > defaultsApplied_) {
+    // `#default { texture {...} }` makes that texture the default one; `#default { pigment {...} }`,
+    // `finish` and `normal` change the part of it they name (measured: a default texture of rgbf
+    // glass shows as glass, not as the black default pigment).
+    for (; defaultsApplied_ < top.defaultsCount; ++defaultsApplied_) {
+        const Entry& e = (*top.defaults)[defaultsApplied_];
+        if (!e.positional() && e.kw() == Kw::texture && !e.args.empty() && e.args[0].type == VType::Item) {
+            defaultsLook_ = Appearance{};
+            applyTexture(e.args[0].item(), defaultsLook_, notes_, &pigments_);
+            continue;
+        }
         Item added;
         added.kind = Kw::texture;
-        added.entries.assign(top.defaults->begin() + std::ptrdiff_t(defaultsApplied_),
-                             top.defaults->begin() + std::ptrdiff_t(top.defaultsCount));
+        added.entries.push_back(e);
         applyTexture(added, defaultsLook_, notes_, &pigments_);
-        defaultsApplied_ = top.defaultsCount;
     }
     fallback_ = defaultsLook_;
     fallback_.set = false;
@@ -239,6 +246,13 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     if (!toWorld.isUsable())
         throw Error(notes_.where(item.loc) + ": error: the object's transformation overflows or is singular");
     if (look.set) moveLook(look, parent);  // texture space → world
+    if (!look.set && look.interiorSet) {  // an interior alone: the texture it would have had, with it
+        const PovInterior interior = look.interior;
+        look = inherited ? *inherited : fallback_;
+        look.interior = interior;
+        look.interiorSet = true;
+        look.set = true;
+    }
     const Appearance* own = look.set ? &look : inherited;
     // Intersection, difference, merge and clipped objects become one CSG object (csg.h); unions
     // outside them are flattened into their children.
