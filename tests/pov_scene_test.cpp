@@ -72,6 +72,14 @@ TEST(PovCamera, DefaultCameraWhenTheSceneHasNone) {
     EXPECT_TRUE(near(b.scene.cameras[0].forward(), {0, 0, 1}));
 }
 
+TEST(PovCamera, ALaterCameraReplacesTheOneBefore) {
+    // POV-Ray uses the last camera (screen.inc's macros write one at each change).
+    const Built b = build("camera { location <0, 0, -5> look_at 0 }\ncamera { location <0, 9, 0> look_at 0 }\n");
+    ASSERT_EQ(b.error, "");
+    ASSERT_EQ(b.scene.cameras.size(), 1u);
+    EXPECT_TRUE(near(b.scene.cameras[0].location, {0, 9, 0}));
+}
+
 TEST(PovObjects, TransformsApplyInOrderAndObjectCopiesAddTheirs) {
     const Built b = build(
         "#declare S = sphere { 0, 1 scale 2 }\n"

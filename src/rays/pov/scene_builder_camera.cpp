@@ -122,7 +122,9 @@ void SceneBuilder::addCamera(const Item& cam) {
     c.up = up / dl;
     if (c.projection != Projection::Perspective) finishProjection(c, dir, right, up, lookAt, rightOrUpSet, angleSet, angles);
     if (c.aperture > 0 && c.blurSamples == 0) c.blurSamples = 16;
-    scene_.cameras.push_back(c);
+    // A later camera replaces the one before (POV-Ray 3.7 reference, "Camera": the last one is
+    // used; screen.inc's macros write a camera at each change).
+    scene_.cameras.assign(1, c);
 }
 
 // The vectors and angles of the non-perspective projections, as measured from POV-Ray 3.7 renders.
