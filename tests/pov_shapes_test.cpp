@@ -188,6 +188,37 @@ TEST(PovShapesPoly, QuadricAndCubicFollowTheirTermOrders) {
     EXPECT_EQ(insideShape(c.objects[0], {0, 0, 0}), 1);
 }
 
+TEST(PovShapesPoly, QuadricHitsMatchTheSphereOnRandomRays) {
+    // Quadrics are solved in closed form: x² + y² + z² − 4 against the analytic sphere of radius 2,
+    // from outside and from inside, with the far root when the near one is behind tMin.
+    const Scene q = build("quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -4 }");
+    uint64_t state = 12345;
+    auto rnd = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return double(state >> 11) / double(1ULL << 53) * 2 - 1;
+    };
+    int hits = 0;
+    for (int i = 0; i < 500; ++i) {
+        const Vec3 o{4 * rnd(), 4 * rnd(), 4 * rnd()};
+        const Vec3 d = normalize(Vec3{rnd(), rnd(), rnd()} + Vec3{1e-9, 0, 0});
+        // The sphere's exact first hit beyond 1e-6.
+        const double b = dot(o, d), c = dot(o, o) - 4, disc = b * b - c;
+        double want = -1;
+        if (disc >= 0) {
+            const double t1 = -b - std::sqrt(disc), t2 = -b + std::sqrt(disc);
+            want = t1 > 1e-6 ? t1 : (t2 > 1e-6 ? t2 : -1);
+        }
+        const Hit h = shoot(q, o, d);
+        ASSERT_EQ(h.valid(), want > 0) << i;
+        if (want <= 0) continue;
+        ++hits;
+        EXPECT_NEAR(h.t, want, 1e-9) << i;
+        const Vec3 p = o + h.t * d;
+        EXPECT_NEAR(length(h.normal - p / 2), 0, 1e-9) << i;
+    }
+    EXPECT_GT(hits, 50);
+}
+
 TEST(PovShapesCsg, TorusAndPolyCutByABox) {
     const Scene s = build("difference { torus { 2, 0.5 } box { <0, -1, -3>, <3, 1, 3> } }");
     ASSERT_EQ(s.objects.size(), 1u);

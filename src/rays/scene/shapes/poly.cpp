@@ -42,10 +42,60 @@ void binomialRows(double o, double d, int n, double* out) {
     }
 }
 
+// Quadrics (order 2: shapes.inc's cylinders, cones, paraboloids, hyperboloids) in closed form.
+// The ten values in the order above: x² xy xz x y² yz y z² z 1.
+double evalQuadric(const double* a, Vec3 q) {
+    return q.x * (a[0] * q.x + a[1] * q.y + a[2] * q.z + a[3]) + q.y * (a[4] * q.y + a[5] * q.z + a[6]) +
+           q.z * (a[7] * q.z + a[8]) + a[9];
+}
+
+Vec3 quadricGradient(const double* a, Vec3 q) {
+    return {2 * a[0] * q.x + a[1] * q.y + a[2] * q.z + a[3], a[1] * q.x + 2 * a[4] * q.y + a[5] * q.z + a[6],
+            a[2] * q.x + a[5] * q.y + 2 * a[7] * q.z + a[8]};
+}
+
+// The roots of A t² + B t + C in increasing order (the stable form: q = −(B + sign(B)·√disc)/2,
+// roots q/A and C/q); a vanishing A leaves the linear root.
+int quadraticRoots(double A, double B, double C, double* roots) {
+    if (A == 0) {
+        if (B == 0) return 0;
+        roots[0] = -C / B;
+        return 1;
+    }
+    const double disc = B * B - 4 * A * C;
+    if (disc < 0) return 0;
+    const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+    double r0 = q / A, r1 = q != 0 ? C / q : r0;
+    if (r0 > r1) std::swap(r0, r1);
+    roots[0] = r0, roots[1] = r1;
+    return 2;
+}
+
+bool hitQuadric(const ShapeData& sd, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    const double* a = sd.values.data();
+    const double dd = dot(r.dir, r.dir);
+    const double t0 = -dot(r.origin, r.dir) / dd;  // the new origin's t, as for higher orders
+    const Vec3 O = r.origin + t0 * r.dir, D = r.dir;
+    const double A = a[0] * D.x * D.x + a[1] * D.x * D.y + a[2] * D.x * D.z + a[4] * D.y * D.y + a[5] * D.y * D.z +
+                     a[7] * D.z * D.z;
+    const double B = dot(quadricGradient(a, O), D);  // d/dt p(O + tD) at t = 0
+    const double C = evalQuadric(a, O);
+    double roots[2];
+    const int count = quadraticRoots(A, B, C, roots);
+    int i = 0;
+    while (i < count && !(roots[i] + t0 > tMin && roots[i] + t0 < tMax)) ++i;
+    if (i == count) return false;
+    h.t = roots[i] + t0;
+    const Vec3 g = quadricGradient(a, r.at(h.t));
+    h.normal = length(g) > 0 ? normalize(g) : -r.dir / std::sqrt(dd);
+    return true;
+}
+
 }  // namespace
 
 double evalPolySurface(const ShapeData& d, Vec3 q) {
     const int n = d.order;
+    if (n == 2 && d.values.size() >= 10) return evalQuadric(d.values.data(), q);
     double px[kStride], py[kStride], pz[kStride];
     powers(q.x, n, px), powers(q.y, n, py), powers(q.z, n, pz);
     double v = 0;
@@ -59,6 +109,7 @@ double evalPolySurface(const ShapeData& d, Vec3 q) {
 bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     const ShapeData& sd = *o.data;
     const int n = sd.order;
+    if (n == 2 && sd.values.size() >= 10) return hitQuadric(sd, r, tMin, tMax, h);
     const double dd = dot(r.dir, r.dir);
     const double t0 = -dot(r.origin, r.dir) / dd;  // the new origin's t
     const Vec3 O = r.origin + t0 * r.dir, D = r.dir;
