@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mpi_session.h"
+#include "mpi_summary.h"
 
 namespace rays::cli::mpi {
 namespace {
@@ -60,8 +61,10 @@ double serveAsWorker(TileRenderer& tiles, const RenderSettings& s) {
 }
 
 // Rank 0: renders bands on a thread of its own while the main thread (the only one calling MPI)
-// answers the workers' reports and copies their bands into the image.
-double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, const ProgressFn& progress) {
+// answers the workers' reports and copies their bands into the image (the time that takes is
+// added to gather).
+double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, const ProgressFn& progress,
+                   double& gather) {
     const int bands = tiles.tilesY();
     std::atomic<int> next{0}, finished{0};
     double busy = 0;
@@ -89,6 +92,7 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
             std::this_thread::sleep_for(std::chrono::microseconds(200));
             continue;
         }
+        const auto received = Clock::now();
         int bytes = 0;
         MPI_Get_count(&st, MPI_BYTE, &bytes);
         msg.resize(size_t(bytes));
@@ -99,6 +103,7 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
             std::memcpy(&img.at(0, bandY0(int(b))), msg.data() + kHeader, size_t(bytes) - kHeader);
             finished.fetch_add(1);
         }
+        gather += secondsSince(received);
         int assign = next.fetch_add(1);
         if (assign >= bands) {
             assign = -1;
@@ -118,37 +123,27 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
 
 }  // namespace
 
-ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
-                         const ProgressFn& progress, bool report) {
+ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSettings& s, double parseBuildSeconds,
+                         TraceStats& stats, const ProgressFn& progress, ShareFigures& share) {
     TileRenderer tiles(scene, bvh, s);
     ImageF img;
-    double busy = 0;
+    RankFigures mine;
+    mine.parseBuild = parseBuildSeconds;
     if (rank() == 0) {
         img = ImageF::uninitialized(s.width, s.height);
-        busy = serveAsRoot(tiles, s, img, progress);
+        mine.busy = serveAsRoot(tiles, s, img, progress, share.gatherSeconds);
     } else {
-        busy = serveAsWorker(tiles, s);
+        mine.busy = serveAsWorker(tiles, s);
     }
     // Counters, rays and busy times come together on rank 0 for the summary.
-    const TraceStats mine = tiles.stats();
-    uint64_t counts[3] = {mine.primaryRays, mine.secondaryRays, mine.shadowRays}, sums[3] = {0, 0, 0};
+    const TraceStats counted = tiles.stats();
+    uint64_t counts[3] = {counted.primaryRays, counted.secondaryRays, counted.shadowRays}, sums[3] = {0, 0, 0};
     MPI_Reduce(counts, sums, 3, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
-    const double perRank[2] = {busy, double(mine.total())};
-    std::vector<double> all(static_cast<size_t>(2 * size()));
-    MPI_Gather(perRank, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    mine.render = mine.busy;
+    mine.rays = double(counted.total());
+    share.ranks = gatherFigures(mine);
     if (rank() != 0) return ImageF{};
     stats.add(TraceStats{sums[0], sums[1], sums[2]});
-    if (report) {
-        double sum = 0, slowest = 0;
-        for (int r = 0; r < size(); ++r) sum += all[size_t(2 * r)], slowest = std::max(slowest, all[size_t(2 * r)]);
-        const double mean = sum / size();
-        std::fprintf(stderr, "rays: mpi: %d ranks, busy s (Mrays/s) per rank:", size());
-        for (int r = 0; r < size(); ++r) {
-            const double b = all[size_t(2 * r)], rays = all[size_t(2 * r + 1)];
-            std::fprintf(stderr, " %.2f (%.2f)", b, b > 0 ? rays / b * 1e-6 : 0.0);
-        }
-        std::fprintf(stderr, "; load balance (slowest / mean) %.2f\n", mean > 0 ? slowest / mean : 1.0);
-    }
     return img;
 }
 

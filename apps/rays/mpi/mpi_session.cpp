@@ -5,18 +5,37 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <set>
+#include <vector>
+
 
 namespace rays::cli::mpi {
 namespace {
 
+// What each rank tells the others about itself at the start.
+struct PeerRecord {
+    int32_t pid = 0;
+    char host[60] = "";
+};
+
 bool running = false;
 int worldRank = 0, worldSize = 1;
+std::vector<PeerRecord> peers;
 
 // Variables set by the launchers: Open MPI's mpirun, PMIx and PMI (MPICH, Slurm's srun --mpi=...).
 bool launchedByMpi() {
     for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
         if (std::getenv(v)) return true;
     return false;
+}
+
+void learnPeers() {
+    PeerRecord mine;
+    mine.pid = int32_t(getpid());
+    std::snprintf(mine.host, sizeof mine.host, "%s", hostName().c_str());
+    peers.resize(size_t(worldSize));
+    MPI_Allgather(&mine, sizeof mine, MPI_BYTE, peers.data(), sizeof mine, MPI_BYTE, MPI_COMM_WORLD);
 }
 
 }  // namespace
@@ -28,6 +47,7 @@ void start(int* argc, char*** argv) {
     MPI_Comm_rank(MPI_COMM_WORLD, &worldRank);
     MPI_Comm_size(MPI_COMM_WORLD, &worldSize);
     running = true;
+    learnPeers();
 }
 
 int finish(int status) {
@@ -51,5 +71,15 @@ std::string hostName() {
     gethostname(name, sizeof name - 1);
     return name;
 }
+
+std::string hostOf(int r) { return r >= 0 && size_t(r) < peers.size() ? peers[size_t(r)].host : hostName(); }
+
+int hostCount() {
+    std::set<std::string> hosts;
+    for (const PeerRecord& p : peers) hosts.insert(p.host);
+    return hosts.empty() ? 1 : int(hosts.size());
+}
+
+int pidOf(int r) { return r >= 0 && size_t(r) < peers.size() ? peers[size_t(r)].pid : int(getpid()); }
 
 }  // namespace rays::cli::mpi
