@@ -297,7 +297,7 @@ int runMain(int argc, char** argv) {
     try {
         return checkStdout(run(argc, argv));
     } catch (const cli::Interrupted& e) {
-        std::cerr << "rays: interrupted; no image written\n";
+        if (!cli::interruptMessagesMuted()) std::cerr << "rays: interrupted; no image written\n";
         return e.exitStatus();
     } catch (const std::bad_alloc&) {
         std::cerr << "rays: error: out of memory\n";

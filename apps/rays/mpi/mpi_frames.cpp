@@ -14,6 +14,7 @@
 
 #include "../interrupt.h"
 #include "../paths.h"
+#include "mpi_lost_rank.h"
 #include "mpi_session.h"
 #include "mpi_summary.h"
 #include "rays/error.h"
@@ -115,6 +116,7 @@ RankFigures serveFrames(const RenderJob& base, const FramePlan& plan, const Fram
     RankFigures mine;
     FrameReport report;
     report.rank = rank();
+    dieIfTestAsks();
     for (;;) {
         MPI_Send(&report, sizeof report, MPI_BYTE, 0, kFrameReport, MPI_COMM_WORLD);
         int i = -1;

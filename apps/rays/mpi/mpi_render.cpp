@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "../interrupt.h"
+#include "mpi_lost_rank.h"
 #include "mpi_session.h"
 #include "mpi_summary.h"
 
@@ -44,6 +46,7 @@ double serveAsWorker(TileRenderer& tiles, const RenderSettings& s) {
     int64_t done = -1;
     std::memcpy(msg.data(), &done, kHeader);
     double busy = 0;
+    dieIfTestAsks();
     for (;;) {
         MPI_Send(msg.data(), int(msg.size()), MPI_BYTE, 0, kReport, MPI_COMM_WORLD);
         int b = -1;
@@ -52,6 +55,7 @@ double serveAsWorker(TileRenderer& tiles, const RenderSettings& s) {
         const auto t0 = Clock::now();
         renderBand(tiles, s, b, band, bandY0(b));
         busy += secondsSince(t0);
+        throwIfInterrupted();  // a band cut short by a signal is not sent
         const size_t bytes = size_t(bandY1(b, s.height) - bandY0(b)) * size_t(s.width) * sizeof(Vec3);
         msg.resize(kHeader + bytes);
         done = b;
@@ -62,7 +66,8 @@ double serveAsWorker(TileRenderer& tiles, const RenderSettings& s) {
 
 // Rank 0: renders bands on a thread of its own while the main thread (the only one calling MPI)
 // answers the workers' reports and copies their bands into the image (the time that takes is
-// added to gather).
+// added to gather). After a signal it hands out nothing more and returns once its own thread
+// stops; the caller then finds the run interrupted.
 double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, const ProgressFn& progress,
                    double& gather) {
     const int bands = tiles.tilesY();
@@ -79,7 +84,8 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
     int active = size() - 1;
     std::vector<char> msg;
     auto lastProgress = Clock::now();
-    while (active > 0) {
+    dieIfTestAsks();
+    while (active > 0 && !interrupted()) {
         int ready = 0;
         MPI_Status st;
         MPI_Iprobe(MPI_ANY_SOURCE, kReport, MPI_COMM_WORLD, &ready, &st);
@@ -112,7 +118,8 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
         MPI_Send(&assign, 1, MPI_INT, st.MPI_SOURCE, kAssign, MPI_COMM_WORLD);
     }
     // The last bands may still be rendering here; progress goes on until they are done.
-    while (finished.load() < bands) {
+    if (interrupted()) next.store(bands);  // the local thread takes no further band
+    while (finished.load() < bands && !interrupted()) {
         if (progress) progress(double(finished.load()) / bands);
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
@@ -135,6 +142,7 @@ ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSetting
     } else {
         mine.busy = serveAsWorker(tiles, s);
     }
+    throwIfInterrupted();  // the ranks stop without the collectives below: finish() aborts the run
     // Counters, rays and busy times come together on rank 0 for the summary.
     const TraceStats counted = tiles.stats();
     uint64_t counts[3] = {counted.primaryRays, counted.secondaryRays, counted.shadowRays}, sums[3] = {0, 0, 0};

@@ -20,7 +20,7 @@ struct ShareFigures {
 /// Renders the image (settings.aaEdges must be off) on every rank; all ranks call it with the
 /// same scene and settings. Rank 0 returns the whole image, receives every rank's counters in
 /// stats and the ranks' figures in share; other ranks return an empty image. progress is called
-/// on rank 0 only.
+/// on rank 0 only. After a signal the image is incomplete (the caller checks interrupted()).
 ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, double parseBuildSeconds,
                          TraceStats& stats, const ProgressFn& progress, ShareFigures& share);
 

@@ -1,6 +1,7 @@
 #include "mpi_session.h"
 
 #include <mpi.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <set>
 #include <vector>
 
+#include "mpi_lost_rank.h"
 
 namespace rays::cli::mpi {
 namespace {
@@ -38,6 +40,9 @@ void learnPeers() {
     MPI_Allgather(&mine, sizeof mine, MPI_BYTE, peers.data(), sizeof mine, MPI_BYTE, MPI_COMM_WORLD);
 }
 
+// Exit statuses of a stop by Ctrl-C or SIGTERM (interrupt.h): not a failure to name.
+bool stoppedBySignal(int status) { return status == 128 + SIGINT || status == 128 + SIGTERM; }
+
 }  // namespace
 
 void start(int* argc, char*** argv) {
@@ -48,11 +53,20 @@ void start(int* argc, char*** argv) {
     MPI_Comm_size(MPI_COMM_WORLD, &worldSize);
     running = true;
     learnPeers();
+    watchForLostRanks();
 }
 
 int finish(int status) {
     if (!running) return status;
+    markEnding();  // neighbours see this rank end knowingly (mpi_lost_rank.h)
     if (status != 0 && worldSize > 1) {
+        // A signal reached every rank (the launcher's answer to Ctrl-C or to a rank's death), or
+        // it reached this rank alone and the launcher stops the others on this non-zero exit:
+        // no MPI_Abort and its page of text.
+        if (stoppedBySignal(status)) {
+            std::fflush(nullptr);
+            std::_Exit(status);
+        }
         std::fprintf(stderr, "rays: rank %d on %s failed (exit status %d); stopping all %d ranks\n", worldRank,
                      hostName().c_str(), status, worldSize);
         MPI_Abort(MPI_COMM_WORLD, status);

@@ -11,7 +11,8 @@ namespace rays::cli::mpi {
 void start(int* argc, char*** argv);
 
 /// Ends MPI: MPI_Finalize after status 0; after a failure with other ranks running, MPI_Abort so
-/// that the launcher stops every rank and names this one. Returns status.
+/// that the launcher stops every rank (a failure other than a signal is named first: "rays: rank R
+/// on HOST failed (exit status S); stopping all N ranks"). Returns status.
 int finish(int status);
 
 /// This process's rank (0 without MPI).
