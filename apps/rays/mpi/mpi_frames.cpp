@@ -17,6 +17,7 @@
 #include "mpi_lost_rank.h"
 #include "mpi_session.h"
 #include "mpi_summary.h"
+#include "mpi_wait.h"
 #include "rays/error.h"
 
 namespace rays::cli::mpi {
@@ -118,9 +119,9 @@ RankFigures serveFrames(const RenderJob& base, const FramePlan& plan, const Fram
     report.rank = rank();
     dieIfTestAsks();
     for (;;) {
-        MPI_Send(&report, sizeof report, MPI_BYTE, 0, kFrameReport, MPI_COMM_WORLD);
+        sendGently(&report, sizeof report, MPI_BYTE, 0, kFrameReport);
         int i = -1;
-        MPI_Recv(&i, 1, MPI_INT, 0, kFrameAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        recvGently(&i, 1, MPI_INT, 0, kFrameAssign);
         if (i < 0) return mine;
         int status = 0;
         report = renderWholeFrame(base, plan, i, render, status);
@@ -228,6 +229,7 @@ int runFramesOnRanks(const RenderJob& base, const FramePlan& plan, bool resume, 
         return e.exitStatus();
     }
     if (status != 0) return status;  // finish() stops the other ranks
+    barrierGently();  // the ranks done first sleep until the last one is
     const std::vector<RankFigures> all = gatherFigures(mine);
     if (rank() == 0 && !base.quiet) {
         JobPhases phases;

@@ -15,6 +15,7 @@
 #include "mpi_lost_rank.h"
 #include "mpi_session.h"
 #include "mpi_summary.h"
+#include "mpi_wait.h"
 
 namespace rays::cli::mpi {
 namespace {
@@ -48,9 +49,9 @@ double serveAsWorker(TileRenderer& tiles, const RenderSettings& s) {
     double busy = 0;
     dieIfTestAsks();
     for (;;) {
-        MPI_Send(msg.data(), int(msg.size()), MPI_BYTE, 0, kReport, MPI_COMM_WORLD);
+        sendGently(msg.data(), int(msg.size()), MPI_BYTE, 0, kReport);
         int b = -1;
-        MPI_Recv(&b, 1, MPI_INT, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        recvGently(&b, 1, MPI_INT, 0, kAssign);
         if (b < 0) return busy;
         const auto t0 = Clock::now();
         renderBand(tiles, s, b, band, bandY0(b));
@@ -143,7 +144,9 @@ ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSetting
         mine.busy = serveAsWorker(tiles, s);
     }
     throwIfInterrupted();  // the ranks stop without the collectives below: finish() aborts the run
-    // Counters, rays and busy times come together on rank 0 for the summary.
+    // Counters, rays and busy times come together on rank 0 for the summary (the ranks done
+    // first sleep until the last one is).
+    barrierGently();
     const TraceStats counted = tiles.stats();
     uint64_t counts[3] = {counted.primaryRays, counted.secondaryRays, counted.shadowRays}, sums[3] = {0, 0, 0};
     MPI_Reduce(counts, sums, 3, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
