@@ -393,6 +393,8 @@ int runRender(const RenderJob& job) {
         std::fprintf(stderr, "stats: objects %zu, lights %zu, BVH nodes %zu (depth %d), threads %d\n",
                      scene.objects.size(), scene.lights.size(), bvh.nodeCount(), bvh.depth(),
                      resolveThreads(s.threads));
+        std::fprintf(stderr, "stats: scene about %.1f MB in memory (objects, their BVH share, meshes, textures)\n",
+                     double(sceneBytes(scene)) / 1e6);
         std::fprintf(stderr, "stats: rays %llu (primary %llu, secondary %llu, shadow %llu)\n",
                      (unsigned long long)stats.total(), (unsigned long long)stats.primaryRays,
                      (unsigned long long)stats.secondaryRays, (unsigned long long)stats.shadowRays);
