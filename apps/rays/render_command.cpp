@@ -309,7 +309,8 @@ int runRender(const RenderJob& job) {
     }
     // A PNG of the render as it stands is compressed by the render's threads as rows finish.
     std::unique_ptr<PngStream> png;
-    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges && !distributed) {
+    // Under MPI rank 0 compresses each band as it lands, its own or another rank's.
+    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges && writer) {
         png = std::make_unique<PngStream>(s.width, s.height);
         onRows = [&](const ImageF& rows, int y0, int y1, int) { png->rowsDone(rows, y0, y1); };
     }
@@ -317,7 +318,8 @@ int runRender(const RenderJob& job) {
 #ifdef RAYS_WITH_MPI
     mpi::ShareFigures share;
     if (distributed) {
-        img = mpi::renderDistributed(scene, bvh, s, (parseMs + buildMs) / 1000, stats, [&](double f) { bar(f); }, share);
+        img = mpi::renderDistributed(scene, bvh, s, (parseMs + buildMs) / 1000, stats, [&](double f) { bar(f); }, onRows,
+                                     share);
         if (!writer) return 0;  // rank 0 alone filters, draws the lines and writes
     }
 #endif

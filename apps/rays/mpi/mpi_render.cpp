@@ -70,7 +70,7 @@ double serveAsWorker(TileRenderer& tiles, const RenderSettings& s) {
 // added to gather). After a signal it hands out nothing more and returns once its own thread
 // stops; the caller then finds the run interrupted.
 double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, const ProgressFn& progress,
-                   double& gather) {
+                   const RowsFn& onRows, double& gather) {
     const int bands = tiles.tilesY();
     std::atomic<int> next{0}, finished{0};
     double busy = 0;
@@ -78,6 +78,7 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
         const auto t0 = Clock::now();
         for (int b = next.fetch_add(1); b < bands; b = next.fetch_add(1)) {
             renderBand(tiles, s, b, img, 0);
+            if (onRows && !interrupted()) onRows(img, bandY0(b), bandY1(b, s.height), 0);
             finished.fetch_add(1);
         }
         busy = secondsSince(t0);
@@ -111,6 +112,7 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
             finished.fetch_add(1);
         }
         gather += secondsSince(received);
+        if (b >= 0 && onRows) onRows(img, bandY0(int(b)), bandY1(int(b), s.height), 0);
         int assign = next.fetch_add(1);
         if (assign >= bands) {
             assign = -1;
@@ -132,14 +134,14 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
 }  // namespace
 
 ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSettings& s, double parseBuildSeconds,
-                         TraceStats& stats, const ProgressFn& progress, ShareFigures& share) {
+                         TraceStats& stats, const ProgressFn& progress, const RowsFn& onRows, ShareFigures& share) {
     TileRenderer tiles(scene, bvh, s);
     ImageF img;
     RankFigures mine;
     mine.parseBuild = parseBuildSeconds;
     if (rank() == 0) {
         img = ImageF::uninitialized(s.width, s.height);
-        mine.busy = serveAsRoot(tiles, s, img, progress, share.gatherSeconds);
+        mine.busy = serveAsRoot(tiles, s, img, progress, onRows, share.gatherSeconds);
     } else {
         mine.busy = serveAsWorker(tiles, s);
     }

@@ -20,8 +20,10 @@ struct ShareFigures {
 /// Renders the image (settings.aaEdges must be off) on every rank; all ranks call it with the
 /// same scene and settings. Rank 0 returns the whole image, receives every rank's counters in
 /// stats and the ranks' figures in share; other ranks return an empty image. progress is called
-/// on rank 0 only. After a signal the image is incomplete (the caller checks interrupted()).
+/// on rank 0 only, and so is onRows (as for render(): rows [y0, y1) of the image are final; called
+/// once per band, from rank 0's render thread or its main thread, as the band lands). After a
+/// signal the image is incomplete (the caller checks interrupted()).
 ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, double parseBuildSeconds,
-                         TraceStats& stats, const ProgressFn& progress, ShareFigures& share);
+                         TraceStats& stats, const ProgressFn& progress, const RowsFn& onRows, ShareFigures& share);
 
 }  // namespace rays::cli::mpi
