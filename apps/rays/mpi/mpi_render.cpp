@@ -112,13 +112,14 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
             finished.fetch_add(1);
         }
         gather += secondsSince(received);
-        if (b >= 0 && onRows) onRows(img, bandY0(int(b)), bandY1(int(b), s.height), 0);
         int assign = next.fetch_add(1);
         if (assign >= bands) {
             assign = -1;
             --active;
         }
         MPI_Send(&assign, 1, MPI_INT, st.MPI_SOURCE, kAssign, MPI_COMM_WORLD);
+        // Compressing the band (a plain PNG) comes after the answer: the rank renders meanwhile.
+        if (b >= 0 && onRows) onRows(img, bandY0(int(b)), bandY1(int(b), s.height), 0);
     }
     // The last bands may still be rendering here; progress goes on until they are done.
     if (interrupted()) next.store(bands);  // the local thread takes no further band
