@@ -9,9 +9,7 @@
 #include "paths.h"
 
 namespace rays::cli {
-namespace {
 
-// "frame 2 of 3 (frame_number 2, clock 0.5)"
 std::string frameLabel(const FramePlan& plan, size_t i) {
     const sdl::AnimationClock& c = plan.frames[i];
     char text[160];
@@ -19,8 +17,6 @@ std::string frameLabel(const FramePlan& plan, size_t i) {
                   c.frameNumber, c.clock);
     return text;
 }
-
-}  // namespace
 
 RenderJob frameJob(const RenderJob& base, const FramePlan& plan, size_t i) {
     RenderJob job = base;

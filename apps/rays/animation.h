@@ -5,6 +5,7 @@
 #pragma once
 #include <cstddef>
 #include <functional>
+#include <string>
 
 #include "frame_plan.h"
 #include "render_command.h"
@@ -14,6 +15,9 @@ namespace rays::cli {
 /// Renders one job and returns its exit status (runRender in the program, a stand-in in tests);
 /// throws Interrupted after Ctrl-C.
 using FrameRenderer = std::function<int(const RenderJob&)>;
+
+/// Frame i of plan for messages: "frame 2 of 3 (frame_number 2, clock 0.5)".
+std::string frameLabel(const FramePlan& plan, size_t i);
 
 /// The job of frame i of plan: base with the frame's clock in language.animation and, for an
 /// animation, the numbered output file and edge mask (frameFileName).

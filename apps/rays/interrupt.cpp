@@ -18,6 +18,9 @@ std::atomic<int> criticalDepth{0};
 std::atomic<int> quitAtOnceDepth{0};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
 
+std::atomic<SignalHook> signalHook{nullptr};
+std::atomic<bool> messagesMuted{false};
+
 struct sigaction previousInt, previousTerm;
 int scopeDepth = 0;  // InterruptScopes alive (main thread only); the outermost one owns the handlers
 
@@ -31,14 +34,17 @@ void say(const char* text) {
 extern "C" void onSignal(int sig) {
     lastSignal.store(sig);
     stopRequested.store(true);
+    const SignalHook hook = signalHook.load();
+    if (hook && hook(sig)) messagesMuted.store(true);
+    const bool quiet = messagesMuted.load();
     if (signalCount.fetch_add(1) == 0) {
-        say("\nrays: interrupted: stopping (signal again to quit at once)\n");
+        if (!quiet) say("\nrays: interrupted: stopping (signal again to quit at once)\n");
         if (quitAtOnceDepth.load() > 0 && criticalDepth.load() == 0) {
-            say("rays: interrupted; no image written\n");
+            if (!quiet) say("rays: interrupted; no image written\n");
             ::_exit(128 + sig);
         }
     } else if (criticalDepth.load() == 0) {
-        say("rays: interrupted again: quitting\n");
+        if (!quiet) say("rays: interrupted again: quitting\n");
         ::_exit(128 + sig);
     }
 }
@@ -67,6 +73,10 @@ InterruptScope::~InterruptScope() {
 }
 
 bool interrupted() { return stopRequested.load(); }
+
+void setSignalHook(SignalHook hook) { signalHook.store(hook); }
+
+bool interruptMessagesMuted() { return messagesMuted.load(); }
 
 void throwIfInterrupted() {
     if (stopRequested.load()) throw Interrupted(lastSignal.load() ? lastSignal.load() : SIGINT);

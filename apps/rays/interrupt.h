@@ -44,6 +44,15 @@ public:
     QuitAtOnce& operator=(const QuitAtOnce&) = delete;
 };
 
+/// Called first by the signal handler with the signal (so it must be async-signal-safe): the MPI
+/// run names a rank that died there (apps/rays/mpi/mpi_lost_rank.h). Returning true silences the
+/// interrupt messages from then on (another line has said what happened, or another rank speaks).
+using SignalHook = bool (*)(int signal);
+void setSignalHook(SignalHook hook);
+
+/// True once a SignalHook asked for silence: main() then leaves out its "interrupted" line.
+bool interruptMessagesMuted();
+
 /// True once a signal arrived inside an InterruptScope.
 bool interrupted();
 /// Throws Interrupted when interrupted().

@@ -34,6 +34,7 @@
 #include "render_options.h"
 #include "scene_library.h"
 #ifdef RAYS_WITH_MPI
+#include "mpi/mpi_frames.h"
 #include "mpi/mpi_session.h"
 #endif
 
@@ -243,10 +244,14 @@ int run(int argc, char** argv) {
                                : dialect == "povray" ? sdl::Dialect::Povray
                                                      : sdl::Dialect::Auto;
         job.language.strict = strict;
+        const cli::FramePlan plan = cli::planFrames(pov.animation);
 #ifdef RAYS_WITH_MPI
         if (cli::mpi::rank() > 0) job.quiet = true;  // rank 0 reports for all ranks
+        // At least a frame per rank: whole frames to the ranks; fewer: each frame shared like a still.
+        if (plan.animated && cli::mpi::size() > 1 && plan.frames.size() >= size_t(cli::mpi::size()))
+            return cli::mpi::runFramesOnRanks(job, plan, pov.continueTrace, cli::runRender);
 #endif
-        return cli::runFrames(job, cli::planFrames(pov.animation), pov.continueTrace, cli::runRender);
+        return cli::runFrames(job, plan, pov.continueTrace, cli::runRender);
     }
     cli::applyOptions(flags, modern, s);
     if (raycast->parsed()) {
@@ -292,7 +297,7 @@ int runMain(int argc, char** argv) {
     try {
         return checkStdout(run(argc, argv));
     } catch (const cli::Interrupted& e) {
-        std::cerr << "rays: interrupted; no image written\n";
+        if (!cli::interruptMessagesMuted()) std::cerr << "rays: interrupted; no image written\n";
         return e.exitStatus();
     } catch (const std::bad_alloc&) {
         std::cerr << "rays: error: out of memory\n";

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +32,7 @@
 #ifdef RAYS_WITH_MPI
 #include "mpi/mpi_render.h"
 #include "mpi/mpi_session.h"
+#include "mpi/mpi_summary.h"
 #endif
 #include "render_limits.h"
 
@@ -51,6 +53,19 @@ constexpr int worldSize() { return 1; }
 double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
+
+#ifdef RAYS_WITH_MPI
+// The MPI line after a shared still: the slowest rank's parse and build, rank 0's render (which
+// includes receiving the bands) and write, each rank's rays per second and the load balance.
+void printShareSummary(const mpi::ShareFigures& share, double renderMs, double writeMs) {
+    mpi::JobPhases phases;
+    for (const mpi::RankFigures& r : share.ranks) phases.parseBuild = std::max(phases.parseBuild, r.parseBuild);
+    phases.render = renderMs / 1000;
+    phases.gather = share.gatherSeconds;
+    phases.write = writeMs / 1000;
+    std::fprintf(stderr, "%s\n", mpi::summaryLine(share.ranks, phases, mpi::hostCount()).c_str());
+}
+#endif
 
 // An OBJ given on the command line becomes one mesh object with a default material: the MTL's
 // first diffuse colour (else grey 0.8), ambient 0.2, diffuse 0.7, specular 0.2, roughness 0.3.
@@ -214,8 +229,10 @@ int runRender(const RenderJob& job) {
     s.linearOutput = hdrOutput;
     checkImageSize(s.width, s.height);
     checkSettingsLimits(s);  // every form of the command line comes through here
-    // Under MPI only rank 0 writes files (the others may run where its folders do not exist).
-    const bool writer = worldRank() == 0;
+    // Under MPI only rank 0 writes files (the others may run where its folders do not exist),
+    // unless this process renders the job alone (a frame handed out whole).
+    const int ranks = job.alone ? 1 : worldSize();
+    const bool writer = job.alone || worldRank() == 0;
     const unsigned aovKinds = parseAovList(job.aovs);
     const bool aovFiles = aovKinds != 0 && !isExrPath(job.outputPath);  // one PFM per AOV
     if (writer) {
@@ -255,8 +272,8 @@ int runRender(const RenderJob& job) {
     stopIfInterrupted(job, &scene, nullptr);
     // Ranks share single-pass renders only; edge-guided AA and lines-only renders (no render) run
     // on rank 0 alone for now, the other ranks stop here.
-    const bool distributed = worldSize() > 1 && !s.aaEdges && !edges.linesOnly;
-    if (worldSize() > 1 && !distributed) {
+    const bool distributed = ranks > 1 && !s.aaEdges && !edges.linesOnly;
+    if (ranks > 1 && !distributed) {
         if (!writer) return 0;
         if (!job.quiet) std::fprintf(stderr, "rays: mpi: %s renders on rank 0 alone\n", s.aaEdges ? "edge-guided AA" : "--lines-only");
     }
@@ -292,14 +309,17 @@ int runRender(const RenderJob& job) {
     }
     // A PNG of the render as it stands is compressed by the render's threads as rows finish.
     std::unique_ptr<PngStream> png;
-    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges && !distributed) {
+    // Under MPI rank 0 compresses each band as it lands, its own or another rank's.
+    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges && writer) {
         png = std::make_unique<PngStream>(s.width, s.height);
         onRows = [&](const ImageF& rows, int y0, int y1, int) { png->rowsDone(rows, y0, y1); };
     }
     ImageF img;
 #ifdef RAYS_WITH_MPI
+    mpi::ShareFigures share;
     if (distributed) {
-        img = mpi::renderDistributed(scene, bvh, s, stats, [&](double f) { bar(f); }, !job.quiet);
+        img = mpi::renderDistributed(scene, bvh, s, (parseMs + buildMs) / 1000, stats, [&](double f) { bar(f); }, onRows,
+                                     share);
         if (!writer) return 0;  // rank 0 alone filters, draws the lines and writes
     }
 #endif
@@ -356,6 +376,7 @@ int runRender(const RenderJob& job) {
         files.commit();
     }
     const double writeMs = msSince(t0);
+    if (job.figures) *job.figures = RenderFigures{parseMs + buildMs, renderMs + linesMs, writeMs, double(stats.total())};
 
     if (!job.quiet && job.summary) {
         const double mrays = renderMs > 0 ? stats.total() / (renderMs * 1000.0) : 0.0;
@@ -367,10 +388,15 @@ int runRender(const RenderJob& job) {
             std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, write %.1f ms; %.2f Mrays/s\n",
                          printableMessage(job.outputPath).c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
     }
+#ifdef RAYS_WITH_MPI
+    if (distributed && !job.quiet) printShareSummary(share, renderMs + linesMs, writeMs);
+#endif
     if (job.stats) {
         std::fprintf(stderr, "stats: objects %zu, lights %zu, BVH nodes %zu (depth %d), threads %d\n",
                      scene.objects.size(), scene.lights.size(), bvh.nodeCount(), bvh.depth(),
                      resolveThreads(s.threads));
+        std::fprintf(stderr, "stats: scene about %.1f MB in memory (objects, their BVH share, meshes, textures)\n",
+                     double(sceneBytes(scene)) / 1e6);
         std::fprintf(stderr, "stats: rays %llu (primary %llu, secondary %llu, shadow %llu)\n",
                      (unsigned long long)stats.total(), (unsigned long long)stats.primaryRays,
                      (unsigned long long)stats.secondaryRays, (unsigned long long)stats.shadowRays);

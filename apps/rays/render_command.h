@@ -24,6 +24,14 @@ struct EdgeOptions {
 /// The scene's edge settings with the command line's overrides applied; throws Error on bad values.
 EdgeSettings resolveEdges(const EdgeSettings& fromScene, const EdgeOptions& o);
 
+/// What one render took (for the MPI summary, apps/rays/mpi): phase times and rays traced.
+struct RenderFigures {
+    double parseBuildMs = 0;  ///< loading the scene and building the BVH
+    double renderMs = 0;      ///< rendering (with the post filters and feature lines)
+    double writeMs = 0;       ///< encoding and writing the files
+    double rays = 0;          ///< rays traced by this process
+};
+
 struct RenderJob {
     std::string scenePath;
     std::string outputPath = "output.png";
@@ -39,6 +47,10 @@ struct RenderJob {
     bool stats = false;   ///< extra counters on stderr
     bool savePartial = false;  ///< --save-partial: on Ctrl-C, keep what was rendered as OUTPUT.partial.png
     bool summary = true;  ///< the "rays: wrote ..." line (an animation prints its own line per frame)
+    /// Under MPI: this process renders and writes the job by itself (a frame handed out whole,
+    /// apps/rays/mpi/mpi_frames.h) instead of sharing it with the other ranks.
+    bool alone = false;
+    RenderFigures* figures = nullptr;  ///< when set, receives what the render took
     /// For the scene language: library paths, declarations, the frame's clock, dialect; the image
     /// size is filled in from settings when the scene is loaded.
     sdl::LanguageOptions language;

@@ -11,7 +11,11 @@
 #include <thread>
 #include <vector>
 
+#include "../interrupt.h"
+#include "mpi_lost_rank.h"
 #include "mpi_session.h"
+#include "mpi_summary.h"
+#include "mpi_wait.h"
 
 namespace rays::cli::mpi {
 namespace {
@@ -43,14 +47,16 @@ double serveAsWorker(TileRenderer& tiles, const RenderSettings& s) {
     int64_t done = -1;
     std::memcpy(msg.data(), &done, kHeader);
     double busy = 0;
+    dieIfTestAsks();
     for (;;) {
-        MPI_Send(msg.data(), int(msg.size()), MPI_BYTE, 0, kReport, MPI_COMM_WORLD);
+        sendGently(msg.data(), int(msg.size()), MPI_BYTE, 0, kReport);
         int b = -1;
-        MPI_Recv(&b, 1, MPI_INT, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        recvGently(&b, 1, MPI_INT, 0, kAssign);
         if (b < 0) return busy;
         const auto t0 = Clock::now();
         renderBand(tiles, s, b, band, bandY0(b));
         busy += secondsSince(t0);
+        throwIfInterrupted();  // a band cut short by a signal is not sent
         const size_t bytes = size_t(bandY1(b, s.height) - bandY0(b)) * size_t(s.width) * sizeof(Vec3);
         msg.resize(kHeader + bytes);
         done = b;
@@ -60,8 +66,11 @@ double serveAsWorker(TileRenderer& tiles, const RenderSettings& s) {
 }
 
 // Rank 0: renders bands on a thread of its own while the main thread (the only one calling MPI)
-// answers the workers' reports and copies their bands into the image.
-double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, const ProgressFn& progress) {
+// answers the workers' reports and copies their bands into the image (the time that takes is
+// added to gather). After a signal it hands out nothing more and returns once its own thread
+// stops; the caller then finds the run interrupted.
+double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, const ProgressFn& progress,
+                   const RowsFn& onRows, double& gather) {
     const int bands = tiles.tilesY();
     std::atomic<int> next{0}, finished{0};
     double busy = 0;
@@ -69,6 +78,7 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
         const auto t0 = Clock::now();
         for (int b = next.fetch_add(1); b < bands; b = next.fetch_add(1)) {
             renderBand(tiles, s, b, img, 0);
+            if (onRows && !interrupted()) onRows(img, bandY0(b), bandY1(b, s.height), 0);
             finished.fetch_add(1);
         }
         busy = secondsSince(t0);
@@ -76,7 +86,8 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
     int active = size() - 1;
     std::vector<char> msg;
     auto lastProgress = Clock::now();
-    while (active > 0) {
+    dieIfTestAsks();
+    while (active > 0 && !interrupted()) {
         int ready = 0;
         MPI_Status st;
         MPI_Iprobe(MPI_ANY_SOURCE, kReport, MPI_COMM_WORLD, &ready, &st);
@@ -89,6 +100,7 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
             std::this_thread::sleep_for(std::chrono::microseconds(200));
             continue;
         }
+        const auto received = Clock::now();
         int bytes = 0;
         MPI_Get_count(&st, MPI_BYTE, &bytes);
         msg.resize(size_t(bytes));
@@ -99,15 +111,19 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
             std::memcpy(&img.at(0, bandY0(int(b))), msg.data() + kHeader, size_t(bytes) - kHeader);
             finished.fetch_add(1);
         }
+        gather += secondsSince(received);
         int assign = next.fetch_add(1);
         if (assign >= bands) {
             assign = -1;
             --active;
         }
         MPI_Send(&assign, 1, MPI_INT, st.MPI_SOURCE, kAssign, MPI_COMM_WORLD);
+        // Compressing the band (a plain PNG) comes after the answer: the rank renders meanwhile.
+        if (b >= 0 && onRows) onRows(img, bandY0(int(b)), bandY1(int(b), s.height), 0);
     }
     // The last bands may still be rendering here; progress goes on until they are done.
-    while (finished.load() < bands) {
+    if (interrupted()) next.store(bands);  // the local thread takes no further band
+    while (finished.load() < bands && !interrupted()) {
         if (progress) progress(double(finished.load()) / bands);
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
@@ -118,37 +134,30 @@ double serveAsRoot(TileRenderer& tiles, const RenderSettings& s, ImageF& img, co
 
 }  // namespace
 
-ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSettings& s, TraceStats& stats,
-                         const ProgressFn& progress, bool report) {
+ImageF renderDistributed(const Scene& scene, const Bvh& bvh, const RenderSettings& s, double parseBuildSeconds,
+                         TraceStats& stats, const ProgressFn& progress, const RowsFn& onRows, ShareFigures& share) {
     TileRenderer tiles(scene, bvh, s);
     ImageF img;
-    double busy = 0;
+    RankFigures mine;
+    mine.parseBuild = parseBuildSeconds;
     if (rank() == 0) {
         img = ImageF::uninitialized(s.width, s.height);
-        busy = serveAsRoot(tiles, s, img, progress);
+        mine.busy = serveAsRoot(tiles, s, img, progress, onRows, share.gatherSeconds);
     } else {
-        busy = serveAsWorker(tiles, s);
+        mine.busy = serveAsWorker(tiles, s);
     }
-    // Counters, rays and busy times come together on rank 0 for the summary.
-    const TraceStats mine = tiles.stats();
-    uint64_t counts[3] = {mine.primaryRays, mine.secondaryRays, mine.shadowRays}, sums[3] = {0, 0, 0};
+    throwIfInterrupted();  // the ranks stop without the collectives below: finish() aborts the run
+    // Counters, rays and busy times come together on rank 0 for the summary (the ranks done
+    // first sleep until the last one is).
+    barrierGently();
+    const TraceStats counted = tiles.stats();
+    uint64_t counts[3] = {counted.primaryRays, counted.secondaryRays, counted.shadowRays}, sums[3] = {0, 0, 0};
     MPI_Reduce(counts, sums, 3, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
-    const double perRank[2] = {busy, double(mine.total())};
-    std::vector<double> all(static_cast<size_t>(2 * size()));
-    MPI_Gather(perRank, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    mine.render = mine.busy;
+    mine.rays = double(counted.total());
+    share.ranks = gatherFigures(mine);
     if (rank() != 0) return ImageF{};
     stats.add(TraceStats{sums[0], sums[1], sums[2]});
-    if (report) {
-        double sum = 0, slowest = 0;
-        for (int r = 0; r < size(); ++r) sum += all[size_t(2 * r)], slowest = std::max(slowest, all[size_t(2 * r)]);
-        const double mean = sum / size();
-        std::fprintf(stderr, "rays: mpi: %d ranks, busy s (Mrays/s) per rank:", size());
-        for (int r = 0; r < size(); ++r) {
-            const double b = all[size_t(2 * r)], rays = all[size_t(2 * r + 1)];
-            std::fprintf(stderr, " %.2f (%.2f)", b, b > 0 ? rays / b * 1e-6 : 0.0);
-        }
-        std::fprintf(stderr, "; load balance (slowest / mean) %.2f\n", mean > 0 ? slowest / mean : 1.0);
-    }
     return img;
 }
 

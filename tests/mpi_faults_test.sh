@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# MPI runs that end early (docs/mpi.md "Failures"): a rank that dies without a word (the hidden,
+# test-only RAYS_TEST_MPI_DIE_RANK=R makes rank R kill itself with SIGKILL as it starts its share)
+# fails the run with Rays' own line naming that rank and its host, for a still and an animation;
+# Ctrl-C on the launcher stops every rank. In each case the exit status is non-zero, the file
+# already there stays as it was and no rank is left running.
+# Usage: mpi_faults_test.sh RAYS MPIEXEC SOURCE_DIR
+set -uo pipefail
+rays=$1 mpiexec=$2 src=$3
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI containers run as root
+export OMPI_MCA_btl_vader_single_copy_mechanism=${OMPI_MCA_btl_vader_single_copy_mechanism:-none}
+export OMPI_MCA_mpi_yield_when_idle=${OMPI_MCA_mpi_yield_when_idle:-1}
+# Every launch is bounded: a hang fails the test after 3 minutes instead of holding the suite.
+launch=(timeout -k 10 180 "$mpiexec" -np 3)
+"$mpiexec" --version 2>&1 | grep -qiE "open ?mpi|openrte" && launch+=(--oversubscribe)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+host=$(hostname)
+scene=$src/scenes/01-demo.pov
+
+# left NAME: no process of this test's run (its output path is on the command line) is running.
+left() { pgrep -f "$tmp/$1" >/dev/null; }
+
+# dies NAME RANK ARGS...: rank RANK kills itself; the run must fail with the line naming it. An
+# animation's frames (NAME1.png ...) may be written before the run stops; a still's NAME.png not.
+dies() {
+  local name=$1 r=$2
+  shift 2
+  echo "keep me" >"$tmp/$name.png"
+  if RAYS_TEST_MPI_DIE_RANK=$r "${launch[@]}" "$rays" render "$scene" "$@" --threads 1 -o "$tmp/$name.png" 2>"$tmp/err_$name"; then
+    echo "FAIL $name: exit status 0"; failures=$((failures + 1))
+  elif ! grep -q "^rays: rank $r on $host died (killed by a signal, crashed or out of memory); stopping all 3 ranks\$" "$tmp/err_$name"; then
+    echo "FAIL $name: no line naming rank $r on $host:"; cat "$tmp/err_$name"; failures=$((failures + 1))
+  elif [ "$(grep -c '^rays: rank' "$tmp/err_$name")" != 1 ]; then
+    echo "FAIL $name: not exactly one line naming a rank:"; cat "$tmp/err_$name"; failures=$((failures + 1))
+  elif [ "$(cat "$tmp/$name.png")" != "keep me" ]; then
+    echo "FAIL $name: the existing output was replaced"; failures=$((failures + 1))
+  elif sleep 1 && left "$name"; then
+    echo "FAIL $name: ranks still running"; failures=$((failures + 1))
+  else
+    echo "ok   $name"
+  fi
+}
+
+dies still-rank1 1 320 240
+dies still-rank0 0 320 240
+dies frames-rank2 2 64 48 +KFF6
+
+# Ctrl-C: SIGINT to the launcher during a long render (about a minute of one core's work in all)
+# stops every rank within seconds, exits non-zero and writes nothing.
+echo "keep me" >"$tmp/cc.png"
+"${launch[@]}" "$rays" render "$scene" 1600 1200 --ss 3 --threads 1 -o "$tmp/cc.png" 2>"$tmp/err_cc" &
+pid=$!
+sleep 4
+kill -INT "$pid"
+wait "$pid"
+status=$?
+if [ "$status" = 0 ] || [ "$status" = 124 ] || [ "$status" = 137 ]; then
+  echo "FAIL ctrl-c: exit status $status (0: not stopped; 124/137: hung until the timeout)"; cat "$tmp/err_cc"; failures=$((failures + 1))
+elif [ "$(cat "$tmp/cc.png")" != "keep me" ]; then
+  echo "FAIL ctrl-c: the existing output was replaced"; failures=$((failures + 1))
+elif sleep 1 && left cc.png; then
+  echo "FAIL ctrl-c: ranks still running"; failures=$((failures + 1))
+else
+  echo "ok   ctrl-c"
+fi
+exit $((failures > 0))
