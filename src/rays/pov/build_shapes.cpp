@@ -54,14 +54,14 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             return ShapeBuild::Made;
         }
         case Kw::prism: {
-            // linear_spline and linear_sweep only; the last spline or sweep keyword written counts.
+            // The last spline or sweep keyword written counts.
             Kw spline = Kw::linear_spline, sweep = Kw::linear_sweep;
             for (const Entry* e : terms) {
                 const Kw k = e->kw();
                 if (k == Kw::conic_sweep || k == Kw::linear_sweep) sweep = k;
-                else if (k != Kw::xyz) spline = k;
+                else if (k == Kw::linear_spline || k == Kw::quadratic_spline || k == Kw::cubic_spline || k == Kw::bezier_spline)
+                    spline = k;
             }
-            if (spline != Kw::linear_spline || sweep != Kw::linear_sweep) return ShapeBuild::NotAShape;
             need(3);
             double y0 = toFloat(*a[0]), y1 = toFloat(*a[1]);
             if (y0 > y1) std::swap(y0, y1);
@@ -75,7 +75,14 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             o.r0 = y0;
             o.r1 = y1;
             data = std::make_unique<ShapeData>();
-            return y1 > y0 && makePrism(pts, y0, y1, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+            if (spline == Kw::linear_spline && sweep == Kw::linear_sweep)
+                return y1 > y0 && makePrism(pts, y0, y1, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+            const PrismSpline kind = spline == Kw::quadratic_spline ? PrismSpline::Quadratic
+                                     : spline == Kw::cubic_spline   ? PrismSpline::Cubic
+                                     : spline == Kw::bezier_spline  ? PrismSpline::Bezier
+                                                                    : PrismSpline::Linear;
+            return makeSplinePrism(pts, kind, sweep == Kw::conic_sweep, y0, y1, *data) ? ShapeBuild::Made
+                                                                                         : ShapeBuild::Empty;
         }
         case Kw::lathe: case Kw::sor: {
             // lathe { [SPLINE] N, <x, y>... }, sor { N, <r, h>... }; the last spline keyword written counts.
