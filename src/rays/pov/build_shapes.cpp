@@ -1,10 +1,13 @@
 #include "rays/pov/build_shapes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "rays/error.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/julia_fractal.h"
 #include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/sor.h"
@@ -127,6 +130,42 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             o.type = ShapeType::SphereSweep;
             data = std::make_unique<ShapeData>();
             return makeSphereSweep(centres, radii, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::julia_fractal: {
+            // julia_fractal { <P> [quaternion | hypercomplex] [FUNCTION] [max_iteration N] [precision P]
+            // [slice <N>, D] }; the last keyword of each kind written counts.
+            need(1);
+            JuliaParams q;
+            for (int i = 0; i < 4; ++i) q.p[i] = a[0]->type == sdl::VType::Float ? a[0]->c[0] : i < a[0]->dim ? a[0]->c[size_t(i)] : 0.0;
+            for (const Entry* e : terms) {
+                const Kw k = e->kw();
+                const double x = e->args.empty() ? 0.0 : toFloat(e->args[0]);
+                if (k == Kw::quaternion || k == Kw::hypercomplex) q.hypercomplex = k == Kw::hypercomplex;
+                else if (k == Kw::max_iteration) q.maxIteration = int(std::clamp(x, -1.0, 1e6));
+                else if (k == Kw::precision) q.precision = x;
+                else if (k == Kw::slice && e->args.size() >= 2) {
+                    const Value& n = e->args[0];
+                    for (int i = 0; i < 4; ++i) q.slice[i] = n.type == sdl::VType::Float ? n.c[0] : i < n.dim ? n.c[size_t(i)] : 0.0;
+                    q.distance = toFloat(e->args[1]);
+                    if (q.slice[3] == 0)
+                        throw Error(where + ": error: the julia_fractal's slice needs a non-zero 4th (t) component");
+                } else if (k == Kw::pwr && e->args.size() >= 2) {
+                    q.function = JuliaFunction::Pwr;
+                    q.pwr[0] = x;
+                    q.pwr[1] = toFloat(e->args[1]);
+                } else {
+                    static constexpr Kw kFns[] = {Kw::sqr, Kw::cube, Kw::exp, Kw::reciprocal, Kw::sin, Kw::asin, Kw::sinh,
+                                                  Kw::asinh, Kw::cos, Kw::acos, Kw::cosh, Kw::acosh, Kw::tan, Kw::atan,
+                                                  Kw::tanh, Kw::atanh, Kw::ln};
+                    for (size_t f = 0; f < std::size(kFns); ++f)
+                        if (k == kFns[f]) q.function = JuliaFunction(int(f));
+                }
+            }
+            if (!q.hypercomplex && q.function != JuliaFunction::Sqr && q.function != JuliaFunction::Cube)
+                return ShapeBuild::NotAShape;  // POV-Ray's quaternions have sqr and cube only
+            o.type = ShapeType::JuliaFractal;
+            data = std::make_unique<ShapeData>();
+            return makeJuliaFractal(q, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::disc: {
             need(3);

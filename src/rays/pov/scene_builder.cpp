@@ -19,6 +19,19 @@ namespace {
 
 constexpr int kMaxObjectDepth = 1000;
 
+// The keywords of a julia_fractal's own items (reference's JF_ITEM), read by build_shapes.
+bool isJuliaTerm(Kw k) {
+    switch (k) {
+        case Kw::quaternion: case Kw::hypercomplex: case Kw::sqr: case Kw::cube: case Kw::exp: case Kw::reciprocal:
+        case Kw::sin: case Kw::asin: case Kw::sinh: case Kw::asinh: case Kw::cos: case Kw::acos: case Kw::cosh:
+        case Kw::acosh: case Kw::tan: case Kw::atan: case Kw::tanh: case Kw::atanh: case Kw::ln: case Kw::pwr:
+        case Kw::max_iteration: case Kw::precision: case Kw::slice:
+            return true;
+        default:
+            return false;
+    }
+}
+
 }  // namespace
 
 bool isObjectKind(Kw k) {
@@ -193,6 +206,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (kind == Kw::height_field &&
             (ImageFiles::isImageType(k) || k == Kw::function || k == Kw::smooth || k == Kw::water_level)) {
             terms_.push_back(&e);  // the field's source and modifiers (build_height_field)
+            continue;
+        }
+        if (kind == Kw::julia_fractal && isJuliaTerm(k)) {
+            terms_.push_back(&e);  // the fractal's algebra, function, max_iteration, precision, slice
             continue;
         }
         if ((kind == Kw::union_ || kind == Kw::merge || kind == Kw::light_group || kind == Kw::difference ||

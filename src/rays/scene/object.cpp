@@ -9,6 +9,7 @@
 #include "rays/scene/text_shape.h"
 #include "rays/scene/shapes/blob.h"
 #include "rays/scene/shapes/isosurface.h"
+#include "rays/scene/shapes/julia_fractal.h"
 #include "rays/scene/shapes/disc.h"
 #include "rays/scene/shapes/height_field.h"
 #include "rays/scene/shapes/lathe.h"
@@ -42,6 +43,7 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Isosurface: return "Isosurface";
         case ShapeType::Lathe: return "Lathe";
         case ShapeType::HeightField: return "HeightField";
+        case ShapeType::JuliaFractal: return "JuliaFractal";
         case ShapeType::Sor: return "Sor";
         case ShapeType::SphereSweep: return "SphereSweep";
     }
@@ -241,6 +243,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Lathe: found = hitLathe(o, r, tMin, tMax, h); break;
         case ShapeType::Sor: found = hitSor(o, r, tMin, tMax, h); break;
         case ShapeType::SphereSweep: found = hitSphereSweep(o, r, tMin, tMax, h); break;
+        case ShapeType::JuliaFractal: found = hitJuliaFractal(o, r, tMin, tMax, h); break;
         case ShapeType::HeightField: return hitHeightField(o, r, tMin, tMax, h);  // sets both normals
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
@@ -276,6 +279,7 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Disc: b = discBounds(o); break;
         case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: case ShapeType::Blob:
         case ShapeType::Lathe: case ShapeType::Sor: case ShapeType::SphereSweep: case ShapeType::Isosurface: case ShapeType::HeightField:
+        case ShapeType::JuliaFractal:
             b = o.data->bounds;
             break;
         case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;
