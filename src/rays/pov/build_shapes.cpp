@@ -7,6 +7,7 @@
 #include "rays/error.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/bicubic_patch.h"
 #include "rays/scene/shapes/julia_fractal.h"
 #include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/prism.h"
@@ -27,6 +28,31 @@ std::unique_ptr<ShapeData> polyData(int n, const std::vector<double>& coef) {
 }
 
 }  // namespace
+
+void buildBicubicPatch(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
+                       const std::string& where) {
+    if (a.size() < 16)
+        throw Error(where + ": error: bicubic_patch needs 16 points, found " + std::to_string(a.size()));
+    BicubicPatch p;
+    for (size_t i = 0; i < 16; ++i) p.points[i] = toVec3(*a[i]);
+    for (const Entry* e : terms) {
+        if (e->args.empty()) continue;
+        const double x = toFloat(e->args[0]);
+        switch (e->kw()) {
+            case Kw::flatness: p.flatness = x; break;
+            case Kw::u_steps: p.uSteps = int(std::clamp(x, 0.0, 10.0)); break;
+            case Kw::v_steps: p.vSteps = int(std::clamp(x, 0.0, 10.0)); break;
+            case Kw::uv_vectors:
+                for (size_t i = 0; i < 4 && i < e->args.size(); ++i) {
+                    const Vec3 uv = toVec3(e->args[i]);
+                    p.uv[2 * i] = uv.x, p.uv[2 * i + 1] = uv.y;
+                }
+                break;
+            default: break;  // type 0 and 1 draw the same surface; accuracy is type 0's search tolerance
+        }
+    }
+    tessellateBicubicPatch(p, mesh);
+}
 
 ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
                       std::unique_ptr<ShapeData>& data, const std::string& where) {

@@ -208,8 +208,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             terms_.push_back(&e);  // the field's source and modifiers (build_height_field)
             continue;
         }
-        if (kind == Kw::julia_fractal && isJuliaTerm(k)) {
-            terms_.push_back(&e);  // the fractal's algebra, function, max_iteration, precision, slice
+        if ((kind == Kw::julia_fractal && isJuliaTerm(k)) ||
+            (kind == Kw::bicubic_patch && (k == Kw::type || k == Kw::flatness || k == Kw::u_steps ||
+                                           k == Kw::v_steps || k == Kw::uv_vectors || k == Kw::accuracy))) {
+            terms_.push_back(&e);  // a julia fractal's algebra, function, ...; a bicubic patch's steps and uv
             continue;
         }
         if ((kind == Kw::union_ || kind == Kw::merge || kind == Kw::light_group || kind == Kw::difference ||
@@ -385,6 +387,15 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
                 if (length(o.n0) == 0 || length(o.n1) == 0 || length(o.n2) == 0) o.smooth = false;
                 else o.n0 = normalize(o.n0), o.n1 = normalize(o.n1), o.n2 = normalize(o.n2);
             }
+            break;
+        }
+        case Kw::bicubic_patch: {
+            auto mesh = std::make_unique<Mesh>();
+            buildBicubicPatch(a, terms_, *mesh, notes_.where(at));
+            mesh->finalize();
+            o.type = ShapeType::Mesh;
+            o.mesh = mesh.get();
+            scene_.meshes.push_back(std::move(mesh));
             break;
         }
         case Kw::height_field: {
