@@ -66,6 +66,18 @@ TEST(PovBicubicPatch, NormalsAreTheSurfacesInterpolated) {
     }
 }
 
+TEST(PovBicubicPatch, UvVectorsWithoutCommas) {
+    // portfolio/allobjects.pov writes `uv_vectors <0,0> <1,0> <1,1> <0,1>` before the points.
+    const Scene s = test::buildPov(std::string("bicubic_patch { type 1 u_steps 2 v_steps 2 uv_vectors <0,0> <2,0> <2,2> <0,2> ") +
+                                   kPoints + " }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Hit h = test::shootPov(s, {0.37, 0.61, 10}, {0, 0, -1});
+    ASSERT_TRUE(h.valid());
+    EXPECT_NEAR(10 - h.t, 0.828697917, 2e-6);
+    ASSERT_TRUE(s.objects[0].mesh->hasUVs());
+    EXPECT_FLOAT_EQ(s.objects[0].mesh->uvs[2], 2 * 0.25f);  // the first piece's second corner: s = 1/4
+}
+
 TEST(PovBicubicPatch, CornersLieOnTheBezierSurface) {
     BicubicPatch p;
     for (int j = 0; j < 4; ++j)
