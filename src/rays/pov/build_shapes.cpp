@@ -139,12 +139,10 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             return makeLathe(pts, spline, o, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::sphere_sweep: {
-            // sphere_sweep { SPLINE N, centre, radius, ... }: linear_spline only (b_spline and
-            // cubic_spline stay noted); the last spline keyword written counts.
+            // sphere_sweep { SPLINE N, centre, radius, ... }; the last spline keyword written counts.
             Kw spline = Kw::linear_spline;
             for (const Entry* e : terms)
                 if (e->kw() == Kw::linear_spline || e->kw() == Kw::b_spline || e->kw() == Kw::cubic_spline) spline = e->kw();
-            if (spline != Kw::linear_spline) return ShapeBuild::NotAShape;
             need(1);
             const size_t n = size_t(std::max(0.0, toFloat(*a[0])));
             std::vector<Vec3> centres;
@@ -155,7 +153,9 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             }
             o.type = ShapeType::SphereSweep;
             data = std::make_unique<ShapeData>();
-            return makeSphereSweep(centres, radii, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+            const bool made = spline == Kw::linear_spline ? makeSphereSweep(centres, radii, *data)
+                                                          : makeSplineSphereSweep(centres, radii, spline == Kw::b_spline, *data);
+            return made ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::julia_fractal: {
             // julia_fractal { <P> [quaternion | hypercomplex] [FUNCTION] [max_iteration N] [precision P]
