@@ -10,6 +10,7 @@
 #include "rays/scene/shapes/bicubic_patch.h"
 #include "rays/scene/shapes/julia_fractal.h"
 #include "rays/scene/shapes/lathe.h"
+#include "rays/scene/shapes/ovus.h"
 #include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/sor.h"
 #include "rays/scene/shapes/sphere_sweep.h"
@@ -192,6 +193,15 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             o.type = ShapeType::JuliaFractal;
             data = std::make_unique<ShapeData>();
             return makeJuliaFractal(q, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::ovus: {
+            // ovus { Bottom_radius, Top_radius }
+            need(2);
+            o.type = ShapeType::Ovus;
+            o.r0 = toFloat(*a[0]);
+            o.r1 = toFloat(*a[1]);
+            data = std::make_unique<ShapeData>();
+            return makeOvus(o, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::disc: {
             need(3);
