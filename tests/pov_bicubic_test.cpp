@@ -75,7 +75,7 @@ TEST(PovBicubicPatch, UvVectorsWithoutCommas) {
     ASSERT_TRUE(h.valid());
     EXPECT_NEAR(10 - h.t, 0.828697917, 2e-6);
     ASSERT_TRUE(s.objects[0].mesh->hasUVs());
-    EXPECT_FLOAT_EQ(s.objects[0].mesh->uvs[2], 2 * 0.25f);  // the first piece's second corner: s = 1/4
+    EXPECT_FLOAT_EQ(s.objects[0].mesh->uvs[2], 2 * 0.25f);  // the second grid corner: s = 1/4
 }
 
 TEST(PovBicubicPatch, CornersLieOnTheBezierSurface) {

@@ -392,6 +392,7 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
         case Kw::bicubic_patch: {
             auto mesh = std::make_unique<Mesh>();
             buildBicubicPatch(a, terms_, *mesh, notes_.where(at));
+            countObjects(mesh->triangleCount(), at);
             mesh->finalize();
             o.type = ShapeType::Mesh;
             o.mesh = mesh.get();

@@ -90,20 +90,20 @@ struct PatchOut {
         const double v = (1 - s) * (1 - t) * c[1] + s * (1 - t) * c[3] + s * t * c[5] + (1 - s) * t * c[7];
         mesh.uvs.insert(mesh.uvs.end(), {float(u), float(v)});
     }
-    void piece(double s0, double s1, double t0, double t1) {
-        const uint32_t k = uint32_t(mesh.positions.size() / 3);
-        corner(s0, t0), corner(s1, t0), corner(s1, t1), corner(s0, t1);
-        for (uint32_t i : {k, k + 1, k + 2, k, k + 2, k + 3}) {
-            mesh.indices.push_back(i);
-            mesh.normalIndices.push_back(i);
-            mesh.uvIndices.push_back(i);
-        }
-    }
-    // All pieces of the s × t grid 2^sLevel × 2^tLevel.
+    // All pieces of the s × t grid 2^sLevel × 2^tLevel, sharing their corners.
     void grid(int sLevel, int tLevel) {
-        const int ns = 1 << sLevel, nt = 1 << tLevel;
-        for (int j = 0; j < nt; ++j)
-            for (int i = 0; i < ns; ++i) piece(double(i) / ns, double(i + 1) / ns, double(j) / nt, double(j + 1) / nt);
+        const uint32_t ns = 1u << sLevel, nt = 1u << tLevel;
+        for (uint32_t j = 0; j <= nt; ++j)
+            for (uint32_t i = 0; i <= ns; ++i) corner(double(i) / ns, double(j) / nt);
+        for (uint32_t j = 0; j < nt; ++j)
+            for (uint32_t i = 0; i < ns; ++i) {
+                const uint32_t k = j * (ns + 1) + i, up = k + ns + 1;  // (s0, t0), its (s0, t1)
+                for (uint32_t v : {k, k + 1, up + 1, k, up + 1, up}) {
+                    mesh.indices.push_back(v);
+                    mesh.normalIndices.push_back(v);
+                    mesh.uvIndices.push_back(v);
+                }
+            }
     }
     // Whether every piece of that grid is flat within `flatness`.
     bool flatAt(int sLevel, int tLevel) const {
