@@ -11,6 +11,8 @@
 #include "rays/scene/shapes/julia_fractal.h"
 #include "rays/scene/shapes/lathe.h"
 #include "rays/scene/shapes/ovus.h"
+#include "rays/scene/shapes/parametric.h"
+#include "rays/sdl/function_value.h"
 #include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/sor.h"
 #include "rays/scene/shapes/sphere_sweep.h"
@@ -53,6 +55,39 @@ void buildBicubicPatch(const std::vector<const Value*>& a, const std::vector<con
         }
     }
     tessellateBicubicPatch(p, mesh);
+}
+
+ShapeBuild buildParametric(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
+                           const std::string& where) {
+    ParametricSpec spec;
+    int functions = 0;
+    for (const Entry* e : terms) {
+        if (e->args.empty()) continue;
+        if (e->kw() == Kw::function && e->args[0].type == sdl::VType::Function) {
+            const sdl::FunctionValue& f = e->args[0].fn();
+            if (functions >= 3) continue;
+            if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0) return ShapeBuild::NotAShape;
+            for (const fn::HostFunction& h : f.table->program(f.index).hosts)
+                if (sdl::isPatternStub(h)) return ShapeBuild::NotAShape;  // runs only while parsing
+            spec.f[functions++] = f.table->shared(f.index);
+        } else if (e->kw() == Kw::contained_by && e->args[0].type == sdl::VType::Item) {
+            for (const Entry& c : e->args[0].item().entries) {
+                if (c.args.empty() || c.args[0].type != sdl::VType::Item) continue;
+                const Item& shape = c.args[0].item();
+                const std::vector<const Value*> v = positionals(shape);
+                if (v.size() < 2) continue;
+                spec.sphere = shape.kind == Kw::sphere;
+                if (spec.sphere) spec.centre = toVec3(*v[0]), spec.radius = toFloat(*v[1]);
+                else spec.lo = vmin(toVec3(*v[0]), toVec3(*v[1])), spec.hi = vmax(toVec3(*v[0]), toVec3(*v[1]));
+            }
+        }
+    }
+    if (functions < 3 || a.size() < 2)
+        throw Error(where + ": error: parametric needs three functions and the corners <u1, v1>, <u2, v2>");
+    const Vec3 c1 = toVec3(*a[0]), c2 = toVec3(*a[1]);
+    spec.u1 = c1.x, spec.v1 = c1.y, spec.u2 = c2.x, spec.v2 = c2.y;
+    tessellateParametric(spec, mesh);
+    return mesh.indices.empty() ? ShapeBuild::Empty : ShapeBuild::Made;
 }
 
 ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,

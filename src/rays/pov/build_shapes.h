@@ -25,6 +25,12 @@ enum class ShapeBuild { NotAShape, Empty, Made };
 void buildBicubicPatch(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
                        const std::string& where);
 
+/// A parametric's triangles into mesh (not finalized) from its three functions, its (u, v) corners
+/// and its contained_by entry. NotAShape when a function is not a float function of the machine
+/// (a pattern or pigment function: noted); throws Error prefixed by `where` when parts are missing.
+ShapeBuild buildParametric(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
+                           const std::string& where);
+
 ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
                       std::unique_ptr<ShapeData>& data, const std::string& where);
 

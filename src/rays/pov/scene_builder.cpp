@@ -210,7 +210,8 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         }
         if ((kind == Kw::julia_fractal && isJuliaTerm(k)) ||
             (kind == Kw::bicubic_patch && (k == Kw::type || k == Kw::flatness || k == Kw::u_steps ||
-                                           k == Kw::v_steps || k == Kw::uv_vectors || k == Kw::accuracy))) {
+                                           k == Kw::v_steps || k == Kw::uv_vectors || k == Kw::accuracy)) ||
+            (kind == Kw::parametric && (k == Kw::function || k == Kw::contained_by))) {
             terms_.push_back(&e);  // a julia fractal's algebra, function, ...; a bicubic patch's steps and uv
             continue;
         }
@@ -387,6 +388,18 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
                 if (length(o.n0) == 0 || length(o.n1) == 0 || length(o.n2) == 0) o.smooth = false;
                 else o.n0 = normalize(o.n0), o.n1 = normalize(o.n1), o.n2 = normalize(o.n2);
             }
+            break;
+        }
+        case Kw::parametric: {
+            auto mesh = std::make_unique<Mesh>();
+            const ShapeBuild made = buildParametric(a, terms_, *mesh, notes_.where(at));
+            if (made == ShapeBuild::NotAShape) notes_.note("parametric function calling a pattern or pigment function", at, "(left out)");
+            if (made != ShapeBuild::Made) return;
+            countObjects(mesh->triangleCount(), at);
+            mesh->finalize();
+            o.type = ShapeType::Mesh;
+            o.mesh = mesh.get();
+            scene_.meshes.push_back(std::move(mesh));
             break;
         }
         case Kw::bicubic_patch: {
