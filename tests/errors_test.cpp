@@ -358,9 +358,9 @@ std::vector<BadInput> catalogue() {
                  "scene.pov:2:12: error: macro calls nested deeper than 10000 (runaway recursion?) (in macro R called at "
                  "scene.pov:2:12; in macro R called at scene.pov:2:12; in macro R called at scene.pov:2:12; in macro R called "
                  "at scene.pov:2:12; ... 9994 more; in macro R called at scene.pov:2:12; in macro R called at scene.pov:3:1)"});
-    t.push_back({"pov-not-rendered", {{"scene.pov", pov + povScene + "julia_fractal { <0, 0, 0, 0> }\nsphere { 0, 1 }\n"}}, render(), 0,
+    t.push_back({"pov-not-rendered", {{"scene.pov", pov + povScene + "julia_fractal { <0, 0, 0, 0> exp }\nsphere { 0, 1 }\n"}}, render(), 0,
                  "scene.pov:4:1: warning: not rendered yet: julia_fractal (left out)"});
-    t.push_back({"pov-strict", {{"scene.pov", pov + povScene + "julia_fractal { <0, 0, 0, 0> }\nsphere { 0, 1 }\n"}},
+    t.push_back({"pov-strict", {{"scene.pov", pov + povScene + "julia_fractal { <0, 0, 0, 0> exp }\nsphere { 0, 1 }\n"}},
                  {"render", "scene.pov", "16", "12", "-o", "out.png", "-q", "--strict"}, 2,
                  "scene.pov:4:1: error: not rendered yet: julia_fractal (--strict)"});
     // ---- issue 27: every form of the command line within the same limits ----

@@ -256,7 +256,7 @@ TEST(PovGlobals, AssumedGammaDefaultsByVersion) {
 TEST(PovNotes, UnrenderedFeaturesWarnOnceEachOrFailWithStrict) {
     const std::string text =
         "#declare Unused = isosurface { function { x } }\n"  // declared, never used: no note
-        "julia_fractal { <0, 0, 0, 0> }\njulia_fractal { <0, 0, 1, 0> }\n"
+        "julia_fractal { <0, 0, 0, 0> exp }\njulia_fractal { <0, 0, 1, 0> exp }\n"  // quaternion exp
         "sphere { 0, 1 pigment { cells color_map { [0 rgb 0] [1 rgb 1] } } }\n";
     const Built b = build(text);
     ASSERT_EQ(b.error, "");

@@ -1,11 +1,18 @@
 #include "rays/pov/build_shapes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "rays/error.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
+#include "rays/scene/shapes/bicubic_patch.h"
+#include "rays/scene/shapes/julia_fractal.h"
 #include "rays/scene/shapes/lathe.h"
+#include "rays/scene/shapes/ovus.h"
+#include "rays/scene/shapes/parametric.h"
+#include "rays/sdl/function_value.h"
 #include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/sor.h"
 #include "rays/scene/shapes/sphere_sweep.h"
@@ -24,6 +31,64 @@ std::unique_ptr<ShapeData> polyData(int n, const std::vector<double>& coef) {
 }
 
 }  // namespace
+
+void buildBicubicPatch(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
+                       const std::string& where) {
+    if (a.size() < 16)
+        throw Error(where + ": error: bicubic_patch needs 16 points, found " + std::to_string(a.size()));
+    BicubicPatch p;
+    for (size_t i = 0; i < 16; ++i) p.points[i] = toVec3(*a[i]);
+    for (const Entry* e : terms) {
+        if (e->args.empty()) continue;
+        const double x = toFloat(e->args[0]);
+        switch (e->kw()) {
+            case Kw::flatness: p.flatness = x; break;
+            case Kw::u_steps: p.uSteps = int(std::clamp(x, 0.0, 10.0)); break;
+            case Kw::v_steps: p.vSteps = int(std::clamp(x, 0.0, 10.0)); break;
+            case Kw::uv_vectors:
+                for (size_t i = 0; i < 4 && i < e->args.size(); ++i) {
+                    const Vec3 uv = toVec3(e->args[i]);
+                    p.uv[2 * i] = uv.x, p.uv[2 * i + 1] = uv.y;
+                }
+                break;
+            default: break;  // type 0 and 1 draw the same surface; accuracy is type 0's search tolerance
+        }
+    }
+    tessellateBicubicPatch(p, mesh);
+}
+
+ShapeBuild buildParametric(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
+                           const std::string& where) {
+    ParametricSpec spec;
+    int functions = 0;
+    for (const Entry* e : terms) {
+        if (e->args.empty()) continue;
+        if (e->kw() == Kw::function && e->args[0].type == sdl::VType::Function) {
+            const sdl::FunctionValue& f = e->args[0].fn();
+            if (functions >= 3) continue;
+            if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0) return ShapeBuild::NotAShape;
+            for (const fn::HostFunction& h : f.table->program(f.index).hosts)
+                if (sdl::isPatternStub(h)) return ShapeBuild::NotAShape;  // runs only while parsing
+            spec.f[functions++] = f.table->shared(f.index);
+        } else if (e->kw() == Kw::contained_by && e->args[0].type == sdl::VType::Item) {
+            for (const Entry& c : e->args[0].item().entries) {
+                if (c.args.empty() || c.args[0].type != sdl::VType::Item) continue;
+                const Item& shape = c.args[0].item();
+                const std::vector<const Value*> v = positionals(shape);
+                if (v.size() < 2) continue;
+                spec.sphere = shape.kind == Kw::sphere;
+                if (spec.sphere) spec.centre = toVec3(*v[0]), spec.radius = toFloat(*v[1]);
+                else spec.lo = vmin(toVec3(*v[0]), toVec3(*v[1])), spec.hi = vmax(toVec3(*v[0]), toVec3(*v[1]));
+            }
+        }
+    }
+    if (functions < 3 || a.size() < 2)
+        throw Error(where + ": error: parametric needs three functions and the corners <u1, v1>, <u2, v2>");
+    const Vec3 c1 = toVec3(*a[0]), c2 = toVec3(*a[1]);
+    spec.u1 = c1.x, spec.v1 = c1.y, spec.u2 = c2.x, spec.v2 = c2.y;
+    tessellateParametric(spec, mesh);
+    return mesh.indices.empty() ? ShapeBuild::Empty : ShapeBuild::Made;
+}
 
 ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
                       std::unique_ptr<ShapeData>& data, const std::string& where) {
@@ -54,14 +119,14 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             return ShapeBuild::Made;
         }
         case Kw::prism: {
-            // linear_spline and linear_sweep only; the last spline or sweep keyword written counts.
+            // The last spline or sweep keyword written counts.
             Kw spline = Kw::linear_spline, sweep = Kw::linear_sweep;
             for (const Entry* e : terms) {
                 const Kw k = e->kw();
                 if (k == Kw::conic_sweep || k == Kw::linear_sweep) sweep = k;
-                else if (k != Kw::xyz) spline = k;
+                else if (k == Kw::linear_spline || k == Kw::quadratic_spline || k == Kw::cubic_spline || k == Kw::bezier_spline)
+                    spline = k;
             }
-            if (spline != Kw::linear_spline || sweep != Kw::linear_sweep) return ShapeBuild::NotAShape;
             need(3);
             double y0 = toFloat(*a[0]), y1 = toFloat(*a[1]);
             if (y0 > y1) std::swap(y0, y1);
@@ -75,7 +140,14 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             o.r0 = y0;
             o.r1 = y1;
             data = std::make_unique<ShapeData>();
-            return y1 > y0 && makePrism(pts, y0, y1, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+            if (spline == Kw::linear_spline && sweep == Kw::linear_sweep)
+                return y1 > y0 && makePrism(pts, y0, y1, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+            const PrismSpline kind = spline == Kw::quadratic_spline ? PrismSpline::Quadratic
+                                     : spline == Kw::cubic_spline   ? PrismSpline::Cubic
+                                     : spline == Kw::bezier_spline  ? PrismSpline::Bezier
+                                                                    : PrismSpline::Linear;
+            return makeSplinePrism(pts, kind, sweep == Kw::conic_sweep, y0, y1, *data) ? ShapeBuild::Made
+                                                                                         : ShapeBuild::Empty;
         }
         case Kw::lathe: case Kw::sor: {
             // lathe { [SPLINE] N, <x, y>... }, sor { N, <r, h>... }; the last spline keyword written counts.
@@ -103,12 +175,10 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             return makeLathe(pts, spline, o, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::sphere_sweep: {
-            // sphere_sweep { SPLINE N, centre, radius, ... }: linear_spline only (b_spline and
-            // cubic_spline stay noted); the last spline keyword written counts.
+            // sphere_sweep { SPLINE N, centre, radius, ... }; the last spline keyword written counts.
             Kw spline = Kw::linear_spline;
             for (const Entry* e : terms)
                 if (e->kw() == Kw::linear_spline || e->kw() == Kw::b_spline || e->kw() == Kw::cubic_spline) spline = e->kw();
-            if (spline != Kw::linear_spline) return ShapeBuild::NotAShape;
             need(1);
             const size_t n = size_t(std::max(0.0, toFloat(*a[0])));
             std::vector<Vec3> centres;
@@ -119,7 +189,54 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             }
             o.type = ShapeType::SphereSweep;
             data = std::make_unique<ShapeData>();
-            return makeSphereSweep(centres, radii, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+            const bool made = spline == Kw::linear_spline ? makeSphereSweep(centres, radii, *data)
+                                                          : makeSplineSphereSweep(centres, radii, spline == Kw::b_spline, *data);
+            return made ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::julia_fractal: {
+            // julia_fractal { <P> [quaternion | hypercomplex] [FUNCTION] [max_iteration N] [precision P]
+            // [slice <N>, D] }; the last keyword of each kind written counts.
+            need(1);
+            JuliaParams q;
+            for (int i = 0; i < 4; ++i) q.p[i] = a[0]->type == sdl::VType::Float ? a[0]->c[0] : i < a[0]->dim ? a[0]->c[size_t(i)] : 0.0;
+            for (const Entry* e : terms) {
+                const Kw k = e->kw();
+                const double x = e->args.empty() ? 0.0 : toFloat(e->args[0]);
+                if (k == Kw::quaternion || k == Kw::hypercomplex) q.hypercomplex = k == Kw::hypercomplex;
+                else if (k == Kw::max_iteration) q.maxIteration = int(std::clamp(x, -1.0, 1e6));
+                else if (k == Kw::precision) q.precision = x;
+                else if (k == Kw::slice && e->args.size() >= 2) {
+                    const Value& n = e->args[0];
+                    for (int i = 0; i < 4; ++i) q.slice[i] = n.type == sdl::VType::Float ? n.c[0] : i < n.dim ? n.c[size_t(i)] : 0.0;
+                    q.distance = toFloat(e->args[1]);
+                    if (q.slice[3] == 0)
+                        throw Error(where + ": error: the julia_fractal's slice needs a non-zero 4th (t) component");
+                } else if (k == Kw::pwr && e->args.size() >= 2) {
+                    q.function = JuliaFunction::Pwr;
+                    q.pwr[0] = x;
+                    q.pwr[1] = toFloat(e->args[1]);
+                } else {
+                    static constexpr Kw kFns[] = {Kw::sqr, Kw::cube, Kw::exp, Kw::reciprocal, Kw::sin, Kw::asin, Kw::sinh,
+                                                  Kw::asinh, Kw::cos, Kw::acos, Kw::cosh, Kw::acosh, Kw::tan, Kw::atan,
+                                                  Kw::tanh, Kw::atanh, Kw::ln};
+                    for (size_t f = 0; f < std::size(kFns); ++f)
+                        if (k == kFns[f]) q.function = JuliaFunction(int(f));
+                }
+            }
+            if (!q.hypercomplex && q.function != JuliaFunction::Sqr && q.function != JuliaFunction::Cube)
+                return ShapeBuild::NotAShape;  // POV-Ray's quaternions have sqr and cube only
+            o.type = ShapeType::JuliaFractal;
+            data = std::make_unique<ShapeData>();
+            return makeJuliaFractal(q, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+        }
+        case Kw::ovus: {
+            // ovus { Bottom_radius, Top_radius }
+            need(2);
+            o.type = ShapeType::Ovus;
+            o.r0 = toFloat(*a[0]);
+            o.r1 = toFloat(*a[1]);
+            data = std::make_unique<ShapeData>();
+            return makeOvus(o, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::disc: {
             need(3);

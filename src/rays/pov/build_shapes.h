@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rays/pov/item_values.h"
+#include "rays/scene/mesh.h"
 #include "rays/scene/object.h"
 #include "rays/scene/shapes/shape_data.h"
 
@@ -19,6 +20,17 @@ enum class ShapeBuild { NotAShape, Empty, Made };
 /// values a and, for polynomial, its xyz entries. NotAShape: kind is not one of these shapes;
 /// Empty: the shape has nothing to draw (a zero radius, points on a line). Throws Error prefixed
 /// by `where` (FILE:LINE:COL) for values the reference forbids.
+/// A bicubic_patch's triangles into mesh (not finalized) from its 16 points and its type, flatness,
+/// u_steps, v_steps and uv_vectors entries. Throws Error prefixed by `where` when points are missing.
+void buildBicubicPatch(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
+                       const std::string& where);
+
+/// A parametric's triangles into mesh (not finalized) from its three functions, its (u, v) corners
+/// and its contained_by entry. NotAShape when a function is not a float function of the machine
+/// (a pattern or pigment function: noted); throws Error prefixed by `where` when parts are missing.
+ShapeBuild buildParametric(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
+                           const std::string& where);
+
 ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
                       std::unique_ptr<ShapeData>& data, const std::string& where);
 

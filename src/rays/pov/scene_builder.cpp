@@ -19,6 +19,19 @@ namespace {
 
 constexpr int kMaxObjectDepth = 1000;
 
+// The keywords of a julia_fractal's own items (reference's JF_ITEM), read by build_shapes.
+bool isJuliaTerm(Kw k) {
+    switch (k) {
+        case Kw::quaternion: case Kw::hypercomplex: case Kw::sqr: case Kw::cube: case Kw::exp: case Kw::reciprocal:
+        case Kw::sin: case Kw::asin: case Kw::sinh: case Kw::asinh: case Kw::cos: case Kw::acos: case Kw::cosh:
+        case Kw::acosh: case Kw::tan: case Kw::atan: case Kw::tanh: case Kw::atanh: case Kw::ln: case Kw::pwr:
+        case Kw::max_iteration: case Kw::precision: case Kw::slice:
+            return true;
+        default:
+            return false;
+    }
+}
+
 }  // namespace
 
 bool isObjectKind(Kw k) {
@@ -202,6 +215,13 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             terms_.push_back(&e);  // the field's source and modifiers (build_height_field)
             continue;
         }
+        if ((kind == Kw::julia_fractal && isJuliaTerm(k)) ||
+            (kind == Kw::bicubic_patch && (k == Kw::type || k == Kw::flatness || k == Kw::u_steps ||
+                                           k == Kw::v_steps || k == Kw::uv_vectors || k == Kw::accuracy)) ||
+            (kind == Kw::parametric && (k == Kw::function || k == Kw::contained_by))) {
+            terms_.push_back(&e);  // a julia fractal's algebra, function, ...; a bicubic patch's steps and uv
+            continue;
+        }
         if ((kind == Kw::union_ || kind == Kw::merge || kind == Kw::light_group || kind == Kw::difference ||
              kind == Kw::intersection) && isObjectKind(k)) {
             children.push_back(&e.args[0].item());
@@ -382,6 +402,28 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
                 if (length(o.n0) == 0 || length(o.n1) == 0 || length(o.n2) == 0) o.smooth = false;
                 else o.n0 = normalize(o.n0), o.n1 = normalize(o.n1), o.n2 = normalize(o.n2);
             }
+            break;
+        }
+        case Kw::parametric: {
+            auto mesh = std::make_unique<Mesh>();
+            const ShapeBuild made = buildParametric(a, terms_, *mesh, notes_.where(at));
+            if (made == ShapeBuild::NotAShape) notes_.note("parametric function calling a pattern or pigment function", at, "(left out)");
+            if (made != ShapeBuild::Made) return;
+            countObjects(mesh->triangleCount(), at);
+            mesh->finalize();
+            o.type = ShapeType::Mesh;
+            o.mesh = mesh.get();
+            scene_.meshes.push_back(std::move(mesh));
+            break;
+        }
+        case Kw::bicubic_patch: {
+            auto mesh = std::make_unique<Mesh>();
+            buildBicubicPatch(a, terms_, *mesh, notes_.where(at));
+            countObjects(mesh->triangleCount(), at);
+            mesh->finalize();
+            o.type = ShapeType::Mesh;
+            o.mesh = mesh.get();
+            scene_.meshes.push_back(std::move(mesh));
             break;
         }
         case Kw::height_field: {

@@ -31,6 +31,15 @@ void readPwr(Interpreter& in, Entry& e) {
     in.expectSym(')', "to close pwr(...)");
 }
 
+// bicubic_patch's uv_vectors: four 2-D vectors, the commas between them optional (POV-Ray's
+// portfolio/allobjects.pov writes none).
+void readPatchUv(Interpreter& in, Entry& e) {
+    for (int i = 0; i < 4; ++i) {
+        if (i) in.acceptSym(',');
+        e.args.push_back(in.parseNumeric(false));
+    }
+}
+
 // parametric's precompute DEPTH, x, y, z (any of the three names).
 void readPrecompute(Interpreter& in, Entry& e) {
     e.args.push_back(Value::number(in.parseFloat()));
@@ -95,7 +104,7 @@ void Specs::buildObjects() {
                                number(Kw::tolerance)};
     sphereSweep = makeSpec("a sphere_sweep", Kw::sphere_sweep, {&sweepRules, &mods}, true);
     const RuleGroup patchRules{number(Kw::type), number(Kw::flatness), number(Kw::u_steps), number(Kw::v_steps),
-                               number(Kw::accuracy), list(Kw::uv_vectors, 4)};
+                               number(Kw::accuracy), custom(Kw::uv_vectors, readPatchUv)};
     bicubicPatch = makeSpec("a bicubic_patch", Kw::bicubic_patch, {&patchRules, &mods}, true);
     ovus = makeSpec("an ovus", Kw::ovus, {&mods}, true);
     const RuleGroup isoRules{function(Kw::function), sub(Kw::contained_by, containedBy), number(Kw::threshold),

@@ -7,7 +7,9 @@
 #include "rays/scene/shapes/blob.h"
 #include "rays/scene/shapes/height_field.h"
 #include "rays/scene/shapes/isosurface.h"
+#include "rays/scene/shapes/julia_fractal.h"
 #include "rays/scene/shapes/lathe.h"
+#include "rays/scene/shapes/ovus.h"
 #include "rays/scene/shapes/poly.h"
 #include "rays/scene/shapes/prism.h"
 #include "rays/scene/shapes/sor.h"
@@ -219,6 +221,8 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::Sor: return insideSor(o, p);
         case ShapeType::SphereSweep: return insideSphereSweep(o, p);
         case ShapeType::HeightField: return insideHeightField(o, p);
+        case ShapeType::JuliaFractal: return insideJuliaFractal(o, p);
+        case ShapeType::Ovus: return insideOvus(o, p);
         case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Disc: case ShapeType::Polygon: return -1;
     }
     return -1;

@@ -9,9 +9,11 @@
 #include "rays/scene/text_shape.h"
 #include "rays/scene/shapes/blob.h"
 #include "rays/scene/shapes/isosurface.h"
+#include "rays/scene/shapes/julia_fractal.h"
 #include "rays/scene/shapes/disc.h"
 #include "rays/scene/shapes/height_field.h"
 #include "rays/scene/shapes/lathe.h"
+#include "rays/scene/shapes/ovus.h"
 #include "rays/scene/shapes/polygon.h"
 #include "rays/scene/shapes/poly.h"
 #include "rays/scene/shapes/prism.h"
@@ -42,6 +44,8 @@ std::string_view shapeName(ShapeType t) {
         case ShapeType::Isosurface: return "Isosurface";
         case ShapeType::Lathe: return "Lathe";
         case ShapeType::HeightField: return "HeightField";
+        case ShapeType::JuliaFractal: return "JuliaFractal";
+        case ShapeType::Ovus: return "Ovus";
         case ShapeType::Sor: return "Sor";
         case ShapeType::SphereSweep: return "SphereSweep";
     }
@@ -241,6 +245,8 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Lathe: found = hitLathe(o, r, tMin, tMax, h); break;
         case ShapeType::Sor: found = hitSor(o, r, tMin, tMax, h); break;
         case ShapeType::SphereSweep: found = hitSphereSweep(o, r, tMin, tMax, h); break;
+        case ShapeType::JuliaFractal: found = hitJuliaFractal(o, r, tMin, tMax, h); break;
+        case ShapeType::Ovus: found = hitOvus(o, r, tMin, tMax, h); break;
         case ShapeType::HeightField: return hitHeightField(o, r, tMin, tMax, h);  // sets both normals
         case ShapeType::Csg: return intersectCsg(*o.csg, r, tMin, tMax, &h);  // world space (not localSpace)
     }
@@ -276,6 +282,7 @@ Bounds localBounds(const Object& o) {
         case ShapeType::Disc: b = discBounds(o); break;
         case ShapeType::Polygon: case ShapeType::Poly: case ShapeType::Prism: case ShapeType::Blob:
         case ShapeType::Lathe: case ShapeType::Sor: case ShapeType::SphereSweep: case ShapeType::Isosurface: case ShapeType::HeightField:
+        case ShapeType::JuliaFractal: case ShapeType::Ovus:
             b = o.data->bounds;
             break;
         case ShapeType::Superellipsoid: b = Bounds{Vec3(-1), Vec3(1)}; break;

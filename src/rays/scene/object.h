@@ -10,7 +10,7 @@
 namespace rays {
 
 enum class ShapeType : unsigned char { Sphere, Plane, Triangle, Box, Cone, Mesh, Csg, Text,
-    Torus, Disc, Polygon, Poly, Superellipsoid, Prism, Blob, Lathe, Sor, SphereSweep, Isosurface, HeightField };  // scene/shapes/*.h
+    Torus, Disc, Polygon, Poly, Superellipsoid, Prism, Blob, Lathe, Sor, SphereSweep, Isosurface, HeightField, JuliaFractal, Ovus };  // scene/shapes/*.h
 
 struct Mesh;
 struct Csg;
@@ -38,7 +38,7 @@ struct Object {
     const Mesh* mesh = nullptr;  ///< Mesh only: the geometry (owned by the Scene)
     const Csg* csg = nullptr;    ///< Csg only: the tree (owned by the Scene)
     const TextShape* text = nullptr;  ///< Text only: the glyph outlines, in object space (owned by the Scene)
-    const ShapeData* data = nullptr;  ///< Polygon, Poly, Prism, Blob, Lathe, Sor, SphereSweep, Isosurface, HeightField: their numbers (owned by the Scene)
+    const ShapeData* data = nullptr;  ///< Polygon, Poly, Prism, Blob, Lathe, Sor, SphereSweep, Isosurface, HeightField, JuliaFractal, Ovus: their numbers (owned by the Scene)
     Material material;
     bool transformed = false;  ///< a transform was written (the course prints the object-space ray)
     bool localSpace = false;   ///< rays are mapped through toObject before intersecting

@@ -23,6 +23,7 @@ struct BoxNode {
 struct ShapeData {
     std::vector<double> values;  ///< the shape's numbers (each shape's header says their layout)
     int order = 0;               ///< Poly only: the polynomial's degree
+    bool conic = false;          ///< Prism only: conic_sweep (the outline scaled by the height)
     Bounds bounds;               ///< object-space bounds (empty: unbounded)
     std::vector<BoxNode> tree;   ///< Blob only: its components' box tree (root first)
     std::vector<Object> parts;   ///< Blob only: copies of the object with a component's texture (ShapeHit::part)

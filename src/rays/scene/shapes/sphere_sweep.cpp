@@ -129,6 +129,35 @@ bool makeSphereSweep(const std::vector<Vec3>& c, const std::vector<double>& rad,
     return !data.values.empty() && !data.bounds.empty() && data.bounds.extent().x + data.bounds.extent().y > 0;
 }
 
+bool makeSplineSphereSweep(const std::vector<Vec3>& c, const std::vector<double>& rad, bool bSpline, ShapeData& data) {
+    const size_t n = std::min(c.size(), rad.size());
+    if (n < 4) return false;
+    std::vector<Vec3> centres;
+    std::vector<double> radii;
+    // Basis weights of P(i) ... P(i+3) at parameter u of a segment.
+    auto weights = [&](double u, double w[4]) {
+        const double u2 = u * u, u3 = u2 * u, m = 1 - u;
+        if (bSpline) {
+            w[0] = m * m * m / 6, w[1] = (3 * u3 - 6 * u2 + 4) / 6, w[2] = (-3 * u3 + 3 * u2 + 3 * u + 1) / 6, w[3] = u3 / 6;
+        } else {  // Catmull-Rom
+            w[0] = 0.5 * (-u3 + 2 * u2 - u), w[1] = 0.5 * (3 * u3 - 5 * u2 + 2), w[2] = 0.5 * (-3 * u3 + 4 * u2 + u),
+            w[3] = 0.5 * (u3 - u2);
+        }
+    };
+    for (size_t i = 0; i + 3 < n; ++i)
+        for (int k = 0; k <= kSplineSweepSamples; ++k) {
+            if (k == 0 && i > 0) continue;  // the previous segment's end
+            double w[4];
+            weights(double(k) / kSplineSweepSamples, w);
+            Vec3 p;
+            double r = 0;
+            for (int j = 0; j < 4; ++j) p += w[j] * c[i + size_t(j)], r += w[j] * rad[i + size_t(j)];
+            centres.push_back(p);
+            radii.push_back(r);
+        }
+    return makeSphereSweep(centres, radii, data);
+}
+
 bool hitSphereSweep(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     const std::vector<double>& v = o.data->values;
     const double eps = 1e-9 * (1 + length(o.data->bounds.extent()));

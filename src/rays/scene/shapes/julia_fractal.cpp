@@ -1,0 +1,258 @@
+// Quaternion products (Hamilton): (a, v)(b, w) = (ab − v·w, aw + bv + v × w). Hypercomplex numbers
+// a + bi + cj + dk (ij = ji = k, i² = j² = −1, k² = 1) are commutative and split into two complex
+// numbers, w1 = (a − d) + (b + c)i and w2 = (a + d) + (b − c)i, on which any complex function acts
+// one by one (the reference's functions are defined on the hypercomplex numbers this way); the
+// 4-D norm is then |h|² = (|w1|² + |w2|²) / 2.
+#include "rays/scene/shapes/julia_fractal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+namespace rays {
+
+namespace {
+
+using Cx = std::complex<double>;
+
+enum JuliaSlot { kJuliaP = 0, kJuliaN = 4, kJuliaD = 8, kJuliaIter, kJuliaStep, kJuliaR2, kJuliaAlgebra, kJuliaFn, kJuliaPwr,
+                 kJuliaSlots = kJuliaPwr + 2 };
+
+struct Quat {
+    double a, b, c, d;
+};
+
+Quat qmul(const Quat& x, const Quat& y) {
+    return {x.a * y.a - x.b * y.b - x.c * y.c - x.d * y.d, x.a * y.b + x.b * y.a + x.c * y.d - x.d * y.c,
+            x.a * y.c - x.b * y.d + x.c * y.a + x.d * y.b, x.a * y.d + x.b * y.c - x.c * y.b + x.d * y.a};
+}
+
+double qnorm2(const Quat& x) { return x.a * x.a + x.b * x.b + x.c * x.c + x.d * x.d; }
+
+Cx juliaComplex(JuliaFunction f, Cx w, const double* pw) {
+    switch (f) {
+        case JuliaFunction::Sqr: case JuliaFunction::Cube: return w * w;  // POV-Ray's hypercomplex cube squares (measured)
+        case JuliaFunction::Exp: return std::exp(w);
+        case JuliaFunction::Reciprocal: return 1.0 / w;
+        case JuliaFunction::Sin: return std::sin(w);
+        case JuliaFunction::Asin: return std::asin(w);
+        case JuliaFunction::Sinh: return std::sinh(w);
+        case JuliaFunction::Asinh: return std::asinh(w);
+        case JuliaFunction::Cos: return std::cos(w);
+        case JuliaFunction::Acos: return std::acos(w);
+        case JuliaFunction::Cosh: return std::cosh(w);
+        case JuliaFunction::Acosh: return std::acosh(w);
+        case JuliaFunction::Tan: return std::tan(w);
+        case JuliaFunction::Atan: return std::atan(w);
+        case JuliaFunction::Tanh: return std::tanh(w);
+        case JuliaFunction::Atanh: return std::atanh(w);
+        case JuliaFunction::Ln: return std::log(w);
+        case JuliaFunction::Pwr: return std::pow(w, Cx(pw[0], pw[1]));
+    }
+    return w;
+}
+
+// h(0) of the object-space point: t from the slice n·h = d.
+Quat juliaStart(const double* v, Vec3 p) {
+    const double* n = v + kJuliaN;
+    return {p.x, p.y, p.z, (v[kJuliaD] - n[0] * p.x - n[1] * p.y - n[2] * p.z) / n[3]};
+}
+
+// f'(w) of the complex function (for the normal).
+Cx juliaSlope(JuliaFunction f, Cx w, const double* pw) {
+    const Cx one(1, 0);
+    switch (f) {
+        case JuliaFunction::Sqr: case JuliaFunction::Cube: return 2.0 * w;
+        case JuliaFunction::Exp: return std::exp(w);
+        case JuliaFunction::Reciprocal: return -one / (w * w);
+        case JuliaFunction::Sin: return std::cos(w);
+        case JuliaFunction::Asin: return one / std::sqrt(one - w * w);
+        case JuliaFunction::Sinh: return std::cosh(w);
+        case JuliaFunction::Asinh: return one / std::sqrt(one + w * w);
+        case JuliaFunction::Cos: return -std::sin(w);
+        case JuliaFunction::Acos: return -one / std::sqrt(one - w * w);
+        case JuliaFunction::Cosh: return std::sinh(w);
+        case JuliaFunction::Acosh: return one / (std::sqrt(w - one) * std::sqrt(w + one));
+        case JuliaFunction::Tan: return one / (std::cos(w) * std::cos(w));
+        case JuliaFunction::Atan: return one / (one + w * w);
+        case JuliaFunction::Tanh: return one / (std::cosh(w) * std::cosh(w));
+        case JuliaFunction::Atanh: return one / (one - w * w);
+        case JuliaFunction::Ln: return one / w;
+        case JuliaFunction::Pwr: {
+            const Cx e(pw[0], pw[1]);
+            return e * std::pow(w, e - one);
+        }
+    }
+    return one;
+}
+
+// Whether h(0) stays within the escape sphere for max_iteration − 1 iterations. When it escapes, *reach
+// gets a step along which no inside point is expected: half the first-order distance to the sphere
+// of the escaping iterate, (|h(k)| − R) / D(k), D(k) a bound on the derivative of h(k) by h(0)
+// (|f'| bounds: 2|h| for sqr, 3|h|² for cube, the larger |f'(w)| of the two complex parts).
+bool juliaIterate(const double* v, Quat h, double* reach) {
+    const double* p = v + kJuliaP;
+    const double r2 = v[kJuliaR2];
+    const int count = int(v[kJuliaIter]) - 1;
+    double slope = 1;
+    auto escaped = [&](double n2) {
+        if (reach) *reach = std::isfinite(n2) ? 0.5 * (std::sqrt(n2) - std::sqrt(r2)) / slope : kInfinity;
+        return false;
+    };
+    const double h2 = qnorm2(h);
+    if (h2 > r2) return escaped(h2);
+    if (v[kJuliaAlgebra] == 0) {
+        const bool cube = JuliaFunction(int(v[kJuliaFn])) == JuliaFunction::Cube;
+        double slope2 = 1;  // slope squared (no root per iteration)
+        for (int k = 0; k < count; ++k) {
+            const double n2 = qnorm2(h);
+            slope2 *= cube ? 9 * n2 * n2 : 4 * n2;
+            const Quat s = {h.a * h.a - h.b * h.b - h.c * h.c - h.d * h.d, 2 * h.a * h.b, 2 * h.a * h.c, 2 * h.a * h.d};
+            const Quat f = cube ? qmul(s, h) : s;
+            h = {f.a + p[0], f.b + p[1], f.c + p[2], f.d + p[3]};
+            const double m2 = qnorm2(h);
+            if (!(m2 <= r2)) {
+                slope = std::sqrt(slope2);
+                return escaped(m2);
+            }
+        }
+        return true;
+    }
+    const JuliaFunction fn = JuliaFunction(int(v[kJuliaFn]));
+    const Cx c1(p[0] - p[3], p[1] + p[2]), c2(p[0] + p[3], p[1] - p[2]);
+    Cx w1(h.a - h.d, h.b + h.c), w2(h.a + h.d, h.b - h.c);
+    for (int k = 0; k < count; ++k) {
+        if (reach) {
+            slope *= std::sqrt(std::max(std::norm(juliaSlope(fn, w1, v + kJuliaPwr)), std::norm(juliaSlope(fn, w2, v + kJuliaPwr))));
+        }
+        w1 = juliaComplex(fn, w1, v + kJuliaPwr) + c1;
+        w2 = juliaComplex(fn, w2, v + kJuliaPwr) + c2;
+        const double m2 = 0.5 * (std::norm(w1) + std::norm(w2));
+        if (!(m2 <= r2)) return escaped(m2);  // NaN counts as escaped
+    }
+    return true;
+}
+
+bool juliaInside(const double* v, Vec3 p) { return juliaIterate(v, juliaStart(v, p), nullptr); }
+
+// The normal: the gradient of |h(max_iteration)| with respect to h(0)'s x, y and z components
+// (POV-Ray's normals leave the slice's t alone: measured with a slice <1, 1, 0, 1>), by carrying
+// the three derivatives along the iteration (rescaled each step; only the direction matters).
+Vec3 juliaNormal(const double* v, Vec3 pt) {
+    const int n = int(v[kJuliaIter]);
+    const double* p = v + kJuliaP;
+    Quat z = juliaStart(v, pt);
+    Vec3 g;
+    if (v[kJuliaAlgebra] == 0) {
+        const bool cube = JuliaFunction(int(v[kJuliaFn])) == JuliaFunction::Cube;
+        Quat t[3] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+        for (int k = 0; k < n && qnorm2(z) < 1e200; ++k) {
+            const Quat s = qmul(z, z);
+            double big = 0;
+            for (Quat& d : t) {
+                Quat e = cube ? qmul(s, d) : qmul(z, d);
+                const Quat f = cube ? qmul(qmul(z, d), z) : qmul(d, z);
+                const Quat h = cube ? qmul(d, s) : Quat{0, 0, 0, 0};
+                d = {e.a + f.a + h.a, e.b + f.b + h.b, e.c + f.c + h.c, e.d + f.d + h.d};
+                big = std::max(big, qnorm2(d));
+            }
+            if (big > 0 && std::isfinite(big))
+                for (Quat& d : t) {
+                    const double k2 = 1 / std::sqrt(big);
+                    d = {d.a * k2, d.b * k2, d.c * k2, d.d * k2};
+                }
+            const Quat f = cube ? qmul(s, z) : s;
+            z = {f.a + p[0], f.b + p[1], f.c + p[2], f.d + p[3]};
+        }
+        for (int a = 0; a < 3; ++a) g[a] = z.a * t[a].a + z.b * t[a].b + z.c * t[a].c + z.d * t[a].d;
+        return g;
+    }
+    const JuliaFunction fn = JuliaFunction(int(v[kJuliaFn]));
+    const Cx c1(p[0] - p[3], p[1] + p[2]), c2(p[0] + p[3], p[1] - p[2]);
+    Cx w1(z.a - z.d, z.b + z.c), w2(z.a + z.d, z.b - z.c);
+    // x, y, z of h(0) as (w1, w2) tangents: (1, 1), (i, i), (i, −i).
+    Cx t1[3] = {Cx(1, 0), Cx(0, 1), Cx(0, 1)}, t2[3] = {Cx(1, 0), Cx(0, 1), Cx(0, -1)};
+    for (int k = 0; k < n && std::norm(w1) + std::norm(w2) < 1e200; ++k) {
+        const Cx s1 = juliaSlope(fn, w1, v + kJuliaPwr), s2 = juliaSlope(fn, w2, v + kJuliaPwr);
+        double big = 0;
+        for (int a = 0; a < 3; ++a) {
+            t1[a] *= s1;
+            t2[a] *= s2;
+            big = std::max(big, std::norm(t1[a]) + std::norm(t2[a]));
+        }
+        if (big > 0 && std::isfinite(big))
+            for (int a = 0; a < 3; ++a) t1[a] /= std::sqrt(big), t2[a] /= std::sqrt(big);
+        w1 = juliaComplex(fn, w1, v + kJuliaPwr) + c1;
+        w2 = juliaComplex(fn, w2, v + kJuliaPwr) + c2;
+    }
+    for (int a = 0; a < 3; ++a) g[a] = (w1 * std::conj(t1[a])).real() + (w2 * std::conj(t2[a])).real();
+    return g;
+}
+
+}  // namespace
+
+bool makeJuliaFractal(const JuliaParams& q, ShapeData& data) {
+    if (q.maxIteration < 2 || !(q.precision > 0)) return false;
+    if (!q.hypercomplex && q.function != JuliaFunction::Sqr && q.function != JuliaFunction::Cube) return false;
+    const double len = std::sqrt(q.slice[0] * q.slice[0] + q.slice[1] * q.slice[1] + q.slice[2] * q.slice[2] +
+                                 q.slice[3] * q.slice[3]);
+    if (!(len > 0) || q.slice[3] == 0) return false;
+    std::vector<double>& v = data.values;
+    v.assign(kJuliaSlots, 0.0);
+    for (int i = 0; i < 4; ++i) v[kJuliaP + i] = q.p[i], v[kJuliaN + i] = q.slice[i] / len;
+    v[kJuliaD] = q.distance;
+    v[kJuliaIter] = q.maxIteration;
+    v[kJuliaStep] = 1 / q.precision;
+    const double pn = std::sqrt(q.p[0] * q.p[0] + q.p[1] * q.p[1] + q.p[2] * q.p[2] + q.p[3] * q.p[3]);
+    const double r = q.hypercomplex ? 4.0 : 1 + pn;
+    v[kJuliaR2] = r * r;
+    v[kJuliaAlgebra] = q.hypercomplex ? 1 : 0;
+    v[kJuliaFn] = double(int(q.function));
+    v[kJuliaPwr] = q.pwr[0];
+    v[kJuliaPwr + 1] = q.pwr[1];
+    data.bounds = Bounds{Vec3(-r * (1 + 1e-9)), Vec3(r * (1 + 1e-9))};
+    return true;
+}
+
+bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
+    const double* v = o.data->values.data();
+    // The ray's stretch inside the escape sphere |(x, y, z)| ≤ R (h(0) lies outside the 4-D sphere
+    // beyond it), widened a little so that its points are outside (for p = 0 the fractal's surface
+    // is the sphere itself).
+    const double dd = dot(r.dir, r.dir), b = dot(r.origin, r.dir), cc = dot(r.origin, r.origin) - v[kJuliaR2] * (1 + 1e-9);
+    const double disc = b * b - dd * cc;
+    if (disc <= 0) return false;
+    const double sq = std::sqrt(disc);
+    double t0 = std::max(tMin, (-b - sq) / dd), t1 = std::min(tMax, (-b + sq) / dd);
+    if (t0 >= t1) return false;
+    const double len = std::sqrt(dd), step = v[kJuliaStep] / len;
+    // Steps of 1/precision, longer where the point's iterate escaped far (juliaIterate's reach).
+    double reach = 0;
+    const bool startIn = juliaIterate(v, juliaStart(v, r.at(t0)), &reach);
+    double prev = t0, ahead = startIn ? step : std::max(step, reach / len);
+    while (prev < t1) {
+        const double t = std::min(t1, prev + ahead);
+        reach = 0;
+        const bool in = juliaIterate(v, juliaStart(v, r.at(t)), startIn ? nullptr : &reach);
+        if (in != startIn) {
+            double lo = prev, hi = t;  // bisect the crossing
+            for (int i = 0; i < 60 && hi - lo > 1e-12 * (1 + std::fabs(hi)); ++i) {
+                const double mid = 0.5 * (lo + hi);
+                (juliaInside(v, r.at(mid)) == startIn ? lo : hi) = mid;
+            }
+            if (!(hi > tMin && hi < tMax)) return false;
+            h.t = hi;
+            Vec3 n = juliaNormal(v, r.at(hi));
+            if (!(length(n) > 0)) n = -r.dir;
+            h.normal = normalize(n);
+            return true;
+        }
+        prev = t;
+        ahead = std::max(step, reach / len);
+    }
+    return false;  // no crossing (no inside point reaches the widened sphere)
+}
+
+bool insideJuliaFractal(const Object& o, Vec3 p) { return juliaInside(o.data->values.data(), p); }
+
+}  // namespace rays

@@ -1,0 +1,111 @@
+// POV-Ray's julia_fractal (reference 3.4.5.1.7): hits and normals against POV-Ray 3.7's trace()
+// for both algebras, several functions, max_iteration and slices; inside tests against the
+// iteration written out here; the quaternion c = 0 case (the unit ball, whatever max_iteration).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "rays/scene/csg.h"
+#include "support/pov_scene.h"
+
+namespace rays {
+namespace {
+
+struct Traced {
+    const char* fractal;
+    Vec3 from, dir;
+    Vec3 point, normal;  // povray 3.7.0.10's trace() (#debug vstr, 9 and 6 digits)
+};
+
+const Traced kTraced[] = {
+    {"<0,0,0,0> max_iteration 2 precision 1000", {-10, 0, 0}, {1, 0, 0}, {-1.000000039, 0, 0}, {-1, 0, 0}},
+    {"<0,0,0,0> max_iteration 3 precision 10", {-10, 0.3, 0.2}, {1, 0, 0}, {-0.932737917, 0.3, 0.2}, {-0.932738, 0.3, 0.2}},
+    {"<0,0,0,0> max_iteration 20 precision 1000", {-10, 0.3, 0.2}, {1, 0, 0}, {-0.93273789, 0.3, 0.2}, {-0.932738, 0.3, 0.2}},
+    {"<0,0,0,0> max_iteration 3 precision 1000 hypercomplex", {-10, 0, 0}, {1, 0, 0}, {-1.414213562, 0, 0}, {-1, 0, 0}},
+    {"<0,0,0,0> max_iteration 3 precision 1000 hypercomplex", {-10, 0.3, 0.2}, {1, 0, 0}, {-1.363533203, 0.3, 0.2}, {-0.939636, 0.261766, 0.220369}},
+    {"<0,0,0,0> max_iteration 4 precision 1000 hypercomplex", {-10, 0.3, 0.2}, {1, 0, 0}, {-1.1180802, 0.3, 0.2}, {-0.861504, 0.364249, 0.353743}},
+    {"<0,0,0,0> max_iteration 4 precision 1000 hypercomplex cube", {-10, 0.3, 0.2}, {1, 0, 0}, {-1.1180802, 0.3, 0.2}, {-0.861504, 0.364249, 0.353743}},
+    {"<0.3,0,0,0> max_iteration 3 precision 1000 quaternion cube", {-10, 0.3, 0.2}, {1, 0, 0}, {-0.979610675, 0.3, 0.2}, {-0.952481, 0.25344, 0.16896}},
+    {"<0.3,0,0,0> max_iteration 8 precision 1000", {-10, 0.3, 0.2}, {1, 0, 0}, {-0.782915395, 0.3, 0.2}, {-0.505931, -0.717705, -0.47847}},
+    {"<0.1,0.5,-0.2,0.3> max_iteration 4 precision 1000", {-10, 0.1, -0.05}, {1, 0, 0}, {-0.695742545, 0.1, -0.05}, {-0.867079, -0.458095, 0.195762}},
+    {"<0.1,0.5,-0.2,0.3> max_iteration 4 precision 1000", {0.2, 10, 0.1}, {0, -1, 0}, {0.2, 1.041921669, 0.1}, {0.613424, 0.788229, 0.049054}},
+    {"<0.1,0.5,-0.2,0.3> max_iteration 4 precision 1000 hypercomplex", {0.2, 10, 0.1}, {0, -1, 0}, {0.2, 1.047517387, 0.1}, {0.252361, 0.684225, 0.684215}},
+    {"<0.1,0.5,-0.2,0.3> max_iteration 3 precision 1000 quaternion cube", {0.2, 10, 0.1}, {0, -1, 0}, {0.2, 1.12993367, 0.1}, {0.05341, 0.982966, 0.175854}},
+    {"<0.1,0.5,-0.2,0.3> max_iteration 3 precision 1000 hypercomplex cube", {-10, 0.3, 0.2}, {1, 0, 0.1}, {-0.359068099, 0.3, 1.16409319}, {-0.11676, 0.700276, 0.704259}},
+    {"<0.1,0.5,-0.2,0.3> max_iteration 4 precision 1000 slice <0,0,0,1>, 0.2", {-10, 0.1, -0.05}, {1, 0, 0}, {-0.766403177, 0.1, -0.05}, {-0.909771, -0.378993, 0.169354}},
+    {"<0.1,0.5,-0.2,0.3> max_iteration 4 precision 1000 slice <1,1,0,1>, 0.1", {0.2, 10, 0.1}, {0, -1, 0}, {0.2, 0.760148721, 0.1}, {0.517457, 0.851305, 0.086704}},
+    {"<0.1,0.5,-0.2,0.3> max_iteration 4 precision 1000 slice <1,1,0,1>, 0.1", {0.1, -0.2, -10}, {0, 0, 1}, {0.1, -0.2, -1.081001318}, {0.359649, -0.149884, -0.920971}},
+};
+
+TEST(PovJuliaFractal, HitsAndNormalsMatchPovRayTrace) {
+    for (const Traced& c : kTraced) {
+        std::vector<std::string> warnings;
+        const Scene s = test::buildPov(std::string("julia_fractal { ") + c.fractal + " }", &warnings);
+        ASSERT_EQ(s.objects.size(), 1u) << c.fractal;
+        EXPECT_TRUE(warnings.empty()) << warnings[0];
+        const Hit h = test::shootPov(s, c.from, c.dir);
+        ASSERT_TRUE(h.valid()) << c.fractal;
+        const Vec3 p = c.from + h.t * normalize(c.dir);
+        EXPECT_LT(length(p - c.point), 1e-7) << c.fractal << " from " << c.from.x << "," << c.from.y << "," << c.from.z;
+        EXPECT_GT(dot(h.normal, normalize(c.normal)), 1 - 1e-5) << c.fractal;
+    }
+}
+
+TEST(PovJuliaFractal, MaxIterationOneAndQuaternionFunctions) {
+    std::vector<std::string> warnings;
+    // max_iteration 1 draws nothing in POV-Ray 3.7 (trace() finds no surface).
+    EXPECT_TRUE(test::buildPov("julia_fractal { <0,0,0,0> max_iteration 1 }", &warnings).objects.empty());
+    EXPECT_TRUE(warnings.empty());
+    // Quaternions know sqr and cube only: other functions are noted.
+    const Scene s = test::buildPov("julia_fractal { <0,0,0,0> quaternion exp }", &warnings);
+    EXPECT_TRUE(s.objects.empty());
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("julia_fractal"), std::string::npos);
+}
+
+// The reference's rule written out: h(0) = (x, y, z, 0); inside while |h(k)| stays within the
+// escape radius for k = 1 … max_iteration − 1 (1 + |p| for quaternions, measured).
+bool insideByHand(Vec3 q, const double* p, int n) {
+    double a = q.x, b = q.y, c = q.z, d = 0;
+    const double r = 1 + std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3]);
+    if (a * a + b * b + c * c > r * r) return false;
+    for (int k = 1; k < n; ++k) {
+        const double na = a * a - b * b - c * c - d * d + p[0], nb = 2 * a * b + p[1], nc = 2 * a * c + p[2], nd = 2 * a * d + p[3];
+        a = na, b = nb, c = nc, d = nd;
+        if (a * a + b * b + c * c + d * d > r * r) return false;
+    }
+    return true;
+}
+
+TEST(PovJuliaFractal, InsideAndFirstHitsAgreeWithTheIterationByHand) {
+    const double p[4] = {-0.083, 0.0, -0.83, -0.025};
+    const Scene s = test::buildPov("julia_fractal { <-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 200 }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> U(-1.6, 1.6);
+    int in = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 q{U(rng), U(rng), U(rng)};
+        const bool want = insideByHand(q, p, 8);
+        in += want;
+        EXPECT_EQ(insideShape(s.objects[0], q), want ? 1 : 0) << q.x << " " << q.y << " " << q.z;
+    }
+    EXPECT_GT(in, 50);
+    // First hits: the ray is outside just before the hit and inside just after it.
+    for (int i = 0; i < 60; ++i) {
+        const Vec3 from = 4.0 * normalize(Vec3{U(rng), U(rng), U(rng)});
+        const Vec3 d = normalize(Vec3{0.3 * U(rng), 0.3 * U(rng), 0.3 * U(rng)} - from);
+        const Hit h = test::shootPov(s, from, d);
+        if (!h.valid()) continue;
+        EXPECT_FALSE(insideByHand(from + (h.t - 1e-6) * d, p, 8));
+        EXPECT_TRUE(insideByHand(from + (h.t + 1e-6) * d, p, 8));
+        for (double t = 0; t < h.t - 1e-6; t += 1.0 / 200) EXPECT_FALSE(insideByHand(from + t * d, p, 8)) << "missed at " << t;
+        EXPECT_LT(dot(h.normal, d), 0);
+    }
+}
+
+}  // namespace
+}  // namespace rays
