@@ -78,6 +78,7 @@ Hit Tracer::povFirstHit(const Ray& ray, bool reflected) const {
 }
 
 Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const {
+    ctx.radLocal.clear();  // a camera sample reuses only its own radiosity records (and the cache's)
     PovRay r;
     r.primary = true;
     return tracePov(ray, r, ctx, info);
@@ -106,6 +107,7 @@ Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object
     pt.entering = dot(ray.dir, hit.geomNormal) < 0;
     pt.interior = r.interior;
     pt.viewFade = r.faded * segmentFade;
+    pt.highlights = !r.gathering;
     return pt;
 }
 
@@ -134,7 +136,8 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     // The surface's own colour, weighted by its opacity; highlights are not (measured).
     const PovSurface& s = *pt.surface;
     const double opacity = povOpacity(pt.C, pt.filter, pt.transmit, scene_.pov.version);
-    Vec3 color = opacity * povAmbient(s.finish, pt.C, scene_.pov.ambientLight);
+    PovGathered gathered;
+    Vec3 color = opacity * povAmbientTerm(s.finish, pt.C, pt.P, pt.entering ? hit.normal : -hit.normal, r, ctx, gathered);
     ctx.surfaceObject = hit.object;
     const int blocked = povLights(pt, opacity, -ray.dir, ctx, color, info && r.primary);
     ctx.surfaceObject = -1;
@@ -180,7 +183,9 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
     PovRay reflected{.level = r.level + 1,
                      .weight = r.weight,
                      .interior = pt.entering ? r.interior : pt.object,
-                     .reflected = true};
+                     .reflected = true,
+                     .radLevel = r.radLevel,
+                     .gathering = r.gathering};
     if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
     return reflected;
 }
@@ -200,7 +205,9 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
                          .weight = r.weight * maxAbsComponent(T),
                          .interior = pt.entering ? pt.object : -1,
                          .fades = true,
-                         .reflected = r.reflected};
+                         .reflected = r.reflected,
+                         .radLevel = r.radLevel,
+                         .gathering = r.gathering};
     if (through.weight >= scene_.pov.adcBailout) {
         ++ctx.stats.secondaryRays;
         color += T * tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, through, ctx, info);
@@ -240,7 +247,8 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
         const double grain = f.crand != 0 ? 1 - f.crand * ctx.rng.next() : 1.0;  // crand
         color += (opacity * grain) * t.diffuse;
-        if (!light.shadowless) color += t.highlight;  // shadowless lights make no highlights (the manual; measured)
+        // Shadowless lights make no highlights (the manual; measured), nor do points radiosity gathers from.
+        if (!light.shadowless && pt.highlights) color += t.highlight;
     }
     return blocked;
 }
