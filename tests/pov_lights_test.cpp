@@ -140,6 +140,20 @@ TEST(PovLights, ADeclaredLightTakesTheModifiersWrittenAfterIt) {
     EXPECT_NEAR(seen(l.scene, kCx, kCy).x, 0.27295, kMeasured);
 }
 
+TEST(PovLights, ALightInASurfacesPlaneLightsWhatItFaces) {
+    // A light in the plane of a ceiling 54.88 above a floor: shadow rays aimed at it from their
+    // offset origin, not along the direction from the point, which would meet the ceiling first.
+    // Measured on the floor: .29464 (fade_distance 30, power 2).
+    const Loaded l = load("light_source { <27.8,54.88,27.95> color 1 fade_power 2 fade_distance 30 }\n"
+                          "plane { y, 0 pigment { rgb 1 } finish { diffuse .75 ambient 0 } }\n"
+                          "plane { -y, -54.88 pigment { rgb 1 } finish { diffuse .75 ambient 0 } }\n");
+    const Bvh bvh(l.scene.objects);
+    const RenderSettings rs;
+    TraceContext ctx;
+    const Vec3 c = Tracer(l.scene, bvh, rs).tracePrimary(Ray{{12, 20, 40}, {0, -1, 0}}, ctx);
+    EXPECT_NEAR(c.x, 0.29464, 2e-3);
+}
+
 TEST(PovSpotlight, CylindricalLightsShineAlongTheirAxisWithinADistance) {
     // radius and falloff are distances from the axis; N·L is the axis's (1 on this floor).
     expectFloor("<0,0,-1>, rgb 1 cylinder point_at 0 radius 0.3 falloff 0.6",

@@ -102,6 +102,22 @@ TEST(PovRadiosity, GatheringRaysSeeLightsButNoHighlights) {
                0.625);
 }
 
+// A floor and a ceiling 54.88 apart, a faded light in the ceiling's plane (as radiosity/cornell.pov's).
+std::string ceilingScene(const std::string& light) {
+    return "camera { orthographic location <12,20,40> look_at <12,54,40> right x*1 up z*1 }\n"
+           "light_source { <27.8,54.88,27.95> color 1 fade_power 2 fade_distance 30 " + light + " }\n"
+           "plane { y, 0 pigment { rgb 1 } finish { diffuse .75 ambient 0 } }\n"
+           "plane { -y, -54.88 pigment { rgb 1 } finish { diffuse .75 ambient 0 } }\n";
+}
+
+TEST(PovRadiosity, GatheringRaysSeeAreaLightsAsPointsAtTheirCentre) {
+    // The ceiling lit only by the floor. Measured: .10530 with a point light and the same .10530
+    // with a 20×20 area light of 8×8 samples (whose samples would light the floor differently).
+    const char* rad = "radiosity { pretrace_start 0.04 pretrace_end 0.01 count 200 recursion_limit 1 nearest_count 10 error_bound 0.5 }";
+    expectGrey(centre(load(rad, ceilingScene("")).scene), 0.10530, 2e-3);
+    expectGrey(centre(load(rad, ceilingScene("area_light 20*x, 20*z, 8, 8")).scene), 0.10530, 2e-3);
+}
+
 TEST(PovRadiosity, GrayThresholdMovesTheGatheredColourTowardsItsGrey) {
     // Sky emission <.5,.2,.1>, plane diffuse 1. Measured: g 0 → .50001 .20001 .10000; g .5 →
     // .38885 .23885 .18886; g 1 → .27769 for all three.

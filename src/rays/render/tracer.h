@@ -187,9 +187,7 @@ private:
     Vec3 gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
     /// intoSurface: the ray leaves towards the inside of the surface being shaded, which then
     /// most likely blocks it (tested first).
-    /// For a point light: the vector from the light to the shadow ray's origin (course scenes) or
-    /// to the shaded point (POV-Ray scenes, whose shadow rays leave it offset by kSurfaceOffset
-    /// along the unit normal) and its length.
+    /// For a point light: the vector from the light to the shadow ray's origin and its length.
     struct FromLight {
         Vec3 toPoint;
         double dist;
@@ -292,10 +290,11 @@ private:
                   bool countBlocked) const;
     /// The light of one light that reaches P: its colour dimmed by a spotlight's cone and light
     /// fading (shadowless lights: nothing more), tinted by transparent objects on the way, times the
-    /// visible share of an area light's samples; L (unit, towards the light) and dist
-    /// as povLights found them; shadow rays leave P on side Nl.
-    Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, double dist, Vec3 Nl, bool intoSurface,
-                          TraceContext& ctx) const;
+    /// visible share of an area light's samples; shadow rays leave P on side Nl, aimed at the light
+    /// (each sample) from there. centreOnly: an area light as a point
+    /// light at its centre (the points radiosity gathers from: measured, docs/povray-lighting.md).
+    Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
+                          TraceContext& ctx, bool centreOnly = false) const;
     /// 1 when nothing lies on the shadow ray before tMax, else what the objects on it let through.
     Vec3 povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
                        const FromLight* fromLight) const;

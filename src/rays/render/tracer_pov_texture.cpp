@@ -146,7 +146,7 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
         for (int k = 0; k < count && !useful; ++k) useful = layerLit(*layers[k].surface, layers[k].opacity, dot(layers[k].N, L));
         if (!useful && !countBlocked) continue;
         const double nl = dot(pt.N, L);
-        const Vec3 arriving = povLightReaching(light, li, pt.P, L, dist, nl >= 0 ? pt.N : -pt.N, nl < 0, ctx);
+        const Vec3 arriving = povLightReaching(light, li, pt.P, nl >= 0 ? pt.N : -pt.N, nl < 0, ctx, !pt.highlights);  // radiosity: a point
         if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;

@@ -240,7 +240,7 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         const double nl = dot(N, L);
         const bool useful = nl > 0 ? front : (nl < 0 && back);
         if (!useful && !countBlocked) continue;
-        const Vec3 arriving = povLightReaching(light, li, P, L, dist, nl >= 0 ? N : -N, nl < 0, ctx);
+        const Vec3 arriving = povLightReaching(light, li, P, nl >= 0 ? N : -N, nl < 0, ctx, !pt.highlights);  // radiosity sees area lights as points (measured)
         if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
@@ -253,8 +253,8 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
     return blocked;
 }
 
-Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, double dist, Vec3 Nl,
-                              bool intoSurface, TraceContext& ctx) const {
+Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
+                              bool intoSurface, TraceContext& ctx, bool centreOnly) const {
     // Spotlights, cylindrical lights and fading dim the light before anything blocks it.
     Vec3 color = light.color;
     if (light.spot != Light::Spot::None) color *= povSpotFactor(light, P - light.position);
@@ -268,15 +268,21 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, 
         if (tMax <= 0) return color;
         return color * povShadowTint(Ray{origin, -light.direction}, tMax, index, ctx, intoSurface, nullptr);
     }
-    if (!light.area) {
-        const FromLight fromLight{-dist * L, dist};
-        return color * povShadowTint(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, intoSurface, &fromLight);
+    // Shadow rays are aimed at the light from their offset origin: aimed along L from P, they would
+    // meet a surface through the light's position (radiosity/cornell.pov's lights sit in its
+    // ceiling) before the light; povray lights such points (measured).
+    if (!light.area || centreOnly) {
+        const Vec3 toLight = light.position - origin;
+        const double d = length(toLight);
+        if (d == 0) return color;
+        const FromLight fromLight{-toLight, d};
+        return color * povShadowTint(Ray{origin, toLight / d}, d - kSurfaceOffset, index, ctx, intoSurface, &fromLight);
     }
     // Area light: the shading uses its centre (measured); its samples only decide how much of the
     // light arrives, each tinted by what lies on its shadow ray.
     const AreaGrid grid = areaGrid(light, settings_.areaSamples, P);
     auto sampleTint = [&](Vec3 pos) {
-        const Vec3 toLight = pos - P;
+        const Vec3 toLight = pos - origin;
         const double d = length(toLight);
         if (d == 0) return Vec3(1.0);
         return povShadowTint(Ray{origin, toLight / d}, d - kSurfaceOffset, index, ctx, intoSurface, nullptr);
