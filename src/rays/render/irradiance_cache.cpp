@@ -14,6 +14,8 @@ IrradianceBlend::IrradianceBlend(Vec3 P, Vec3 N, int level, double errorBound, i
 void IrradianceBlend::consider(const IrradianceRecord& r) {
     if (r.level != level_) return;
     const Vec3 d = P_ - r.P;
+    const double reach = a_ * r.R;  // ε ≥ |d|/R: no square root for records out of reach
+    if (dot(d, d) >= reach * reach) return;
     // A record in front of the point sees other surroundings (Ward et al. 1988: d·(N + Nᵢ)/2 < 0).
     if (dot(d, N_ + r.N) < -0.1 * r.R) return;
     const double eps = length(d) / r.R + std::sqrt(std::max(0.0, 1.0 - dot(N_, r.N)));
