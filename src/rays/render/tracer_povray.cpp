@@ -288,8 +288,9 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
         return povShadowTint(Ray{origin, toLight / d}, d - kSurfaceOffset, index, ctx, intoSurface, nullptr);
     };
     const int count = grid.n1 * grid.n2;
-    // adaptive: four corners that agree on all-or-nothing decide for the whole light.
-    if (light.adaptive >= 0 && grid.n1 > 1 && grid.n2 > 1 && !light.jitter) {
+    // adaptive: four corners that agree on all-or-nothing decide for the whole light (jittered
+    // corners too: POV-Ray subdivides a jittered adaptive light from its corners as well).
+    if (light.adaptive >= 0 && grid.n1 > 1 && grid.n2 > 1) {
         int lit = 0, dark = 0;
         for (int c = 0; c < 4; ++c) {
             const Vec3 t =
