@@ -111,11 +111,19 @@ std::string ceilingScene(const std::string& light) {
 }
 
 TEST(PovRadiosity, GatheringRaysSeeAreaLightsAsPointsAtTheirCentre) {
-    // The ceiling lit only by the floor. Measured: .10530 with a point light and the same .10530
-    // with a 20×20 area light of 8×8 samples (whose samples would light the floor differently).
+    // The ceiling lit only by the floor: .10530 measured. With a 10×10 board 10.88 below the light
+    // shading the floor: .06491 with a point light and the same .06491 with a 20×20 area light of
+    // 8×8 samples (sampled, its soft shadow would give the ceiling .081).
     const char* rad = "radiosity { pretrace_start 0.04 pretrace_end 0.01 count 200 recursion_limit 1 nearest_count 10 error_bound 0.5 }";
     expectGrey(centre(load(rad, ceilingScene("")).scene), 0.10530, 2e-3);
-    expectGrey(centre(load(rad, ceilingScene("area_light 20*x, 20*z, 8, 8")).scene), 0.10530, 2e-3);
+    const std::string board = "box { <22.8,44,22.95>, <32.8,44.1,32.95> pigment { rgb 1 } finish { diffuse 0 ambient 0 } }\n";
+    auto shaded = [&](const std::string& light) {
+        std::string s = ceilingScene(light) + board;
+        s.replace(s.find("location <12,20,40> look_at <12,54,40>"), 38, "location <10,40,10> look_at <10,54,10>");
+        return s;
+    };
+    expectGrey(centre(load(rad, shaded("")).scene), 0.06491, 2e-3);
+    expectGrey(centre(load(rad, shaded("area_light 20*x, 20*z, 8, 8")).scene), 0.06491, 2e-3);
 }
 
 TEST(PovRadiosity, GrayThresholdMovesTheGatheredColourTowardsItsGrey) {

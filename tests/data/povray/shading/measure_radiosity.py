@@ -69,6 +69,11 @@ RC = 'radiosity { pretrace_start 0.04 pretrace_end 0.01 count 200 recursion_limi
 print('floor under a light in the ceiling plane:', fmt(render(DOWN + CEIL % '')))
 print('ceiling, point light:', fmt(render(UP + CEIL % '', RC)))
 print('ceiling, area light 20x20 8x8:', fmt(render(UP + CEIL % 'area_light 20*x, 20*z, 8, 8', RC)))
+# A 10x10 board 10.88 below the light shades the floor: .06491 for the point and the area light alike.
+BOARD = 'box { <22.8,44,22.95>, <32.8,44.1,32.95> pigment { rgb 1 } finish { diffuse 0 ambient 0 } }\n'
+UP2 = 'camera { orthographic location <10,40,10> look_at <10,54,10> right x*1 up z*1 }\n'
+print('shaded ceiling, point light:', fmt(render(UP2 + CEIL % '' + BOARD, RC)))
+print('shaded ceiling, area light 20x20 8x8:', fmt(render(UP2 + CEIL % 'area_light 20*x, 20*z, 8, 8' + BOARD, RC)))
 # Lights: a declared light with modifiers after it; negative spotlight angles (measure_lights.py's floor).
 FLOOR = ORTHO + 'plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n'
 print('declared light translated:', fmt(render(FLOOR + '#declare SP = light_source { <0,0,-10>, rgb 1 fade_power 2 fade_distance 4 }\n'
