@@ -121,6 +121,39 @@ TEST(PovSpotlight, RadiusFalloffAndTightnessShapeTheCone) {
                  {0.76562, 0.45210}, {0.82812, 0.26734}});
 }
 
+TEST(PovSpotlight, NegativeAnglesActAsTheirSize) {
+    // Light at <0,0,-10> pointed 60° away from the centre pixel (kFloor of diffuse 1). Measured:
+    // radius -90 falloff 90 and radius -60 falloff 90 light it fully (.99983); radius 10 falloff
+    // -80 as falloff 80: .37452.
+    const std::string at = "<0,0,-10>, rgb 1 spotlight tightness 0 point_at <17.32,0,0> ";
+    EXPECT_NEAR(seen(load(kFloor + "light_source { " + at + "radius -90 falloff 90 }\n").scene, kCx, kCy).x, 0.99983, kMeasured);
+    EXPECT_NEAR(seen(load(kFloor + "light_source { " + at + "radius -60 falloff 90 }\n").scene, kCx, kCy).x, 0.99983, kMeasured);
+    EXPECT_NEAR(seen(load(kFloor + "light_source { " + at + "radius 10 falloff -80 }\n").scene, kCx, kCy).x, 0.37452, kMeasured);
+}
+
+TEST(PovLights, ADeclaredLightTakesTheModifiersWrittenAfterIt) {
+    // `light_source { SP translate <1,0,0> }` with SP faded (fade_distance 4, power 2) 10 in front:
+    // measured .27295 (moved), .27574 where it was.
+    const Loaded l = load(kFloor + "#declare SP = light_source { <0,0,-10>, rgb 1 fade_power 2 fade_distance 4 }\n" +
+                          "light_source { SP translate <1,0,0> }\n");
+    ASSERT_EQ(l.scene.lights.size(), 1u);
+    EXPECT_NEAR(seen(l.scene, kCx, kCy).x, 0.27295, kMeasured);
+}
+
+TEST(PovLights, ALightInASurfacesPlaneLightsWhatItFaces) {
+    // A light in the plane of a ceiling 54.88 above a floor: shadow rays aimed at it from their
+    // offset origin, not along the direction from the point, which would meet the ceiling first.
+    // Measured on the floor: .29464 (fade_distance 30, power 2).
+    const Loaded l = load("light_source { <27.8,54.88,27.95> color 1 fade_power 2 fade_distance 30 }\n"
+                          "plane { y, 0 pigment { rgb 1 } finish { diffuse .75 ambient 0 } }\n"
+                          "plane { -y, -54.88 pigment { rgb 1 } finish { diffuse .75 ambient 0 } }\n");
+    const Bvh bvh(l.scene.objects);
+    const RenderSettings rs;
+    TraceContext ctx;
+    const Vec3 c = Tracer(l.scene, bvh, rs).tracePrimary(Ray{{12, 20, 40}, {0, -1, 0}}, ctx);
+    EXPECT_NEAR(c.x, 0.29464, 2e-3);
+}
+
 TEST(PovSpotlight, CylindricalLightsShineAlongTheirAxisWithinADistance) {
     // radius and falloff are distances from the axis; N·L is the axis's (1 on this floor).
     expectFloor("<0,0,-1>, rgb 1 cylinder point_at 0 radius 0.3 falloff 0.6",

@@ -9,6 +9,7 @@
 #include "rays/pov/build_mesh.h"
 #include "rays/pov/build_shapes.h"
 #include "rays/pov/grammar.h"
+#include "rays/pov/radiosity_settings.h"
 #include "rays/pov/scene_builder_parts.h"
 
 namespace rays::pov {
@@ -595,7 +596,7 @@ void SceneBuilder::globalSettings(const Item& g) {
             case Kw::ambient_light: scene_.pov.ambientLight = toColor(e.args[0]).rgb; break;
             case Kw::max_trace_level: scene_.pov.maxTraceLevel = clampedInt(toFloat(e.args[0]), 1, 256); break;
             case Kw::adc_bailout: scene_.pov.adcBailout = toFloat(e.args[0]); break;
-            case Kw::radiosity: notes_.note("radiosity", e.loc); break;
+            case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
             case Kw::photons: notes_.note("photons", e.loc); break;
             case Kw::subsurface: notes_.note("subsurface", e.loc); break;
             default: break;

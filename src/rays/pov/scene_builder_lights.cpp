@@ -29,14 +29,22 @@ const Item* lookedLikeObject(const Entry& e) {
 // ---- lights ----------------------------------------------------------------------------------
 
 void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
-    Light l;
     std::vector<const Value*> p = positionals(item);
+    // `light_source { Declared modifiers }`: the declared light with these modifiers after its own.
+    if (!p.empty() && p[0]->type == VType::Item && p[0]->item().kind == Kw::light_source) {
+        Item merged = p[0]->item();
+        for (const Entry& e : item.entries)
+            if (!e.positional()) merged.entries.push_back(e);
+        return addLight(merged, toWorld);
+    }
+    Light l;
     Vec3 pos = p.empty() ? Vec3{} : toVec3(*p[0]);
     l.color = p.size() > 1 ? toColor(*p[1]).rgb : Vec3{1, 1, 1};
     Transform m;
     Vec3 pointAt{0, 0, 1};
     bool parallel = false, pointAtSet = false;
-    double radius = -1, falloff = -1;  // < 0: the light type's default
+    double radius = -1, falloff = -1;  // the light type's default unless set
+    bool radiusSet = false, falloffSet = false;
     const Item* looksLike = nullptr;
     for (const Entry& e : item.entries) {
         if (e.positional()) continue;
@@ -52,8 +60,8 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
                 pointAt = toVec3(e.args[0]);
                 pointAtSet = true;
                 break;
-            case Kw::radius: radius = toFloat(e.args[0]); break;
-            case Kw::falloff: falloff = toFloat(e.args[0]); break;
+            case Kw::radius: radius = toFloat(e.args[0]), radiusSet = true; break;
+            case Kw::falloff: falloff = toFloat(e.args[0]), falloffSet = true; break;
             case Kw::tightness: l.tightness = std::max(0.0, toFloat(e.args[0])); break;
             case Kw::shadowless: l.shadowless = true; break;
             case Kw::area_light:
@@ -90,13 +98,15 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
         if (length(d) == 0) {
             l.spot = Light::Spot::None;
         } else if (l.spot == Light::Spot::Cone) {
-            auto cosDeg = [](double deg) { return std::cos(std::clamp(deg, 0.0, 180.0) * std::numbers::pi / 180); };
-            l.spotRadius = cosDeg(radius < 0 ? 30 : radius);
-            l.spotFalloff = cosDeg(falloff < 0 ? 45 : falloff);
+            // A negative angle acts as its size (measured: radius -90 lights the whole half-space,
+            // falloff -80 as 80; radiosity/cornell.pov's lights are written so).
+            auto cosDeg = [](double deg) { return std::cos(std::clamp(std::fabs(deg), 0.0, 180.0) * std::numbers::pi / 180); };
+            l.spotRadius = cosDeg(radiusSet ? radius : 30);
+            l.spotFalloff = cosDeg(falloffSet ? falloff : 45);
             l.direction = normalize(d);
         } else {
-            l.spotRadius = radius < 0 ? 0.75 : radius;
-            l.spotFalloff = falloff < 0 ? 1 : falloff;
+            l.spotRadius = radiusSet && radius >= 0 ? radius : 0.75;
+            l.spotFalloff = falloffSet && falloff >= 0 ? falloff : 1;
             // Cylindrical lights shine and cast shadows along their axis (measured).
             parallel = true;
             pointAt = pointAtSet ? pointAt : Vec3{};

@@ -13,6 +13,7 @@
 #include "rays/math/sampling.h"
 #include "rays/render/aov.h"
 #include "rays/render/pov_output.h"
+#include "rays/render/radiosity_pretrace.h"
 #include "rays/render/sampler.h"
 #include "rays/util/worker_pool.h"
 
@@ -190,7 +191,9 @@ TileRenderer::TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSetti
       tracer_(scene, bvh, s, &origins_),
       povOutput_(scene.pov.enabled),
       assumedGamma_(scene.pov.assumedGamma),
-      perThread_(size_t(resolveThreads(s.threads))) {}
+      perThread_(size_t(resolveThreads(s.threads))) {
+    pretraceRadiosity(tracer_, scene, view_, s, radiosity_);
+}
 
 void TileRenderer::renderTile(int t, int worker, ImageF& img, int imgY0, const RecordFn& onRecord) {
     const int x0 = (t % tilesX()) * kTileSize, y0 = (t / tilesX()) * kTileSize;
@@ -221,7 +224,9 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     const SharedOrigins origins =
         Tracer::buildSharedOrigins(scene, bvh, pinholeRays ? &view.rays.location : nullptr,
                                    double(s.width) * double(s.height) * double(view.samples), s.threads);
-    const Tracer tracer(scene, bvh, s, &origins);
+    Tracer tracer(scene, bvh, s, &origins);
+    IrradianceCache radiosity;  // POV-Ray's radiosity: filled before the final pass, read-only during it
+    pretraceRadiosity(tracer, scene, view, s, radiosity);
     // POV-Ray scenes: each final pixel as POV-Ray writes it, sRGB(c^assumed_gamma), before anything
     // reads the image (the PNG stream, feature lines, post filters).
     const bool povOutput = scene.pov.enabled;

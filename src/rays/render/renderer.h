@@ -59,6 +59,7 @@ private:
     ViewSetup view_;
     SharedOrigins origins_;
     Tracer tracer_;
+    IrradianceCache radiosity_;  ///< POV-Ray's radiosity records (pretraced by the constructor)
     bool povOutput_;
     double assumedGamma_;
     std::vector<TraceContext> perThread_;

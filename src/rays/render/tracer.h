@@ -8,6 +8,7 @@
 
 #include "rays/accel/bvh.h"
 #include "rays/accel/origin_buffer.h"
+#include "rays/render/irradiance_cache.h"
 #include "rays/render/sampler.h"
 #include "rays/render/settings.h"
 #include "rays/scene/scene.h"
@@ -84,6 +85,11 @@ struct alignas(64) TraceContext {
     SampleRng rng{0, 0, 0, 0};
     int lastBlocker[kCachedLights];  ///< per light: the object that blocked its last shadow ray (-1 after a miss)
     int surfaceObject = -1;  ///< the object being shaded (its shadow rays test it first when they go into it)
+    /// Radiosity: the irradiance records this camera sample made (cleared for each camera ray; the
+    /// pretrace collects them, the final pass only reuses them within the sample), and whether the
+    /// pretrace is running (its error bound is lower).
+    std::vector<IrradianceRecord> radLocal;
+    bool radPretrace = false;
     TraceContext() { std::fill(std::begin(lastBlocker), std::end(lastBlocker), -1); }
 };
 
@@ -143,6 +149,10 @@ public:
     /// Number of lights blocked at P (normal N facing the viewer); area lights are tested at their centre.
     int blockedLightsAt(Vec3 P, Vec3 N, TraceContext& ctx) const;
 
+    /// POV-Ray radiosity's irradiance cache (render/radiosity_pretrace.h fills it before the final
+    /// pass); null: every point gathers its own light.
+    void setRadiosityCache(const IrradianceCache* cache) { radCache_ = cache; }
+
 private:
     struct Result {
         Vec3 color;
@@ -177,9 +187,7 @@ private:
     Vec3 gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) const;
     /// intoSurface: the ray leaves towards the inside of the surface being shaded, which then
     /// most likely blocks it (tested first).
-    /// For a point light: the vector from the light to the shadow ray's origin (course scenes) or
-    /// to the shaded point (POV-Ray scenes, whose shadow rays leave it offset by kSurfaceOffset
-    /// along the unit normal) and its length.
+    /// For a point light: the vector from the light to the shadow ray's origin and its length.
     struct FromLight {
         Vec3 toPoint;
         double dist;
@@ -202,6 +210,8 @@ private:
         Vec3 faded{1, 1, 1};
         bool primary = false;
         bool reflected = false;  ///< a reflection is on the ray's way from the camera
+        int radLevel = 0;        ///< radiosity bounces on the ray's way from the camera
+        bool gathering = false;  ///< a radiosity gathering ray (or one of its children): no highlights
     };
     /// True when the scene is traced by POV-Ray's rules: pov.enabled, and not the flat or normals view.
     static bool usesPovPath(const Scene& scene, const RenderSettings& settings);
@@ -232,6 +242,7 @@ private:
         bool entering = true;
         int interior = -1;
         Vec3 viewFade{1, 1, 1};
+        bool highlights = true;  ///< false for points seen by radiosity's gathering rays (measured)
     };
     /// The point hit on o as every POV-Ray shading path starts it: object, material, surface, P,
     /// side, the ray's interior and the fade up to the hit (N, C, filter and transmit not yet set).
@@ -279,10 +290,11 @@ private:
                   bool countBlocked) const;
     /// The light of one light that reaches P: its colour dimmed by a spotlight's cone and light
     /// fading (shadowless lights: nothing more), tinted by transparent objects on the way, times the
-    /// visible share of an area light's samples; L (unit, towards the light) and dist
-    /// as povLights found them; shadow rays leave P on side Nl.
-    Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, double dist, Vec3 Nl, bool intoSurface,
-                          TraceContext& ctx) const;
+    /// visible share of an area light's samples; shadow rays leave P on side Nl, aimed at the light
+    /// (each sample) from there. centreOnly: an area light as a point
+    /// light at its centre (the points radiosity gathers from: measured, docs/povray-lighting.md).
+    Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
+                          TraceContext& ctx, bool centreOnly = false) const;
     /// 1 when nothing lies on the shadow ray before tMax, else what the objects on it let through.
     Vec3 povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
                        const FromLight* fromLight) const;
@@ -291,6 +303,23 @@ private:
     /// for one it began in, none for one it does not leave); an opaque surface (or too many) blocks.
     Vec3 povTransmittance(const Ray& shadow, double tMax) const;
     const PovSurface& povSurfaceOf(const Material& m) const;
+    // POV-Ray's radiosity (tracer_radiosity.cpp; docs/povray-lighting.md, "Radiosity").
+    /// The light radiosity brings at a point once: brightness and gray_threshold applied, nothing at
+    /// recursion_limit.
+    struct PovGathered {
+        bool done = false;
+        Vec3 light;
+    };
+    /// (ambient·ambient_light + emission)·C, or with radiosity povRadiosityAmbient with the light
+    /// gathered at P about the unperturbed normal N facing the viewer (found once per point in g).
+    Vec3 povAmbientTerm(const PovFinish& f, Vec3 C, Vec3 P, Vec3 N, const PovRay& r, TraceContext& ctx,
+                        PovGathered& g) const;
+    /// The irradiance at P: blended from the cache's and this sample's records, or gathered anew
+    /// (and kept in ctx.radLocal).
+    Vec3 povIrradiance(Vec3 P, Vec3 N, const PovRay& r, TraceContext& ctx) const;
+    /// A new record: `count` cosine-distributed rays about N, their hits shaded one radiosity level
+    /// deeper without highlights; R their harmonic mean distance clamped by minimum/maximum_reuse.
+    IrradianceRecord povGatherRecord(Vec3 P, Vec3 N, const PovRay& r, TraceContext& ctx) const;
 
     const Scene& scene_;
     const Bvh& bvh_;
@@ -299,6 +328,7 @@ private:
     bool povPath_;         ///< the scene is traced by POV-Ray's rules
     bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
     bool povHides_;        ///< and some are hidden from camera or reflection rays
+    const IrradianceCache* radCache_ = nullptr;
 };
 
 }  // namespace rays

@@ -61,6 +61,8 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
     int n = 0;
     Vec3 through(1.0);  // what the layers above let through: it filters the light a layer sends back
     Vec3 color;
+    PovGathered gathered;  // radiosity's light at the point, found once for all layers
+    const Vec3 Nraw = pt.entering ? hit.normal : -hit.normal;
     for (int i = 0; i < count && n < kMaxLayers && through != Vec3{}; ++i) {
         const PovLayer& l = scene_.povTextures.layers[size_t(begin + i)];
         PovLayerAt& a = layers[n++];
@@ -74,7 +76,7 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
         a.opacity = povOpacity(a.C, a.filter, a.transmit, scene_.pov.version);
         a.R = povReflectivity(l.surface, a.C, std::max(0.0, -dot(a.N, ray.dir)), eta);
         a.through = through;
-        color += (a.opacity * through) * povAmbient(l.surface.finish, a.C, scene_.pov.ambientLight);
+        color += (a.opacity * through) * povAmbientTerm(l.surface.finish, a.C, pt.P, Nraw, r, ctx, gathered);
         Vec3 tint = povFilterTint(a.C, a.filter, a.transmit);
         if (l.surface.finish.conserveEnergy) tint *= Vec3(1.0) - a.R;
         through *= tint;
@@ -144,7 +146,7 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
         for (int k = 0; k < count && !useful; ++k) useful = layerLit(*layers[k].surface, layers[k].opacity, dot(layers[k].N, L));
         if (!useful && !countBlocked) continue;
         const double nl = dot(pt.N, L);
-        const Vec3 arriving = povLightReaching(light, li, pt.P, L, dist, nl >= 0 ? pt.N : -pt.N, nl < 0, ctx);
+        const Vec3 arriving = povLightReaching(light, li, pt.P, nl >= 0 ? pt.N : -pt.N, nl < 0, ctx, !pt.highlights);  // radiosity: a point
         if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
@@ -155,7 +157,7 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
             const double crand = a.surface->finish.crand;
             const double grain = crand != 0 ? 1 - crand * ctx.rng.next() : 1.0;
             Vec3 add = (a.opacity * grain) * t.diffuse;
-            if (!light.shadowless) add += t.highlight;  // shadowless lights make no highlights
+            if (!light.shadowless && pt.highlights) add += t.highlight;  // none from shadowless lights or for radiosity
             color += a.through * add;
         }
     }

@@ -78,6 +78,7 @@ Hit Tracer::povFirstHit(const Ray& ray, bool reflected) const {
 }
 
 Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const {
+    ctx.radLocal.clear();  // a camera sample reuses only its own radiosity records (and the cache's)
     PovRay r;
     r.primary = true;
     return tracePov(ray, r, ctx, info);
@@ -106,6 +107,7 @@ Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object
     pt.entering = dot(ray.dir, hit.geomNormal) < 0;
     pt.interior = r.interior;
     pt.viewFade = r.faded * segmentFade;
+    pt.highlights = !r.gathering;
     return pt;
 }
 
@@ -134,7 +136,8 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     // The surface's own colour, weighted by its opacity; highlights are not (measured).
     const PovSurface& s = *pt.surface;
     const double opacity = povOpacity(pt.C, pt.filter, pt.transmit, scene_.pov.version);
-    Vec3 color = opacity * povAmbient(s.finish, pt.C, scene_.pov.ambientLight);
+    PovGathered gathered;
+    Vec3 color = opacity * povAmbientTerm(s.finish, pt.C, pt.P, pt.entering ? hit.normal : -hit.normal, r, ctx, gathered);
     ctx.surfaceObject = hit.object;
     const int blocked = povLights(pt, opacity, -ray.dir, ctx, color, info && r.primary);
     ctx.surfaceObject = -1;
@@ -180,7 +183,9 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
     PovRay reflected{.level = r.level + 1,
                      .weight = r.weight,
                      .interior = pt.entering ? r.interior : pt.object,
-                     .reflected = true};
+                     .reflected = true,
+                     .radLevel = r.radLevel,
+                     .gathering = r.gathering};
     if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
     return reflected;
 }
@@ -200,7 +205,9 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
                          .weight = r.weight * maxAbsComponent(T),
                          .interior = pt.entering ? pt.object : -1,
                          .fades = true,
-                         .reflected = r.reflected};
+                         .reflected = r.reflected,
+                         .radLevel = r.radLevel,
+                         .gathering = r.gathering};
     if (through.weight >= scene_.pov.adcBailout) {
         ++ctx.stats.secondaryRays;
         color += T * tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, through, ctx, info);
@@ -233,20 +240,21 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         const double nl = dot(N, L);
         const bool useful = nl > 0 ? front : (nl < 0 && back);
         if (!useful && !countBlocked) continue;
-        const Vec3 arriving = povLightReaching(light, li, P, L, dist, nl >= 0 ? N : -N, nl < 0, ctx);
+        const Vec3 arriving = povLightReaching(light, li, P, nl >= 0 ? N : -N, nl < 0, ctx, !pt.highlights);  // radiosity sees area lights as points (measured)
         if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
         const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
         const double grain = f.crand != 0 ? 1 - f.crand * ctx.rng.next() : 1.0;  // crand
         color += (opacity * grain) * t.diffuse;
-        if (!light.shadowless) color += t.highlight;  // shadowless lights make no highlights (the manual; measured)
+        // Shadowless lights make no highlights (the manual; measured), nor do points radiosity gathers from.
+        if (!light.shadowless && pt.highlights) color += t.highlight;
     }
     return blocked;
 }
 
-Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, double dist, Vec3 Nl,
-                              bool intoSurface, TraceContext& ctx) const {
+Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
+                              bool intoSurface, TraceContext& ctx, bool centreOnly) const {
     // Spotlights, cylindrical lights and fading dim the light before anything blocks it.
     Vec3 color = light.color;
     if (light.spot != Light::Spot::None) color *= povSpotFactor(light, P - light.position);
@@ -260,22 +268,29 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 L, 
         if (tMax <= 0) return color;
         return color * povShadowTint(Ray{origin, -light.direction}, tMax, index, ctx, intoSurface, nullptr);
     }
-    if (!light.area) {
-        const FromLight fromLight{-dist * L, dist};
-        return color * povShadowTint(Ray{origin, L}, dist - kSurfaceOffset, index, ctx, intoSurface, &fromLight);
+    // Shadow rays are aimed at the light from their offset origin: aimed along L from P, they would
+    // meet a surface through the light's position (radiosity/cornell.pov's lights sit in its
+    // ceiling) before the light; povray lights such points (measured).
+    if (!light.area || centreOnly) {
+        const Vec3 toLight = light.position - origin;
+        const double d = length(toLight);
+        if (d == 0) return color;
+        const FromLight fromLight{-toLight, d};
+        return color * povShadowTint(Ray{origin, toLight / d}, d - kSurfaceOffset, index, ctx, intoSurface, &fromLight);
     }
     // Area light: the shading uses its centre (measured); its samples only decide how much of the
     // light arrives, each tinted by what lies on its shadow ray.
     const AreaGrid grid = areaGrid(light, settings_.areaSamples, P);
     auto sampleTint = [&](Vec3 pos) {
-        const Vec3 toLight = pos - P;
+        const Vec3 toLight = pos - origin;
         const double d = length(toLight);
         if (d == 0) return Vec3(1.0);
         return povShadowTint(Ray{origin, toLight / d}, d - kSurfaceOffset, index, ctx, intoSurface, nullptr);
     };
     const int count = grid.n1 * grid.n2;
-    // adaptive: four corners that agree on all-or-nothing decide for the whole light.
-    if (light.adaptive >= 0 && grid.n1 > 1 && grid.n2 > 1 && !light.jitter) {
+    // adaptive: four corners that agree on all-or-nothing decide for the whole light (jittered
+    // corners too: POV-Ray subdivides a jittered adaptive light from its corners as well).
+    if (light.adaptive >= 0 && grid.n1 > 1 && grid.n2 > 1) {
         int lit = 0, dark = 0;
         for (int c = 0; c < 4; ++c) {
             const Vec3 t =

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rays/math/vec3.h"
+#include "rays/scene/pov_radiosity.h"
 
 namespace rays {
 
@@ -93,6 +94,7 @@ struct PovGlobals {
     /// Scene::pigments looked up by ray direction; none: the background colour.
     int skyFirst = -1, skyCount = 0;
     Vec3 skyEmission{1, 1, 1};  ///< sky_sphere's emission: the sky's colour is multiplied by it
+    PovRadiosity radiosity;     ///< global_settings' radiosity block (render/tracer_radiosity.cpp)
 };
 
 }  // namespace rays
