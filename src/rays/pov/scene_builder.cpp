@@ -335,6 +335,16 @@ void SceneBuilder::emit(const Object& o, bool inverse) {
     else scene_.objects.push_back(o);
 }
 
+// A shape drawn as the mesh it was tessellated into (parametric, bicubic_patch): its triangles
+// count against the scene's object limit.
+void SceneBuilder::placeTessellated(Object& o, std::unique_ptr<Mesh> mesh, const sdl::Loc& at) {
+    countObjects(mesh->triangleCount(), at);
+    mesh->finalize();
+    o.type = ShapeType::Mesh;
+    o.mesh = mesh.get();
+    scene_.meshes.push_back(std::move(mesh));
+}
+
 void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, const sdl::Loc& at,
                                 const Transform& toWorld, const Appearance& look, bool open, bool inverse) {
     auto need = [&](size_t n) {
@@ -410,21 +420,13 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             const ShapeBuild made = buildParametric(a, terms_, *mesh, notes_.where(at));
             if (made == ShapeBuild::NotAShape) notes_.note("parametric function calling a pattern or pigment function", at, "(left out)");
             if (made != ShapeBuild::Made) return;
-            countObjects(mesh->triangleCount(), at);
-            mesh->finalize();
-            o.type = ShapeType::Mesh;
-            o.mesh = mesh.get();
-            scene_.meshes.push_back(std::move(mesh));
+            placeTessellated(o, std::move(mesh), at);
             break;
         }
         case Kw::bicubic_patch: {
             auto mesh = std::make_unique<Mesh>();
             buildBicubicPatch(a, terms_, *mesh, notes_.where(at));
-            countObjects(mesh->triangleCount(), at);
-            mesh->finalize();
-            o.type = ShapeType::Mesh;
-            o.mesh = mesh.get();
-            scene_.meshes.push_back(std::move(mesh));
+            placeTessellated(o, std::move(mesh), at);
             break;
         }
         case Kw::height_field: {

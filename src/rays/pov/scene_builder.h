@@ -96,6 +96,7 @@ private:
     void addSkySphere(const Item& sky);
     /// Counts n more objects made at `at`; throws past maxObjects_.
     void countObjects(uint64_t n, const sdl::Loc& at);
+    void placeTessellated(Object& o, std::unique_ptr<Mesh> mesh, const sdl::Loc& at);
 
     NotRendered& notes_;
     Scene scene_;
