@@ -411,6 +411,12 @@ std::vector<BadInput> catalogue() {
                  "out.png", "RAYS_MEMORY_LIMIT=40M"});
     t.push_back({"obj-star-polygon-10^5", {{"scene.pov", kCamera + kLight}, {"model.obj", starPolygonObj(100000)}},
                  render({"--obj", "model.obj"}), 0, ""});
+    std::string a, b;
+    for (int i = 0; i < 40; ++i) a += "b\n", b += "c\n";
+    t.push_back({"ini-read-over-and-over", {{"scene.pov", kScene}, {"a.ini", a}, {"b.ini", b}, {"c.ini", "Width=16\n"}},
+                 {"a.ini", "+Iscene.pov", "+H12", "+Oout.png"}, 2,
+                 "rays: error: reading INI file 'c.ini' makes more than 1000 INI files or 64 MiB of INI text read in all "
+                 "(do INI files name each other over and over?) (named b.ini:15)"});
     return t;
 }
 
