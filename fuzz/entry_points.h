@@ -1,4 +1,5 @@
-// The five fuzzing entry points, shared by the libFuzzer targets in fuzz/ and by
+// The fuzzing entry points of the library's readers (the INI reader's, in the program's code, is in
+// entry_points_ini.h), shared by the libFuzzer targets in fuzz/ and by
 // tests/regressions_test.cpp (which replays the saved crash inputs in tests/regressions/).
 // Each takes arbitrary bytes, feeds them to one reader of the library and returns normally for any
 // input: a rays::Error is the expected outcome of bad input; everything else (a crash, a sanitizer
@@ -23,6 +24,7 @@
 #include "rays/io/image_io.h"
 #include "rays/io/obj_loader.h"
 #include "rays/io/scene_parser.h"
+#include "rays/io/ttf_font.h"
 #include "rays/pov/load_pov.h"
 #include "rays/sdl/interpreter.h"
 
@@ -268,6 +270,21 @@ inline void fuzzPov(const uint8_t* data, size_t size) {
     try {
         const Scene scene = parseFuzzPov(asText(data, size));
         (void)scene;
+    } catch (const Error&) {
+    }
+}
+
+/// TrueType fonts: the bytes go to a file (in.ttf), TtfFont opens it through FreeType and lays out a
+/// text of letters, kerning pairs and non-ASCII code points (some the font will lack) into a
+/// TextShape, extruded or flat.
+inline void fuzzFont(const uint8_t* data, size_t size) {
+    const std::string path = scratchDir() + "/in.ttf";
+    writeScratchFile(path, asText(data, size));
+    try {
+        TtfFont font(path);
+        const TextShape shape = font.layout("AVAWTo fi Rays \xc3\xa9\xd0\x96\xe2\x88\x91\xff 0.5!", size % 2 ? 0.25 : 0.0,
+                                            Vec3(0.01 * double(size % 7), 0, 0));
+        (void)shape;
     } catch (const Error&) {
     }
 }

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -94,6 +96,20 @@ std::vector<File> fourTextures() {
     }
     files.push_back({"scene.pov", kCamera + body});
     return files;
+}
+
+// An OBJ file of one star-shaped polygon of n corners (every second one concave), radius 3.
+std::string starPolygonObj(int n) {
+    std::string obj;
+    char line[96];
+    for (int i = 0; i < n; ++i) {
+        const double angle = 2 * 3.14159265358979323846 * i / n, r = i % 2 ? 1.5 : 3.0;
+        std::snprintf(line, sizeof line, "v %.9f %.9f 0\n", r * std::cos(angle), r * std::sin(angle));
+        obj += line;
+    }
+    obj += "f";
+    for (int i = 1; i <= n; ++i) obj += " " + std::to_string(i);
+    return obj + "\n";
 }
 
 // Two facing mirrors seen between them.
@@ -393,6 +409,14 @@ std::vector<BadInput> catalogue() {
                  "rays: error: a 16x12 render with these options needs about 0.0 MiB of image buffers and 48.0 MiB for the "
                  "scene, more than the memory limit of 40.0 MiB (RAYS_MEMORY_LIMIT)",
                  "out.png", "RAYS_MEMORY_LIMIT=40M"});
+    t.push_back({"obj-star-polygon-10^5", {{"scene.pov", kCamera + kLight}, {"model.obj", starPolygonObj(100000)}},
+                 render({"--obj", "model.obj"}), 0, ""});
+    std::string a, b;
+    for (int i = 0; i < 40; ++i) a += "b\n", b += "c\n";
+    t.push_back({"ini-read-over-and-over", {{"scene.pov", kScene}, {"a.ini", a}, {"b.ini", b}, {"c.ini", "Width=16\n"}},
+                 {"a.ini", "+Iscene.pov", "+H12", "+Oout.png"}, 2,
+                 "rays: error: reading INI file 'c.ini' makes more than 1000 INI files or 64 MiB of INI text read in all "
+                 "(do INI files name each other over and over?) (named b.ini:15)"});
     return t;
 }
 

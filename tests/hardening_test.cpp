@@ -6,6 +6,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -90,6 +91,39 @@ TEST(HardeningOutputs, OutputFilesReplaceNothingUntilCommitted) {
     }
     EXPECT_EQ(readFile(a), "new");
     EXPECT_EQ(readFile(b), "B");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 2);
+}
+
+TEST(HardeningOutputs, ARenameFailingMidwayLeavesEveryOutputAsItWas) {
+    // The third destination is a folder that is not empty: its rename fails after the first two
+    // files were renamed over theirs. Before, those two stayed replaced.
+    TempDir dir;
+    const fs::path a = dir.path() / "a.bin", fresh = dir.path() / "new.bin", folder = dir.path() / "c.bin";
+    writeFile(a, "old a");
+    fs::create_directory(folder);
+    writeFile(folder / "inside", "x");
+    rays::OutputFiles files;
+    files.stage(a.string(), {'n', 'e', 'w'});
+    files.stage(fresh.string(), {'N'});
+    files.stage(folder.string(), {'C'});
+    try {
+        files.commit();
+        FAIL() << "commit over a folder succeeded";
+    } catch (const rays::Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(folder.string() + ": error: cannot replace file: ", 0), 0u) << e.what();
+    }
+    EXPECT_EQ(readFile(a), "old a");
+    EXPECT_FALSE(fs::exists(fresh));
+    // Nothing else left: no temporary, no backup.
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir.path())) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"a.bin", "c.bin"}));
+    // And a commit that succeeds leaves no backup behind either.
+    rays::OutputFiles again;
+    again.stage(a.string(), {'2'});
+    again.commit();
+    EXPECT_EQ(readFile(a), "2");
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 2);
 }
 

@@ -275,4 +275,33 @@ TEST(Interrupt, LoadingStopsAtTheFirstSignalEvenInsideALibraryCall) {
     EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"scene.pov"});
 }
 
+TEST(Interrupt, PostFiltersStopAtTheFirstSignal) {
+    // A quick render (one plane) and a slow --post filter (a 101x101 kernel that does not split into
+    // two passes, on 1600x1200 pixels: minutes of work). Before, the filters never looked at the
+    // flag: the signal waited for them to finish.
+    TempDir dir, logs;
+    std::ofstream(dir.path() / "scene.pov")
+        << "camera { location <0,0,5> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
+           "plane { <0,0,1>, 0 pigment { color rgb 0.5 } finish { ambient 1 diffuse 0 } }\n";
+    {
+        std::ofstream k(dir.path() / "k.txt");
+        uint32_t h = 1;
+        for (int y = 0; y < 101; ++y) {
+            for (int x = 0; x < 101; ++x) {
+                h = h * 1664525u + 1013904223u;
+                k << (h >> 20) % 97 << (x + 1 < 101 ? ' ' : '\n');
+            }
+        }
+    }
+    const SignalledRun r = runAndSignal(dir.path(), logs.path() / "err.txt",
+                                        {"render", "scene.pov", "1600", "1200", "--threads", "2", "--post", "kernel:k.txt",
+                                         "-o", "out.png"},
+                                        SIGINT, std::chrono::milliseconds(1500), std::chrono::seconds(20));
+    ASSERT_FALSE(r.finishedBeforeSignal) << r.err;
+    EXPECT_EQ(r.exitCode, 130) << r.err;
+    EXPECT_NE(r.err.find("rays: interrupted; no image written\n"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("interrupted again"), std::string::npos) << r.err;
+    EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"k.txt", "scene.pov"}));
+}
+
 }  // namespace

@@ -381,6 +381,23 @@ TEST(PovOptionsIni, NestingDeeperThanTenIsAnError) {
     EXPECT_NE(message.find("INI files nested more than 10 deep"), std::string::npos) << message;
 }
 
+TEST(PovOptionsIni, FilesNamingOthersManyTimesStopAtAThousandReads) {
+    // Nesting stops at 10 levels, but each level may name the next many times: 40 lines naming
+    // b.ini, whose 40 lines name c.ini, is 1 + 40 + 1600 reads (40^9 with ten such files). Before,
+    // every one was read.
+    TempDir dir;
+    std::string a, b;
+    for (int i = 0; i < 40; ++i) a += "b\n", b += "c\n";
+    writeFile(dir.path() / "a.ini", a);
+    writeFile(dir.path() / "b.ini", b);
+    writeFile(dir.path() / "c.ini", "Width=3\n");
+    const std::string bPath = (dir.path() / "b.ini").string();
+    EXPECT_EQ(errorOf({(dir.path() / "a.ini").string()}),
+              "rays: error: reading INI file '" + (dir.path() / "c.ini").string() +
+                  "' makes more than 1000 INI files or 64 MiB of INI text read in all (do INI files name each other "
+                  "over and over?) (named " + bPath + ":15)");
+}
+
 TEST(PovOptionsIni, AMissingIniFileIsAnErrorNamingWhereItWasAsked) {
     TempDir dir;
     EXPECT_EQ(errorOf({(dir.path() / "none").string()}),

@@ -227,3 +227,25 @@ TEST(PovTextRender, PixelsMatchPovRay) {
 
 }  // namespace
 }  // namespace rays
+
+namespace {
+
+TEST(PovTextOutline, AQuadraticIsSplitOnceWhereYTurnsWhateverTheRounding) {
+    // Fuzz finding 28 (fuzz_font): splitting the two pieces again found a turning point in (0, 1)
+    // from rounding every time, and recursed until the stack ran out. This quad (found by a search
+    // like the fuzzer's) did so; now it gives two pieces, each monotone in y.
+    rays::TextShape shape;
+    shape.glyphs.emplace_back();
+    shape.addQuad(0x1.ac6b851eb851fp-2, -0x1.e2147ae147ae1p-3, -0x1.78ca3d70a3d71p-1, -0x1.51051eb851eb8p-1,
+                  -0x1.82147ae147ae1p-3, 0x1.adeb851eb851fp-3);
+    ASSERT_EQ(shape.segments.size(), 2u);
+    for (const rays::TextSegment& e : shape.segments) {
+        EXPECT_TRUE(e.quad);
+        EXPECT_GE(e.cy, std::min(e.ay, e.by));
+        EXPECT_LE(e.cy, std::max(e.ay, e.by));
+    }
+    EXPECT_EQ(shape.segments[0].bx, shape.segments[1].ax);
+    EXPECT_EQ(shape.segments[0].by, shape.segments[1].ay);
+}
+
+}  // namespace

@@ -2,7 +2,7 @@
 // found by the fuzzers in fuzz/, see docs/fuzzing.md) is run through the same entry point as the
 // fuzzer (fuzz/entry_points.h) and must now end normally; the reader it exercises must refuse it
 // with the one-line message listed here. File names start with the fuzz target: scene-, obj-,
-// kernel-, image-, pov-. The sanitizer builds (scripts/sanitize.sh) run these too, which is where a
+// kernel-, image-, pov-, ini-, font-. The sanitizer builds (scripts/sanitize.sh) run these too, which is where a
 // regression of a memory or UB fix would show.
 #include <gtest/gtest.h>
 
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../fuzz/entry_points.h"
+#include "../fuzz/entry_points_ini.h"  // the INI reader's code is linked in by pov_options_test.cpp
 #include "rays/error.h"
 #include "rays/image/kernels.h"
 #include "rays/io/image_io.h"
@@ -98,6 +99,13 @@ std::string errorOf(const std::string& target, const std::string& bytes, const f
             if (target == "image") rays::readImage(p.string());
             else if (target == "obj") rays::loadObj(p.string());
             else if (target == "kernel") rays::parseKernelText(bytes, p.string());
+            else if (target == "font") {
+                rays::TtfFont font(p.string());
+            }
+            else if (target == "ini") {
+                rays::cli::PovOptions options;
+                rays::cli::PovOptionReader(options, [](const std::string&) {}).readIniFile(p.string(), "");
+            }
         }
     } catch (const rays::Error& e) {
         return e.what();
@@ -118,6 +126,8 @@ TEST_P(Regressions, SameEntryPointAsTheFuzzerEndsNormally) {
     else if (target == "kernel") rays::fuzz::fuzzKernel(data, bytes.size());
     else if (target == "image") rays::fuzz::fuzzImage(data, bytes.size());
     else if (target == "pov") rays::fuzz::fuzzPov(data, bytes.size());
+    else if (target == "ini") rays::fuzz::fuzzIni(data, bytes.size());
+    else if (target == "font") rays::fuzz::fuzzFont(data, bytes.size());
     else FAIL() << "unknown target prefix in " << r.file;
 }
 
@@ -193,6 +203,7 @@ TEST(FuzzScaling, EverySeedRunsThroughItsTarget) {
             else if (t == "kernel") rays::fuzz::fuzzKernel(data, big.size());
             else if (t == "scene") rays::fuzz::fuzzScene(data, big.size());
             else if (t == "pov") rays::fuzz::fuzzPov(data, big.size());
+            else if (t == "ini") rays::fuzz::fuzzIni(data, big.size());
             else ADD_FAILURE() << "no target " << t;
             ++seeds;
         }

@@ -23,6 +23,10 @@ namespace fs = std::filesystem;
 
 /// Largest INI file read (16 MiB): POV-Ray's INI files are a few KiB; /dev/zero stops here.
 constexpr size_t kMaxIniFileBytes = size_t(16) << 20;
+// INI files read in one run, counting each time a file is read again, and their bytes: nesting
+// stops at 10 levels, but files naming others many times each would otherwise multiply the reads.
+constexpr size_t kMaxIniFilesRead = 1000;
+constexpr size_t kMaxIniBytesRead = size_t(64) << 20;
 using pov::Form;
 using pov::Key;
 using pov::Kind;
@@ -411,6 +415,11 @@ void PovOptionReader::readIniFile(const std::string& path, const std::string& se
     if (text.status() == FileText::Status::CannotRead) throw Error("rays: error: cannot read INI file '" + name + "'" + origin);
     if (text.status() == FileText::Status::TooLarge)
         throw Error("rays: error: INI file '" + name + "' is larger than " + FileText::describe(kMaxIniFileBytes) + origin);
+    iniBytesRead_ += text.text().size();
+    if (++iniFilesRead_ > kMaxIniFilesRead || iniBytesRead_ > kMaxIniBytesRead)
+        throw Error("rays: error: reading INI file '" + name + "' makes more than " + std::to_string(kMaxIniFilesRead) +
+                    " INI files or " + FileText::describe(kMaxIniBytesRead) +
+                    " of INI text read in all (do INI files name each other over and over?)" + origin);
     iniStack_.push_back(name);
     readIniText(std::string(text.text()), name, section);
     iniStack_.pop_back();

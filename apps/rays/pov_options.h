@@ -99,6 +99,8 @@ private:
     Warn warn_;
     std::set<std::string> warned_;        ///< keys already warned about
     std::vector<std::string> iniStack_;   ///< INI files being read (for nesting and relative names)
+    size_t iniFilesRead_ = 0;             ///< INI files read so far (each reading counts)
+    size_t iniBytesRead_ = 0;             ///< and their bytes
 };
 
 /// The options of these arguments read in order (a convenience for tests and simple callers).

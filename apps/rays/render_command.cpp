@@ -327,7 +327,12 @@ int runRender(const RenderJob& job) {
         img = edges.linesOnly ? ImageF(s.width, s.height)
                               : render(scene, bvh, s, stats, [&](double f) { bar(f); }, nullptr, onRecord, onRows);
     stopIfInterrupted(job, &scene, &img);
-    if (!job.post.empty()) img = applyFilters(img, job.post, BorderMode::Clamp, s.threads);
+    if (!job.post.empty()) {
+        // The filters do not look at the flag and write nothing: a signal ends the process at once
+        // (a --save-partial image is not written then).
+        QuitAtOnce filtering;
+        img = applyFilters(img, job.post, BorderMode::Clamp, s.threads);
+    }
     const double renderMs = msSince(t0);
     double linesMs = 0;
     LineCoverage lines;

@@ -56,18 +56,72 @@ void OutputFiles::stage(const std::string& path, const std::vector<uint8_t>& dat
         ::unlink(tmp.c_str());
         failFile(path, "write failed: " + errnoText(e));
     }
-    pending_.push_back({path, tmp});
+    pending_.push_back({path, tmp, {}});
+}
+
+// The hidden backup name of path: ".NAME.bak.PID.N" in the same folder.
+static std::string backupPath(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    return dir + "." + name + ".bak." + std::to_string(::getpid()) + "." + std::to_string(tempCounter.fetch_add(1));
+}
+
+// Each destination that exists (and is not a folder, which the rename will refuse anyway) gets a
+// backup: a hard link, or where the file system has none the file itself renamed aside. Throws,
+// with every backup undone and every temporary removed, when one cannot be made.
+void OutputFiles::keepBackups(std::vector<Pending>& todo) {
+    for (size_t i = 0; i < todo.size(); ++i) {
+        struct stat st {};
+        if (::lstat(todo[i].path.c_str(), &st) != 0 || S_ISDIR(st.st_mode)) continue;
+        const std::string backup = backupPath(todo[i].path);
+        if (::link(todo[i].path.c_str(), backup.c_str()) == 0 || ::rename(todo[i].path.c_str(), backup.c_str()) == 0) {
+            todo[i].backup = backup;
+            continue;
+        }
+        const int e = errno;
+        rollBack(todo, 0);
+        for (const Pending& p : todo) ::unlink(p.tmp.c_str());
+        failFile(todo[i].path, "cannot keep a backup of the file: " + errnoText(e));
+    }
+}
+
+// Undoes the first `replaced` renames (backups back over their files, new files removed) and
+// puts back files renamed aside for the others; removes the backups left. Returns "" or what
+// could not be undone, for the message.
+std::string OutputFiles::rollBack(std::vector<Pending>& todo, size_t replaced) {
+    std::string failed;
+    for (size_t j = 0; j < todo.size(); ++j) {
+        const Pending& p = todo[j];
+        if (p.backup.empty()) {
+            if (j < replaced) ::unlink(p.path.c_str());
+            continue;
+        }
+        struct stat st {};
+        const bool aside = j >= replaced && ::lstat(p.path.c_str(), &st) != 0;  // renamed, not linked
+        if (j < replaced || aside) {
+            if (::rename(p.backup.c_str(), p.path.c_str()) != 0) failed += (failed.empty() ? "" : ", ") + p.path;
+        } else {
+            ::unlink(p.backup.c_str());
+        }
+    }
+    return failed;
 }
 
 void OutputFiles::commit() {
     std::vector<Pending> todo;
     todo.swap(pending_);  // from here the destructor has nothing left to remove
+    keepBackups(todo);
     for (size_t i = 0; i < todo.size(); ++i) {
         if (::rename(todo[i].tmp.c_str(), todo[i].path.c_str()) == 0) continue;
         const int e = errno;
         for (size_t j = i; j < todo.size(); ++j) ::unlink(todo[j].tmp.c_str());
-        failFile(todo[i].path, "cannot replace file: " + errnoText(e));
+        const std::string failed = rollBack(todo, i);
+        failFile(todo[i].path, "cannot replace file: " + errnoText(e) +
+                                   (failed.empty() ? "" : " (and could not put back the earlier file " + failed + ")"));
     }
+    for (const Pending& p : todo)
+        if (!p.backup.empty()) ::unlink(p.backup.c_str());
 }
 
 }  // namespace rays

@@ -4,12 +4,13 @@
 #include <cmath>
 #include <cstdint>
 
+#include "rays/io/polygon_monotone.h"
+
 namespace rays {
 namespace {
 
-struct P2 {
-    double x, y;
-};
+using P2 = PlanePoint;
+using Tri = std::array<int, 3>;
 
 double cross(P2 a, P2 b, P2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
 
@@ -27,6 +28,8 @@ std::vector<std::array<int, 3>> splitQuad(std::span<const Vec3> c) {
 
 // The ring of corners still to clip, projected to 2D and oriented counter-clockwise, with a grid
 // of the corners that are not strictly convex (only those can lie inside an ear).
+constexpr uint64_t kEarStepsPerCorner = 32;  // ear clipping's budget before the sweep takes over
+
 class EarClipper {
 public:
     EarClipper(std::vector<P2> pts) : p_(std::move(pts)), n_(int(p_.size())), next_(size_t(n_)), prev_(size_t(n_)),
@@ -39,36 +42,43 @@ public:
         buildGrid();
     }
 
-    std::vector<std::array<int, 3>> run() {
-        std::vector<std::array<int, 3>> out;
+    /// Clips ears into `out` until done (true) or until more than `budget` steps are spent (false:
+    /// fanRest or another method finishes the polygon).
+    bool clip(uint64_t budget, std::vector<Tri>& out) {
         out.reserve(size_t(n_ - 2));
         if (concaveLeft_ == 0) {  // convex: the fan from corner 0, as tinyobjloader's ear walk gives it
             for (int i = 1; i + 1 < n_; ++i) out.push_back({0, i, i + 1});
-            return out;
+            return true;
         }
-        int left = n_, cur = 0, stalled = 0;
-        while (left > 3) {
-            const int b = next_[size_t(cur)], c = next_[size_t(b)];
+        int stalled = 0;
+        while (left_ > 3) {
+            if (work_ > budget) return false;
+            const int b = next_[size_t(cur_)], c = next_[size_t(b)];
             ++work_;
-            if (!concave_[size_t(b)] && !blocked(cur, b, c)) {
-                out.push_back({cur, b, c});
+            if (!concave_[size_t(b)] && !blocked(cur_, b, c)) {
+                out.push_back({cur_, b, c});
                 remove(b);
-                --left;
+                --left_;
                 stalled = 0;
-                cur = c;  // walk on (as Mapbox's earcut does): ears stay small, so grid queries stay local
+                cur_ = c;  // walk on (as Mapbox's earcut does): ears stay small, so grid queries stay local
                 continue;
             }
-            cur = b;
-            if (++stalled > left) {  // no ear in a whole turn: degenerate; fan the rest
-                for (int x = next_[size_t(cur)]; next_[size_t(x)] != cur; x = next_[size_t(x)])
-                    out.push_back({cur, x, next_[size_t(x)]});
-                return out;
+            cur_ = b;
+            if (++stalled > left_) {  // no ear in a whole turn: degenerate; fan the rest
+                fanRest(out);
+                return true;
             }
         }
-        std::array<int, 3> t{cur, next_[size_t(cur)], next_[size_t(next_[size_t(cur)])]};
+        Tri t{cur_, next_[size_t(cur_)], next_[size_t(next_[size_t(cur_)])]};
         std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());  // lowest corner first, same winding
         out.push_back(t);
-        return out;
+        return true;
+    }
+
+    /// The corners still in the ring as a fan from the current one.
+    void fanRest(std::vector<Tri>& out) const {
+        for (int x = next_[size_t(cur_)]; next_[size_t(x)] != cur_; x = next_[size_t(x)])
+            out.push_back({cur_, x, next_[size_t(x)]});
     }
 
     uint64_t work() const { return work_; }
@@ -167,12 +177,20 @@ private:
     std::vector<int> next_, prev_;
     std::vector<uint8_t> concave_, removed_;
     int concaveLeft_ = 0, gridMembers_ = 0;
+    int left_ = n_, cur_ = 0;  // corners still in the ring, the corner the walk is at
     double x0_ = 0, y0_ = 0, sx_ = 0, sy_ = 0;
     int gw_ = 1, gh_ = 1;
     std::vector<uint32_t> start_;
     std::vector<int> cells_;
     uint64_t work_ = 0;
 };
+
+// Coordinates whose products stay finite (the grid and the sweep compute with them).
+bool finiteAndModest(const std::vector<P2>& pts) {
+    for (const P2& q : pts)
+        if (!(std::fabs(q.x) < 1e100 && std::fabs(q.y) < 1e100)) return false;
+    return true;
+}
 
 }  // namespace
 
@@ -199,14 +217,27 @@ std::vector<std::array<int, 3>> triangulatePolygon(std::span<const Vec3> corners
         else if (drop == 1) pts[i] = {q.z, sign * q.x};
         else pts[i] = {q.x, sign * q.y};
     }
-    if (nrm[drop] == 0) {  // no area at all: a fan keeps the count and the corners
+    if (nrm[drop] == 0 || !finiteAndModest(pts)) {  // no area at all (or no sane numbers): a fan keeps the count and the corners
         std::vector<std::array<int, 3>> fan;
         for (int i = 1; i + 1 < int(n); ++i) fan.push_back({0, i, i + 1});
         return fan;
     }
-    EarClipper clipper(std::move(pts));
-    std::vector<std::array<int, 3>> out = clipper.run();
-    if (work) *work = clipper.work();
+    // Ear clipping is linear for ordinary polygons; past a budget of steps (long thin spikes: a
+    // star) the O(n log n) sweep takes over; a polygon that is not simple, and too hard for ear
+    // clipping, has the rest of its ring fanned.
+    EarClipper clipper(pts);
+    std::vector<Tri> out;
+    const uint64_t budget = kEarStepsPerCorner * n + 1024;
+    uint64_t steps = 0;
+    if (!clipper.clip(budget, out)) {
+        steps = clipper.work();
+        std::vector<Tri> sweep;
+        if (triangulateMonotone(pts, sweep, steps)) out = std::move(sweep);
+        else clipper.fanRest(out);
+    } else {
+        steps = clipper.work();
+    }
+    if (work) *work = steps;
     return out;
 }
 

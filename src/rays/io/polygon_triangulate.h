@@ -1,7 +1,8 @@
-// Triangulation of one OBJ polygon (a face of more than three corners) in time linear in its
-// corners for ordinary shapes: ear clipping over a linked ring, with the test "does a reflex
+// Triangulation of one OBJ polygon (a face of more than three corners) in O(n log n) time for any
+// input, linear for ordinary shapes: ear clipping over a linked ring, with the test "does a reflex
 // corner lie in this ear?" answered by a uniform grid of the reflex corners (Eberly, "Triangulation
-// by Ear Clipping", 2002, for the method; the grid replaces its linear scan).
+// by Ear Clipping", 2002, for the method; the grid replaces its linear scan), and for the polygons it
+// finds hard the sweep into monotone pieces of polygon_monotone.h.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -17,11 +18,14 @@ namespace rays {
 /// corners, none for fewer. Triangles stay triangles; quads are split along the shorter diagonal
 /// (as tinyobjloader splits them); a larger convex polygon becomes the fan from corner 0 (as
 /// tinyobjloader's ear walk gives it); any other is ear-clipped in the plane its Newell normal
-/// picks, walking on from each ear cut. A polygon with
-/// no ear left (self-intersecting, degenerate) has its remaining corners fanned. O(n) expected for
-/// ordinary polygons; the grid keeps the reflex-corner test near constant.
+/// picks, walking on from each ear cut, for at most 32 steps a corner (O(n) for ordinary polygons:
+/// the grid keeps the reflex-corner test near constant). Past that budget the sweep of
+/// triangulateMonotone triangulates it afresh in O(n log n). A polygon with no ear left
+/// (self-intersecting, degenerate), or one past the budget that the sweep cannot triangulate either,
+/// has its remaining corners fanned; so does one with non-finite or huge (≥ 1e100) coordinates.
 /// `work`, when given, receives the steps taken (ear candidates tried, grid cells visited and
-/// corners looked at in them): the measure of the time, which tests bound by a multiple of the corner count.
+/// corners looked at in them; the sweep's comparisons and steps): the measure of the time, which
+/// tests bound.
 std::vector<std::array<int, 3>> triangulatePolygon(std::span<const Vec3> corners, uint64_t* work = nullptr);
 
 }  // namespace rays
