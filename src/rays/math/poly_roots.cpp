@@ -1,5 +1,6 @@
 #include "rays/math/poly_roots.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rays {
@@ -59,6 +60,16 @@ int polyRoots(const double* c, int n, double lo, double hi, double* roots) {
         fa = fb;
     }
     return count;
+}
+
+void cubicRange(const double* c, double& lo, double& hi) {
+    const double d[3] = {c[1], 2 * c[2], 3 * c[3]};
+    double roots[2];
+    const int k = polyRoots(d, 2, 0, 1, roots);
+    for (double u : {0.0, 1.0, k > 0 ? roots[0] : 0.0, k > 1 ? roots[1] : 0.0}) {
+        lo = std::min(lo, cubicAt(c, u));
+        hi = std::max(hi, cubicAt(c, u));
+    }
 }
 
 }  // namespace rays

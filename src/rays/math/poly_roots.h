@@ -21,4 +21,10 @@ double evalPoly(const double* c, int n, double t);
 /// coefficients lower the degree.
 int polyRoots(const double* c, int n, double lo, double hi, double* roots);
 
+/// The cubic c[0] + c[1]·u + c[2]·u² + c[3]·u³ and its slope (spline segments of lathes and prisms).
+inline double cubicAt(const double* c, double u) { return c[0] + u * (c[1] + u * (c[2] + u * c[3])); }
+inline double cubicSlope(const double* c, double u) { return c[1] + u * (2 * c[2] + u * 3 * c[3]); }
+/// Widens [lo, hi] to take in the cubic's values for u in [0, 1] (its ends and turning points).
+void cubicRange(const double* c, double& lo, double& hi);
+
 }  // namespace rays

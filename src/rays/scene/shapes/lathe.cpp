@@ -25,9 +25,6 @@ void polyMul(const double* a, int na, const double* b, int nb, double* c) {
         for (int j = 0; j <= nb; ++j) c[i + j] += a[i] * b[j];
 }
 
-double cubicAt(const double* c, double s) { return c[0] + s * (c[1] + s * (c[2] + s * c[3])); }
-double cubicSlope(const double* c, double s) { return c[1] + s * (2 * c[2] + s * 3 * c[3]); }
-
 // The outward normal at the curve's parameter s of segment seg, the hit at p.
 Vec3 latheNormal(const Object& o, const double* seg, double s, Vec3 p) {
     const double dx = cubicSlope(seg, s), dy = cubicSlope(seg + 4, s);
@@ -37,16 +34,6 @@ Vec3 latheNormal(const Object& o, const double* seg, double s, Vec3 p) {
     return o.r0 * (side * dy * radial + Vec3{0, -dx, 0});
 }
 
-// The extremes of the cubic c on [0, 1] into lo and hi.
-void cubicRange(const double* c, double& lo, double& hi) {
-    const double d[3] = {c[1], 2 * c[2], 3 * c[3]};
-    double roots[2];
-    const int k = polyRoots(d, 2, 0, 1, roots);
-    for (double s : {0.0, 1.0, k > 0 ? roots[0] : 0.0, k > 1 ? roots[1] : 0.0}) {
-        lo = std::min(lo, cubicAt(c, s));
-        hi = std::max(hi, cubicAt(c, s));
-    }
-}
 
 // Whether the ray's stretch u ∈ [u0, u1] can meet the segment: it passes the segment's heights
 // with its squared distance to the axis (Au² + Bu + C) within the segment's.

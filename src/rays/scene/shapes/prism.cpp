@@ -24,20 +24,6 @@ bool insideOutline(const std::vector<double>& e, double px, double pz) {
     return in;
 }
 
-double cubicAt(const double* c, double u) { return c[0] + u * (c[1] + u * (c[2] + u * c[3])); }
-double cubicSlope(const double* c, double u) { return c[1] + u * (2 * c[2] + u * 3 * c[3]); }
-
-// The extremes of the cubic c on [0, 1] widened into lo and hi.
-void cubicExtent(const double* c, double& lo, double& hi) {
-    const double d[3] = {c[1], 2 * c[2], 3 * c[3]};
-    double roots[2];
-    const int k = polyRoots(d, 2, 0, 1, roots);
-    for (double u : {0.0, 1.0, k > 0 ? roots[0] : 0.0, k > 1 ? roots[1] : 0.0}) {
-        lo = std::min(lo, cubicAt(c, u));
-        hi = std::max(hi, cubicAt(c, u));
-    }
-}
-
 // Even-odd rule over curved segments: crossings of the ray from (px, pz) along +x. Each segment is
 // cut where z(u) turns into pieces monotone in z; a piece crosses when (z > pz) differs at its two
 // ends (the half-open rule of polygons, so a joint or a turning point on the ray counts right), and
@@ -69,8 +55,8 @@ bool insideCurves(const std::vector<double>& v, double px, double pz) {
 void addCurve(std::vector<double>& v, Vec3 c0, Vec3 c1, Vec3 c2, Vec3 c3) {
     v.insert(v.end(), {c0.x, c1.x, c2.x, c3.x, c0.z, c1.z, c2.z, c3.z, 1.0, kInfinity, -kInfinity, kInfinity, -kInfinity});
     double* seg = &v[v.size() - kCurveStride];
-    cubicExtent(seg, seg[9], seg[10]);
-    cubicExtent(seg + 4, seg[11], seg[12]);
+    cubicRange(seg, seg[9], seg[10]);
+    cubicRange(seg + 4, seg[11], seg[12]);
 }
 
 // The sub-prisms' segments by the reference's reading of each spline type; each closed outline's
