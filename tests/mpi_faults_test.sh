@@ -7,14 +7,7 @@
 # Usage: mpi_faults_test.sh RAYS MPIEXEC SOURCE_DIR
 set -uo pipefail
 rays=$1 mpiexec=$2 src=$3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI containers run as root
-export OMPI_MCA_btl_vader_single_copy_mechanism=${OMPI_MCA_btl_vader_single_copy_mechanism:-none}
-export OMPI_MCA_mpi_yield_when_idle=${OMPI_MCA_mpi_yield_when_idle:-1}
-# Every launch is bounded: a hang fails the test after 3 minutes instead of holding the suite.
-launch=(timeout -k 10 180 "$mpiexec" -np 3)
-"$mpiexec" --version 2>&1 | grep -qiE "open ?mpi|openrte" && launch+=(--oversubscribe)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/mpi_launch.sh"  # Open MPI settings, `launch`, `tmp`
 failures=0
 host=$(hostname)
 scene=$src/scenes/01-demo.pov

@@ -8,17 +8,7 @@
 # Usage: mpi_render_test.sh RAYS MPIEXEC SOURCE_DIR
 set -uo pipefail
 rays=$1 mpiexec=$2 src=$3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI containers run as root
-# In containers the shared-memory transport cannot attach to other processes (ptrace is denied).
-export OMPI_MCA_btl_vader_single_copy_mechanism=${OMPI_MCA_btl_vader_single_copy_mechanism:-none}
-# Ranks waiting for work yield the core instead of spinning (the suite runs tests side by side).
-export OMPI_MCA_mpi_yield_when_idle=${OMPI_MCA_mpi_yield_when_idle:-1}
-# A launch that hangs (seen once under heavy load, all ranks already gone) fails after 3 minutes
-# instead of holding the suite until ctest's timeout.
-launch=(timeout -k 10 180 "$mpiexec" -np 3)
-"$mpiexec" --version 2>&1 | grep -qiE "open ?mpi|openrte" && launch+=(--oversubscribe)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/mpi_launch.sh"  # Open MPI settings, `launch`, `tmp`
 failures=0
 
 # same NAME EXT ARGS...: renders ARGS once without MPI and once on 3 ranks; the files must match.
