@@ -87,3 +87,54 @@ TEST(BvhSmallScene, NearestHitsAndBlockersAreThoseOfEveryObjectsExactTest) {
     EXPECT_GT(triangleHits, 10000);
     EXPECT_GT(blocked, 0);
 }
+
+// Shadow rays first check whether they cross any of the room's few planes (the triangle tree is
+// walked only when one does): a segment that ends just past a wall is blocked by it, one that
+// ends short of it is not (by more than the float tree's widening of the end), from inside and
+// from outside the room, on every wall.
+TEST(BvhSmallScene, ShadowRaysEndingAtAWallAreDecidedByTheWall) {
+    const std::vector<Object> objects = room();
+    const Bvh bvh(objects);
+    struct Wall {
+        Vec3 inside, normal;  // a point in the room in front of the wall, the wall's outward normal
+        double dist;          // from that point to the wall
+    };
+    // Above the boxes (their tops are below y = 6), or beside them.
+    const Wall walls[] = {{{-3, 8, -3}, {1, 0, 0}, 8}, {{3, 8, 3}, {-1, 0, 0}, 8}, {{-3, 8, 2}, {0, 0, -1}, 7},
+                          {{-3, 4, 2}, {0, -1, 0}, 4}, {{-3, 8, 3}, {0, 1, 0}, 2}};
+    for (const Wall& w : walls) {
+        const Ray in{w.inside, w.normal};
+        EXPECT_TRUE(bvh.any(objects, in, 1e-9, w.dist * (1 + 1e-9))) << w.normal.x << w.normal.y << w.normal.z;
+        EXPECT_FALSE(bvh.any(objects, in, 1e-9, w.dist - 1e-4)) << w.normal.x << w.normal.y << w.normal.z;
+        const Ray out{w.inside + (w.dist + 1) * w.normal, -w.normal};  // from outside, towards the room
+        EXPECT_TRUE(bvh.any(objects, out, 1e-9, 1 + 1e-9)) << w.normal.x << w.normal.y << w.normal.z;
+        EXPECT_FALSE(bvh.any(objects, out, 1e-9, 1 - 1e-4)) << w.normal.x << w.normal.y << w.normal.z;
+    }
+    // Through the ceiling's hole nothing blocks; beside it the ceiling does.
+    EXPECT_FALSE(bvh.any(objects, Ray{{0, 9, 0}, {0, 1, 0}}, 1e-9, 5));
+    EXPECT_TRUE(bvh.any(objects, Ray{{2, 9, 0}, {0, 1, 0}}, 1e-9, 5));
+}
+
+// A set of many planes (here, triangles tilted every way) leaves the plane check out: blockers are
+// still found exactly as every object's own test finds them.
+TEST(BvhSmallScene, ManyPlanesStillFindEveryBlocker) {
+    std::vector<Object> objects;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-5, 5);
+    for (int i = 0; i < 40; ++i) {
+        const Vec3 c{u(rng), u(rng), u(rng)};
+        objects.push_back(makeObject(ShapeType::Triangle, c, c + Vec3{u(rng), u(rng), 0} * 0.3,
+                                     c + Vec3{0, u(rng), u(rng)} * 0.3, 0, 0));
+    }
+    const Bvh bvh(objects);
+    ASSERT_EQ(bvh.triangleCount(), 40u);
+    int blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray{{u(rng), u(rng), u(rng)}, randomDirection(rng)};
+        bool any = false;
+        for (const Object& o : objects) any = any || occludes(o, ray, 1e-9, 8);
+        ASSERT_EQ(bvh.any(objects, ray, 1e-9, 8), any) << i;
+        blocked += any;
+    }
+    EXPECT_GT(blocked, 100);
+}

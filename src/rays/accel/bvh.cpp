@@ -60,7 +60,7 @@ bool finiteBounds(const Bounds& b) {
 
 }  // namespace
 
-int32_t Bvh::planeIndex(Vec3 n, const Object& o) {
+int32_t Bvh::planeIndexIn(std::vector<Plane>& planes, Vec3 n, const Object& o) {
     // One orientation per plane (the first non-zero component of the normal positive), so that
     // coplanar triangles of either winding share an entry.
     const double lead = n.x != 0 ? n.x : (n.y != 0 ? n.y : n.z);
@@ -69,10 +69,10 @@ int32_t Bvh::planeIndex(Vec3 n, const Object& o) {
     // buffer's growth leave room for the rest).
     const double d0 = dot(u, o.p0), d1 = dot(u, o.p1), d2 = dot(u, o.p2);
     const Plane p{u, std::max(std::min(d0, d1), std::min(std::max(d0, d1), d2))};
-    for (size_t k = 0; k < planes_.size(); ++k)  // fewer than kTriangleBvhMin flat objects
-        if (planes_[k].normal == p.normal && planes_[k].offset == p.offset) return int32_t(k);
-    planes_.push_back(p);
-    return int32_t(planes_.size() - 1);
+    for (size_t k = 0; k < planes.size(); ++k)  // few: fewer than kTriangleBvhMin flat objects, or kFewTrianglePlanes
+        if (planes[k].normal == p.normal && planes[k].offset == p.offset) return int32_t(k);
+    planes.push_back(p);
+    return int32_t(planes.size() - 1);
 }
 
 // Below this many untransformed triangles, a separate triangle BVH (a second traversal per ray,
@@ -81,6 +81,10 @@ int32_t Bvh::planeIndex(Vec3 n, const Object& o) {
 // float tests win (cornell.pov, 16 triangles and 2 boxes: -gi renders ~17 % faster).
 constexpr size_t kTriangleBvhMin = 64;
 constexpr size_t kTriangleBvhFew = 8;
+// Up to this many distinct planes, a shadow ray first checks whether it crosses any plane of the
+// triangle BVH's triangles (a few dot products) before walking the tree: in a closed room of
+// triangles lit from inside, no shadow ray does.
+constexpr size_t kFewTrianglePlanes = 8;
 
 Bvh::Bvh(const std::vector<Object>& objects) {
     std::vector<ObjectBvh::Prim> prims;
@@ -90,6 +94,7 @@ Bvh::Bvh(const std::vector<Object>& objects) {
     for (const Object& o : objects) plainTriangles += o.type == ShapeType::Triangle && !o.localSpace;
     const bool triangleBvh = plainTriangles >= kTriangleBvhMin ||
                              (plainTriangles >= kTriangleBvhFew && 2 * plainTriangles >= objects.size());
+    bool fewPlanes = true;
     boundedOf_.assign(objects.size(), -1);
     for (uint32_t i = 0; i < objects.size(); ++i) {
         const Object& o = objects[i];
@@ -104,6 +109,7 @@ Bvh::Bvh(const std::vector<Object>& objects) {
             Vec3 geom, shading;
             triangleNormals(o, 0, 0, geom, shading);
             triNormal_.push_back(geom);
+            fewPlanes = fewPlanes && addTrianglePlane(o) && trianglePlanes_.size() <= kFewTrianglePlanes;
             continue;
         }
         const Bounds b = worldBounds(o);
@@ -118,6 +124,7 @@ Bvh::Bvh(const std::vector<Object>& objects) {
         if (length(n) > 0) bounded_.back().plane = planeIndex(n, o);  // a world-space triangle
 
     }
+    if (!fewPlanes) trianglePlanes_.clear();
     if (!triObject_.empty())
         triangles_.build(positions.data(), positions.size() / 3, indices.data(), triObject_.size());
     objects_.build(prims);
@@ -291,6 +298,7 @@ int Bvh::blockerUnbounded(const std::vector<Object>& objects, const Ray& ray, do
         // Float origins are rounded by up to half an ulp of their largest coordinate: widen the
         // interval's end by that much so that a blocker right at tMax is still found.
         const double slack = 1e-6 * (std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)}) + 1.0);
+        if (!mayMeetTriangles(ray, tMax + slack)) return kNoBlocker;
         if (triangles_.occluded(floatRay(ray), float(tMin), upperT(tMax + slack))) return kSomeTriangle;
     }
     return kNoBlocker;
@@ -341,6 +349,24 @@ bool Bvh::reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd) {
     const double g = 1e-9 * (std::fabs(p.offset) + std::fabs(h0) + std::fabs(dot(p.normal, a)) + 1e-300) +
                      1e-9 * std::fabs(tEnd * nd);
     return !((h0 > g && h1 > g) || (h0 < -g && h1 < -g));
+}
+
+bool Bvh::addTrianglePlane(const Object& o) {
+    const Vec3 n = cross(o.p1 - o.p0, o.p2 - o.p0);
+    if (!(length(n) > 0)) return true;  // never hit
+    const Plane& p = trianglePlanes_[size_t(planeIndexIn(trianglePlanes_, n, o))];
+    // A sliver's computed normal may tilt: its vertices must lie on the plane within the
+    // rounding reachesPlane allows for, else the test is not safe for this set.
+    for (Vec3 v : {o.p0, o.p1, o.p2})
+        if (std::fabs(dot(p.normal, v) - p.offset) > 1e-12 * (std::fabs(p.offset) + length(v) + 1)) return false;
+    return true;
+}
+
+bool Bvh::mayMeetTriangles(const Ray& ray, double tEnd) const {
+    if (trianglePlanes_.empty()) return true;
+    for (const Plane& p : trianglePlanes_)
+        if (reachesPlane(p, ray.origin, ray.dir, tEnd)) return true;
+    return false;
 }
 
 std::vector<OriginBuffer::Bound> Bvh::originBounds(const std::vector<Object>& objects) const {

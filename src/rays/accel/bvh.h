@@ -108,7 +108,14 @@ private:
     };
     /// Index in planes_ of the plane of a world-space triangle o with normal n (non-zero), shared
     /// with the earlier triangles of exactly that plane.
-    int32_t planeIndex(Vec3 n, const Object& o);
+    int32_t planeIndex(Vec3 n, const Object& o) { return planeIndexIn(planes_, n, o); }
+    /// The same in any plane list.
+    static int32_t planeIndexIn(std::vector<Plane>& planes, Vec3 n, const Object& o);
+    /// False when the triangle BVH's triangles lie in a few planes (kFewTrianglePlanes) and the
+    /// ray, from its origin to tEnd, crosses none of them: no triangle can meet it.
+    bool mayMeetTriangles(const Ray& ray, double tEnd) const;
+    /// Adds o's plane to trianglePlanes_; false when o's vertices are not on it within rounding.
+    bool addTrianglePlane(const Object& o);
     /// Nearest hit among the planes and the triangle BVH (the part of closest() that does not
     /// depend on how the other objects are found).
     Hit closestUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
@@ -125,6 +132,9 @@ private:
     TriangleBvh triangles_;            ///< untransformed triangle objects
     std::vector<uint32_t> triObject_;  ///< triangle index in triangles_ → object index
     std::vector<Vec3> triNormal_;      ///< triangle index in triangles_ → its unit geometric normal
+    /// The planes of triangles_' triangles when they are few (a room, a box of triangles); empty
+    /// when there are more (then every ray meets the tree).
+    std::vector<Plane> trianglePlanes_;
     std::vector<Bounded> bounded_;     ///< the objects in objects_, in scene order
     std::vector<Plane> planes_;        ///< of the world-space triangles among them
     std::vector<int32_t> boundedOf_;   ///< object index → index in bounded_, or -1

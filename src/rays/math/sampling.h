@@ -49,7 +49,7 @@ inline Vec3 cosineHemisphere(Vec3 n, double a, double b) {
 inline void sinCosQuarter(double th, double& c, double& s) {
     const double x2 = th * th;
     c = 1 + x2 * (-1.0 / 2 +
-                  x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 + x2 / 479001600)))));
+                  x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 + x2 * (1.0 / 479001600))))));
     s = th * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (-1.0 / 39916800))))));
 }
 
@@ -61,18 +61,16 @@ struct CosineHemisphere {
     /// The direction of (a, b) ∈ [0,1)²: unit up to rounding (not renormalised).
     Vec3 operator()(double a, double bb) const {
         const double sx = 2 * a - 1, sy = 2 * bb - 1;
-        double x = 0, y = 0;
-        if (std::fabs(sx) > std::fabs(sy)) {  // φ = (π/4)(sy/sx)
-            double c, s;
-            sinCosQuarter((std::numbers::pi / 4) * (sy / sx), c, s);
-            x = sx * c;
-            y = sx * s;
-        } else if (sy != 0) {  // φ = π/2 − (π/4)(sx/sy): cos φ = sin, sin φ = cos of the rest
-            double c, s;
-            sinCosQuarter((std::numbers::pi / 4) * (sx / sy), c, s);
-            x = sy * s;
-            y = sy * c;
-        }
+        // Branch-free (the two cases of the concentric map are equally likely, so a branch
+        // mispredicts half the time): r is the coordinate of larger magnitude, q the other over
+        // it; φ = (π/4)q measured from the x axis, or from the y axis towards x.
+        const bool xMajor = std::fabs(sx) > std::fabs(sy);
+        const double r = xMajor ? sx : sy, other = xMajor ? sy : sx;
+        const double q = r != 0 ? other / r : 0.0;
+        double c, s;
+        sinCosQuarter((std::numbers::pi / 4) * q, c, s);
+        const double x = r * (xMajor ? c : s);
+        const double y = r * (xMajor ? s : c);
         const double z = std::sqrt(std::max(0.0, 1.0 - x * x - y * y));
         return x * t + y * b + z * n;
     }

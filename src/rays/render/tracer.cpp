@@ -282,15 +282,27 @@ Vec3 Tracer::gatherIndirect(Vec3 P, Vec3 N, const Frame& f, TraceContext& ctx) c
     child.depth = f.depth + 1;
     child.kind = TraceRecord::Kind::Reflection;
     const CosineHemisphere hemisphere(N);
-    for (int i = 0; i < n; ++i) {
-        double a = ctx.rng.next(), b = ctx.rng.next();
-        if (strata) {  // stratified: one jittered sample per cell of a k×k grid
-            a = (i % k + a) / k;
-            b = (i / k + b) / k;
+    const Vec3 origin = P + kSurfaceOffset * N;
+    // Directions are made a chunk at a time before their rays are traced: each one is a long
+    // chain of dependent operations (a division, a polynomial, a square root), and made together
+    // they overlap instead of stalling every trace that waits for its direction.
+    constexpr int kChunk = 16;
+    Vec3 dirs[kChunk];
+    for (int first = 0; first < n; first += kChunk) {
+        const int count = std::min(kChunk, n - first);
+        for (int j = 0; j < count; ++j) {
+            const int i = first + j;
+            double a = ctx.rng.next(), b = ctx.rng.next();
+            if (strata) {  // stratified: one jittered sample per cell of a k×k grid
+                a = (i % k + a) / k;
+                b = (i / k + b) / k;
+            }
+            dirs[j] = hemisphere(a, b);
         }
-        const Vec3 d = hemisphere(a, b);
-        ++ctx.stats.secondaryRays;
-        sum += trace(Ray{P + kSurfaceOffset * N, d}, child, ctx, nullptr, nullptr).color;
+        for (int j = 0; j < count; ++j) {
+            ++ctx.stats.secondaryRays;
+            sum += trace(Ray{origin, dirs[j]}, child, ctx, nullptr, nullptr).color;
+        }
     }
     return sum / double(n);
 }

@@ -138,8 +138,9 @@ bool hitBox(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h
             continue;
         }
         const bool up = d > 0;
-        const double t0 = ((up ? o.p0[a] : o.p1[a]) - r.origin[a]) / d;  // entering face
-        const double t1 = ((up ? o.p1[a] : o.p0[a]) - r.origin[a]) / d;  // leaving face
+        const double inv = 1 / d;  // one division per axis, not two
+        const double t0 = ((up ? o.p0[a] : o.p1[a]) - r.origin[a]) * inv;  // entering face
+        const double t1 = ((up ? o.p1[a] : o.p0[a]) - r.origin[a]) * inv;  // leaving face
         const double s0 = up ? -1 : 1;  // outward normal sign of the entering face
         if (t0 > tNear) { tNear = t0; nearAxis = a; nearSign = s0; }
         if (t1 < tFar) { tFar = t1; farAxis = a; farSign = -s0; }
