@@ -81,9 +81,11 @@ int32_t Bvh::planeIndexIn(std::vector<Plane>& planes, Vec3 n, const Object& o) {
 // float tests win (cornell.pov, 16 triangles and 2 boxes: -gi renders ~17 % faster).
 constexpr size_t kTriangleBvhMin = 64;
 constexpr size_t kTriangleBvhFew = 8;
-// Up to this many distinct planes, a shadow ray first checks whether it crosses any plane of the
-// triangle BVH's triangles (a few dot products) before walking the tree: in a closed room of
-// triangles lit from inside, no shadow ray does.
+// When the triangles lie in at most this many distinct planes (a room, boxes made of triangles),
+// a ray finds them by the planes it crosses, nearest first, testing only those planes' triangles
+// in double precision (the numbers of intersect()), instead of walking the triangle tree: a ray
+// in a closed room crosses one or two planes, and a shadow ray from inside it to a light inside
+// it crosses none.
 constexpr size_t kFewTrianglePlanes = 8;
 
 Bvh::Bvh(const std::vector<Object>& objects) {
@@ -95,6 +97,7 @@ Bvh::Bvh(const std::vector<Object>& objects) {
     const bool triangleBvh = plainTriangles >= kTriangleBvhMin ||
                              (plainTriangles >= kTriangleBvhFew && 2 * plainTriangles >= objects.size());
     bool fewPlanes = true;
+    std::vector<int32_t> planeOf;  // of each triangle of triangles_ while fewPlanes
     boundedOf_.assign(objects.size(), -1);
     for (uint32_t i = 0; i < objects.size(); ++i) {
         const Object& o = objects[i];
@@ -109,7 +112,11 @@ Bvh::Bvh(const std::vector<Object>& objects) {
             Vec3 geom, shading;
             triangleNormals(o, 0, 0, geom, shading);
             triNormal_.push_back(geom);
-            fewPlanes = fewPlanes && addTrianglePlane(o) && trianglePlanes_.size() <= kFewTrianglePlanes;
+            if (fewPlanes) {
+                const int32_t plane = addTrianglePlane(o);
+                fewPlanes = plane != -1 && trianglePlanes_.size() <= kFewTrianglePlanes;
+                planeOf.push_back(plane);
+            }
             continue;
         }
         const Bounds b = worldBounds(o);
@@ -125,6 +132,27 @@ Bvh::Bvh(const std::vector<Object>& objects) {
 
     }
     if (!fewPlanes) trianglePlanes_.clear();
+    if (!trianglePlanes_.empty()) {  // bucket the triangles by plane (degenerate ones in none)
+        planeFirst_.assign(trianglePlanes_.size() + 1, 0);
+        for (int32_t p : planeOf)
+            if (p >= 0) ++planeFirst_[size_t(p) + 1];
+        for (size_t k = 1; k < planeFirst_.size(); ++k) planeFirst_[k] += planeFirst_[k - 1];
+        planeTri_.resize(planeFirst_.back());
+        std::vector<uint32_t> fill(planeFirst_.begin(), planeFirst_.end() - 1);
+        for (uint32_t k = 0; k < planeOf.size(); ++k) {
+            if (planeOf[k] < 0) continue;
+            // X − p0 = u e1 + v e2 for X in the plane: u = (X − p0)·(e2 × N)/|N|², v = (X − p0)·(N × e1)/|N|².
+            const Object& o = objects[triObject_[k]];
+            const Vec3 e1 = o.p1 - o.p0, e2 = o.p2 - o.p0, n = cross(e1, e2);
+            const double nn = dot(n, n);
+            PlaneTri& pt = planeTri_[fill[size_t(planeOf[k])]++];
+            pt.au = cross(e2, n) / nn;
+            pt.cu = -dot(o.p0, pt.au);
+            pt.av = cross(n, e1) / nn;
+            pt.cv = -dot(o.p0, pt.av);
+            pt.tri = k;
+        }
+    }
     if (!triObject_.empty())
         triangles_.build(positions.data(), positions.size() / 3, indices.data(), triObject_.size());
     objects_.build(prims);
@@ -217,6 +245,10 @@ Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, do
     for (uint32_t id : unbounded_)
         if (intersect(objects[id], ray, tMin, best.t, sh)) take(best, id, sh);
     if (triangles_.empty()) return best;
+    if (!trianglePlanes_.empty()) {
+        closestOnPlanes(objects, ray, tMin, best);
+        return best;
+    }
     TriHit th;
     if (triangles_.intersect(floatRay(ray), float(tMin), upperT(best.t), th)) {
         // Refine in double precision on the triangle found (exact t and normal for the course's
@@ -298,7 +330,7 @@ int Bvh::blockerUnbounded(const std::vector<Object>& objects, const Ray& ray, do
         // Float origins are rounded by up to half an ulp of their largest coordinate: widen the
         // interval's end by that much so that a blocker right at tMax is still found.
         const double slack = 1e-6 * (std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)}) + 1.0);
-        if (!mayMeetTriangles(ray, tMax + slack)) return kNoBlocker;
+        if (!trianglePlanes_.empty()) return blockerOnPlanes(objects, ray, tMin, tMax);
         if (triangles_.occluded(floatRay(ray), float(tMin), upperT(tMax + slack))) return kSomeTriangle;
     }
     return kNoBlocker;
@@ -351,22 +383,87 @@ bool Bvh::reachesPlane(const Plane& p, Vec3 a, Vec3 d, double tEnd) {
     return !((h0 > g && h1 > g) || (h0 < -g && h1 < -g));
 }
 
-bool Bvh::addTrianglePlane(const Object& o) {
+int32_t Bvh::addTrianglePlane(const Object& o) {
     const Vec3 n = cross(o.p1 - o.p0, o.p2 - o.p0);
-    if (!(length(n) > 0)) return true;  // never hit
-    const Plane& p = trianglePlanes_[size_t(planeIndexIn(trianglePlanes_, n, o))];
+    if (!(length(n) > 0)) return -2;  // never hit
+    const int32_t k = planeIndexIn(trianglePlanes_, n, o);
+    const Plane& p = trianglePlanes_[size_t(k)];
     // A sliver's computed normal may tilt: its vertices must lie on the plane within the
     // rounding reachesPlane allows for, else the test is not safe for this set.
     for (Vec3 v : {o.p0, o.p1, o.p2})
-        if (std::fabs(dot(p.normal, v) - p.offset) > 1e-12 * (std::fabs(p.offset) + length(v) + 1)) return false;
-    return true;
+        if (std::fabs(dot(p.normal, v) - p.offset) > 1e-12 * (std::fabs(p.offset) + length(v) + 1)) return -1;
+    return k;
 }
 
-bool Bvh::mayMeetTriangles(const Ray& ray, double tEnd) const {
-    if (trianglePlanes_.empty()) return true;
-    for (const Plane& p : trianglePlanes_)
-        if (reachesPlane(p, ray.origin, ray.dir, tEnd)) return true;
-    return false;
+namespace {
+
+// Room for rounding between a plane's crossing and the exact test of a triangle in it.
+double crossingSlack(double t) { return 1e-9 * (std::fabs(t) + 1); }
+// The same for the barycentric filter (coordinates of the crossing point, relative to the
+// triangle's size).
+constexpr double kBaryFilter = 1e-6;
+
+}  // namespace
+
+void Bvh::closestOnPlanes(const std::vector<Object>& objects, const Ray& ray, double tMin, Hit& best) const {
+    struct Crossing {
+        double t;
+        uint32_t plane;
+    };
+    Crossing c[kFewTrianglePlanes];
+    int m = 0;
+    for (uint32_t k = 0; k < trianglePlanes_.size(); ++k) {
+        const Plane& p = trianglePlanes_[k];
+        const double nd = dot(p.normal, ray.dir);
+        const double h = p.offset - dot(p.normal, ray.origin);  // t = h / nd
+        // Parallel (its triangles met edge-on at most, which is no hit), or clearly behind the
+        // origin (with room for the rounding of h): no division needed.
+        if (nd == 0 || (h * nd < 0 && std::fabs(h) > 1e-9 * (std::fabs(p.offset) + 1))) continue;
+        const double t = h / nd;
+        if (!(t > tMin - crossingSlack(t) && t < best.t + crossingSlack(t))) continue;
+        int i = m++;  // insertion by t
+        for (; i > 0 && c[i - 1].t > t; --i) c[i] = c[i - 1];
+        c[i] = {t, k};
+    }
+    bool fromTriangle = false;
+    for (int i = 0; i < m && c[i].t - crossingSlack(c[i].t) < best.t; ++i) {
+        const Vec3 x = ray.at(c[i].t);
+        for (uint32_t j = planeFirst_[c[i].plane]; j < planeFirst_[c[i].plane + 1]; ++j) {
+            const PlaneTri& pt = planeTri_[j];
+            // Clearly outside at the plane's crossing: the exact test would miss too.
+            const double bu = dot(x, pt.au) + pt.cu, bv = dot(x, pt.av) + pt.cv;
+            if (bu < -kBaryFilter || bv < -kBaryFilter || bu + bv > 1 + kBaryFilter) continue;
+            const uint32_t tri = pt.tri, id = triObject_[tri];
+            const Object& o = objects[id];
+            double t, u, v;
+            if (!triangleHitT(o, ray, tMin, kInfinity, t, u, v)) continue;
+            // As testing every object in order: the nearest, the first of equals.
+            if (!(t < best.t || (fromTriangle && t == best.t && int(id) < best.object))) continue;
+            fromTriangle = true;
+            best.t = t;
+            best.object = int(id);
+            best.hasUV = false;
+            best.part = nullptr;
+            if (o.smooth) {
+                triangleNormals(o, u, v, best.geomNormal, best.normal);
+            } else {
+                best.geomNormal = triNormal_[tri];
+                best.normal = best.geomNormal;
+            }
+        }
+    }
+}
+
+int Bvh::blockerOnPlanes(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
+    for (uint32_t k = 0; k < trianglePlanes_.size(); ++k) {
+        if (!reachesPlane(trianglePlanes_[k], ray.origin, ray.dir, tMax)) continue;
+        for (uint32_t j = planeFirst_[k]; j < planeFirst_[k + 1]; ++j) {
+            const uint32_t id = triObject_[planeTri_[j].tri];
+            double t, u, v;
+            if (triangleHitT(objects[id], ray, tMin, tMax, t, u, v)) return int(id);
+        }
+    }
+    return kNoBlocker;
 }
 
 std::vector<OriginBuffer::Bound> Bvh::originBounds(const std::vector<Object>& objects) const {

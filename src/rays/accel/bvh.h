@@ -111,11 +111,14 @@ private:
     int32_t planeIndex(Vec3 n, const Object& o) { return planeIndexIn(planes_, n, o); }
     /// The same in any plane list.
     static int32_t planeIndexIn(std::vector<Plane>& planes, Vec3 n, const Object& o);
-    /// False when the triangle BVH's triangles lie in a few planes (kFewTrianglePlanes) and the
-    /// ray, from its origin to tEnd, crosses none of them: no triangle can meet it.
-    bool mayMeetTriangles(const Ray& ray, double tEnd) const;
-    /// Adds o's plane to trianglePlanes_; false when o's vertices are not on it within rounding.
-    bool addTrianglePlane(const Object& o);
+    /// Adds o's plane to trianglePlanes_ and returns its index; -1 when o's vertices are not on
+    /// it within rounding (then the plane walk is not safe), -2 for a triangle that cannot be hit.
+    int32_t addTrianglePlane(const Object& o);
+    /// Nearest triangle hit by walking the planes the ray crosses, nearest first, and testing
+    /// only their triangles (the triangles lie in few planes); updates best when nearer.
+    void closestOnPlanes(const std::vector<Object>& objects, const Ray& ray, double tMin, Hit& best) const;
+    /// A triangle on a plane the ray crosses before tMax that blocks it, or kNoBlocker.
+    int blockerOnPlanes(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
     /// Nearest hit among the planes and the triangle BVH (the part of closest() that does not
     /// depend on how the other objects are found).
     Hit closestUnbounded(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const;
@@ -132,9 +135,21 @@ private:
     TriangleBvh triangles_;            ///< untransformed triangle objects
     std::vector<uint32_t> triObject_;  ///< triangle index in triangles_ → object index
     std::vector<Vec3> triNormal_;      ///< triangle index in triangles_ → its unit geometric normal
-    /// The planes of triangles_' triangles when they are few (a room, a box of triangles); empty
-    /// when there are more (then every ray meets the tree).
+    /// The planes of triangles_' triangles when they are few (a room, a box of triangles: then
+    /// rays test the triangles of the planes they cross instead of walking triangles_); empty
+    /// when there are more.
     std::vector<Plane> trianglePlanes_;
+    std::vector<uint32_t> planeFirst_;  ///< plane k's triangles: planeTri_[planeFirst_[k] .. planeFirst_[k+1])
+    /// A triangle of a plane, with its barycentric coordinates as affine functions of a point of
+    /// the plane: a quick filter before the exact test.
+    struct PlaneTri {
+        Vec3 au;
+        double cu;
+        Vec3 av;
+        double cv;
+        uint32_t tri;  ///< index in triangles_ (into triObject_)
+    };
+    std::vector<PlaneTri> planeTri_;  ///< by plane
     std::vector<Bounded> bounded_;     ///< the objects in objects_, in scene order
     std::vector<Plane> planes_;        ///< of the world-space triangles among them
     std::vector<int32_t> boundedOf_;   ///< object index → index in bounded_, or -1
