@@ -87,6 +87,9 @@ constexpr size_t kTriangleBvhFew = 8;
 // in a closed room crosses one or two planes, and a shadow ray from inside it to a light inside
 // it crosses none.
 constexpr size_t kFewTrianglePlanes = 8;
+// Up to this many objects in the object BVH (one leaf's worth), rays test them one after the
+// other: the tree's walk (a float copy of the ray, the root's boxes) costs more than it culls.
+constexpr size_t kFewBounded = 4;
 
 Bvh::Bvh(const std::vector<Object>& objects) {
     std::vector<ObjectBvh::Prim> prims;
@@ -285,6 +288,11 @@ Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, do
 Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
     Hit best = closestUnbounded(objects, ray, tMin, tMax);
     NearestBounded nearest(objects, ray, tMin, best);
+    if (bounded_.size() <= kFewBounded) {
+        for (const Bounded& b : bounded_) nearest.test(b.id, b.sphere);
+        nearest.finish();
+        return best;
+    }
     const TriRay fr = floatRay(ray);
     objects_.traverse<false>(fr.org, fr.dir, lowerT(tMin), upperT(best.t),
                              [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float& tBest) {
@@ -339,6 +347,11 @@ int Bvh::blockerUnbounded(const std::vector<Object>& objects, const Ray& ray, do
 int Bvh::anyBlocker(const std::vector<Object>& objects, const Ray& ray, double tMin, double tMax) const {
     int blocker = blockerUnbounded(objects, ray, tMin, tMax);
     if (blocker != kNoBlocker) return blocker;
+    if (bounded_.size() <= kFewBounded) {
+        for (const Bounded& b : bounded_)
+            if (blocks(objects, b.id, b.sphere, ray, tMin, tMax)) return int(b.id);
+        return kNoBlocker;
+    }
     const TriRay fr = floatRay(ray);
     objects_.traverse<true>(fr.org, fr.dir, lowerT(tMin), upperT(tMax),
                             [&](uint32_t id, const ObjectBvh::ExactSphere& sphere, float&) {
