@@ -33,17 +33,38 @@ double refineRoot(const double* c, const double* d, int n, double a, double b, d
     return x;
 }
 
+// The real roots of c[0] + c[1] t + c[2] t² (c[2] ≠ 0) in (lo, hi), ascending, by the formula
+// that avoids cancellation (Press et al., Numerical Recipes, §5.6: q = −(b + sgn(b)√D)/2, roots
+// q/a and c/q); a double root (D = 0) counts once.
+int quadraticRoots(const double* c, double lo, double hi, double* roots) {
+    const double a = c[2], b = c[1], cc = c[0];
+    const double disc = b * b - 4 * a * cc;
+    if (disc < 0) return 0;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double r0 = q / a, r1 = q != 0 ? cc / q : r0;
+    if (r0 > r1) std::swap(r0, r1);
+    int count = 0;
+    if (r0 > lo && r0 < hi) roots[count++] = r0;
+    if (r1 > lo && r1 < hi && (count == 0 || r1 != roots[0])) roots[count++] = r1;
+    return count;
+}
+
 }  // namespace
 
 int polyRoots(const double* c, int n, double lo, double hi, double* roots) {
+    return polyRoots(c, n, lo, hi, roots, n);
+}
+
+int polyRoots(const double* c, int n, double lo, double hi, double* roots, int limit) {
     while (n > 0 && c[n] == 0) --n;
-    if (n <= 0 || !(lo < hi)) return 0;
+    if (n <= 0 || !(lo < hi) || limit <= 0) return 0;
     if (n == 1) {
         const double t = -c[0] / c[1];
         if (!(t > lo && t < hi)) return 0;
         roots[0] = t;
         return 1;
     }
+    if (n == 2) return std::min(limit, quadraticRoots(c, lo, hi, roots));
     double d[kMaxPolyDegree];
     for (int i = 1; i <= n; ++i) d[i - 1] = i * c[i];
     double ends[kMaxPolyDegree + 1];  // lo, the critical points, hi
@@ -57,6 +78,7 @@ int polyRoots(const double* c, int n, double lo, double hi, double* roots) {
         const double fb = evalPoly(c, n, b);
         if ((fa < 0) != (fb < 0) && fa != 0) roots[count++] = refineRoot(c, d, n, a, b, fa);
         else if (fb == 0 && i < m) roots[count++] = b;  // a root exactly at a critical point
+        if (count == limit) break;
         fa = fb;
     }
     return count;

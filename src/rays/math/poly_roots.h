@@ -3,7 +3,8 @@
 // two neighbouring critical points a polynomial is monotone, so it has a root there exactly when
 // its sign changes, found by safeguarded Newton iteration (Newton steps kept inside a shrinking
 // bracket, bisection when they leave it; Press et al., Numerical Recipes, "rtsafe"). The critical
-// points are the roots of the derivative, found the same way, down to degree 1. Robust for any
+// points are the roots of the derivative, found the same way, down to degree 2, which has its
+// closed form. Robust for any
 // degree up to kMaxPolyDegree; double roots where the sign does not change (grazing rays) are
 // missed. No heap allocation.
 #pragma once
@@ -20,6 +21,8 @@ double evalPoly(const double* c, int n, double t);
 /// ascending, into roots (room for n); returns their count. n ≤ kMaxPolyDegree; zero leading
 /// coefficients lower the degree.
 int polyRoots(const double* c, int n, double lo, double hi, double* roots);
+/// The same, stopping after the first `limit` roots (the nearest hits of a ray need one).
+int polyRoots(const double* c, int n, double lo, double hi, double* roots, int limit);
 
 /// The cubic c[0] + c[1]·u + c[2]·u² + c[3]·u³ and its slope (spline segments of lathes and prisms).
 inline double cubicAt(const double* c, double u) { return c[0] + u * (c[1] + u * (c[2] + u * c[3])); }

@@ -31,10 +31,14 @@ bool hitTorus(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
     const double coef[5] = {b1 * b1 - k * (O.x * O.x + O.z * O.z), 2 * a1 * b1 - 2 * k * (O.x * d.x + O.z * d.z),
                             a1 * a1 + 2 * b1 - k * (d.x * d.x + d.z * d.z), 2 * a1, 1};
     double roots[4];
-    const int n = polyRoots(coef, 4, sLo - s0, sHi - s0, roots);
+    auto inRange = [&](double root) { return (root + s0) / len > tMin && (root + s0) / len < tMax; };
+    // The nearest root is nearly always the hit: find it alone, and all of them only when the
+    // rounding of the shift back puts it outside (tMin, tMax).
+    int n = polyRoots(coef, 4, sLo - s0, sHi - s0, roots, 1);
+    if (n == 1 && !inRange(roots[0])) n = polyRoots(coef, 4, sLo - s0, sHi - s0, roots);
     // The first root whose t, after the shift back and the rounding, is still in (tMin, tMax).
     int i = 0;
-    while (i < n && !((roots[i] + s0) / len > tMin && (roots[i] + s0) / len < tMax)) ++i;
+    while (i < n && !inRange(roots[i])) ++i;
     if (i == n) return false;
     const double s = roots[i] + s0;
     h.t = s / len;
