@@ -53,6 +53,37 @@ TEST(PovShapesRoots, FindsEveryRealRootInTheInterval) {
     for (int k = 1; k <= 7; ++k) EXPECT_NEAR(r7[k - 1], k / 10.0, 1e-9);
 }
 
+TEST(PovShapesRoots, QuadraticsWithoutCancellationAndRootLimits) {
+    double r[4];
+    // t² − 1e8 t + 1 has roots 1e-8 (to 1e-24) and 1e8: the naive formula loses the small one.
+    const double q[3] = {1, -1e8, 1};
+    ASSERT_EQ(polyRoots(q, 2, -1, 2e8, r), 2);
+    EXPECT_NEAR(r[0], 1e-8, 1e-20);
+    EXPECT_NEAR(r[1], 1e8, 1e-6);
+    // Negative leading coefficient: −(t − 2)(t + 3) = −t² − t + 6, ascending order.
+    const double neg[3] = {6, -1, -1};
+    ASSERT_EQ(polyRoots(neg, 2, -10, 10, r), 2);
+    EXPECT_DOUBLE_EQ(r[0], -3);
+    EXPECT_DOUBLE_EQ(r[1], 2);
+    ASSERT_EQ(polyRoots(neg, 2, -1, 10, r), 1);  // only the one inside
+    EXPECT_DOUBLE_EQ(r[0], 2);
+    // A double root (t − 1)² counts once.
+    const double dbl[3] = {1, -2, 1};
+    ASSERT_EQ(polyRoots(dbl, 2, 0, 2, r), 1);
+    EXPECT_DOUBLE_EQ(r[0], 1);
+    // The limit: the nearest roots only, the same numbers as without it.
+    const double quartic[5] = {24, -50, 35, -10, 1};  // roots 1, 2, 3, 4
+    double all[4];
+    ASSERT_EQ(polyRoots(quartic, 4, 0, 10, all), 4);
+    ASSERT_EQ(polyRoots(quartic, 4, 0, 10, r, 1), 1);
+    EXPECT_EQ(r[0], all[0]);
+    ASSERT_EQ(polyRoots(quartic, 4, 2.5, 10, r, 2), 2);
+    EXPECT_EQ(r[0], all[2]);
+    EXPECT_EQ(r[1], all[3]);
+    ASSERT_EQ(polyRoots(neg, 2, -10, 10, r, 1), 1);
+    EXPECT_DOUBLE_EQ(r[0], -3);
+}
+
 TEST(PovShapesTorus, HitsNormalsAndInside) {
     const Scene s = build("torus { 2, 0.5 }");
     ASSERT_EQ(s.objects.size(), 1u);
