@@ -16,7 +16,8 @@
 # objects/quartic, objects/csg: one scene per primitive or CSG case), at 320x240 with +A0.3 unless
 # -s / -a say otherwise, each row with its target ratio (5x; 3x for the isosurface scene) and a
 # closing line counting the scenes that reach it.
-# Needs the `povray` package (RAYS_BENCH_DEPS=1 scripts/install-deps.sh) and a built ./build/rays.
+# Needs the `povray` package (RAYS_BENCH_DEPS=1 scripts/install-deps.sh) and a built ./build/rays
+# (or RAYS=path/to/rays: a copy keeps a rebuild from changing the binary during a run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=5
@@ -53,7 +54,7 @@ elif [ ${#scenes[@]} -eq 0 ]; then
   [ "$gi_only" = 1 ] || for s in bunny gnarly balls2; do scenes+=("$(bench/course_scene.sh "$s")"); done
 fi
 povinc=/usr/share/povray-3.7/include
-rays=$(pwd)/build/rays
+rays=${RAYS:-$(pwd)/build/rays}
 [ -x "$rays" ] || { echo "build first: scripts/build.sh" >&2; exit 2; }
 command -v povray >/dev/null || { echo "povray is not installed (RAYS_BENCH_DEPS=1 scripts/install-deps.sh)" >&2; exit 2; }
 threads=$(nproc)

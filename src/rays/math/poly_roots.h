@@ -24,6 +24,26 @@ int polyRoots(const double* c, int n, double lo, double hi, double* roots);
 /// The same, stopping after the first `limit` roots (the nearest hits of a ray need one).
 int polyRoots(const double* c, int n, double lo, double hi, double* roots, int limit);
 
+/// The smallest root in (lo, hi) that valid(root) accepts (a ray's nearest hit, checked after
+/// the shift back to the ray's parameter), into root; false when none. The nearest root alone is
+/// found first, and all of them only when it is refused.
+template <class Valid>
+bool firstValidRoot(const double* c, int n, double lo, double hi, Valid&& valid, double& root) {
+    double roots[kMaxPolyDegree];
+    if (polyRoots(c, n, lo, hi, roots, 1) == 0) return false;
+    if (valid(roots[0])) {
+        root = roots[0];
+        return true;
+    }
+    const int count = polyRoots(c, n, lo, hi, roots);
+    for (int i = 0; i < count; ++i)
+        if (valid(roots[i])) {
+            root = roots[i];
+            return true;
+        }
+    return false;
+}
+
 /// The cubic c[0] + c[1]·u + c[2]·u² + c[3]·u³ and its slope (spline segments of lathes and prisms).
 inline double cubicAt(const double* c, double u) { return c[0] + u * (c[1] + u * (c[2] + u * c[3])); }
 inline double cubicSlope(const double* c, double u) { return c[1] + u * (2 * c[2] + u * 3 * c[3]); }

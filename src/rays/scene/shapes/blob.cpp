@@ -296,15 +296,11 @@ bool hitBlob(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& 
         if (events[k].u >= uMax) break;
         if (!(a < b) || positive <= threshold) continue;
         double c[5] = {sum[0] - threshold, sum[1], sum[2], sum[3], sum[4]};
-        double roots[4];
-        const int n = polyRoots(c, 4, a, b, roots);
-        for (int i = 0; i < n; ++i) {
-            const double t = roots[i] + s0;
-            if (!(t > tMin && t < tMax)) continue;
-            h.t = t;
-            normalAndPart(d, r.at(t), r.dir, h);
-            return true;
-        }
+        double root;
+        if (!firstValidRoot(c, 4, a, b, [&](double x) { return x + s0 > tMin && x + s0 < tMax; }, root)) continue;
+        h.t = root + s0;
+        normalAndPart(d, r.at(h.t), r.dir, h);
+        return true;
     }
     return false;
 }

@@ -144,13 +144,10 @@ bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, Sha
     for (int m = 0; m < top; ++m) bound = std::max(bound, std::fabs(c[m] / c[top]));
     bound = 1 + bound;
     const double lo = std::max(tMin - t0, -bound), hi = std::min(tMax - t0, bound);
-    double roots[kMaxPolyDegree];
-    const int count = polyRoots(c, top, lo, hi, roots);
     // The first root whose t, after the shift back and the rounding, is still in (tMin, tMax).
-    int i = 0;
-    while (i < count && !(roots[i] + t0 > tMin && roots[i] + t0 < tMax)) ++i;
-    if (i == count) return false;
-    h.t = roots[i] + t0;
+    double root;
+    if (!firstValidRoot(c, top, lo, hi, [&](double x) { return x + t0 > tMin && x + t0 < tMax; }, root)) return false;
+    h.t = root + t0;
     // The gradient at the hit.
     const Vec3 q = r.at(h.t);
     double px[kStride], py[kStride], pz[kStride];

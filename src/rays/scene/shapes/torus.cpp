@@ -30,17 +30,11 @@ bool hitTorus(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
     const double k = 4 * R * R;
     const double coef[5] = {b1 * b1 - k * (O.x * O.x + O.z * O.z), 2 * a1 * b1 - 2 * k * (O.x * d.x + O.z * d.z),
                             a1 * a1 + 2 * b1 - k * (d.x * d.x + d.z * d.z), 2 * a1, 1};
-    double roots[4];
-    auto inRange = [&](double root) { return (root + s0) / len > tMin && (root + s0) / len < tMax; };
-    // The nearest root is nearly always the hit: find it alone, and all of them only when the
-    // rounding of the shift back puts it outside (tMin, tMax).
-    int n = polyRoots(coef, 4, sLo - s0, sHi - s0, roots, 1);
-    if (n == 1 && !inRange(roots[0])) n = polyRoots(coef, 4, sLo - s0, sHi - s0, roots);
     // The first root whose t, after the shift back and the rounding, is still in (tMin, tMax).
-    int i = 0;
-    while (i < n && !inRange(roots[i])) ++i;
-    if (i == n) return false;
-    const double s = roots[i] + s0;
+    auto inRange = [&](double root) { return (root + s0) / len > tMin && (root + s0) / len < tMax; };
+    double root;
+    if (!firstValidRoot(coef, 4, sLo - s0, sHi - s0, inRange, root)) return false;
+    const double s = root + s0;
     h.t = s / len;
     const Vec3 p = r.origin + s * d;
     const double ring = std::sqrt(p.x * p.x + p.z * p.z);
