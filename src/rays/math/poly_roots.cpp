@@ -13,10 +13,12 @@ double evalPoly(const double* c, int n, double t) {
 
 namespace {
 
-// The root of monotone p (derivative d) in [a, b], where p(a) and p(b) differ in sign.
-double refineRoot(const double* c, const double* d, int n, double a, double b, double fa) {
-    // Keep a on the side where p has fa's sign.
-    double x = 0.5 * (a + b);
+// The root of monotone p (derivative d) in [a, b], where p(a) = fa and p(b) = fb differ in sign.
+double refineRoot(const double* c, const double* d, int n, double a, double b, double fa, double fb) {
+    // Keep a on the side where p has fa's sign. Start where the chord crosses zero (regula
+    // falsi), nearer the root than the middle on a monotone piece, or the middle if that fails.
+    const double chord = a - fa * (b - a) / (fb - fa);
+    double x = chord > a && chord < b ? chord : 0.5 * (a + b);
     for (int it = 0; it < 100; ++it) {
         const double f = evalPoly(c, n, x);
         if (f == 0) return x;
@@ -76,7 +78,7 @@ int polyRoots(const double* c, int n, double lo, double hi, double* roots, int l
     for (int i = 0; i <= m; ++i) {
         const double a = ends[i], b = ends[i + 1];
         const double fb = evalPoly(c, n, b);
-        if ((fa < 0) != (fb < 0) && fa != 0) roots[count++] = refineRoot(c, d, n, a, b, fa);
+        if ((fa < 0) != (fb < 0) && fa != 0) roots[count++] = refineRoot(c, d, n, a, b, fa, fb);
         else if (fb == 0 && i < m) roots[count++] = b;  // a root exactly at a critical point
         if (count == limit) break;
         fa = fb;
