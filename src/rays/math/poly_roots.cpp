@@ -20,8 +20,16 @@ double refineRoot(const double* c, const double* d, int n, double a, double b, d
     const double chord = a - fa * (b - a) / (fb - fa);
     double x = chord > a && chord < b ? chord : 0.5 * (a + b);
     for (int it = 0; it < 100; ++it) {
-        const double f = evalPoly(c, n, x);
-        if (f == 0) return x;
+        // p(x) by Horner's rule, with the bound of its rounding error (Higham, "Accuracy and
+        // Stability of Numerical Algorithms", §5.1: |error| ≤ γ(2n) Σ|c_i||x|^i): once |p(x)| is
+        // below it, x is a root as far as p can be evaluated, and further steps only wander.
+        double f = c[n], mag = std::fabs(c[n]);
+        const double ax = std::fabs(x);
+        for (int i = n - 1; i >= 0; --i) {
+            f = f * x + c[i];
+            mag = mag * ax + std::fabs(c[i]);
+        }
+        if (std::fabs(f) <= 4 * n * 1.12e-16 * mag) return x;
         if ((f < 0) == (fa < 0)) a = x;
         else b = x;
         const double df = evalPoly(d, n - 1, x);
