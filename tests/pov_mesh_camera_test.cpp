@@ -202,10 +202,13 @@ void expectColor(Vec3 got, Vec3 want) {
     EXPECT_NEAR(got.z, want.z, 1e-6);
 }
 
-TEST(PovMeshCamera, FacelessPixelsAreBlackAndRaysWithoutFacesDoNotCount) {
+TEST(PovMeshCamera, MaxDistanceStopsCameraRaysAndFacelessPixelsAreBlack) {
     const std::string mesh = faces(1);
     expectColor(renderedPixel("camera { mesh_camera { 1 0 " + mesh + " } }", 0, 2), Vec3(1, 0, 0));
     expectColor(renderedPixel("camera { mesh_camera { 1 0 " + mesh + " } }", 1, 2), Vec3(0, 0, 0));
+    // Past max_distance the ray meets nothing: the background (measured).
+    expectColor(renderedPixel("camera { mesh_camera { 1 0 5 " + mesh + " } }", 0, 2), Vec3(0, 0, 1));
+    expectColor(renderedPixel("camera { mesh_camera { 1 0 11 " + mesh + " } }", 0, 2), Vec3(1, 0, 0));
     // Distribution 0's rays average over the rays shot only: red from the first mesh, nothing
     // from the second (one face) at pixel 1.
     expectColor(renderedPixel("camera { mesh_camera { 2 0 " + faces(2) + " " + mesh + " } }", 1, 2), Vec3(1, 0, 0));
