@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
 #include "rays/pov/load_pov.h"
 #include "rays/render/renderer.h"
 #include "rays/scene/camera.h"
+#include "rays/scene/uv_face_grid.h"
 
 namespace rays {
 namespace {
@@ -157,6 +159,45 @@ TEST(PovMeshCamera, Distribution3StartsAtThePointWithThePixelsUv) {
     expectAt(2, 3, 4, 4, 0.5, 0.25);
     // Outside every face's uvs: no ray (a 1×1 image's only pixel has u = −½).
     EXPECT_TRUE(CameraRays::missed(pixelRay(c, 0, 0, 1, 1)));
+    // Edges count in, with no slack for rounding (measured on a 3×3 image: (0, 2/3) is inside the
+    // face (0,0), (0,1), (1,0), (1/3, 2/3) outside).
+    const Camera half = loadCamera("mesh_camera { 1 3 mesh { triangle { <0,1,0>, <1,-1,0>, <-1,-1,0> "
+                                   "uv_vectors <0,0>, <0,1>, <1,0> } } }");
+    EXPECT_FALSE(CameraRays::missed(pixelRay(half, 0, 1, 3, 3)));
+    EXPECT_TRUE(CameraRays::missed(pixelRay(half, 1, 1, 3, 3)));
+    EXPECT_FALSE(CameraRays::missed(pixelRay(half, 1, 2, 3, 3)));
+}
+
+TEST(UvFaceGrid, AGridOfFacesHasNoHolesAlongItsEdges) {
+    // meshcam_macros.inc's uv cameras: n×n cells of four faces round the cell's centre, uvs as
+    // floats; the pixels' uvs i/W, 1 − j/H fall on its edges and corners. Each must find a face
+    // (with plain barycentric weights, rounding left holes where POV-Ray has none).
+    constexpr int n = 30;
+    std::vector<double> uvs;
+    auto corner = [&](double u, double v) {
+        uvs.push_back(double(float(u)));
+        uvs.push_back(double(float(v)));
+    };
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            const double u0 = double(c) / n, u1 = double(c + 1) / n, v0 = 1 - double(r) / n, v1 = 1 - double(r + 1) / n;
+            const double um = (c + 0.5) / n, vm = 1 - (r + 0.5) / n;
+            const double ring[5][2] = {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}, {u0, v0}};
+            for (int k = 0; k < 4; ++k) {
+                corner(um, vm);
+                corner(ring[k][0], ring[k][1]);
+                corner(ring[k + 1][0], ring[k + 1][1]);
+            }
+        }
+    const UvFaceGrid grid(uvs);
+    for (const int w : {120, 160, 240, 300})
+        for (int i = 0; i < w; ++i)
+            for (int j = 1; j <= 90; ++j) {
+                double b[3];
+                const double u = double(i) / w, v = 1 - double(j) / 90;
+                ASSERT_GE(grid.find(u, v, b), 0) << u << " " << v;
+                EXPECT_NEAR(b[0] + b[1] + b[2], 1, 1e-12);
+            }
 }
 
 TEST(PovMeshCamera, SmoothInterpolatesTheCornerNormalsForDistribution3) {

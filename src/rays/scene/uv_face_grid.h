@@ -16,8 +16,9 @@ public:
     /// with values that are not finite are never found.
     explicit UvFaceGrid(std::vector<double> uvs);
 
-    /// The first face whose uv triangle holds (u, v) (its edges included), with the point's
-    /// barycentric weights of the face's corners in w; −1 when none does.
+    /// The first face whose uv triangle holds (u, v) (its edges included; a point on an edge two
+    /// faces share is in one of them), with the point's barycentric weights of the face's corners
+    /// in w; −1 when none does.
     int64_t find(double u, double v, double w[3]) const;
 
     size_t faceCount() const { return uv_.size() / 6; }
