@@ -7,6 +7,7 @@
 #include "rays/error.h"
 #include "rays/io/image_io.h"
 #include "rays/io/scene_parser.h"
+#include "rays/pov/load_pov.h"
 #include "rays/render/renderer.h"
 #include "support/error_text.h"
 #include "support/process.h"
@@ -56,6 +57,24 @@ TEST(Mesh, PovrayMeshAndMesh2AreOneIndexedObject) {
     const ImageF ia = flatRender(a, 4, 4), ib = flatRender(b, 4, 4);
     for (const Vec3& c : ia.pixels) EXPECT_EQ(c, Vec3(1, 0, 0));
     for (const Vec3& c : ib.pixels) EXPECT_EQ(c, Vec3(0, 1, 0));
+}
+
+TEST(Mesh, CopyOfADeclaredMeshDrawsItWithItsModifiers) {
+    // `mesh { M ... }` draws the declared mesh M (as POV-Ray 3.7 does, measured); it drew nothing.
+    ParseOptions opt;
+    opt.language.installedIncludeDir.clear();
+    const Scene s = pov::parsePovText("#version 3.7;\n" + kCam +
+                          "#declare M = mesh { triangle { <0,0,0>, <1,0,0>, <1,1,0> } }\n"
+                          "#declare M2 = mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <1,1,0> } face_indices { 1, <0,1,2> } }\n"
+                          "mesh { M translate <0, 0, 2> }\nmesh2 { M2 scale 2 }\n",
+                                      "t.pov", ".", opt);
+    ASSERT_EQ(s.objects.size(), 2u);
+    for (const Object& o : s.objects) {
+        EXPECT_EQ(o.type, ShapeType::Mesh);
+        EXPECT_EQ(o.mesh->triangleCount(), 1u);
+    }
+    EXPECT_EQ(s.objects[0].toObject.point(Vec3(0, 0, 2)), Vec3(0, 0, 0));
+    EXPECT_EQ(s.objects[1].toObject.point(Vec3(2, 2, 2)), Vec3(1, 1, 1));
 }
 
 TEST(Mesh, Mesh2UvMappingLandsOnKnownTexels) {

@@ -27,6 +27,8 @@ uint64_t sceneBytes(const Scene& scene) {
     uint64_t b = scene.objects.capacity() * (sizeof(Object) + kBvhPerObject);
     for (const Texture& t : scene.textures) b += t.bytes();
     for (const auto& m : scene.meshes) b += m->memoryBytes();  // its own BVH included
+    for (const Camera& c : scene.cameras)
+        if (c.mesh) b += c.mesh->memoryBytes();  // a mesh_camera's faces
     return b;
 }
 

@@ -52,19 +52,28 @@ bool isObjectKind(Kw k) {
 
 namespace {
 
+bool isMeshKind(Kw k) { return k == Kw::mesh || k == Kw::mesh2; }
+
+}  // namespace
+
 // An object's entries with `object { Base ... }` copies unrolled: the base's entries come first,
-// then the copy's (POV-Ray applies a copy's modifiers after the base's own).
+// then the copy's (POV-Ray applies a copy's modifiers after the base's own). `mesh { M ... }`
+// with M a declared mesh or mesh2 is such a copy too (measured: POV-Ray 3.7 draws M with the
+// modifiers; the mesh_camera demos write their camera meshes so).
 Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
-    if (item.kind != Kw::object || depth > kMaxObjectDepth) {
+    const bool meshCopy = isMeshKind(item.kind);
+    if ((item.kind != Kw::object && !meshCopy) || depth > kMaxObjectDepth) {
         for (const Entry& e : item.entries) out.push_back(&e);
         return item.kind;
     }
-    Kw kind = Kw::object;
+    Kw kind = item.kind;
     bool baseDone = false;
     for (const Entry& e : item.entries) {
         // The base: an object identifier, or an object written inside (`object { union {...} }`).
-        if (!baseDone && (e.positional() || isObjectKind(e.kw())) && !e.args.empty() &&
-            e.args[0].type == VType::Item && isObjectKind(e.args[0].item().kind)) {
+        const bool base = !e.args.empty() && e.args[0].type == VType::Item &&
+                          (meshCopy ? e.positional() && isMeshKind(e.args[0].item().kind)
+                                    : (e.positional() || isObjectKind(e.kw())) && isObjectKind(e.args[0].item().kind));
+        if (!baseDone && base) {
             kind = unrollObject(e.args[0].item(), out, depth + 1);
             baseDone = true;
             continue;
@@ -73,8 +82,6 @@ Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
     }
     return kind;
 }
-
-}  // namespace
 
 void SceneBuilder::add(const ParsedScene::Top& top) {
     version_ = top.version;

@@ -46,6 +46,11 @@ private:
     /// Sets the window or angles of a non-perspective camera from the camera block's vectors.
     static void finishProjection(Camera& c, Vec3 dir, Vec3 right, Vec3 up, Vec3 lookAt, bool rightOrUpSet,
                                  bool angleSet, const double angles[2]);
+    /// mesh_camera (scene_builder_mesh_camera.cpp): the block (its keyword at `at`) → its MeshCamera (offset and
+    /// reversed left to the camera's location and direction); one of its meshes into mc, its
+    /// faces' uvs appended to uvs (distribution 3).
+    std::shared_ptr<MeshCamera> meshCamera(const Item& block, const sdl::Loc& at);
+    void addCameraMesh(MeshCamera& mc, std::vector<double>& uvs, const Item& item);
     void addLight(const Item& light, const Transform& toWorld);
     void addObject(const Item& object, const Transform& parent, const Appearance* inherited, int depth);
     void addPrimitive(Kw kind, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,

@@ -34,6 +34,7 @@ void SceneBuilder::addCamera(const Item& cam) {
     collect(cam);
     Transform moved;  // the camera's transformations, in file order
     const Entry* lastTransform = nullptr;
+    const Entry* meshEntry = nullptr;  // mesh_camera and its block
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
         if (e.positional()) continue;
@@ -57,9 +58,8 @@ void SceneBuilder::addCamera(const Item& cam) {
                 break;
             }
             case Kw::mesh_camera:
-                c.projection = Projection::Perspective;
-                notes_.note(std::string("camera type ") + std::string(sdl::keywordName(e.kw())), e.loc,
-                            "(rendered as a perspective camera)");
+                c.projection = Projection::Mesh;
+                if (!e.args.empty() && e.args[0].type == VType::Item) meshEntry = &e;
                 break;
             case Kw::location: loc = toVec3(e.args[0]); break;
             case Kw::direction: dir = toVec3(e.args[0]); break;
@@ -114,13 +114,24 @@ void SceneBuilder::addCamera(const Item& cam) {
             throw Error(notes_.where(lastTransform->loc) +
                         ": error: the camera's transformation overflows (its vectors are no longer finite)");
     }
-    const double dl = length(dir);
+    double dl = length(dir);
+    if (c.projection == Projection::Mesh && meshEntry) {
+        // Only the z of location and direction count (POV-Ray 3.7's changelog, "Mesh Camera"):
+        // how far along the face normal the rays start, and whether they go against it. Both are
+        // taken after the camera's transformations (measured: `scale -1` or `rotate 180*y`
+        // reverses the rays, `translate 20*z` starts them 20 units out); a zero direction is fine.
+        std::shared_ptr<MeshCamera> mc = meshCamera(meshEntry->args[0].item(), meshEntry->loc);
+        mc->offset = loc.z;
+        mc->reversed = dir.z < -1e-10;
+        c.mesh = std::move(mc);
+        if (dl == 0) dl = 1;
+    }
     if (dl == 0) throw Error(notes_.where(cam.loc) + ": error: the camera's direction is zero");
     c.location = loc;
     c.lookAt = loc + dir;
     c.right = right / dl;
     c.up = up / dl;
-    if (c.projection != Projection::Perspective) finishProjection(c, dir, right, up, lookAt, rightOrUpSet, angleSet, angles);
+    if (c.projection != Projection::Perspective && c.projection != Projection::Mesh) finishProjection(c, dir, right, up, lookAt, rightOrUpSet, angleSet, angles);
     if (c.aperture > 0 && c.blurSamples == 0) c.blurSamples = 16;
     // A later camera replaces the one before (POV-Ray 3.7 reference, "Camera": the last one is
     // used; screen.inc's macros write a camera at each change).

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vector>
+
+#include "rays/sdl/item.h"
 #include "rays/sdl/keywords.h"
 
 namespace rays::pov {
@@ -13,5 +16,9 @@ inline int clampedInt(double v, int lo, int hi) { return std::isnan(v) ? lo : in
 /// True for the keywords that start an object (primitives, CSG, object copies, light groups and
 /// light sources, which may stand among objects).
 bool isObjectKind(sdl::Kw k);
+
+/// An object item's entries with its copies unrolled (`object { Base ... }`, `mesh { M ... }`):
+/// the base's entries first, then the copy's; returns the kind of what it draws.
+sdl::Kw unrollObject(const sdl::Item& item, std::vector<const sdl::Entry*>& out, int depth);
 
 }  // namespace rays::pov

@@ -143,8 +143,41 @@ ViewSetup resolveView(const Scene& scene, const RenderSettings& s) {
     return v;
 }
 
+namespace {
+
+// A mesh camera's pixel (scene/mesh_camera.h): each sample's rays from the faces the pixel maps
+// to. A ray with no face is not shot and does not count in the average (POV-Ray 3.7's changelog,
+// "Mesh Camera"); a pixel with none is black (measured).
+Vec3 meshCameraPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettings& s, int i, int j,
+                     TraceContext& ctx, PathInfo* info) {
+    const int count = view.samples, rays = view.rays.mesh->raysShot();
+    const double radius = filterRadius(s.filter);
+    if (info) *info = PathInfo{};
+    bool first = true;
+    Vec3 sum;
+    double weightSum = 0;
+    for (int n = 0; n < count; ++n) {
+        ctx.rng = SampleRng(uint32_t(i), uint32_t(j), uint32_t(n), s.seed);
+        double a, b;
+        samplePoint(s.aa, n, count, ctx.rng, a, b);
+        const double dx = (2 * a - 1) * radius, dy = (2 * b - 1) * radius;
+        const double w = filterWeight(s.filter, dx, dy);
+        for (int k = 0; k < rays; ++k) {
+            const Ray ray = view.rays.meshRay(k, i + 0.5 + dx, j + 0.5 + dy, s.width, s.height);
+            if (CameraRays::missed(ray)) continue;
+            weightSum += w;
+            sum += w * tracer.tracePrimary(ray, ctx, nullptr, first ? info : nullptr);
+            first = false;
+        }
+    }
+    return weightSum > 0 ? sum / weightSum : Vec3{};
+}
+
+}  // namespace
+
 Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettings& s, int i, int j,
                  TraceContext& ctx, PathInfo* info) {
+    if (view.rays.mesh) return meshCameraPixel(tracer, view, s, i, j, ctx, info);
     const int count = view.samples;
     // With depth of field and no explicit anti-aliasing, samples are stratified over the pixel.
     const AaMode mode = (view.aperture > 0 && s.aa == AaMode::Grid && s.spp == 1) ? AaMode::Stratified : s.aa;
@@ -186,7 +219,7 @@ TileRenderer::TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSetti
     : s_(s),
       view_(resolveView(scene, s)),
       // The same origins render() builds for a single-pass render (pinhole unless a lens spreads rays).
-      origins_(Tracer::buildSharedOrigins(scene, bvh, view_.aperture <= 0 ? &view_.rays.location : nullptr,
+      origins_(Tracer::buildSharedOrigins(scene, bvh, view_.aperture <= 0 && !view_.rays.mesh ? &view_.rays.location : nullptr,
                                           double(s.width) * double(s.height) * double(view_.samples), s.threads)),
       tracer_(scene, bvh, s, &origins_),
       povOutput_(scene.pov.enabled),
@@ -219,8 +252,9 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
               const RowsFn& onRows) {
     ImageF img = ImageF::uninitialized(s.width, s.height);  // every pixel is written below
     const ViewSetup view = resolveView(scene, s);
-    // Primary rays start at the eye unless a lens spreads them (the edge pass is a pinhole).
-    const bool pinholeRays = view.aperture <= 0 || s.aaEdges;
+    // Primary rays start at the eye unless a lens spreads them (the edge pass is a pinhole) or
+    // they start on a mesh camera's faces.
+    const bool pinholeRays = (view.aperture <= 0 || s.aaEdges) && !view.rays.mesh;
     const SharedOrigins origins =
         Tracer::buildSharedOrigins(scene, bvh, pinholeRays ? &view.rays.location : nullptr,
                                    double(s.width) * double(s.height) * double(view.samples), s.threads);

@@ -115,7 +115,8 @@ public:
     /// settings ask for the flat or normals views.
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
-          povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()) {}
+          povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()),
+          primaryReach_(primaryReach(scene, settings)) {}
 
     /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
     /// primarySamples: the render's camera samples (each buffer is queried about that often).
@@ -212,7 +213,10 @@ private:
         bool reflected = false;  ///< a reflection is on the ray's way from the camera
         int radLevel = 0;        ///< radiosity bounces on the ray's way from the camera
         bool gathering = false;  ///< a radiosity gathering ray (or one of its children): no highlights
+        double reach = kInfinity;  ///< objects farther along the ray are not met (a mesh camera's max_distance)
     };
+    /// How far camera rays reach: the render's mesh camera's max_distance, else infinity.
+    static double primaryReach(const Scene& scene, const RenderSettings& settings);
     /// True when the scene is traced by POV-Ray's rules: pov.enabled, and not the flat or normals view.
     static bool usesPovPath(const Scene& scene, const RenderSettings& settings);
     /// True when some object lets light through (filter or transmit) or casts no shadow
@@ -329,6 +333,7 @@ private:
     bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
     bool povHides_;        ///< and some are hidden from camera or reflection rays
     const IrradianceCache* radCache_ = nullptr;
+    double primaryReach_;  ///< POV-Ray camera rays meet nothing farther (primaryReach)
 };
 
 }  // namespace rays

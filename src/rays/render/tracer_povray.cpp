@@ -81,11 +81,19 @@ Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) 
     ctx.radLocal.clear();  // a camera sample reuses only its own radiosity records (and the cache's)
     PovRay r;
     r.primary = true;
+    r.reach = primaryReach_;
     return tracePov(ray, r, ctx, info);
 }
 
+double Tracer::primaryReach(const Scene& scene, const RenderSettings& settings) {
+    const int i = settings.cameraIndex;
+    if (i < 0 || size_t(i) >= scene.cameras.size() || !scene.cameras[size_t(i)].mesh) return kInfinity;
+    return scene.cameras[size_t(i)].mesh->maxDistance;
+}
+
 Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathInfo* info) const {
-    const Hit hit = povFirstHit(ray, r.reflected);  // hit.t is infinite for a miss
+    Hit hit = povFirstHit(ray, r.reflected);  // hit.t is infinite for a miss
+    if (hit.t > r.reach) hit = Hit{};  // past a mesh camera's max_distance: a miss (measured: the background)
     if (info) info->push(hit.object);
     Vec3 fade(1.0);
     if (r.fades && r.interior >= 0) {

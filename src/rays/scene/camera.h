@@ -1,12 +1,15 @@
 // Pinhole camera in the course convention (right handed; right/up used exactly as written), and
 // POV-Ray's other projections (orthographic, fisheye, ultra_wide_angle, panoramic, cylinder 1-4,
-// spherical) as measured from POV-Ray 3.7 renders (docs/povray-language.md, "Camera").
+// spherical) as measured from POV-Ray 3.7 renders (docs/povray-language.md, "Camera"), and its
+// mesh_camera (scene/mesh_camera.h).
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <memory>
 
 #include "rays/geometry/ray.h"
 #include "rays/math/vec3.h"
+#include "rays/scene/mesh_camera.h"
 
 namespace rays {
 
@@ -14,7 +17,7 @@ namespace rays {
 /// POV-Ray's camera types.
 enum class Projection : uint8_t {
     Perspective, Orthographic, Fisheye, UltraWideAngle, Omnimax, Panoramic, Cylinder1, Cylinder2, Cylinder3,
-    Cylinder4, Spherical
+    Cylinder4, Spherical, Mesh
 };
 
 struct Camera {
@@ -30,6 +33,7 @@ struct Camera {
     int blurSamples = 0;      ///< samples per pixel when aperture > 0 (0: renderer default)
     Projection projection = Projection::Perspective;
     double angleH = 0, angleV = 0;  ///< viewing angles (radians) of the angle-based projections
+    std::shared_ptr<const MeshCamera> mesh;  ///< Projection::Mesh: the faces rays start from
 
     /// Distance from location to the focal plane (along the view direction).
     double focalDistance() const { return dot(focalPoint - location, forward()); }
@@ -50,11 +54,12 @@ struct CameraRays {
     Vec3 direction;            ///< look_at − location as given (panoramic's ellipsoid axis)
     Vec3 rightUnit, upUnit;    ///< normalised right and up (angle-based projections)
     double angleH = 0, angleV = 0, aspect = 1;  ///< aspect = |right| / |up|
+    const MeshCamera* mesh = nullptr;           ///< Projection::Mesh (held by the Camera)
 
     explicit CameraRays(const Camera& c)
         : location(c.location), right(c.right), up(c.up), forward(c.forward()), projection(c.projection),
-          direction(c.lookAt - c.location), angleH(c.angleH), angleV(c.angleV) {
-        if (projection == Projection::Perspective) return;
+          direction(c.lookAt - c.location), angleH(c.angleH), angleV(c.angleV), mesh(c.mesh.get()) {
+        if (projection == Projection::Perspective || projection == Projection::Mesh) return;
         rightUnit = normalize(right);
         upUnit = normalize(up);
         aspect = length(right) / length(up);
@@ -66,7 +71,16 @@ struct CameraRays {
     Ray rayThrough(double px, double py, int width, int height) const {
         const double u = px / width - 0.5, v = py / height - 0.5;
         if (projection == Projection::Perspective) return Ray{location, normalize(u * right + v * up + forward)};
+        if (projection == Projection::Mesh) return meshRay(0, px, py, width, height);
         return projected(u, v);
+    }
+
+    /// A mesh camera's ray k (< MeshCamera::raysShot()) of the sample at (px, py); a ray with no
+    /// face gives a zero direction (missed()).
+    Ray meshRay(int k, double px, double py, int width, int height) const {
+        Ray r{location, Vec3{}};
+        if (mesh && !mesh->ray(k, px, py, width, height, r)) r = Ray{location, Vec3{}};
+        return r;
     }
 
     /// True for the ray of a point outside the projection (POV-Ray leaves those pixels black).
@@ -77,7 +91,7 @@ private:
     // (tests/pov_camera_test.cpp holds the measurements).
     Ray projected(double u, double v) const {
         switch (projection) {
-            case Projection::Perspective: break;
+            case Projection::Perspective: case Projection::Mesh: break;
             case Projection::Orthographic: return Ray{location + u * right + v * up, forward};
             case Projection::Fisheye: {
                 // Polar: the distance from the centre (1 at the top edge) is angle/2 off the axis.
