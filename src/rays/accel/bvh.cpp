@@ -129,7 +129,9 @@ Bvh::Bvh(const std::vector<Object>& objects) {
         }
         boundedOf_[i] = int32_t(bounded_.size());
         prims.push_back(objectPrim(o, b, i));
-        bounded_.push_back({ObjectBvh::exactSphere(prims.back()), i, -1});
+        Vec3 pad;
+        for (int a = 0; a < 3; ++a) pad[a] = 1e-9 * (std::fabs(b.lo[a]) + std::fabs(b.hi[a])) + 1e-12;
+        bounded_.push_back({ObjectBvh::exactSphere(prims.back()), i, -1, Bounds{b.lo - pad, b.hi + pad}});
         const Vec3 n = o.type == ShapeType::Triangle && !usesLocalSpace(o) ? cross(o.p1 - o.p0, o.p2 - o.p0) : Vec3{};
         if (length(n) > 0) bounded_.back().plane = planeIndex(n, o);  // a world-space triangle
 
@@ -289,7 +291,9 @@ Hit Bvh::closest(const std::vector<Object>& objects, const Ray& ray, double tMin
     Hit best = closestUnbounded(objects, ray, tMin, tMax);
     NearestBounded nearest(objects, ray, tMin, best);
     if (bounded_.size() <= kFewBounded) {
-        for (const Bounded& b : bounded_) nearest.test(b.id, b.sphere);
+        const Vec3 invDir{1 / ray.dir.x, 1 / ray.dir.y, 1 / ray.dir.z};
+        for (const Bounded& b : bounded_)
+            if (meetsBox(b.box, ray, invDir, tMin, best.t)) nearest.test(b.id, b.sphere);
         nearest.finish();
         return best;
     }
@@ -348,8 +352,10 @@ int Bvh::anyBlocker(const std::vector<Object>& objects, const Ray& ray, double t
     int blocker = blockerUnbounded(objects, ray, tMin, tMax);
     if (blocker != kNoBlocker) return blocker;
     if (bounded_.size() <= kFewBounded) {
+        const Vec3 invDir{1 / ray.dir.x, 1 / ray.dir.y, 1 / ray.dir.z};
         for (const Bounded& b : bounded_)
-            if (blocks(objects, b.id, b.sphere, ray, tMin, tMax)) return int(b.id);
+            if (meetsBox(b.box, ray, invDir, tMin, tMax) && blocks(objects, b.id, b.sphere, ray, tMin, tMax))
+                return int(b.id);
         return kNoBlocker;
     }
     const TriRay fr = floatRay(ray);
@@ -477,6 +483,19 @@ int Bvh::blockerOnPlanes(const std::vector<Object>& objects, const Ray& ray, dou
         }
     }
     return kNoBlocker;
+}
+
+bool Bvh::meetsBox(const Bounds& b, const Ray& ray, Vec3 invDir, double tMin, double tMax) {
+    // Slab test; the rounding of t is covered by the slack (relative to t) and the box's padding.
+    for (int a = 0; a < 3; ++a) {
+        double n = (b.lo[a] - ray.origin[a]) * invDir[a], f = (b.hi[a] - ray.origin[a]) * invDir[a];
+        if (std::isnan(n) || std::isnan(f)) continue;  // along a face's plane: undecided
+        if (n > f) std::swap(n, f);
+        const double slack = 1e-9 * (std::fabs(n) + std::fabs(f));
+        tMin = std::max(tMin, n - slack);
+        tMax = std::min(tMax, f + slack);
+    }
+    return tMin <= tMax;
 }
 
 std::vector<OriginBuffer::Bound> Bvh::originBounds(const std::vector<Object>& objects) const {

@@ -83,7 +83,10 @@ private:
         ObjectBvh::ExactSphere sphere;
         uint32_t id;
         int32_t plane;
+        Bounds box;  ///< world box, widened for rounding (the few-objects walk's reject test)
     };
+    /// Whether the ray may meet box b with t in [tMin, tMax]; invDir = 1 / ray.dir.
+    static bool meetsBox(const Bounds& b, const Ray& ray, Vec3 invDir, double tMin, double tMax);
     /// dot(normal, x) = offset for every point x of a flat object (normal unit length), up to rounding.
     struct Plane {
         Vec3 normal;
