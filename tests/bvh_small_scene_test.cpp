@@ -138,3 +138,38 @@ TEST(BvhSmallScene, ManyPlanesStillFindEveryBlocker) {
     }
     EXPECT_GT(blocked, 100);
 }
+
+// With a few objects, a ray is checked against each one's world box before its exact test: rays
+// that run exactly in the plane of a box face (a zero direction component, 0 · ∞ in the slab
+// test) must still find what the exact tests find.
+TEST(BvhSmallScene, RaysInTheirBoxesFacePlanesAreNotRejected) {
+    std::vector<Object> objects;
+    objects.push_back(makeObject(ShapeType::Box, {-1, -1, -1}, {1, 1, 1}, {}, 0, 0, Transform{}));
+    objects.push_back(makeObject(ShapeType::Sphere, {}, {4, 0, 0}, {}, 0, 1));
+    const Bvh bvh(objects);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-3, 3);
+    int hits = 0;
+    for (int i = 0; i < 4000; ++i) {
+        // Origin on a face plane of the box or of the sphere's box, direction in that plane.
+        Vec3 o{u(rng), u(rng), -5}, d{u(rng), u(rng), 0};
+        const double planes[] = {-1, 1, 5, 3};
+        const int axis = i % 2;
+        o[axis] = planes[(i / 2) % 4];
+        d[axis] = 0;
+        d.z = 1;
+        const Ray ray{o, normalize(d)};
+        Hit want;
+        want.t = kInfinity;
+        ShapeHit sh;
+        for (size_t k = 0; k < objects.size(); ++k)
+            if (intersect(objects[k], ray, 1e-9, want.t, sh)) want.t = sh.t, want.object = int(k);
+        const Hit got = bvh.closest(objects, ray, 1e-9, kInfinity);
+        ASSERT_EQ(got.object, want.object) << i;
+        bool any = false;
+        for (const Object& ob : objects) any = any || occludes(ob, ray, 1e-9, 20);
+        ASSERT_EQ(bvh.any(objects, ray, 1e-9, 20), any) << i;
+        hits += want.valid();
+    }
+    EXPECT_GT(hits, 100);
+}

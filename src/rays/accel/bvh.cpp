@@ -487,11 +487,12 @@ int Bvh::blockerOnPlanes(const std::vector<Object>& objects, const Ray& ray, dou
 
 bool Bvh::meetsBox(const Bounds& b, const Ray& ray, Vec3 invDir, double tMin, double tMax) {
     // Slab test; the rounding of t is covered by the slack (relative to t) and the box's padding.
+    // A NaN (a ray along a face's plane: 0 · ∞) leaves the interval as it is: std::max and
+    // std::min return their first argument when a comparison with NaN fails.
     for (int a = 0; a < 3; ++a) {
-        double n = (b.lo[a] - ray.origin[a]) * invDir[a], f = (b.hi[a] - ray.origin[a]) * invDir[a];
-        if (std::isnan(n) || std::isnan(f)) continue;  // along a face's plane: undecided
-        if (n > f) std::swap(n, f);
-        const double slack = 1e-9 * (std::fabs(n) + std::fabs(f));
+        const double n0 = (b.lo[a] - ray.origin[a]) * invDir[a], f0 = (b.hi[a] - ray.origin[a]) * invDir[a];
+        const double n = std::min(n0, f0), f = std::max(n0, f0);
+        const double slack = 1e-9 * (std::fabs(n0) + std::fabs(f0));
         tMin = std::max(tMin, n - slack);
         tMax = std::min(tMax, f + slack);
     }
