@@ -32,12 +32,32 @@ constexpr std::array<uint8_t, 512> kPerm = makePermutation();
 inline double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 inline double lerp(double t, double a, double b) { return a + t * (b - a); }
 
-// Dot product of (x, y, z) with one of the 12 cube-edge gradients chosen by the hash.
+// The 12 cube-edge gradients (and 4 repeats) indexed by the hash's low four bits: for h, ±u ± v
+// with u = x (h < 8) or y, v = y (h < 4), x (h = 12, 14) or z, the signs from bits 0 and 1.
+struct Gradient {
+    double x, y, z;
+};
+constexpr std::array<Gradient, 16> makeGradients() {
+    std::array<Gradient, 16> g{};
+    for (int h = 0; h < 16; ++h) {
+        const double su = (h & 1) ? -1 : 1, sv = (h & 2) ? -1 : 1;
+        Gradient& e = g[size_t(h)];
+        if (h < 8) e.x = su;
+        else e.y = su;
+        if (h < 4) e.y = sv;
+        else if (h == 12 || h == 14) e.x = sv;
+        else e.z = sv;
+    }
+    return g;
+}
+constexpr std::array<Gradient, 16> kGradients = makeGradients();
+
+// Dot product of (x, y, z) with the gradient the hash picks: a table look-up instead of branches
+// on the hash, which random hashes mispredicted. The products are exact (±1 or 0 times a
+// coordinate), so the sum is the same number as ±u ± v.
 inline double grad(int hash, double x, double y, double z) {
-    const int h = hash & 15;
-    const double u = h < 8 ? x : y;
-    const double v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
-    return ((h & 1) ? -u : u) + ((h & 2) ? -v : v);
+    const Gradient& g = kGradients[size_t(hash & 15)];
+    return g.x * x + g.y * y + g.z * z;
 }
 
 // Perlin's noise in about [-1, 1].
