@@ -6,6 +6,7 @@
 #include "rays/error.h"
 #include "rays/fn/compile.h"
 #include "rays/scene/shapes/height_field.h"
+#include "rays/image/parallel.h"
 #include "rays/sdl/function_value.h"
 
 namespace rays::pov {
@@ -56,10 +57,13 @@ void functionHeights(const Entry& e, const std::string& where, int& nx, int& nz,
     const sdl::FunctionValue& f = e.args[2].fn();
     if (!f.table || f.index < 0) throw Error(where + ": error: height_field's function is not a float function");
     const fn::Program& program = f.table->program(f.index);
-    fn::Scratch scratch;
-    scratch.fit(program);
     heights.resize(size_t(nx) * size_t(nz));
-    for (int iz = 0; iz < nz; ++iz)
+    // Rows in parallel on every core (the table is complete and read-only while it runs; each
+    // row writes only its own heights, so the result does not depend on the thread count): a
+    // noisy function on a fine grid is most of some scenes' parse (advanced/balcony).
+    parallelFor(nz, 0, [&](int iz) {
+        fn::Scratch scratch;
+        scratch.fit(program);
         for (int ix = 0; ix < nx; ++ix) {
             double args[fn::kMaxParams] = {double(ix) / (nx - 1), double(iz) / (nz - 1), 0};
             double v = 0;
@@ -72,6 +76,7 @@ void functionHeights(const Entry& e, const std::string& where, int& nx, int& nz,
             }
             heights[size_t(iz) * size_t(nx) + size_t(ix)] = std::isnan(v) ? 0 : std::clamp(v, 0.0, 1.0);
         }
+    });
 }
 
 }  // namespace
