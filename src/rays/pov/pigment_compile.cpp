@@ -110,6 +110,20 @@ int PigmentCompiler::compileFunction(const Item& item) {
     return s.unrendered ? -1 : emit(s);
 }
 
+// A density (POV-Ray 3.7 reference, "Density"): read as a pigment whose colour is the density, 1
+// (white) where no pattern or colour is given, 0 for a pattern Rays does not render. Always a node.
+int PigmentCompiler::compileDensity(const Item& density) {
+    State s;
+    s.what = "density";
+    s.node.color = pattern::Rgbft{Vec3(1.0), 0, 0};
+    read(density, s, 0);
+    if (s.unrendered) {  // a pattern Rays does not render (noted): no media there rather than a guess
+        s.pattern = false;
+        s.node.color = pattern::Rgbft{};
+    }
+    return emit(s);
+}
+
 // A pigment inside a map or list: always a node (a flat colour becomes a Solid node).
 int PigmentCompiler::nested(const Item& pigment, int depth) {
     State s;
@@ -145,7 +159,8 @@ void PigmentCompiler::readPigmentMap(const Item& map, State& s, int depth) {
     for (const Entry& e : map.entries) {
         if (e.positional()) {
             for (const Value& v : e.args)
-                if (v.type == VType::Item && v.item().kind == Kw::pigment_map && depth < kMaxDepth)
+                if (v.type == VType::Item && (v.item().kind == Kw::pigment_map || v.item().kind == Kw::density_map) &&
+                    depth < kMaxDepth)
                     readPigmentMap(v.item(), s, depth + 1);
             continue;
         }
@@ -166,9 +181,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         for (const Value& v : e.args) {
             if (v.type == VType::Item) {
                 const Kw k = v.item().kind;
-                if (k == Kw::pigment || (s.normal && k == Kw::normal)) read(v.item(), s, depth + 1);  // the base
+                if (k == Kw::pigment || k == Kw::density || (s.normal && k == Kw::normal)) read(v.item(), s, depth + 1);  // the base
                 else if (k == Kw::color_map || k == Kw::colour_map) readColorMap(v.item(), s, depth);
-                else if (k == Kw::pigment_map) readPigmentMap(v.item(), s, depth);
+                else if (k == Kw::pigment_map || k == Kw::density_map) readPigmentMap(v.item(), s, depth);
             } else if (v.isNumeric()) {
                 if (s.pattern || s.unrendered) {
                     s.list.push_back(MapEntry{0, toPatternColor(v), -1});
@@ -251,8 +266,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     pattern::PatternParams& pp = s.node.params;
     switch (k) {
         case Kw::color_map: case Kw::colour_map: readColorMap(e.args[0].item(), s, depth); break;
-        case Kw::pigment_map: readPigmentMap(e.args[0].item(), s, depth); break;
-        case Kw::pigment: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
+        case Kw::pigment_map: case Kw::density_map: readPigmentMap(e.args[0].item(), s, depth); break;
+        case Kw::pigment: case Kw::density: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
         case Kw::turbulence: pp.turbulence.amount = toVec3(e.args[0]); break;
         case Kw::octaves: pp.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
         case Kw::omega: pp.turbulence.omega = num(0); break;

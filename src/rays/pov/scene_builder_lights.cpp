@@ -64,6 +64,8 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             case Kw::falloff: falloff = toFloat(e.args[0]), falloffSet = true; break;
             case Kw::tightness: l.tightness = std::max(0.0, toFloat(e.args[0])); break;
             case Kw::shadowless: l.shadowless = true; break;
+            case Kw::media_interaction: l.mediaInteraction = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::media_attenuation: l.mediaAttenuation = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::area_light:
                 if (e.args.size() == 4) {
                     l.area = true;

@@ -9,6 +9,7 @@
 #include "rays/accel/bvh.h"
 #include "rays/accel/origin_buffer.h"
 #include "rays/render/irradiance_cache.h"
+#include "rays/render/pov_media.h"
 #include "rays/render/sampler.h"
 #include "rays/render/settings.h"
 #include "rays/scene/scene.h"
@@ -115,7 +116,8 @@ public:
     /// settings ask for the flat or normals views.
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
-          povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()) {}
+          povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()),
+          povMedia_(povPath_ && povHasMedia()) {}
 
     /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
     /// primarySamples: the render's camera samples (each buffer is queried about that often).
@@ -206,6 +208,7 @@ private:
         int level = 1;
         double weight = 1;
         int interior = -1;
+        int interiorSurface = -1;  ///< Material::pov of the (leaf) object whose interior it is (its media)
         bool fades = false;
         Vec3 faded{1, 1, 1};
         bool primary = false;
@@ -303,6 +306,33 @@ private:
     /// for one it began in, none for one it does not leave); an opaque surface (or too many) blocks.
     Vec3 povTransmittance(const Ray& shadow, double tMax) const;
     const PovSurface& povSurfaceOf(const Material& m) const;
+    // POV-Ray's media (tracer_media.cpp; docs/povray-lighting.md, "Media").
+    /// True when some object's interior or the atmosphere holds media.
+    bool povHasMedia() const;
+    /// The media the stretch of ray r travels in: its interior's, and the atmosphere's outside
+    /// objects and inside hollow ones.
+    PovMediaSet povMediaOf(const PovRay& r) const;
+    /// `behind` (what the ray sees at t) seen through the media of the stretch [0, t] (a miss: as
+    /// far as kPovMediaMissDistance): dimmed, plus the light the media emit and scatter towards
+    /// the viewer (method 3: equal steps refined where neighbouring samples differ).
+    Vec3 povMediaAlong(const Ray& ray, double t, const PovRay& r, Vec3 behind, TraceContext& ctx) const;
+    /// What the media do at a point: light taken out per unit length (extinction) and light
+    /// added per unit length towards the viewer looking along dir (emission plus scattering).
+    struct PovMediaPoint {
+        Vec3 extinction, source;
+    };
+    PovMediaPoint povMediaPoint(const PovMediaSet& set, Vec3 P, Vec3 dir, TraceContext& ctx) const;
+    /// Running sums of the integration: the light added so far and the share still let through.
+    struct PovMediaSum {
+        Vec3 added, through{1, 1, 1};
+    };
+    /// Adds the step [a, b] (a's sample pa, b's pb) to sum, halving it while the samples differ
+    /// by more than aa_threshold, up to aa_level halvings.
+    void povMediaStep(const PovMediaSet& set, const Ray& ray, double a, const PovMediaPoint& pa, double b,
+                      const PovMediaPoint& pb, int level, TraceContext& ctx, PovMediaSum& sum) const;
+    /// Light of the light `index` reaching P inside a medium (spot, fading, shadows, media on the
+    /// way); toLight becomes the unit direction towards the light. Area lights from their centre.
+    Vec3 povMediaLight(size_t index, Vec3 P, Vec3& toLight, TraceContext& ctx) const;
     // POV-Ray's radiosity (tracer_radiosity.cpp; docs/povray-lighting.md, "Radiosity").
     /// The light radiosity brings at a point once: brightness and gray_threshold applied, nothing at
     /// recursion_limit.
@@ -328,6 +358,7 @@ private:
     bool povPath_;         ///< the scene is traced by POV-Ray's rules
     bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
     bool povHides_;        ///< and some are hidden from camera or reflection rays
+    bool povMedia_;        ///< and some interiors or the atmosphere hold media
     const IrradianceCache* radCache_ = nullptr;
 };
 

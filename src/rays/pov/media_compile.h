@@ -1,0 +1,33 @@
+// POV-Ray media items (POV-Ray 3.7 reference, "Media", "Media Types", "Sampling Parameters &
+// Methods", "Density") read into the values the renderer samples, their densities compiled as
+// pigment nodes (a density is a pattern whose colour is the density) and placed like pigments: the
+// media's and then the object's transformations move them.
+#pragma once
+#include <vector>
+
+#include "rays/pov/item_values.h"
+#include "rays/pov/not_rendered.h"
+#include "rays/pov/pigment_compile.h"
+#include "rays/scene/pov_media.h"
+
+namespace rays::pov {
+
+/// A density: its node in the PigmentTable and its space → the space the media was given in.
+struct DensityLook {
+    int node = -1;
+    Transform toObject;
+};
+
+/// A media as read: its values (densityFirst/densityCount not set yet) and its densities.
+struct MediaLook {
+    PovMedia media;
+    std::vector<DensityLook> densities;
+};
+
+/// Reads a media item (a media identifier first: its base) over out. Without `pigments` the
+/// densities are left out (density 1).
+void readMedia(const Item& media, MediaLook& out, PigmentCompiler* pigments, NotRendered& notes, int depth = 0);
+/// The media moved by `outer`, applied after what moves it already.
+void moveMedia(MediaLook& m, const Transform& outer);
+
+}  // namespace rays::pov
