@@ -94,6 +94,29 @@ TEST(PovMedia, DensitiesMoveWithTheObject) {
     expectColor(seen(s, {0.75, 0.1, -10}), Vec3(0.25), 1e-9);
 }
 
+// Overlapping objects: a ray inside both sees both media, and still the first after leaving the
+// second (measured <.2,.6,.2>: emission .1 over 2 units, <0,.2,0> over 2 units, 1 of them shared).
+TEST(PovMedia, MediaOfNestedInteriorsAddUp) {
+    const Scene s = load(
+        "box { <-5,-5,0>, <5,5,2> pigment { rgbf 1 } hollow interior { media { emission 0.1 } } }\n"
+        "box { <-5,-5,1>, <5,5,3> pigment { rgbf 1 } hollow interior { media { emission <0,0.2,0> } } }\n");
+    expectColor(seen(s, {0.1, 0.1, -3}), {0.2, 0.6, 0.2});
+}
+
+// A camera inside an object with media sees them from the camera on (measured .2: emission .1 from
+// the centre of a sphere of radius 2).
+TEST(PovMedia, CameraInsideMedia) {
+    const Scene s = load("sphere { 0, 2 pigment { rgbf 1 } hollow interior { media { emission 0.1 } } }\n");
+    expectColor(seen(s, {0, 0, 0}), Vec3(0.2));
+}
+
+// The lights of a light_group light only the group's objects: no media (measured 0).
+TEST(PovMedia, LightGroupLightsLightNoMedia) {
+    const Scene s = load("light_group { light_source { <0,1000,0> rgb 10 } sphere { <0,0,-100>, 1 pigment { rgb 1 } } }\n" +
+                         slab("media { scattering { 1, 1 } }", 0.01));
+    expectColor(seen(s, kEye), Vec3(0.0), 1e-12);
+}
+
 // Atmospheric media fill the space outside objects and hollow objects, not other objects (measured:
 // emission 0.02 over the 5 units from the camera to a black wall, 1 of them inside a clear box:
 // .08 when the box is not hollow, .1 when it is).

@@ -264,6 +264,8 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     noReflection_ = noReflection_ || noReflection;
     doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
     hollow_ = hollow_ || hollow;
+    KeepFlag keepGroup{inLightGroup_, inLightGroup_};
+    inLightGroup_ = inLightGroup_ || kind == Kw::light_group;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
     // Finite steps can still overflow or underflow together (scale 1e300 scale 1e300): the object

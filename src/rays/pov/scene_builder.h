@@ -121,6 +121,9 @@ private:
     bool noReflection_ = false;  ///< and from reflection rays (no_reflection)
     bool doubleIlluminate_ = false;  ///< and lit from both sides (double_illuminate)
     bool hollow_ = false;            ///< and hollow: atmospheric media fill them (hollow)
+    /// Adding a light_group's objects: its lights light no media (they light only the group's
+    /// objects in POV-Ray; Rays lets them light everything else still).
+    bool inLightGroup_ = false;
     uint64_t maxObjects_, objects_ = 0;
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries

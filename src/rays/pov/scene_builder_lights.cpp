@@ -126,6 +126,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
         }
     }
     if (l.area && (length(cross(l.axis1, l.axis2)) == 0)) l.area = false;
+    if (inLightGroup_) l.mediaInteraction = false;
     scene_.lights.push_back(l);
     // looks_like: the object, moved to the light's place, is seen but casts no shadow (the manual).
     if (looksLike) {

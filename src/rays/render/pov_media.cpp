@@ -96,7 +96,7 @@ int povLightBeamEdges(const Light& light, const Ray& ray, double t0, double t1, 
 int povMediaSteps(int samples) { return std::max(samples, 3) / 2 + 1; }
 
 void PovMediaSet::add(const PovMedia* first, int count) {
-    if (count <= 0 || spanCount == 2) return;
+    if (count <= 0 || spanCount == kMaxSpans) return;
     spans[spanCount++] = Span{first, count};
     for (int i = 0; i < count; ++i) {
         const PovMedia& m = first[i];

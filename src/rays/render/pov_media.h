@@ -38,7 +38,8 @@ struct PovMediaSet {
         const PovMedia* first = nullptr;
         int count = 0;
     };
-    Span spans[2];
+    static constexpr int kMaxSpans = 6;
+    Span spans[kMaxSpans];
     int spanCount = 0;
     bool scatters = false;  ///< some medium scatters light
     int samples = 1, intervals = 1, aaLevel = 0;

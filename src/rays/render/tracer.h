@@ -117,7 +117,7 @@ public:
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
           povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()),
-          povMedia_(povPath_ && povHasMedia()) {}
+          povMedia_(povPath_ && povHasMedia()), povMediaHolders_(povMedia_ ? povMediaHolders() : std::vector<PovMediaHolder>{}) {}
 
     /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
     /// primarySamples: the render's camera samples (each buffer is queried about that often).
@@ -208,13 +208,38 @@ private:
         int level = 1;
         double weight = 1;
         int interior = -1;
-        int interiorSurface = -1;  ///< Material::pov of the (leaf) object whose interior it is (its media)
         bool fades = false;
         Vec3 faded{1, 1, 1};
         bool primary = false;
         bool reflected = false;  ///< a reflection is on the ray's way from the camera
         int radLevel = 0;        ///< radiosity bounces on the ray's way from the camera
         bool gathering = false;  ///< a radiosity gathering ray (or one of its children): no highlights
+        /// For media: the objects the ray is inside (entered and not left), innermost last, each
+        /// with the Material::pov of the (leaf) surface it entered by; nested ones beyond
+        /// kMaxInside are not kept.
+        struct Inside {
+            int object = -1, surface = -1;
+        };
+        static constexpr int kMaxInside = 4;
+        Inside inside[kMaxInside]{};
+        int insideCount = 0;
+        void enter(int object, int surface) {
+            for (int i = 0; i < insideCount; ++i)
+                if (inside[i].object == object) return;
+            if (insideCount < kMaxInside) inside[insideCount++] = Inside{object, surface};
+        }
+        void leave(int object) {
+            for (int i = 0; i < insideCount; ++i)
+                if (inside[i].object == object) {
+                    for (int k = i + 1; k < insideCount; ++k) inside[k - 1] = inside[k];
+                    --insideCount;
+                    return;
+                }
+        }
+        void copyInside(const PovRay& o) {
+            insideCount = o.insideCount;
+            for (int i = 0; i < insideCount; ++i) inside[i] = o.inside[i];
+        }
     };
     /// True when the scene is traced by POV-Ray's rules: pov.enabled, and not the flat or normals view.
     static bool usesPovPath(const Scene& scene, const RenderSettings& settings);
@@ -309,8 +334,8 @@ private:
     // POV-Ray's media (tracer_media.cpp; docs/povray-lighting.md, "Media").
     /// True when some object's interior or the atmosphere holds media.
     bool povHasMedia() const;
-    /// The media the stretch of ray r travels in: its interior's, and the atmosphere's outside
-    /// objects and inside hollow ones.
+    /// The media the stretch of ray r travels in: those of the interiors it is inside, and the
+    /// atmosphere's outside objects and inside hollow ones.
     PovMediaSet povMediaOf(const PovRay& r) const;
     /// `behind` (what the ray sees at t) seen through the media of the stretch [0, t] (a miss: as
     /// far as kPovMediaMissDistance): dimmed, plus the light the media emit and scatter towards
@@ -330,6 +355,15 @@ private:
     /// by more than aa_threshold, up to aa_level halvings.
     void povMediaStep(const PovMediaSet& set, const Ray& ray, double a, const PovMediaPoint& pa, double b,
                       const PovMediaPoint& pb, int level, TraceContext& ctx, PovMediaSum& sum) const;
+    /// The objects whose interior holds media: their index and Material::pov (for a CSG, its
+    /// first leaf with media).
+    struct PovMediaHolder {
+        int object, surface;
+    };
+    std::vector<PovMediaHolder> povMediaHolders() const;
+    /// A camera ray starting inside an object with media travels in its interior (the last such
+    /// object in the scene's order holding the origin).
+    void povStartInside(Vec3 origin, PovRay& r) const;
     /// Light of the light `index` reaching P inside a medium (spot, fading, shadows, media on the
     /// way); toLight becomes the unit direction towards the light. Area lights from their centre.
     Vec3 povMediaLight(size_t index, Vec3 P, Vec3& toLight, TraceContext& ctx) const;
@@ -359,6 +393,7 @@ private:
     bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
     bool povHides_;        ///< and some are hidden from camera or reflection rays
     bool povMedia_;        ///< and some interiors or the atmosphere hold media
+    std::vector<PovMediaHolder> povMediaHolders_;
     const IrradianceCache* radCache_ = nullptr;
 };
 

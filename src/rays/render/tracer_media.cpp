@@ -31,16 +31,43 @@ bool Tracer::povHasMedia() const {
     return false;
 }
 
+std::vector<Tracer::PovMediaHolder> Tracer::povMediaHolders() const {
+    std::vector<PovMediaHolder> out;
+    auto holds = [&](const Material& m) { return povSurfaceOf(m).interior.mediaCount > 0; };
+    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+        const Object& o = scene_.objects[i];
+        if (o.type == ShapeType::Csg) {
+            for (const Object& leaf : o.csg->leaves)
+                if (holds(leaf.material)) {
+                    out.push_back(PovMediaHolder{int(i), leaf.material.pov});
+                    break;
+                }
+        } else if (holds(o.material)) {
+            out.push_back(PovMediaHolder{int(i), o.material.pov});
+        }
+    }
+    return out;
+}
+
+void Tracer::povStartInside(Vec3 origin, PovRay& r) const {
+    for (const PovMediaHolder& h : povMediaHolders_) {
+        const Object& o = scene_.objects[size_t(h.object)];
+        const bool inside = o.type == ShapeType::Csg ? insideCsg(*o.csg, 0, origin) : insideShape(o, origin) == 1;
+        if (inside) r.enter(h.object, h.surface);
+    }
+}
+
 PovMediaSet Tracer::povMediaOf(const PovRay& r) const {
     PovMediaSet set;
     bool hollow = true;
-    if (r.interior >= 0) {
-        const PovSurface& s = r.interiorSurface >= 0 && size_t(r.interiorSurface) < scene_.povSurfaces.size()
-                                  ? scene_.povSurfaces[size_t(r.interiorSurface)]
-                                  : povSurfaceOf(scene_.objects[size_t(r.interior)].material);
+    for (int i = 0; i < r.insideCount; ++i) {
+        const int surface = r.inside[i].surface;
+        const PovSurface& s = surface >= 0 && size_t(surface) < scene_.povSurfaces.size()
+                                  ? scene_.povSurfaces[size_t(surface)]
+                                  : povSurfaceOf(scene_.objects[size_t(r.inside[i].object)].material);
         const PovInterior& in = s.interior;
         if (in.mediaCount > 0) set.add(&scene_.povMedia[size_t(in.mediaFirst)], in.mediaCount);
-        hollow = s.hollow;
+        hollow = hollow && s.hollow;
     }
     // Atmospheric media fill the space outside objects and hollow objects only (the manual, "Hollow").
     if (hollow && !scene_.pov.media.empty()) set.add(scene_.pov.media.data(), int(scene_.pov.media.size()));
@@ -98,8 +125,10 @@ Tracer::PovMediaPoint Tracer::povMediaPoint(const PovMediaSet& set, Vec3 P, Vec3
 
 void Tracer::povMediaStep(const PovMediaSet& set, const Ray& ray, double a, const PovMediaPoint& pa, double b,
                           const PovMediaPoint& pb, int level, TraceContext& ctx, PovMediaSum& sum) const {
-    if (level < set.aaLevel && (mediaDifference(pa.source, pb.source) > set.aaThreshold ||
-                                mediaDifference(pa.extinction, pb.extinction) > set.aaThreshold)) {
+    // The samples compared are the light each would add over the step (and the share it takes out).
+    const double h = b - a;
+    if (level < set.aaLevel && (mediaDifference(pa.source, pb.source) * h > set.aaThreshold ||
+                                mediaDifference(pa.extinction, pb.extinction) * h > set.aaThreshold)) {
         const double mid = 0.5 * (a + b);
         const PovMediaPoint pm = povMediaPoint(set, ray.at(mid), ray.dir, ctx);
         povMediaStep(set, ray, a, pa, mid, pm, level + 1, ctx, sum);
@@ -107,7 +136,6 @@ void Tracer::povMediaStep(const PovMediaSet& set, const Ray& ray, double a, cons
         return;
     }
     // The step's light comes from its first sample, dimmed by the steps before it only (measured).
-    const double h = b - a;
     sum.added += sum.through * pa.source * h;
     for (int c = 0; c < 3; ++c)
         if (pa.extinction[c] > 0) sum.through[c] *= std::exp(-pa.extinction[c] * h);

@@ -81,6 +81,7 @@ Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) 
     ctx.radLocal.clear();  // a camera sample reuses only its own radiosity records (and the cache's)
     PovRay r;
     r.primary = true;
+    if (!povMediaHolders_.empty()) povStartInside(ray.origin, r);  // the camera inside a media holder
     return tracePov(ray, r, ctx, info);
 }
 
@@ -184,11 +185,12 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
     PovRay reflected{.level = r.level + 1,
                      .weight = r.weight,
                      .interior = pt.entering ? r.interior : pt.object,
-                     .interiorSurface = pt.entering ? r.interiorSurface : pt.material->pov,
                      .reflected = true,
                      .radLevel = r.radLevel,
                      .gathering = r.gathering};
     if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
+    reflected.copyInside(r);
+    if (!pt.entering) reflected.enter(pt.object, pt.material->pov);  // reflected inside: still in it
     return reflected;
 }
 
@@ -203,14 +205,16 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
         if (!refractDir(ray.dir, pt.N, eta, dir)) return false;
         ++level;
     }
-    const PovRay through{.level = level,
-                         .weight = r.weight * maxAbsComponent(T),
-                         .interior = pt.entering ? pt.object : -1,
-                         .interiorSurface = pt.entering ? pt.material->pov : -1,
-                         .fades = true,
-                         .reflected = r.reflected,
-                         .radLevel = r.radLevel,
-                         .gathering = r.gathering};
+    PovRay through{.level = level,
+                   .weight = r.weight * maxAbsComponent(T),
+                   .interior = pt.entering ? pt.object : -1,
+                   .fades = true,
+                   .reflected = r.reflected,
+                   .radLevel = r.radLevel,
+                   .gathering = r.gathering};
+    through.copyInside(r);
+    if (pt.entering) through.enter(pt.object, pt.material->pov);
+    else through.leave(pt.object);
     if (through.weight >= scene_.pov.adcBailout) {
         ++ctx.stats.secondaryRays;
         color += T * tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, through, ctx, info);
