@@ -3,6 +3,8 @@
 // of the tracer so that tests can check them. docs/povray-lighting.md, "Media", says what was
 // measured and what is approximated.
 #pragma once
+#include <cstdint>
+
 #include "rays/scene/pov_media.h"
 #include "rays/scene/scene.h"
 
@@ -42,6 +44,10 @@ struct PovMediaSet {
     Span spans[kMaxSpans];
     int spanCount = 0;
     bool scatters = false;  ///< some medium scatters light
+    /// The lights that may light the media along the stretch (scene light indices), when known:
+    /// lights with media_interaction whose beam the stretch meets. Null: every light.
+    const uint16_t* lights = nullptr;
+    int lightCount = 0;
     int samples = 1, intervals = 1, aaLevel = 0;
     double aaThreshold = 1e300, jitter = 0;
 

@@ -17,6 +17,10 @@ namespace {
 
 /// Beam edges of spot and cylindrical lights a stretch of ray is cut at, at most.
 constexpr int kMaxMediaCuts = 128;
+/// Scattering media of one stretch lit at a point, at most (more are not lit).
+constexpr int kMaxScatterers = 16;
+/// Scenes with more lights sample every light at every point of a stretch.
+constexpr size_t kMaxMediaLights = 256;
 
 double mediaDifference(Vec3 a, Vec3 b) {
     return std::max({std::fabs(a.x - b.x), std::fabs(a.y - b.y), std::fabs(a.z - b.z)});
@@ -94,32 +98,35 @@ Vec3 Tracer::povMediaLight(size_t index, Vec3 P, Vec3& toLight, TraceContext& ct
 
 Tracer::PovMediaPoint Tracer::povMediaPoint(const PovMediaSet& set, Vec3 P, Vec3 dir, TraceContext& ctx) const {
     PovMediaPoint out;
-    Vec3 scatter;  // Σ scattering·density·phase·light, found light by light below
-    bool anyScatter = false;
+    // Each scattering medium's scattering colour times its density here, found once.
+    struct Scatterer {
+        const PovMedia* media;
+        Vec3 color;
+    };
+    Scatterer scatterers[kMaxScatterers];
+    int scattererCount = 0;
     for (int s = 0; s < set.spanCount; ++s)
         for (int i = 0; i < set.spans[s].count; ++i) {
             const PovMedia& m = set.spans[s].first[i];
             const Vec3 d = povMediaDensity(scene_, m, P);
+            if (d == Vec3{}) continue;
             out.extinction += m.extinctionColor() * d;
             out.source += m.emission * d;
-            anyScatter = anyScatter || (m.scatters() && !(d == Vec3{}));
+            if (m.scatters() && scattererCount < kMaxScatterers) scatterers[scattererCount++] = Scatterer{&m, m.scattering * d};
         }
-    if (!anyScatter) return out;
-    for (size_t li = 0; li < scene_.lights.size(); ++li) {
+    if (scattererCount == 0) return out;
+    const size_t lightCount = set.lights ? size_t(set.lightCount) : scene_.lights.size();
+    for (size_t n = 0; n < lightCount; ++n) {
+        const size_t li = set.lights ? set.lights[n] : n;
         if (!scene_.lights[li].mediaInteraction) continue;
         Vec3 toLight;
         const Vec3 light = povMediaLight(li, P, toLight, ctx);
         if (light == Vec3{}) continue;
         // The light travels along −toLight; the viewer lies along −dir: cos = toLight·dir.
         const double c = dot(toLight, dir);
-        for (int s = 0; s < set.spanCount; ++s)
-            for (int i = 0; i < set.spans[s].count; ++i) {
-                const PovMedia& m = set.spans[s].first[i];
-                if (!m.scatters()) continue;
-                scatter += (povMediaPhase(m, c) * m.scattering) * povMediaDensity(scene_, m, P) * light;
-            }
+        for (int k = 0; k < scattererCount; ++k)
+            out.source += povMediaPhase(*scatterers[k].media, c) * scatterers[k].color * light;
     }
-    out.source += scatter;
     return out;
 }
 
@@ -142,7 +149,7 @@ void Tracer::povMediaStep(const PovMediaSet& set, const Ray& ray, double a, cons
 }
 
 Vec3 Tracer::povMediaAlong(const Ray& ray, double t, const PovRay& r, Vec3 behind, TraceContext& ctx) const {
-    const PovMediaSet set = povMediaOf(r);
+    PovMediaSet set = povMediaOf(r);
     if (set.empty()) return behind;
     // Secondary rays start kSurfaceOffset past their surface: the stretch starts at the surface.
     const double start = r.primary ? 0.0 : -kSurfaceOffset;
@@ -151,13 +158,25 @@ Vec3 Tracer::povMediaAlong(const Ray& ray, double t, const PovRay& r, Vec3 behin
     // The stretch is cut where it enters and leaves the beams of spotlights and cylindrical lights
     // that light scattering media, each piece sampled in full (the manual: lit and unlit
     // intervals are sampled apart, method 3 "will create more intervals if it needs them").
+    // Lights whose beam the stretch does not meet are left out of its samples.
     double cuts[kMaxMediaCuts + 2];
     int cutCount = 0;
     cuts[cutCount++] = start;
-    if (set.scatters)
-        for (const Light& light : scene_.lights)
-            if (light.mediaInteraction)
-                cutCount += povLightBeamEdges(light, ray, start, end, cuts + cutCount, kMaxMediaCuts + 1 - cutCount);
+    uint16_t lit[kMaxMediaLights];
+    int litCount = 0;
+    if (set.scatters && scene_.lights.size() <= kMaxMediaLights) {
+        for (size_t li = 0; li < scene_.lights.size(); ++li) {
+            const Light& light = scene_.lights[li];
+            if (!light.mediaInteraction) continue;
+            const int edges = povLightBeamEdges(light, ray, start, end, cuts + cutCount, kMaxMediaCuts + 1 - cutCount);
+            cutCount += edges;
+            const bool meets = light.spot == Light::Spot::None || edges > 0 ||
+                               povSpotFactor(light, ray.at(0.5 * (start + end)) - light.position) > 0;
+            if (meets) lit[litCount++] = uint16_t(li);
+        }
+        set.lights = lit;
+        set.lightCount = litCount;
+    }
     std::sort(cuts + 1, cuts + cutCount);
     cuts[cutCount++] = end;
     const int steps = povMediaSteps(set.samples);
