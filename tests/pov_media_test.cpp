@@ -117,6 +117,18 @@ TEST(PovMedia, LightGroupLightsLightNoMedia) {
     expectColor(seen(s, kEye), Vec3(0.0), 1e-12);
 }
 
+// Radiosity gathers no light from media (its `media` is off by default: measured 0 on a floor
+// under a shell of emission .5, which would light it .5 otherwise).
+TEST(PovMedia, RadiosityGathersNoMediaLight) {
+    const Scene s = test::loadPov(
+                        "plane { y, 0 pigment { rgb 1 } finish { diffuse 1 ambient 0 } }\n"
+                        "difference { sphere { 0, 100 } sphere { 0, 99 } pigment { rgbt 1 } finish { ambient 0 diffuse 0 }"
+                        " interior { media { emission 0.5 } } hollow no_shadow }\n",
+                        "#version 3.7;\nglobal_settings { assumed_gamma 1 radiosity { count 50 recursion_limit 1 } }\n")
+                        .scene;
+    expectColor(seen(s, {0.1, 5, 0.1}, {0, -1, 0}), Vec3(0.0), 1e-12);
+}
+
 // Atmospheric media fill the space outside objects and hollow objects, not other objects (measured:
 // emission 0.02 over the 5 units from the camera to a black wall, 1 of them inside a clear box:
 // .08 when the box is not hollow, .1 when it is).

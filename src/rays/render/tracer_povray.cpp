@@ -94,7 +94,9 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
         if (povFades(in)) fade = povFade(in, hit.t);
     }
     Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : povSky(scene_, ray.dir));
-    if (povMedia_) seen = povMediaAlong(ray, hit.t, r, seen, ctx);
+    // Radiosity's gathering rays pass media by (radiosity's `media` is off by default; Rays does
+    // not read it).
+    if (povMedia_ && !r.gathering) seen = povMediaAlong(ray, hit.t, r, seen, ctx);
     // Fog fills the space outside objects (measured: on every ray, reflected ones included).
     if (scene_.pov.fogs.empty() || r.interior >= 0) return seen;
     return povFog(scene_.pov.fogs, seen, ray, hit.t);
