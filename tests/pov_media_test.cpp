@@ -86,6 +86,20 @@ TEST(PovMedia, DensityPatternsPickTheDensity) {
     expectColor(seen(g, {0.75, 0.1, -10}), Vec3(0.75), 1e-9);
 }
 
+// Densities multiply, so the cheap ones are placed first: where one is 0 the costly ones after it
+// are not evaluated (the product stays the same).
+TEST(PovMedia, CheapDensitiesComeFirst) {
+    const Scene s = load(slab("media { emission 1 density { crackle } density { spherical } }"));
+    ASSERT_EQ(s.povMedia.size(), 1u);
+    const PovMedia& m = s.povMedia[0];
+    ASSERT_EQ(m.densityCount, 2);
+    const auto kind = [&](int k) {
+        return s.pigments.nodes[size_t(s.pigments.roots[size_t(m.densityFirst + k)].node)].kind;
+    };
+    EXPECT_EQ(kind(0), pattern::PatternKind::Spherical);
+    EXPECT_EQ(kind(1), pattern::PatternKind::Crackle);
+}
+
 // The media move with the object: a density translated with it.
 TEST(PovMedia, DensitiesMoveWithTheObject) {
     const Scene s = load(

@@ -7,11 +7,39 @@
 
 namespace rays::pov {
 
+namespace {
+
+// True for densities that cost noise to evaluate (noise-based patterns, turbulence, warps, maps
+// of other densities).
+bool costly(const pattern::PigmentTable& t, int node) {
+    using pattern::PatternKind;
+    const pattern::PigmentNode& n = t.nodes[size_t(node)];
+    switch (n.kind) {
+        case PatternKind::Solid: case PatternKind::Checker: case PatternKind::Hexagon: case PatternKind::Brick:
+        case PatternKind::Gradient: case PatternKind::Radial: case PatternKind::Onion: case PatternKind::Spherical:
+        case PatternKind::Cylindrical: case PatternKind::Planar: case PatternKind::Boxed:
+            break;
+        default: return true;
+    }
+    if (n.params.turbulence.on() || n.warpCount > 0) return true;
+    for (int i = 0; i < n.mapCount; ++i)
+        if (t.entries[size_t(n.mapBegin + i)].pigment >= 0) return true;
+    return false;
+}
+
+}  // namespace
+
 PovMedia SceneBuilder::placeMedia(const MediaLook& m) {
     PovMedia out = m.media;
     out.densityFirst = int(scene_.pigments.roots.size());
     out.densityCount = 0;
-    for (const DensityLook& d : m.densities) {
+    // The densities multiply: the cheap ones go first, so that a point where one is 0 costs no
+    // noise (micro.pov's spherical densities around its crackle).
+    std::vector<DensityLook> densities = m.densities;
+    std::stable_partition(densities.begin(), densities.end(), [&](const DensityLook& d) {
+        return d.node >= 0 && !costly(scene_.pigments, d.node);
+    });
+    for (const DensityLook& d : densities) {
         if (d.node < 0 || d.toObject.determinant() == 0) continue;
         scene_.pigments.roots.push_back(pattern::PigmentRoot{d.toObject.inverse(), d.node});
         ++out.densityCount;
