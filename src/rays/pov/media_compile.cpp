@@ -57,7 +57,10 @@ void readMedia(const Item& media, MediaLook& out, PigmentCompiler* pigments, Not
         switch (e.kw()) {
             case Kw::method: m.method = mediaCount(toFloat(a), 1, 3); break;
             case Kw::intervals: m.intervals = mediaCount(toFloat(a), 1, 64); break;
-            case Kw::samples: m.samples = mediaCount(toFloat(a), 1, 1024); break;  // method 3 ignores the maximum
+            case Kw::samples:  // method 3 ignores the maximum
+                out.samplesMin = mediaCount(toFloat(a), 1, 1024);
+                out.samplesMax = e.args.size() > 1 ? mediaCount(toFloat(e.args[1]), 1, 1024) : out.samplesMin;
+                break;
             case Kw::aa_level: m.aaLevel = mediaCount(toFloat(a), 0, 8); break;
             case Kw::aa_threshold: m.aaThreshold = std::max(0.0, toFloat(a)); break;
             case Kw::jitter: m.jitter = std::clamp(toFloat(a), 0.0, 1.0); break;
@@ -74,6 +77,16 @@ void readMedia(const Item& media, MediaLook& out, PigmentCompiler* pigments, Not
         }
     }
     (void)notes;
+    if (depth > 0) return;  // the outermost block decides
+    if (m.method == 3) {
+        m.samples = out.samplesMin;
+    } else {
+        // Methods 1 and 2 (the manual: samples spread evenly, or at random for method 1) as equal
+        // steps: as many as the most samples, none refined.
+        m.samples = std::max(out.samplesMin, out.samplesMax);
+        m.aaLevel = 0;
+        if (m.method == 1) m.jitter = 1;
+    }
 }
 
 void moveMedia(MediaLook& m, const Transform& outer) {

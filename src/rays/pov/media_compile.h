@@ -22,10 +22,13 @@ struct DensityLook {
 struct MediaLook {
     PovMedia media;
     std::vector<DensityLook> densities;
+    int samplesMin = 10, samplesMax = 10;  ///< `samples min, max` as written (method 3 uses min)
 };
 
 /// Reads a media item (a media identifier first: its base) over out. Without `pigments` the
-/// densities are left out (density 1).
+/// densities are left out (density 1). Methods 1 and 2 are drawn by method 3's scheme without its
+/// refinement: `samples`' maximum equal steps per interval, method 1's jittered in full (its
+/// samples are random).
 void readMedia(const Item& media, MediaLook& out, PigmentCompiler* pigments, NotRendered& notes, int depth = 0);
 /// The media moved by `outer`, applied after what moves it already.
 void moveMedia(MediaLook& m, const Transform& outer);

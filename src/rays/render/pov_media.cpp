@@ -95,13 +95,16 @@ int povLightBeamEdges(const Light& light, const Ray& ray, double t0, double t1, 
 
 int povMediaSteps(int samples) { return std::max(samples, 3) / 2 + 1; }
 
+int povMediaSteps(const PovMedia& m) { return m.method == 3 ? povMediaSteps(m.samples) : std::max(1, m.samples); }
+
 void PovMediaSet::add(const PovMedia* first, int count) {
     if (count <= 0 || spanCount == kMaxSpans) return;
+    if (spanCount == 0) midpoints = first[0].method != 3;
     spans[spanCount++] = Span{first, count};
     for (int i = 0; i < count; ++i) {
         const PovMedia& m = first[i];
         scatters = scatters || m.scatters();
-        samples = std::max(samples, m.samples);
+        steps = std::max(steps, povMediaSteps(m));
         intervals = std::max(intervals, m.intervals);
         aaLevel = std::max(aaLevel, m.aaLevel);
         aaThreshold = std::min(aaThreshold, m.aaThreshold);
@@ -120,7 +123,7 @@ Vec3 povMediaTransmittance(const Scene& scene, const PovMediaSet& set, const Ray
             else varies = varies || !(m.extinctionColor() == Vec3{});
         }
     if (varies) {
-        const int steps = set.intervals * povMediaSteps(set.samples);
+        const int steps = set.intervals * set.steps;
         const double h = (t1 - t0) / steps;
         for (int k = 0; k < steps; ++k) {
             const Vec3 P = ray.at(t0 + (k + 0.5) * h);

@@ -31,9 +31,11 @@ Vec3 povMediaDensity(const Scene& scene, const PovMedia& m, Vec3 P);
 /// (measured: an absorbing and emitting medium of constant density looks exactly as these steps
 /// summed, each step's light dimmed by the steps before it).
 int povMediaSteps(int samples);
+/// The equal steps per interval of a media: method 3's as above, methods 1 and 2 one per sample.
+int povMediaSteps(const PovMedia& m);
 
 /// The media a stretch of a ray travels in: an interior's media and, outside objects or inside
-/// hollow ones, the atmospheric media. Merged sampling settings: the most samples, intervals and
+/// hollow ones, the atmospheric media. Merged sampling settings: the most steps, intervals and
 /// aa_level, the lowest aa_threshold, the most jitter.
 struct PovMediaSet {
     struct Span {
@@ -48,7 +50,8 @@ struct PovMediaSet {
     /// lights with media_interaction whose beam the stretch meets. Null: every light.
     const uint16_t* lights = nullptr;
     int lightCount = 0;
-    int samples = 1, intervals = 1, aaLevel = 0;
+    int steps = 1, intervals = 1, aaLevel = 0;  ///< steps: equal steps per interval (povMediaSteps)
+    bool midpoints = false;  ///< methods 1 and 2 (the first media's method decides): steps sampled in their middles
     double aaThreshold = 1e300, jitter = 0;
 
     void add(const PovMedia* first, int count);

@@ -364,6 +364,9 @@ private:
     /// A camera ray starting inside an object with media travels in its interior (the last such
     /// object in the scene's order holding the origin).
     void povStartInside(Vec3 origin, PovRay& r) const;
+    /// Methods 1 and 2: adds [a, b] in `steps` equal steps sampled in their middles.
+    void povMediaMidpoints(const PovMediaSet& set, const Ray& ray, double a, double b, int steps, TraceContext& ctx,
+                           PovMediaSum& sum) const;
     /// Light of the light `index` reaching P inside a medium (spot, fading, shadows, media on the
     /// way); toLight becomes the unit direction towards the light. Area lights from their centre.
     Vec3 povMediaLight(size_t index, Vec3 P, Vec3& toLight, TraceContext& ctx) const;

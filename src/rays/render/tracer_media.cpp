@@ -148,6 +148,27 @@ void Tracer::povMediaStep(const PovMediaSet& set, const Ray& ray, double a, cons
         if (pa.extinction[c] > 0) sum.through[c] *= std::exp(-pa.extinction[c] * h);
 }
 
+// Methods 1 and 2 (measured: emission 1 and absorption 1 over depth 1 give .62921 with samples 3,
+// .63186 with 10, method 2): one sample in the middle of each step (moved by up to ±jitter/2 of
+// a step), its light dimmed by the media up to it.
+void Tracer::povMediaMidpoints(const PovMediaSet& set, const Ray& ray, double a, double b, int steps,
+                               TraceContext& ctx, PovMediaSum& sum) const {
+    const double h = (b - a) / steps;
+    for (int k = 0; k < steps; ++k) {
+        double x = a + (k + 0.5) * h;
+        if (set.jitter > 0) x += set.jitter * h * (ctx.rng.next() - 0.5);
+        const PovMediaPoint p = povMediaPoint(set, ray.at(x), ray.dir, ctx);
+        Vec3 half(1.0), step(1.0);
+        for (int c = 0; c < 3; ++c)
+            if (p.extinction[c] > 0) {
+                half[c] = std::exp(-0.5 * p.extinction[c] * h);
+                step[c] = half[c] * half[c];
+            }
+        sum.added += sum.through * half * p.source * h;
+        sum.through *= step;
+    }
+}
+
 Vec3 Tracer::povMediaAlong(const Ray& ray, double t, const PovRay& r, Vec3 behind, TraceContext& ctx) const {
     PovMediaSet set = povMediaOf(r);
     if (set.empty()) return behind;
@@ -179,7 +200,7 @@ Vec3 Tracer::povMediaAlong(const Ray& ray, double t, const PovRay& r, Vec3 behin
     }
     std::sort(cuts + 1, cuts + cutCount);
     cuts[cutCount++] = end;
-    const int steps = povMediaSteps(set.samples);
+    const int steps = set.steps;
     const int pieces = (cutCount - 1) * set.intervals;
     PovMediaSum sum;
     for (int iv = 0; iv < pieces; ++iv) {
@@ -189,7 +210,10 @@ Vec3 Tracer::povMediaAlong(const Ray& ray, double t, const PovRay& r, Vec3 behin
         const double a = from + (to - from) * part / set.intervals;
         const double b = from + (to - from) * (part + 1) / set.intervals;
         const double h = (b - a) / steps;
-        // Sample k at the start of step k, moved by up to ±jitter/2 of a step (not the ends).
+        if (set.midpoints) {  // methods 1 and 2
+            povMediaMidpoints(set, ray, a, b, steps, ctx, sum);
+            continue;
+        }
         // Sample k at the start of step k, moved by up to ±jitter/2 of a step (not the ends);
         // the ends are sampled just inside the piece, which a beam's edge may bound.
         const double inset = 1e-6 * (b - a);

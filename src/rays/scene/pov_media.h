@@ -20,7 +20,8 @@ struct PovMedia {
     double eccentricity = 0;  ///< Henyey-Greenstein's g, −1 < g < 1
     double extinction = 1;    ///< the share of the scattering colour also taken out of the ray
     /// Sampling (the manual's defaults for 3.7, samples measured: a media without `samples` looks
-    /// as with `samples 10`). Methods 1 and 2 are drawn by method 3's scheme.
+    /// as with `samples 10`). Methods 1 and 2 are drawn by method 3's scheme: `samples` equal
+    /// steps per interval (its maximum), aaLevel 0, method 1 with jitter 1.
     int method = 3;
     int intervals = 1;
     int samples = 10;
