@@ -82,6 +82,7 @@ struct PigmentCompiler::State {
     bool waveSet = false;
     const char* what = "pigment";  ///< for notes: "pigment pattern X" or "texture pattern X"
     bool normal = false;           ///< reading a normal: its specialised patterns are accepted
+    bool density = false;          ///< reading a media's density (unrendered patterns give 0)
 };
 
 PigmentCompiler::PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes, pattern::NormalTable* normals)
@@ -115,6 +116,7 @@ int PigmentCompiler::compileFunction(const Item& item) {
 int PigmentCompiler::compileDensity(const Item& density) {
     State s;
     s.what = "density";
+    s.density = true;
     s.node.color = pattern::Rgbft{Vec3(1.0), 0, 0};
     read(density, s, 0);
     if (s.unrendered) {  // a pattern Rays does not render (noted): no media there rather than a guess
@@ -260,7 +262,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         s.unrendered = true;
         s.pattern = false;
         notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)), e.loc,
-                    s.normal ? "(drawn smooth)" : "(drawn in its mean colour)");
+                    s.normal ? "(drawn smooth)" : s.density ? "(density 0: no media there)" : "(drawn in its mean colour)");
         return;
     }
     pattern::PatternParams& pp = s.node.params;
