@@ -180,11 +180,11 @@ void applyFinish(const Item& f, PovFinish& fin, NotRendered& notes) {
     }
 }
 
-void applyInterior(const Item& i, PovInterior& in, NotRendered& notes) {
+void applyInterior(const Item& i, InteriorLook& in, NotRendered& notes, PigmentCompiler* pigments) {
     for (const Entry& e : i.entries) {
         if (e.positional()) {
             for (const Value& v : e.args)
-                if (v.type == VType::Item && v.item().kind == Kw::interior) applyInterior(v.item(), in, notes);
+                if (v.type == VType::Item && v.item().kind == Kw::interior) applyInterior(v.item(), in, notes, pigments);
             continue;
         }
         switch (e.kw()) {
@@ -192,7 +192,13 @@ void applyInterior(const Item& i, PovInterior& in, NotRendered& notes) {
             case Kw::fade_distance: in.fadeDistance = toFloat(e.args[0]); break;
             case Kw::fade_power: in.fadePower = toFloat(e.args[0]); break;
             case Kw::fade_color: case Kw::fade_colour: in.fadeColor = toColor(e.args[0]).rgb; break;
-            case Kw::media: notes.note("media", e.loc); break;
+            case Kw::media:  // media add up: each interior media block is one more medium
+                if (!e.args.empty() && e.args[0].type == VType::Item) {
+                    MediaLook m;
+                    readMedia(e.args[0].item(), m, pigments, notes);
+                    in.media.push_back(std::move(m));
+                }
+                break;
             case Kw::caustics: notes.note("caustics", e.loc); break;
             case Kw::dispersion: notes.note("dispersion", e.loc); break;
             default: break;
@@ -207,6 +213,7 @@ void moveLook(Appearance& a, const Transform& outer) {
     for (Appearance& l : a.layers) moveLook(l, outer);
     for (Appearance& c : a.choices) moveLook(c, outer);
     for (Appearance& i : a.inside) moveLook(i, outer);
+    for (MediaLook& m : a.interior.media) moveMedia(m, outer);
 }
 
 void moveLook(Appearance& a, const Entry& transformation) {
@@ -335,7 +342,7 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
             for (Appearance& l : looks) moveLook(l, e);
     ColorMean mean;
     for (const Appearance& l : looks) mean.add(l.pigment);
-    const PovInterior interior = a.interior;
+    const InteriorLook interior = a.interior;
     const bool interiorSet = a.interiorSet;
     a = plainLook(looks[0]);
     a.interior = interior;
@@ -412,7 +419,7 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
         k != Kw::material && k != Kw::interior_texture)
         return false;
     if (k == Kw::interior) {
-        applyInterior(e.args[0].item(), a.interior, notes);
+        applyInterior(e.args[0].item(), a.interior, notes, pigments);
         a.interiorSet = true;
         return true;
     }
@@ -424,7 +431,7 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
         return true;
     }
     if (!a.set) {
-        const PovInterior keep = a.interior;
+        const InteriorLook keep = a.interior;
         const bool keepSet = a.interiorSet;
         a = fallback;
         a.interior = keep;

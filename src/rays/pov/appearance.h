@@ -8,11 +8,18 @@
 #include <vector>
 
 #include "rays/pov/item_values.h"
+#include "rays/pov/media_compile.h"
 #include "rays/pov/not_rendered.h"
 #include "rays/pov/pigment_compile.h"
 #include "rays/scene/pov_surface.h"
 
 namespace rays::pov {
+
+/// An interior as read: POV-Ray's interior values and its media, which SceneBuilder places in the
+/// scene (copied as a PovInterior, it is the values alone).
+struct InteriorLook : PovInterior {
+    std::vector<MediaLook> media;
+};
 
 struct Appearance {
     bool set = false;     ///< a texture, pigment, finish or material was given
@@ -24,7 +31,7 @@ struct Appearance {
     int normalNode = -1;  ///< the normal's node in the scene's NormalTable; -1: the surface's own normal
     Transform normalToObject;  ///< like pigmentToObject, for the normal
     PovFinish finish;
-    PovInterior interior;
+    InteriorLook interior;
     bool interiorSet = false;
     /// A layered texture: its layers, the bottom one first, each a plain look (POV-Ray 3.7
     /// reference, "Layered Textures"); the fields above then hold their mix. Empty otherwise.
@@ -40,7 +47,7 @@ struct Appearance {
 };
 
 /// The look moved by `outer`, applied after what moves it already: its pigment, normal, pattern,
-/// layers and choices.
+/// layers, choices and its interior's media.
 void moveLook(Appearance& a, const Transform& outer);
 /// moveLook by a transformation entry (translate, rotate, scale, matrix, transform).
 void moveLook(Appearance& a, const Entry& transformation);
@@ -56,7 +63,9 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
 /// `noteUnrendered` (PigmentCompiler notes those it cannot render itself).
 void applyPigment(const Item& pigment, Rgbft& c, NotRendered& notes, bool noteUnrendered = true);
 void applyFinish(const Item& finish, PovFinish& f, NotRendered& notes);
-void applyInterior(const Item& interior, PovInterior& in, NotRendered& notes);
+/// Applies an interior item over in; its media's densities are compiled by `pigments` (without
+/// it: density 1).
+void applyInterior(const Item& interior, InteriorLook& in, NotRendered& notes, PigmentCompiler* pigments = nullptr);
 /// Applies a texture item over a. A layer of a layered texture starts from `layerBase` (the
 /// default texture; POV-Ray's defaults when null), not from the layer below (measured).
 void applyTexture(const Item& texture, Appearance& a, NotRendered& notes, PigmentCompiler* pigments = nullptr,

@@ -82,6 +82,7 @@ struct PigmentCompiler::State {
     bool waveSet = false;
     const char* what = "pigment";  ///< for notes: "pigment pattern X" or "texture pattern X"
     bool normal = false;           ///< reading a normal: its specialised patterns are accepted
+    bool density = false;          ///< reading a media's density (unrendered patterns give 0)
 };
 
 PigmentCompiler::PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes, pattern::NormalTable* normals)
@@ -108,6 +109,21 @@ int PigmentCompiler::compileFunction(const Item& item) {
     State s;
     read(item, s, 0);
     return s.unrendered ? -1 : emit(s);
+}
+
+// A density (POV-Ray 3.7 reference, "Density"): read as a pigment whose colour is the density, 1
+// (white) where no pattern or colour is given, 0 for a pattern Rays does not render. Always a node.
+int PigmentCompiler::compileDensity(const Item& density) {
+    State s;
+    s.what = "density";
+    s.density = true;
+    s.node.color = pattern::Rgbft{Vec3(1.0), 0, 0};
+    read(density, s, 0);
+    if (s.unrendered) {  // a pattern Rays does not render (noted): no media there rather than a guess
+        s.pattern = false;
+        s.node.color = pattern::Rgbft{};
+    }
+    return emit(s);
 }
 
 // A pigment inside a map or list: always a node (a flat colour becomes a Solid node).
@@ -145,7 +161,8 @@ void PigmentCompiler::readPigmentMap(const Item& map, State& s, int depth) {
     for (const Entry& e : map.entries) {
         if (e.positional()) {
             for (const Value& v : e.args)
-                if (v.type == VType::Item && v.item().kind == Kw::pigment_map && depth < kMaxDepth)
+                if (v.type == VType::Item && (v.item().kind == Kw::pigment_map || v.item().kind == Kw::density_map) &&
+                    depth < kMaxDepth)
                     readPigmentMap(v.item(), s, depth + 1);
             continue;
         }
@@ -166,9 +183,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         for (const Value& v : e.args) {
             if (v.type == VType::Item) {
                 const Kw k = v.item().kind;
-                if (k == Kw::pigment || (s.normal && k == Kw::normal)) read(v.item(), s, depth + 1);  // the base
+                if (k == Kw::pigment || k == Kw::density || (s.normal && k == Kw::normal)) read(v.item(), s, depth + 1);  // the base
                 else if (k == Kw::color_map || k == Kw::colour_map) readColorMap(v.item(), s, depth);
-                else if (k == Kw::pigment_map) readPigmentMap(v.item(), s, depth);
+                else if (k == Kw::pigment_map || k == Kw::density_map) readPigmentMap(v.item(), s, depth);
             } else if (v.isNumeric()) {
                 if (s.pattern || s.unrendered) {
                     s.list.push_back(MapEntry{0, toPatternColor(v), -1});
@@ -245,14 +262,14 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         s.unrendered = true;
         s.pattern = false;
         notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)), e.loc,
-                    s.normal ? "(drawn smooth)" : "(drawn in its mean colour)");
+                    s.normal ? "(drawn smooth)" : s.density ? "(density 0: no media there)" : "(drawn in its mean colour)");
         return;
     }
     pattern::PatternParams& pp = s.node.params;
     switch (k) {
         case Kw::color_map: case Kw::colour_map: readColorMap(e.args[0].item(), s, depth); break;
-        case Kw::pigment_map: readPigmentMap(e.args[0].item(), s, depth); break;
-        case Kw::pigment: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
+        case Kw::pigment_map: case Kw::density_map: readPigmentMap(e.args[0].item(), s, depth); break;
+        case Kw::pigment: case Kw::density: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
         case Kw::turbulence: pp.turbulence.amount = toVec3(e.args[0]); break;
         case Kw::octaves: pp.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
         case Kw::omega: pp.turbulence.omega = num(0); break;

@@ -28,6 +28,10 @@ public:
     /// The node of a pigment with a rendered pattern, or -1 for a flat colour (a pigment with no
     /// pattern, or with only patterns Rays does not render: those are noted).
     int compile(const Item& pigment);
+    /// The node of a density item (its pattern, colour or density map, modifiers; density
+    /// identifiers as bases): always a node, a Solid node of density 1 when it has no pattern, and
+    /// of density 0 when the pattern is not rendered (noted).
+    int compileDensity(const Item& density);
     /// The node of a pattern or pigment item as a pattern or pigment function evaluates it
     /// (`function { pattern { ... } }`): always a node (a flat colour is a Solid node), -1 when
     /// the item names a pattern Rays does not render (noted).

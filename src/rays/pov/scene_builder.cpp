@@ -100,7 +100,7 @@ void SceneBuilder::add(const ParsedScene::Top& top) {
         case Kw::sky_sphere: return addSkySphere(item);
         case Kw::fog: return addFog(item);
         case Kw::rainbow: return notes_.note("rainbow", item.loc);
-        case Kw::media: return notes_.note("atmospheric media", item.loc);
+        case Kw::media: return addAtmosphericMedia(item);
         default:
             if (isObjectKind(item.kind)) return addObject(item, Transform{}, nullptr, 0);
             notes_.note(std::string(sdl::keywordName(item.kind)) + " at the top level", item.loc);
@@ -148,6 +148,8 @@ Material SceneBuilder::material(const Appearance& look) {
     PovSurface s;
     s.finish = look.finish;
     s.interior = look.interior;
+    placeInteriorMedia(look.interior, s.interior);
+    s.hollow = hollow_;
     s.transmit = look.pigment.transmit;
     s.noShadow = noShadow_;
     s.pigment = pigmentRoot(look);
@@ -201,7 +203,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     std::vector<Clip> clips;
     const Entry* bounds = nullptr;
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
-         doubleIlluminate = false;
+         doubleIlluminate = false, hollow = false;
     const Entry* font = nullptr;  // text: its ttf or internal entry
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
@@ -212,7 +214,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (e.key == kMapEntry) continue;
         if (isTransformEntry(e)) {
             applyTransform(e, local);
-            if (look.set) moveLook(look, e);  // transformations after the texture move it
+            if (look.set || look.interiorSet) moveLook(look, e);  // transformations after the texture (or interior) move it
             continue;
         }
         if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
@@ -243,6 +245,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_image: noImage = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::double_illuminate: doubleIlluminate = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::hollow: hollow = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::xyz: case Kw::quadratic_spline: case Kw::cubic_spline: case Kw::bezier_spline:
             case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep: case Kw::b_spline:
                 terms_.push_back(&e);  // polynomial's terms, a prism's, lathe's or sphere_sweep's kind
@@ -252,7 +255,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
                        kind == Kw::isosurface;
                 break;
             case Kw::ttf: case Kw::internal: font = &e; break;
-            default: break;  // hollow, sturm, hierarchy, photons, radiosity: no visible change
+            default: break;  // sturm, hierarchy, photons, radiosity: no visible change
         }
     }
     // no_shadow, no_image, no_reflection and double_illuminate hold for the object and everything
@@ -262,20 +265,23 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         bool saved;
         ~KeepFlag() { flag = saved; }
     } keep{noShadow_, noShadow_}, keepImage{noImage_, noImage_}, keepReflection{noReflection_, noReflection_},
-        keepDouble{doubleIlluminate_, doubleIlluminate_};
+        keepDouble{doubleIlluminate_, doubleIlluminate_}, keepHollow{hollow_, hollow_};
     noShadow_ = noShadow_ || noShadow;
     noImage_ = noImage_ || noImage;
     noReflection_ = noReflection_ || noReflection;
     doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
+    hollow_ = hollow_ || hollow;
+    KeepFlag keepGroup{inLightGroup_, inLightGroup_};
+    inLightGroup_ = inLightGroup_ || kind == Kw::light_group;
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
     // Finite steps can still overflow or underflow together (scale 1e300 scale 1e300): the object
     // would vanish without a word.
     if (!toWorld.isUsable())
         throw Error(notes_.where(item.loc) + ": error: the object's transformation overflows or is singular");
-    if (look.set) moveLook(look, parent);  // texture space → world
+    if (look.set || look.interiorSet) moveLook(look, parent);  // texture space → world
     if (!look.set && look.interiorSet) {  // an interior alone: the texture it would have had, with it
-        const PovInterior interior = look.interior;
+        const InteriorLook interior = look.interior;
         look = inherited ? *inherited : fallback_;
         look.interior = interior;
         look.interiorSet = true;

@@ -83,6 +83,14 @@ private:
     };
     void globalSettings(const Item& g);
     void addFog(const Item& fog);
+    /// A top-level media block: one more atmospheric media (PovGlobals::media).
+    void addAtmosphericMedia(const Item& media);
+    /// A media with its densities placed in the world as roots of Scene::pigments (a density with
+    /// a singular transformation is left out).
+    PovMedia placeMedia(const MediaLook& m);
+    /// The look's interior media appended to Scene::povMedia (the last entries reused when they
+    /// are the same): in's media range.
+    void placeInteriorMedia(const InteriorLook& look, PovInterior& in);
     Material material(const Appearance& look);
     /// The scene's pigment root for a look with a pattern (its texture space completed to world
     /// space by SceneBuilder::addObject), or -1.
@@ -117,6 +125,10 @@ private:
     bool noImage_ = false;       ///< the objects being added are hidden from camera rays (no_image)
     bool noReflection_ = false;  ///< and from reflection rays (no_reflection)
     bool doubleIlluminate_ = false;  ///< and lit from both sides (double_illuminate)
+    bool hollow_ = false;            ///< and hollow: atmospheric media fill them (hollow)
+    /// Adding a light_group's objects: its lights light no media (they light only the group's
+    /// objects in POV-Ray; Rays lets them light everything else still).
+    bool inLightGroup_ = false;
     uint64_t maxObjects_, objects_ = 0;
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries

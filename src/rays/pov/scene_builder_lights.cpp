@@ -64,6 +64,8 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             case Kw::falloff: falloff = toFloat(e.args[0]), falloffSet = true; break;
             case Kw::tightness: l.tightness = std::max(0.0, toFloat(e.args[0])); break;
             case Kw::shadowless: l.shadowless = true; break;
+            case Kw::media_interaction: l.mediaInteraction = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::media_attenuation: l.mediaAttenuation = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::area_light:
                 if (e.args.size() == 4) {
                     l.area = true;
@@ -124,6 +126,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
         }
     }
     if (l.area && (length(cross(l.axis1, l.axis2)) == 0)) l.area = false;
+    if (inLightGroup_) l.mediaInteraction = false;
     scene_.lights.push_back(l);
     // looks_like: the object, moved to the light's place, is seen but casts no shadow (the manual).
     if (looksLike) {

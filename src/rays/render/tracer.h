@@ -9,6 +9,7 @@
 #include "rays/accel/bvh.h"
 #include "rays/accel/origin_buffer.h"
 #include "rays/render/irradiance_cache.h"
+#include "rays/render/pov_media.h"
 #include "rays/render/sampler.h"
 #include "rays/render/settings.h"
 #include "rays/scene/scene.h"
@@ -116,6 +117,7 @@ public:
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
           povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()),
+          povMedia_(povPath_ && povHasMedia()), povMediaHolders_(povMedia_ ? povMediaHolders() : std::vector<PovMediaHolder>{}),
           primaryReach_(primaryReach(scene, settings)) {}
 
     /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
@@ -214,6 +216,32 @@ private:
         int radLevel = 0;        ///< radiosity bounces on the ray's way from the camera
         bool gathering = false;  ///< a radiosity gathering ray (or one of its children): no highlights
         double reach = kInfinity;  ///< objects farther along the ray are not met (a mesh camera's max_distance)
+        /// For media: the objects the ray is inside (entered and not left), innermost last, each
+        /// with the Material::pov of the (leaf) surface it entered by; nested ones beyond
+        /// kMaxInside are not kept.
+        struct Inside {
+            int object = -1, surface = -1;
+        };
+        static constexpr int kMaxInside = 4;
+        Inside inside[kMaxInside]{};
+        int insideCount = 0;
+        void enter(int object, int surface) {
+            for (int i = 0; i < insideCount; ++i)
+                if (inside[i].object == object) return;
+            if (insideCount < kMaxInside) inside[insideCount++] = Inside{object, surface};
+        }
+        void leave(int object) {
+            for (int i = 0; i < insideCount; ++i)
+                if (inside[i].object == object) {
+                    for (int k = i + 1; k < insideCount; ++k) inside[k - 1] = inside[k];
+                    --insideCount;
+                    return;
+                }
+        }
+        void copyInside(const PovRay& o) {
+            insideCount = o.insideCount;
+            for (int i = 0; i < insideCount; ++i) inside[i] = o.inside[i];
+        }
     };
     /// How far camera rays reach: the render's mesh camera's max_distance, else infinity.
     static double primaryReach(const Scene& scene, const RenderSettings& settings);
@@ -307,6 +335,45 @@ private:
     /// for one it began in, none for one it does not leave); an opaque surface (or too many) blocks.
     Vec3 povTransmittance(const Ray& shadow, double tMax) const;
     const PovSurface& povSurfaceOf(const Material& m) const;
+    // POV-Ray's media (tracer_media.cpp; docs/povray-lighting.md, "Media").
+    /// True when some object's interior or the atmosphere holds media.
+    bool povHasMedia() const;
+    /// The media the stretch of ray r travels in: those of the interiors it is inside, and the
+    /// atmosphere's outside objects and inside hollow ones.
+    PovMediaSet povMediaOf(const PovRay& r) const;
+    /// `behind` (what the ray sees at t) seen through the media of the stretch [0, t] (a miss: as
+    /// far as kPovMediaMissDistance): dimmed, plus the light the media emit and scatter towards
+    /// the viewer (method 3: equal steps refined where neighbouring samples differ).
+    Vec3 povMediaAlong(const Ray& ray, double t, const PovRay& r, Vec3 behind, TraceContext& ctx) const;
+    /// What the media do at a point: light taken out per unit length (extinction) and light
+    /// added per unit length towards the viewer looking along dir (emission plus scattering).
+    struct PovMediaPoint {
+        Vec3 extinction, source;
+    };
+    PovMediaPoint povMediaPoint(const PovMediaSet& set, Vec3 P, Vec3 dir, TraceContext& ctx) const;
+    /// Running sums of the integration: the light added so far and the share still let through.
+    struct PovMediaSum {
+        Vec3 added, through{1, 1, 1};
+    };
+    /// Adds the step [a, b] (a's sample pa, b's pb) to sum, halving it while the samples differ
+    /// by more than aa_threshold, up to aa_level halvings.
+    void povMediaStep(const PovMediaSet& set, const Ray& ray, double a, const PovMediaPoint& pa, double b,
+                      const PovMediaPoint& pb, int level, TraceContext& ctx, PovMediaSum& sum) const;
+    /// The objects whose interior holds media: their index and Material::pov (for a CSG, its
+    /// first leaf with media).
+    struct PovMediaHolder {
+        int object, surface;
+    };
+    std::vector<PovMediaHolder> povMediaHolders() const;
+    /// A camera ray starting inside an object with media travels in its interior (the last such
+    /// object in the scene's order holding the origin).
+    void povStartInside(Vec3 origin, PovRay& r) const;
+    /// Methods 1 and 2: adds [a, b] in `steps` equal steps sampled in their middles.
+    void povMediaMidpoints(const PovMediaSet& set, const Ray& ray, double a, double b, int steps, TraceContext& ctx,
+                           PovMediaSum& sum) const;
+    /// Light of the light `index` reaching P inside a medium (spot, fading, shadows, media on the
+    /// way); toLight becomes the unit direction towards the light. Area lights from their centre.
+    Vec3 povMediaLight(size_t index, Vec3 P, Vec3& toLight, TraceContext& ctx) const;
     // POV-Ray's radiosity (tracer_radiosity.cpp; docs/povray-lighting.md, "Radiosity").
     /// The light radiosity brings at a point once: brightness and gray_threshold applied, nothing at
     /// recursion_limit.
@@ -332,6 +399,8 @@ private:
     bool povPath_;         ///< the scene is traced by POV-Ray's rules
     bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
     bool povHides_;        ///< and some are hidden from camera or reflection rays
+    bool povMedia_;        ///< and some interiors or the atmosphere hold media
+    std::vector<PovMediaHolder> povMediaHolders_;
     const IrradianceCache* radCache_ = nullptr;
     double primaryReach_;  ///< POV-Ray camera rays meet nothing farther (primaryReach)
 };

@@ -82,6 +82,7 @@ Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) 
     PovRay r;
     r.primary = true;
     r.reach = primaryReach_;
+    if (!povMediaHolders_.empty()) povStartInside(ray.origin, r);  // the camera inside a media holder
     return tracePov(ray, r, ctx, info);
 }
 
@@ -100,7 +101,10 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
         const PovInterior& in = povSurfaceOf(scene_.objects[size_t(r.interior)].material).interior;
         if (povFades(in)) fade = povFade(in, hit.t);
     }
-    const Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : povSky(scene_, ray.dir));
+    Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : povSky(scene_, ray.dir));
+    // Radiosity's gathering rays pass media by (radiosity's `media` is off by default; Rays does
+    // not read it).
+    if (povMedia_ && !r.gathering) seen = povMediaAlong(ray, hit.t, r, seen, ctx);
     // Fog fills the space outside objects (measured: on every ray, reflected ones included).
     if (scene_.pov.fogs.empty() || r.interior >= 0) return seen;
     return povFog(scene_.pov.fogs, seen, ray, hit.t);
@@ -195,6 +199,8 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
                      .radLevel = r.radLevel,
                      .gathering = r.gathering};
     if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
+    reflected.copyInside(r);
+    if (!pt.entering) reflected.enter(pt.object, pt.material->pov);  // reflected inside: still in it
     return reflected;
 }
 
@@ -209,13 +215,16 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
         if (!refractDir(ray.dir, pt.N, eta, dir)) return false;
         ++level;
     }
-    const PovRay through{.level = level,
-                         .weight = r.weight * maxAbsComponent(T),
-                         .interior = pt.entering ? pt.object : -1,
-                         .fades = true,
-                         .reflected = r.reflected,
-                         .radLevel = r.radLevel,
-                         .gathering = r.gathering};
+    PovRay through{.level = level,
+                   .weight = r.weight * maxAbsComponent(T),
+                   .interior = pt.entering ? pt.object : -1,
+                   .fades = true,
+                   .reflected = r.reflected,
+                   .radLevel = r.radLevel,
+                   .gathering = r.gathering};
+    through.copyInside(r);
+    if (pt.entering) through.enter(pt.object, pt.material->pov);
+    else through.leave(pt.object);
     if (through.weight >= scene_.pov.adcBailout) {
         ++ctx.stats.secondaryRays;
         color += T * tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, through, ctx, info);
@@ -317,9 +326,18 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
 
 Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
                            const FromLight* fromLight) const {
-    if (!shadowed(shadow, tMax, light, ctx, intoSurface, fromLight)) return Vec3(1.0);
-    if (!povShadowsWalk_) return {};
-    return povTransmittance(shadow, tMax);
+    Vec3 tint(1.0);
+    if (shadowed(shadow, tMax, light, ctx, intoSurface, fromLight)) {
+        if (!povShadowsWalk_) return {};
+        tint = povTransmittance(shadow, tMax);
+    }
+    // Atmospheric media dim only the lights with media_attenuation on (the manual; measured).
+    if (!scene_.pov.media.empty() && scene_.lights[light].mediaAttenuation && !(tint == Vec3{})) {
+        PovMediaSet air;
+        air.add(scene_.pov.media.data(), int(scene_.pov.media.size()));
+        tint *= povMediaTransmittance(scene_, air, shadow, 0, std::min(tMax, kPovMediaMissDistance));
+    }
+    return tint;
 }
 
 Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
@@ -329,11 +347,28 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
     };
     Entry open[kMaxOpenInteriors];  // interiors with fading the ray has entered and not yet left
     int openCount = 0;
+    struct MediaEntry {
+        int object;
+        double t;
+        const PovInterior* interior;
+    };
+    MediaEntry inMedia[kMaxOpenInteriors];  // interiors with media entered and not yet left
+    int inMediaCount = 0;
     Vec3 tint(1.0);
+    // Interior media dim shadow rays over the length inside, with or without media_attenuation (measured).
+    auto throughMedia = [&](const PovInterior& in, double from, double to) {
+        if (in.mediaCount <= 0) return;
+        PovMediaSet set;
+        set.add(&scene_.povMedia[size_t(in.mediaFirst)], in.mediaCount);
+        tint *= povMediaTransmittance(scene_, set, shadow, from, to);
+    };
     double tMin = kTMin;
     for (int step = 0; step < kMaxShadowSurfaces; ++step) {
         const Hit h = bvh_.closest(scene_.objects, shadow, tMin, tMax);
-        if (!h.valid()) return tint;  // interiors not left before the light do not fade it (measured)
+        if (!h.valid()) {  // interiors not left before the light do not fade it (measured); media do
+            for (int i = 0; i < inMediaCount; ++i) throughMedia(*inMedia[i].interior, inMedia[i].t, tMax);
+            return tint;
+        }
         const Object& o = shadedObject(scene_.objects, h);
         const PovSurface& s = povSurfaceOf(o.material);
         if (s.noShadow) {  // no_shadow: not there for shadow rays
@@ -355,6 +390,20 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
                 applyMaps(scene_, o, shadow.at(h.t), SurfaceUV{h.hasUV, h.u, h.v, h.dpdu}, C, N);
             }
             tint *= povFilterTint(C, filter, transmit);
+        }
+        if (s.interior.mediaCount > 0) {
+            if (dot(shadow.dir, h.geomNormal) < 0) {
+                if (inMediaCount < kMaxOpenInteriors) inMedia[inMediaCount++] = MediaEntry{h.object, h.t, &s.interior};
+            } else {
+                double from = 0;  // leaving an interior the ray started in: from its start
+                for (int i = 0; i < inMediaCount; ++i)
+                    if (inMedia[i].object == h.object) {
+                        from = inMedia[i].t;
+                        inMedia[i] = inMedia[--inMediaCount];
+                        break;
+                    }
+                throughMedia(s.interior, from, h.t);
+            }
         }
         if (povFades(s.interior)) {
             if (dot(shadow.dir, h.geomNormal) < 0) {

@@ -59,12 +59,13 @@ Vec3 Tracer::povIrradiance(Vec3 P, Vec3 N, const PovRay& r, TraceContext& ctx) c
 IrradianceRecord Tracer::povGatherRecord(Vec3 P, Vec3 N, const PovRay& r, TraceContext& ctx) const {
     const PovRadiosity& rad = scene_.pov.radiosity;
     const int n = rad.count;
-    const PovRay child{.level = r.level + 1,
-                       .weight = r.weight,
-                       .interior = r.interior,
-                       .reflected = r.reflected,
-                       .radLevel = r.radLevel + 1,
-                       .gathering = true};
+    PovRay child{.level = r.level + 1,
+                 .weight = r.weight,
+                 .interior = r.interior,
+                 .reflected = r.reflected,
+                 .radLevel = r.radLevel + 1,
+                 .gathering = true};
+    child.copyInside(r);
     const CosineHemisphere hemisphere(N);
     const Vec3 origin = P + kSurfaceOffset * N;
     // A Hammersley set shifted by one random offset per record (Cranley–Patterson rotation): every

@@ -35,6 +35,8 @@ struct Light {
     bool shadowless = false;  ///< no shadow rays (nothing blocks it) and no highlights
     double fadeDistance = 0;  ///< > 0: light fading 2/(1 + (d/fadeDistance)^fadePower)
     double fadePower = 0;
+    bool mediaInteraction = true;   ///< lights scattering media (media_interaction)
+    bool mediaAttenuation = false;  ///< dimmed by atmospheric media on its way (media_attenuation)
 };
 
 }  // namespace rays

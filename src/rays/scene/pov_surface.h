@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rays/math/vec3.h"
+#include "rays/scene/pov_media.h"
 #include "rays/scene/pov_radiosity.h"
 
 namespace rays {
@@ -35,6 +36,8 @@ struct PovInterior {
     double fadeDistance = 0;    ///< 0: no fading inside
     double fadePower = 0;
     Vec3 fadeColor{0, 0, 0};
+    /// The interior's media: entries [mediaFirst, mediaFirst + mediaCount) of Scene::povMedia.
+    int mediaFirst = 0, mediaCount = 0;
 
     bool operator==(const PovInterior&) const = default;
 };
@@ -47,6 +50,7 @@ struct PovSurface {
     bool noShadow = false;      ///< the object casts no shadow (POV-Ray's no_shadow; looks_like objects)
     bool noImage = false;       ///< not seen by camera rays nor rays transmitted from them (no_image)
     bool noReflection = false;  ///< not seen by rays after a reflection (no_reflection)
+    bool hollow = false;        ///< atmospheric media fill the object (POV-Ray's hollow)
     /// The pigment pattern: a root of Scene::pigments, or -1 for the flat colour (Material::color,
     /// Material::filter and transmit above; with a pattern those hold its mean colour).
     int pigment = -1;
@@ -90,6 +94,8 @@ struct PovGlobals {
     double adcBailout = 1.0 / 255.0;
     Vec3 background{0, 0, 0};
     std::vector<PovFog> fogs;  ///< applied together to every ray outside objects
+    /// Atmospheric media (top-level `media` blocks): outside objects and inside hollow ones.
+    std::vector<PovMedia> media;
     /// sky_sphere: its pigments, bottom layer first, as roots [skyFirst, skyFirst + skyCount) of
     /// Scene::pigments looked up by ray direction; none: the background colour.
     int skyFirst = -1, skyCount = 0;

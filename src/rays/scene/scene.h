@@ -38,6 +38,7 @@ struct Scene {
     EdgeSettings edges;           ///< feature lines asked for by an `edges { }` block (CLI overrides)
     /// POV-Ray scenes: surfaces referenced by Material::pov, and the scene-wide settings.
     std::vector<PovSurface> povSurfaces;
+    std::vector<PovMedia> povMedia;  ///< interior media, referenced by PovInterior::mediaFirst
     PovGlobals pov;
     PovTextures povTextures;  ///< layered and patterned textures referenced by PovSurface::texture
     pattern::PigmentTable pigments;  ///< POV-Ray pigment patterns referenced by PovSurface::pigment
