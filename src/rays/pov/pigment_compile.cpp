@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "rays/pattern/default_maps.h"
 #include "rays/pov/normal_compile.h"
@@ -46,6 +47,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::mandel: out = PatternKind::Mandel; return true;
         case Kw::julia: out = PatternKind::Julia; return true;
         case Kw::spiral1: out = PatternKind::Spiral1; return true;
+        case Kw::slope: out = PatternKind::Slope; return true;
         default: return false;
     }
 }
@@ -58,6 +60,27 @@ bool callsPatternFunction(const fn::Program& p, int depth = 0) {
     for (const auto& c : p.callees)
         if (c && depth < 64 && callsPatternFunction(*c, depth + 1)) return true;
     return false;
+}
+
+// slope <Direction> (the old form) or slope { <Direction> [, Lo_slope, Hi_slope] [altitude
+// <Altitude> [, Lo_alt, Hi_alt]] } (POV-Ray 3.7 reference, "Slope").
+pattern::Slope readSlope(const Value& v) {
+    if (v.type != VType::Item) return pattern::makeSlope(toVec3(v), 0, 1, {}, 0, 1);
+    std::vector<const Value*> values;  // the direction and the slope range, in order
+    Vec3 altitude;
+    double range[4] = {0, 1, 0, 1};
+    for (const Entry& e : v.item().entries) {
+        if (e.positional()) {
+            for (const Value& a : e.args)
+                if (a.isNumeric()) values.push_back(&a);
+        } else if (e.kw() == Kw::altitude && !e.args.empty()) {
+            altitude = toVec3(e.args[0]);
+            if (e.args.size() >= 3) range[2] = toFloat(e.args[1]), range[3] = toFloat(e.args[2]);
+        }
+    }
+    const Vec3 direction = values.empty() ? Vec3{0, 1, 0} : toVec3(*values[0]);
+    if (values.size() >= 3) range[0] = toFloat(*values[1]), range[1] = toFloat(*values[2]);
+    return pattern::makeSlope(direction, range[0], range[1], altitude, range[2], range[3]);
 }
 
 pattern::Rgbft toPatternColor(const Value& v) {
@@ -199,7 +222,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
     PatternKind kind;
     const bool special = k == Kw::dents || k == Kw::ripples || k == Kw::waves;  // normal-only (bumps, wrinkles known)
-    if (patternKind(k, kind) || (s.normal && special)) {
+    // slope reads the surface normal: as a normal pattern it is not rendered (noted below).
+    const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope);
+    if (known || (s.normal && special)) {
         if (special) kind = PatternKind::Bozo;
         s.pattern = true;
         s.unrendered = false;
@@ -217,6 +242,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
             s.node.params.iterations = e.args.size() > 1 ? int(std::clamp(toFloat(e.args[1]), 0.0, 1e6)) : 0;
         }
         if (kind == PatternKind::Spiral1) s.node.params.arms = toFloat(e.args[0]);
+        if (kind == PatternKind::Slope) s.node.params.slope = readSlope(e.args[0]);
         if (kind == PatternKind::Function) {
             const sdl::FunctionValue& f = e.args[0].fn();
             if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0 ||

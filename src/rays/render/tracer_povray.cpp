@@ -127,7 +127,7 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     pt.filter = o.material.filter;
     pt.transmit = pt.surface->transmit;
     if (pt.surface->pigment >= 0) {
-        const PovPigmentSample c = povPigmentAt(scene_, *pt.surface, pt.P);
+        const PovPigmentSample c = povPigmentAt(scene_, *pt.surface, pt.P, pt.N);
         pt.C = c.color, pt.filter = c.filter, pt.transmit = c.transmit;
     }
     if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0)
@@ -333,13 +333,15 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             continue;
         }
         if (!letsLightThrough(o.material, s)) return {};
+        // The normal facing where the shadow ray comes from (for the slope pattern).
+        const Vec3 facing = dot(shadow.dir, h.normal) < 0 ? h.normal : -h.normal;
         if (const int node = povTextureSeen(s, dot(shadow.dir, h.geomNormal) < 0); node >= 0) {
-            tint *= povTextureTint(scene_, node, shadow.at(h.t));  // a layered or patterned texture: each layer tints
+            tint *= povTextureTint(scene_, node, shadow.at(h.t), facing);  // a layered or patterned texture: each layer tints
         } else {
             Vec3 C = o.material.color;
             double filter = o.material.filter, transmit = s.transmit;
             if (s.pigment >= 0) {
-                const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t));
+                const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t), facing);
                 C = c.color, filter = c.filter, transmit = c.transmit;
             }
             if (o.material.pigmentMap >= 0) {
