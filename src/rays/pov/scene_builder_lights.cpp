@@ -137,11 +137,11 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
 // ---- atmosphere -----------------------------------------------------------------------------
 
 // POV-Ray 3.7 reference, "Fog": fog_type 1 (constant) and 2 (ground fog along up), distance and
-// the colour with filter and transmit; transformations turn up. A fog identifier's items come
-// first. distance 0 turns the fog off (the manual).
+// the colour with filter and transmit; transformations turn up; turbulence with turb_depth,
+// octaves, omega and lambda (render/pov_lighting.cpp). A fog identifier's items come first.
+// distance 0 turns the fog off (the manual).
 void SceneBuilder::addFog(const Item& item) {
     PovFog f;
-    bool turbulent = false;
     Transform m;
     std::function<void(const Item&)> read = [&](const Item& it) {
         for (const Entry& e : it.entries) {
@@ -168,13 +168,16 @@ void SceneBuilder::addFog(const Item& item) {
                 case Kw::fog_offset: f.offset = toFloat(e.args[0]); break;
                 case Kw::fog_alt: f.alt = toFloat(e.args[0]); break;
                 case Kw::up: f.up = toVec3(e.args[0]); break;
-                case Kw::turbulence: turbulent = turbulent || length(toVec3(e.args[0])) > 0; break;
-                default: break;  // turb_depth, omega, lambda, octaves: only with turbulence
+                case Kw::turbulence: f.turbulence.amount = toVec3(e.args[0]); break;
+                case Kw::turb_depth: f.turbDepth = toFloat(e.args[0]); break;
+                case Kw::octaves: f.turbulence.octaves = int(std::clamp(toFloat(e.args[0]), 1.0, 10.0)); break;
+                case Kw::omega: f.turbulence.omega = toFloat(e.args[0]); break;
+                case Kw::lambda: f.turbulence.lambda = toFloat(e.args[0]); break;
+                default: break;
             }
         }
     };
     read(item);
-    if (turbulent) notes_.note("fog turbulence", item.loc, "(the fog is drawn smooth)");
     f.up = m.vector(f.up);
     if (f.distance <= 0 || length(f.up) == 0) return;
     f.up = normalize(f.up);

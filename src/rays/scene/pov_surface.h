@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rays/math/vec3.h"
+#include "rays/pattern/noise.h"
 #include "rays/scene/pov_radiosity.h"
 
 namespace rays {
@@ -66,7 +67,7 @@ struct PovSurface {
 /// A ray segment of length d keeps a = max(exp(−D/distance), transmit) of the colour behind,
 /// filtered by 1 − filter + filter·color, and adds (1 − a)·color, where D is d (constant fog) or,
 /// for ground fog, the integral along the segment of the density 1 below offset and
-/// 1/(1 + ((h − offset)/alt)²) above it, h the height along up.
+/// 1/(1 + ((h − offset)/alt)²) above it, h the height along up. Turbulence thins D (povFog).
 struct PovFog {
     bool ground = false;  ///< fog_type 2
     double distance = 0;
@@ -74,6 +75,8 @@ struct PovFog {
     double filter = 0, transmit = 0;
     double offset = 0, alt = 0;
     Vec3 up{0, 1, 0};  ///< unit
+    pattern::Turbulence turbulence;  ///< turbulence (amount off: none), octaves, omega, lambda
+    double turbDepth = 0.5;          ///< where along the segment the turbulence is read (0 eye, 1 hit)
 };
 
 /// Scene-wide settings of POV-Ray scenes (global_settings, background).
