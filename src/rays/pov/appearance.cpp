@@ -193,7 +193,7 @@ void applyInterior(const Item& i, PovInterior& in, NotRendered& notes) {
             case Kw::fade_power: in.fadePower = toFloat(e.args[0]); break;
             case Kw::fade_color: case Kw::fade_colour: in.fadeColor = toColor(e.args[0]).rgb; break;
             case Kw::media: notes.note("media", e.loc); break;
-            case Kw::caustics: notes.note("caustics", e.loc); break;
+            case Kw::caustics: in.caustics = toFloat(e.args[0]); break;
             case Kw::dispersion: notes.note("dispersion", e.loc); break;
             default: break;
         }

@@ -350,6 +350,10 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             }
             tint *= povFilterTint(C, filter, transmit);
         }
+        if (s.interior.caustics > 0) {  // the surface's normal as its normal pattern tilts it (measured)
+            const Vec3 N = s.normal >= 0 ? povNormalAt(scene_, s, shadow.at(h.t), h.normal) : h.normal;
+            tint *= povCausticGain(s.interior.caustics, dot(N, shadow.dir));
+        }
         if (povFades(s.interior)) {
             if (dot(shadow.dir, h.geomNormal) < 0) {
                 if (openCount < kMaxOpenInteriors) open[openCount++] = Entry{h.object, h.t};

@@ -36,6 +36,7 @@ struct PovInterior {
     double fadeDistance = 0;    ///< 0: no fading inside
     double fadePower = 0;
     Vec3 fadeColor{0, 0, 0};
+    double caustics = 0;        ///< fake caustics' power (0: none): render/pov_lighting.h, povCausticGain
 
     bool operator==(const PovInterior&) const = default;
 };
