@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -338,6 +339,37 @@ TEST(PovCaustics, LightThroughAClearPaneBrightensNearItsNormal) {
         lo = std::min(lo, v), hi = std::max(hi, v);
     }
     EXPECT_LT(lo, 3);
+    EXPECT_GT(hi - lo, 0.5);
+}
+
+// The cosine share of irid on a grey floor lit by a parallel light turned `degrees` about y
+// (diffuse 1, amount 0.5): (colour / colour without irid − 1) / 0.5 per channel.
+Vec3 iridShare(double degrees, const std::string& irid, const std::string& global = "") {
+    const Loaded l = load(global + "plane { -z, 0 pigment { rgb 0.5 } finish { ambient 0 diffuse 1 irid { 0.5 " +
+                          irid + " } } }\nlight_source { <0,0,-100>, rgb 1 parallel point_at 0 rotate y*" +
+                          std::to_string(degrees) + " }\n");
+    EXPECT_TRUE(l.warnings.empty()) << l.warnings[0];
+    const double base = 0.5 * std::cos(degrees * std::numbers::pi / 180);
+    return (seen(l.scene, 0.125, 0.125) / base - Vec3(1.0)) / 0.5;
+}
+
+TEST(PovIrid, FilmInterferenceTintsTheLightByThicknessAndAngle) {
+    // Measured with povray 3.7 (16-bit output): cos(2π·t·(N·L + N·V)/λ), λ = <0.70, 0.52, 0.48>.
+    expectColor(iridShare(0, ""), Vec3(1.0), 1e-9);  // no thickness: × (1 + amount)
+    expectColor(iridShare(0, "thickness 0.01"), {0.9839, 0.9709, 0.9659}, 2e-4);
+    expectColor(iridShare(0, "thickness 0.1"), {-0.2225, -0.7485, -0.8660}, 2e-4);
+    expectColor(iridShare(0, "thickness 0.18"), {-0.9960, -0.3546, 0.0}, 2e-4);
+    expectColor(iridShare(60, "thickness 0.01"), {0.9909, 0.9836, 0.9808}, 2e-4);
+    expectColor(iridShare(0, "thickness 0.01", "global_settings { irid_wavelength <0.25, 0.125, 0.1> }"),
+                {0.8763, 0.5358, 0.3090}, 2e-4);
+    // Turbulence scales the thickness point by point (mean 1 + turbulence).
+    double lo = 1, hi = -1;
+    for (int i = 0; i < 20; ++i) {
+        const Loaded l = load("plane { -z, 0 pigment { rgb 0.5 } finish { ambient 0 diffuse 1 irid { 0.5 thickness 0.08 "
+                              "turbulence 0.5 } } }\nlight_source { <0,0,-100>, rgb 1 parallel point_at 0 }\n");
+        const double b = (seen(l.scene, 0.71 * i, 0.37 * i).z / 0.5 - 1) / 0.5;
+        lo = std::min(lo, b), hi = std::max(hi, b);
+    }
     EXPECT_GT(hi - lo, 0.5);
 }
 

@@ -168,7 +168,21 @@ void applyFinish(const Item& f, PovFinish& fin, NotRendered& notes) {
             }
             case Kw::reflection_exponent: fin.reflectionExponent = arg(0); break;
             case Kw::conserve_energy: fin.conserveEnergy = true; break;
-            case Kw::irid: notes.note("irid", e.loc); break;
+            case Kw::irid: {  // irid { amount [thickness T] [turbulence U] }
+                const Value& v = e.args[0];
+                if (v.type != VType::Item) {
+                    fin.irid = toFloat(v);
+                    break;
+                }
+                std::vector<const Value*> pos = positionals(v.item());
+                if (!pos.empty()) fin.irid = toFloat(*pos[0]);
+                for (const Entry& ie : v.item().entries) {
+                    if (ie.positional() || ie.args.empty()) continue;
+                    if (ie.kw() == Kw::thickness) fin.iridThickness = toFloat(ie.args[0]);
+                    if (ie.kw() == Kw::turbulence) fin.iridTurbulence = toVec3(ie.args[0]).x;
+                }
+                break;
+            }
             case Kw::crand: fin.crand = std::max(0.0, arg(0)); break;
             case Kw::subsurface: notes.note("subsurface", e.loc); break;
             case Kw::fresnel: fin.reflectionFresnel = arg(0) != 0; break;

@@ -79,6 +79,19 @@ double fogTurbulenceFactor(const PovFog& f, const Ray& ray, double t) {
     return 1.0 - c * std::exp(-t / f.distance);
 }
 
+// The thickness' variation Y under irid's turbulence (measured: mean 1, from −0.8 to 2.8, 10th to
+// 90th percentile 0.18 to 1.72 over a plane): Rays' turbulence sum (POV-Ray's octaves, omega and
+// lambda are fixed and not documented; the defaults here) about its mean, widened 5 times to
+// POV-Ray's spread (the noise is not POV-Ray's: alike, not the same).
+constexpr double kIridSpread = 5.0;
+
+double iridThicknessVariation(Vec3 P) {
+    const pattern::Turbulence t;  // octaves 6, omega 0.5, lambda 2
+    double mean = 0, amp = 1;
+    for (int i = 0; i < t.octaves; ++i, amp *= t.omega) mean += 0.5 * amp;
+    return 1 + kIridSpread * (pattern::turbulenceSum(P, t) - mean) / mean;
+}
+
 // cosine^brilliance, without pow for the default brilliance 1.
 double brilliant(double cosine, double brilliance) { return brilliance == 1 ? cosine : std::pow(cosine, brilliance); }
 
@@ -182,6 +195,17 @@ double povSpotFactor(const Light& light, Vec3 toPoint) {
 double povLightFade(const Light& light, double distance) {
     if (light.fadeDistance <= 0) return 1.0;
     return 2.0 / (1.0 + std::pow(distance / light.fadeDistance, light.fadePower));
+}
+
+Vec3 povIridTint(const PovFinish& f, Vec3 wavelength, Vec3 N, Vec3 L, Vec3 V, Vec3 P) {
+    if (f.irid == 0) return Vec3(1.0);
+    double t = f.iridThickness;
+    if (f.iridTurbulence != 0) t *= 1 + f.iridTurbulence * iridThicknessVariation(P);
+    const double path = 2 * std::numbers::pi * t * (dot(N, L) + dot(N, V));
+    Vec3 out;
+    for (int i = 0; i < 3; ++i)
+        out[i] = 1 + f.irid * (wavelength[i] != 0 ? std::cos(path / wavelength[i]) : 1.0);
+    return out;
 }
 
 Vec3 povFog(const std::vector<PovFog>& fogs, Vec3 behind, const Ray& ray, double t) {

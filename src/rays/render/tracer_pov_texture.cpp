@@ -154,7 +154,8 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
         for (int k = 0; k < count; ++k) {
             const PovLayerAt& a = layers[k];
             if (!layerLit(*a.surface, a.opacity, dot(a.N, L))) continue;
-            const PovLightTerms t = povLightTerms(*a.surface, a.C, a.N, L, V, reach);
+            const Vec3 irid = povIridTint(a.surface->finish, scene_.pov.iridWavelength, a.N, L, V, pt.P);
+            const PovLightTerms t = povLightTerms(*a.surface, a.C, a.N, L, V, reach * irid);
             const double crand = a.surface->finish.crand;
             const double grain = crand != 0 ? 1 - crand * ctx.rng.next() : 1.0;
             Vec3 add = (a.opacity * grain) * t.diffuse;

@@ -244,7 +244,7 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
-        const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
+        const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach * povIridTint(f, scene_.pov.iridWavelength, N, L, V, P));
         const double grain = f.crand != 0 ? 1 - f.crand * ctx.rng.next() : 1.0;  // crand
         color += (opacity * grain) * t.diffuse;
         // Shadowless lights make no highlights (the manual; measured), nor do points radiosity gathers from.

@@ -27,6 +27,9 @@ struct PovFinish {
     /// Graininess: each light's diffuse term times 1 − crand·U, U uniform in [0, 1) drawn per light
     /// and pixel sample (the manual, "Crand Graininess"; the distribution measured).
     double crand = 0;
+    /// irid { amount thickness T turbulence U }: thin-film interference tinting each light
+    /// (render/pov_lighting.h, povIridTint); amount 0: none.
+    double irid = 0, iridThickness = 0, iridTurbulence = 0;
 
     bool operator==(const PovFinish&) const = default;
 };
@@ -93,6 +96,9 @@ struct PovGlobals {
     int maxTraceLevel = 5;
     double adcBailout = 1.0 / 255.0;
     Vec3 background{0, 0, 0};
+    /// irid_wavelength: the film's wavelengths per channel. The default is POV-Ray 3.7's as
+    /// measured (<0.70, 0.52, 0.48>; the manual still gives 3.6's <0.25, 0.18, 0.14>).
+    Vec3 iridWavelength{0.70, 0.52, 0.48};
     std::vector<PovFog> fogs;  ///< applied together to every ray outside objects
     /// sky_sphere: its pigments, bottom layer first, as roots [skyFirst, skyFirst + skyCount) of
     /// Scene::pigments looked up by ray direction; none: the background colour.
