@@ -264,9 +264,47 @@ TEST(PovPattern, WarpsApplyInFileOrderWithTheTransformations) {
     int moved = 0;
     for (int i = 0; i < 20; ++i) moved += std::fabs(turb.at({0.5, 0.37 * i, 0.11 * i}).rgb.x - 0.5) > 1e-3;
     EXPECT_GT(moved, 15);
-    const Probe hole = pigment("gradient x warp { black_hole <0, 0, 0>, 1 }");
-    ASSERT_EQ(hole.b.warnings.size(), 1u);
-    EXPECT_NE(hole.b.warnings[0].find("warp black_hole"), std::string::npos);
+    const Probe torus = pigment("gradient x warp { toroidal }");
+    ASSERT_EQ(torus.b.warnings.size(), 1u);
+    EXPECT_NE(torus.b.warnings[0].find("warp toroidal"), std::string::npos);
+}
+
+// The x, y, z of the point a warp hands its pattern, through `function { 0.5 + 0.01·v }`; values
+// printed by POV-Ray 3.7 (pattern functions of the same pigments).
+void expectWarped(const std::string& warp, Vec3 p, Vec3 want) {
+    const char* axes[] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i)
+        expectValues(std::string("function { 0.5 + 0.01*") + axes[i] + " } warp { " + warp + " }",
+                     {{p, 0.5 + 0.01 * want[i]}}, 1e-7);
+}
+
+TEST(PovPattern, MappingWarpsMatchPovRay) {
+    expectWarped("planar", {0.3, 0.2, 0.1}, {0.3, 0.2, 0});
+    expectWarped("planar y, 2", {1.3, 0.5, -0.4}, {1.3, -2, 0.5});
+    expectWarped("planar x, 0", {-0.7, 0.25, 0.6}, {0, 0.25, 0.7});
+    expectWarped("planar <1,2,3>, 1", {0.3, 0.2, 0.1}, {0.66815, -0.32071, 0.82851});
+    expectWarped("planar <1,1,0>, 0", {-0.7, 0.25, 0.6}, {-0.49497, 0.17678, 0.67175});
+    expectWarped("cylindrical", {1.3, 0.5, -0.4}, {0.95249, 0.5, 1.36015});
+    expectWarped("cylindrical", {0, 0, -2}, {0.75, 0, 2});
+    expectWarped("cylindrical dist_exp 2", {-0.7, 0.25, 0.6}, {0.32914, 0.25, 0.92195});
+    expectWarped("cylindrical orientation y", {0.3, 0.2, 0.1}, {0.05121, -0.31623, 0.2});
+    expectWarped("cylindrical orientation <0,1,1>", {1.3, 0.5, -0.4}, {1.34703, -0.60822, 1.31532});
+    expectWarped("cylindrical orientation -x", {-0.7, 0.25, 0.6}, {-0.92195, -0.25, 0.38722});
+    expectWarped("spherical", {2, -1, 0.5}, {0.03899, 0.35624, 2.29129});
+    expectWarped("spherical dist_exp 1", {1.3, 0.5, -0.4}, {1.38029, 0.88706, 1.44914});
+}
+
+TEST(PovPattern, BlackHoleWarpMatchesPovRay) {
+    // Values printed by POV-Ray 3.7: pushed out by min(1, strength·(1 − d/R)^falloff).
+    expectWarped("black_hole <0,0,0>, 1", {0.3, 0.15, 0}, {0.432504, 0.216252, 0});
+    expectWarped("black_hole <0,0,0>, 1", {0.9, 0.45, 0}, {0.9, 0.45, 0});  // outside the radius
+    expectWarped("black_hole <0,0,0>, 1 inverse", {0.5, 0.25, 0}, {0.402767, 0.201383, 0});
+    expectWarped("black_hole <0,0,0>, 1 falloff 3 strength 0.5", {0.4, 0.2, 0}, {0.433783, 0.216892, 0});
+    expectWarped("black_hole <0.2,0,0>, 2 falloff 1 strength 2", {0.1, 0.05, 0}, {0, 0.1, 0});  // clamped at 1
+    expectWarped("black_hole <0,0,0>, 1 falloff 2 strength 2 inverse", {0.3, 0.15, 0}, {0.034992, 0.017496, 0});
+    // Repeated along x: the centres at R + 2n there (the location's x unused), its y kept.
+    expectWarped("black_hole <0.3,0.1,0>, 0.7 repeat <2,0,0>", {-1.5, 0.05, 0.1}, {-1.590498, 0.027376, 0.145249});
+    expectWarped("black_hole <0.3,0,0>, 0.4 repeat <2,0,0>", {2.3, 0.05, 0.1}, {2.260938, 0.069531, 0.139062});
 }
 
 TEST(PovPattern, TransformationsMoveThePatternInFileOrder) {

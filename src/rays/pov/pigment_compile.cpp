@@ -312,15 +312,27 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     }
 }
 
-// warp { turbulence ... } and warp { repeat ... }; the other warps are noted and left out.
+// warp { turbulence ... }, warp { repeat ... } and the mapping warps planar, cylindrical and
+// spherical (with orientation and dist_exp); the other warps are noted and left out.
 void PigmentCompiler::readWarp(const Item& warp, State& s) {
     pattern::WarpStep step;
     bool known = false;
+    auto mapping = [&](pattern::MappingKind kind) {
+        step.kind = pattern::WarpStep::Kind::Mapping;
+        step.mapping.kind = kind;
+        known = true;
+    };
+    Vec3 orientation{0, 0, 1};
     for (const Entry& e : warp.entries) {
         if (e.positional()) continue;
         const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
         switch (e.kw()) {
-            case Kw::turbulence:
+            case Kw::turbulence:  // a black hole's turbulence moves its holes at random: not reproduced
+                if (step.kind == pattern::WarpStep::Kind::BlackHole) {
+                    if (length(toVec3(e.args[0])) > 0)
+                        notes_.note("warp black_hole turbulence", e.loc, "(the holes stay on their lattice)");
+                    break;
+                }
                 step.kind = pattern::WarpStep::Kind::Turbulence;
                 step.turbulence.amount = toVec3(e.args[0]);
                 known = true;
@@ -329,6 +341,10 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
             case Kw::omega: step.turbulence.omega = num(0); break;
             case Kw::lambda: step.turbulence.lambda = num(0); break;
             case Kw::repeat: {
+                if (step.kind == pattern::WarpStep::Kind::BlackHole) {
+                    step.hole.repeat = toVec3(e.args[0]);
+                    break;
+                }
                 const Vec3 v = toVec3(e.args[0]);
                 step.kind = pattern::WarpStep::Kind::Repeat;
                 step.axis = v.x != 0 ? 0 : (v.y != 0 ? 1 : 2);
@@ -338,8 +354,25 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
             }
             case Kw::offset: step.offset = toVec3(e.args[0]); break;
             case Kw::flip: step.flip = toVec3(e.args[0]); break;
-            case Kw::black_hole: case Kw::cylindrical: case Kw::spherical: case Kw::toroidal: case Kw::planar:
-            case Kw::cubic:
+            case Kw::planar:  // planar [<normal>, distance]
+                mapping(pattern::MappingKind::Planar);
+                if (!e.args.empty()) orientation = toVec3(e.args[0]);
+                step.mapping.distance = num(1);
+                break;
+            case Kw::cylindrical: mapping(pattern::MappingKind::Cylindrical); break;
+            case Kw::spherical: mapping(pattern::MappingKind::Spherical); break;
+            case Kw::orientation: orientation = toVec3(e.args[0]); break;
+            case Kw::dist_exp: step.mapping.distExp = num(0); break;
+            case Kw::black_hole:  // black_hole <location>, radius
+                step.kind = pattern::WarpStep::Kind::BlackHole;
+                step.hole.center = toVec3(e.args[0]);
+                step.hole.radius = num(1);
+                known = true;
+                break;
+            case Kw::falloff: step.hole.falloff = num(0); break;
+            case Kw::strength: step.hole.strength = num(0); break;
+            case Kw::inverse: step.hole.inverse = true; break;
+            case Kw::toroidal: case Kw::cubic:
                 notes_.note(std::string("warp ") + std::string(sdl::keywordName(e.kw())), e.loc,
                             "(the pattern is drawn without it)");
                 return;
@@ -347,6 +380,8 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
         }
     }
     if (!known) return;
+    if (step.kind == pattern::WarpStep::Kind::Mapping)
+        step.mapping.orientation = length(orientation) > 0 ? normalize(orientation) : Vec3{0, 0, 1};
     s.steps.push_back(step);
     s.warped = true;
 }
