@@ -307,6 +307,26 @@ TEST(PovPattern, BlackHoleWarpMatchesPovRay) {
     expectWarped("black_hole <0.3,0,0>, 0.4 repeat <2,0,0>", {2.3, 0.05, 0.1}, {2.260938, 0.069531, 0.139062});
 }
 
+TEST(PovPattern, PigmentPatternIsThePigmentsGrey) {
+    // Values printed by POV-Ray 3.7: 0.297·r + 0.589·g + 0.114·b, filter and transmit ignored.
+    expectValues("pigment_pattern { rgb <1, 0, 0> }", {{{0, 0, 0}, 0.297}});
+    expectValues("pigment_pattern { rgb <0, 1, 0> }", {{{0, 0, 0}, 0.589}});
+    expectValues("pigment_pattern { rgb <0, 0, 1> }", {{{0, 0, 0}, 0.114}});
+    expectValues("pigment_pattern { rgbft <0.5, 0.5, 0.5, 0.5, 0.3> }", {{{0, 0, 0}, 0.5}});
+    expectValues("pigment_pattern { gradient x color_map { [0 rgb 0] [1 rgb 1] } }",
+                 {{{0.3, 0, 0}, 0.3}, {{0.75, 2, 1}, 0.75}});
+    expectValues("pigment_pattern { gradient x color_map { [0 rgb 0] [1 rgb 1] } scale 2 } scale 0.5",
+                 {{{0.3, 0, 0}, 0.3}});
+    // As a normal it tilts the surface by the grey's gradient.
+    const test::PovLoaded n = test::loadPov(
+        "sphere { 0, 1 normal { pigment_pattern { gradient x color_map { [0 rgb 0] [1 rgb 1] } } 1 } }");
+    EXPECT_TRUE(n.warnings.empty());
+    const PovSurface& s = n.scene.povSurfaces.at(size_t(n.scene.objects.at(0).material.pov));
+    ASSERT_GE(s.normal, 0);
+    const Vec3 tilted = n.scene.normals.atRoot(n.scene.pigments, s.normal, {0.3, 0.5, -0.8}, {0, 0, -1});
+    EXPECT_GT(std::fabs(tilted.x), 0.05);
+}
+
 TEST(PovPattern, TransformationsMoveThePatternInFileOrder) {
     // Inside the pigment (POV-Ray: scale 2 rotate y*45 translate x; values printed by POV-Ray).
     const Probe t = pigment("checker rgb 1, rgb 0 scale 2 rotate y*45 translate <1, 0, 0>");

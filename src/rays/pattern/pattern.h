@@ -21,6 +21,7 @@ enum class PatternKind : uint8_t {
     Spiral1,   ///< a spiral of N arms winding around z, one turn per unit along z
     Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
     Slope,     ///< the surface normal's angle to a direction, and the altitude (pattern/slope.h)
+    PigmentPattern,  ///< a pigment's grey (PigmentTable::rawValue; PatternParams::source)
     Average,  ///< the weighted mean of a pigment_map's pigments
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
@@ -44,6 +45,7 @@ struct PatternParams {
     int exterior = 1, interior = 0;    ///< mandel's colouring types (0..8, 0..6)
     double exteriorFactor = 1, interiorFactor = 1;
     Slope slope;                       ///< Slope's direction, altitude and ranges
+    int source = -1;                   ///< PigmentPattern: the pigment's node in the same table
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
 };
 

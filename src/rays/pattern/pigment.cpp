@@ -13,6 +13,14 @@ Vec3 PigmentTable::inNodeSpace(const PigmentNode& node, Vec3 p) const {
     return p;
 }
 
+double PigmentTable::rawValue(const PigmentNode& node, Vec3 q, Vec3 N) const {
+    if (node.kind != PatternKind::PigmentPattern) return patternValue(node.kind, node.params, q, N);
+    if (node.params.source < 0) return 0;
+    if (node.params.turbulence.on()) q = turbulent(q, node.params.turbulence);
+    const Rgbft c = evaluate(node.params.source, q, N);
+    return 0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z;
+}
+
 MapPlace PigmentTable::place(int n, Vec3 p, Vec3 N) const {
     const PigmentNode& node = nodes[size_t(n)];
     if (node.mapCount == 0) return {};
@@ -21,7 +29,7 @@ MapPlace PigmentTable::place(int n, Vec3 p, Vec3 N) const {
         const int i = std::min(blockIndex(node.kind, node.params, p), node.mapCount - 1);
         return {i, i, 0};
     }
-    const double v = applyWave(node.wave, patternValue(node.kind, node.params, p, N));
+    const double v = applyWave(node.wave, rawValue(node, p, N));
     return placeInMap({entries.data() + node.mapBegin, size_t(node.mapCount)}, v);
 }
 
@@ -62,7 +70,7 @@ Rgbft PigmentTable::evaluate(int n, Vec3 p, Vec3 N) const {
         if (weights == 0) return sum;
         return {sum.rgb / weights, sum.filter / weights, sum.transmit / weights};
     }
-    const double v = applyWave(node.wave, patternValue(node.kind, node.params, p, N));
+    const double v = applyWave(node.wave, rawValue(node, p, N));
     const MapPlace at = placeInMap({map, size_t(node.mapCount)}, v);
     if (at.lo == at.hi || at.t == 0) return entry(at.lo);
     if (at.t == 1) return entry(at.hi);
@@ -78,7 +86,7 @@ double PigmentTable::value(int n, Vec3 p, Vec3 N) const {
     }
     p = inNodeSpace(node, p);
     if (isBlockPattern(node.kind)) return blockIndex(node.kind, node.params, p);
-    return applyWave(node.wave, patternValue(node.kind, node.params, p, N));
+    return applyWave(node.wave, rawValue(node, p, N));
 }
 
 bool PigmentTable::mayLetLightThrough(int n) const {

@@ -59,6 +59,10 @@ struct PigmentTable {
     /// function gives it: after the node's transformations, warps, turbulence and wave, its map
     /// ignored; a block pattern's list index (0, 1 or 2); 0 for nodes without a pattern value.
     double value(int n, Vec3 p, Vec3 N = {}) const;
+    /// The value of node's pattern at q (its pattern space), turbulence included, before the
+    /// wave: patternValue, or for pigment_pattern the grey of its pigment (POV-Ray 3.7 reference,
+    /// "Pigment Pattern"; measured: 0.297·r + 0.589·g + 0.114·b, filter and transmit ignored).
+    double rawValue(const PigmentNode& node, Vec3 q, Vec3 N = {}) const;
     /// True when some colour of node n filters or transmits.
     bool mayLetLightThrough(int n) const;
     /// Where node n's pattern puts p (p in the space enclosing the node): the place in its map, or

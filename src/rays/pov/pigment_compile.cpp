@@ -48,6 +48,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::julia: out = PatternKind::Julia; return true;
         case Kw::spiral1: out = PatternKind::Spiral1; return true;
         case Kw::slope: out = PatternKind::Slope; return true;
+        case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
         default: return false;
     }
 }
@@ -243,6 +244,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         }
         if (kind == PatternKind::Spiral1) s.node.params.arms = toFloat(e.args[0]);
         if (kind == PatternKind::Slope) s.node.params.slope = readSlope(e.args[0]);
+        if (kind == PatternKind::PigmentPattern) s.node.params.source = nested(e.args[0].item(), depth);
         if (kind == PatternKind::Function) {
             const sdl::FunctionValue& f = e.args[0].fn();
             if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0 ||
