@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
@@ -325,6 +327,23 @@ TEST(PovPattern, PigmentPatternIsThePigmentsGrey) {
     ASSERT_GE(s.normal, 0);
     const Vec3 tilted = n.scene.normals.atRoot(n.scene.pigments, s.normal, {0.3, 0.5, -0.8}, {0, 0, -1});
     EXPECT_GT(std::fabs(tilted.x), 0.05);
+}
+
+TEST(PovPattern, VturbulenceGivesTheTurbulenceDisplacement) {
+    // vturbulence(lambda, omega, octaves, P): the vector Rays' turbulence moves P by at amount 1.
+    pattern::Turbulence t;
+    t.amount = {1, 1, 1};
+    t.lambda = 2.5, t.omega = 0.4, t.octaves = 3;
+    const Vec3 want = pattern::turbulenceVector({0.3, 0.2, 0.1}, t);
+    ASSERT_GT(length(want), 1e-3);
+    char check[256];
+    std::snprintf(check, sizeof check, "#if (vlength(V - <%.17g, %.17g, %.17g>) > 1e-12) #error \"differs\" #end\n",
+                  want.x, want.y, want.z);
+    std::vector<std::string> warnings;
+    EXPECT_NO_THROW(test::buildPov(std::string("#declare V = vturbulence(2.5, 0.4, 3, <0.3, 0.2, 0.1>);\n") + check +
+                                       "sphere { 0, 1 }",
+                                   &warnings));
+    EXPECT_TRUE(warnings.empty());
 }
 
 TEST(PovPattern, TransformationsMoveThePatternInFileOrder) {
