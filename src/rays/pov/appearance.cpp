@@ -299,6 +299,7 @@ void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCom
 bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler& pigments,
                            const Appearance* base) {
     const Entry* patternAt = nullptr;
+    const Item* tiles = nullptr;  // tiles { texture {A} tile2 texture {B} }: POV-Ray's old checker of textures
     for (const Entry& e : t.entries) {
         if (e.positional()) {
             for (const Value& v : e.args)
@@ -306,6 +307,10 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
             continue;
         }
         if (e.key != kMapEntry && isPatternKeyword(e.kw())) patternAt = &e;
+        if (e.key != kMapEntry && e.kw() == Kw::tiles && !e.args.empty() && e.args[0].type == VType::Item) {
+            patternAt = &e;
+            tiles = &e.args[0].item();
+        }
     }
     if (!patternAt) return false;
     std::vector<PigmentCompiler::Placed> entries;
@@ -335,13 +340,32 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
             else
                 for (const Entry& r : row.entries) addTexture(r.args[0].item(), 0);
         }
+        if (e.kw() == Kw::tiles && tiles) {
+            // The textures before tile2 make the first tile (layered when several), those after
+            // the second; the block's transformations move them with the checker.
+            std::vector<const Item*> parts[2];
+            int part = 0;
+            for (const Entry& te : tiles->entries) {
+                if (te.positional() || te.key == kMapEntry) continue;
+                if (te.kw() == Kw::tile2) part = 1;
+                if (te.kw() == Kw::texture) parts[part].push_back(&te.args[0].item());
+            }
+            for (const auto& textures : parts) {
+                if (textures.empty()) continue;
+                addTexture(*textures[0], 0);
+                for (size_t i = 1; i < textures.size(); ++i) applyLayer(*textures[i], looks.back(), notes, &pigments, base);
+                for (const Entry& te : tiles->entries)
+                    if (!te.positional() && te.key != kMapEntry && isTransformEntry(te)) moveLook(looks.back(), te);
+                entries.back() = {looks.back().pigmentNode, looks.back().pigment, looks.back().pigmentToObject};
+            }
+        }
         if (e.kw() == Kw::texture_map)
             for (const Entry& me : e.args[0].item().entries)
                 if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item)
                     // An average's entries may leave their weight out: 1 (as in pigment maps).
                     addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 1 : toFloat(me.args[0]));
     }
-    const int node = pigments.patternedTexture(t, entries, values);
+    const int node = tiles ? pigments.tilesTexture(t, *tiles, entries) : pigments.patternedTexture(t, entries, values);
     if (node < 0) return false;
     // The texture's transformations move its textures with the pattern.
     for (const Entry& e : t.entries)
@@ -410,7 +434,7 @@ void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompi
                     }
                 break;
             case Kw::material_map: notes.note("material_map", e.loc); break;
-            case Kw::tiles: notes.note("tiles", e.loc); break;
+            case Kw::tiles: notes.note("tiles", e.loc, "(not two textures: drawn with the first)"); break;
             default:
                 if (isPatternKeyword(e.kw())) notes.note("texture pattern", e.loc);
                 break;

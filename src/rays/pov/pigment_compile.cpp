@@ -482,6 +482,19 @@ int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Pla
     return emit(s);
 }
 
+int PigmentCompiler::tilesTexture(const Item& texture, const Item& tiles, const std::vector<Placed>& entries) {
+    if (entries.size() != 2) return -1;
+    State s;
+    s.what = "texture";
+    for (const Item* block : {&tiles, &texture})
+        for (const Entry& e : block->entries)
+            if (!e.positional() && e.key != kMapEntry && isTransformEntry(e)) readEntry(e, s, 0);
+    s.node.kind = PatternKind::Checker;
+    s.pattern = true;
+    for (const Placed& p : entries) s.list.push_back(MapEntry{0, {}, placed(p)});
+    return emit(s);
+}
+
 int PigmentCompiler::normalPattern(const Item& normal) {
     State s;
     s.what = "normal";
