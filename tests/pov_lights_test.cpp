@@ -385,11 +385,14 @@ TEST(PovLooksLike, TheObjectSitsAtTheLightAndCastsNoShadow) {
     expectColor(seen(l.scene, -0.3125, 0.3125), Vec3(0.75424));  // pixel (1,1)
 }
 
-TEST(PovLights, UnrenderedLightOptionsKeepTheirNotes) {
-    const Loaded l = load("#declare P = sphere { 0, 1 }\n" + kFloor +
+TEST(PovLights, ProjectedThroughLightsOnlyWhereTheWayCrossesTheObject) {
+    // The light reaches the floor only through the declared sphere (which is not drawn itself).
+    const Loaded l = load("#declare P = sphere { <0,0,-0.5>, 0.1 }\n" + kFloor +
                           "light_source { <0,0,-1>, rgb 1 projected_through { P } }\n");
-    ASSERT_EQ(l.warnings.size(), 1u);
-    EXPECT_EQ(l.warnings[0], "scene.pov:5:32: warning: not rendered yet: projected_through");
+    EXPECT_TRUE(l.warnings.empty()) << l.warnings[0];
+    EXPECT_EQ(l.scene.objects.size(), 1u);
+    EXPECT_NEAR(seen(l.scene, 0.05, 0.05).x, 0.99, 0.02);  // lit: cos of a small angle
+    EXPECT_EQ(seen(l.scene, 0.5, 0.5).x, 0.0);              // its way misses the sphere
 }
 
 }  // namespace

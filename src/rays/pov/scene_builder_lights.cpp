@@ -46,6 +46,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
     double radius = -1, falloff = -1;  // the light type's default unless set
     bool radiusSet = false, falloffSet = false;
     const Item* looksLike = nullptr;
+    const Item* projector = nullptr;
     for (const Entry& e : item.entries) {
         if (e.positional()) continue;
         if (isTransformEntry(e)) {
@@ -80,7 +81,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             case Kw::fade_distance: l.fadeDistance = std::max(0.0, toFloat(e.args[0])); break;
             case Kw::fade_power: l.fadePower = toFloat(e.args[0]); break;
             case Kw::looks_like: looksLike = lookedLikeObject(e); break;
-            case Kw::projected_through: notes_.note("projected_through", e.loc); break;
+            case Kw::projected_through: projector = lookedLikeObject(e); break;
             default: break;
         }
     }
@@ -125,6 +126,18 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
     }
     if (l.area && (length(cross(l.axis1, l.axis2)) == 0)) l.area = false;
     scene_.lights.push_back(l);
+    // projected_through (POV-Ray 3.7 reference, "Projected Through": the light is cast only
+    // through the object): the object, moved by the light's transformations, is built aside in
+    // Scene::projectors; it is neither drawn nor casts shadows itself.
+    if (projector) {
+        const size_t before = scene_.objects.size();
+        addObject(*projector, world, nullptr, 0);
+        Light& added = scene_.lights.back();
+        added.projectorBegin = int(scene_.projectors.size());
+        for (size_t i = before; i < scene_.objects.size(); ++i) scene_.projectors.push_back(std::move(scene_.objects[i]));
+        scene_.objects.erase(scene_.objects.begin() + std::ptrdiff_t(before), scene_.objects.end());
+        added.projectorCount = int(scene_.projectors.size()) - added.projectorBegin;
+    }
     // looks_like: the object, moved to the light's place, is seen but casts no shadow (the manual).
     if (looksLike) {
         const bool saved = noShadow_;

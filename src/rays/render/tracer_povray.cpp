@@ -253,12 +253,28 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
     return blocked;
 }
 
+// projected_through: whether the way from P to the light (its centre) crosses one of the light's
+// objects (nothing else is looked at: the objects of the scene block it as shadow rays find).
+bool Tracer::povThroughProjector(const Light& light, Vec3 P) const {
+    const Vec3 toLight = light.parallel ? -light.direction : light.position - P;
+    const double dist = length(toLight);
+    if (dist == 0) return false;
+    const Ray ray{P, toLight / dist};
+    const double tMax = light.parallel ? kInfinity : dist;
+    for (int i = 0; i < light.projectorCount; ++i) {
+        ShapeHit hit;
+        if (intersect(scene_.projectors[size_t(light.projectorBegin + i)], ray, kTMin, tMax, hit)) return true;
+    }
+    return false;
+}
+
 Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
                               bool intoSurface, TraceContext& ctx, bool centreOnly) const {
     // Spotlights, cylindrical lights and fading dim the light before anything blocks it.
     Vec3 color = light.color;
     if (light.spot != Light::Spot::None) color *= povSpotFactor(light, P - light.position);
     if (light.fadeDistance > 0) color *= povLightFade(light, length(P - light.position));
+    if (light.projectorCount > 0 && !povThroughProjector(light, P)) return {};
     if (light.shadowless || color == Vec3{}) return color;
     const Vec3 origin = P + kSurfaceOffset * Nl;
     if (light.parallel) {
