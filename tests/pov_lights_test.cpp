@@ -373,6 +373,26 @@ TEST(PovIrid, FilmInterferenceTintsTheLightByThicknessAndAngle) {
     EXPECT_GT(hi - lo, 0.5);
 }
 
+TEST(PovRainbow, ColoursByTheAngleToItsDirectionMixedAsAFog) {
+    // The ray along +z sits 30° from the direction: index (30 − (30 − 10))/20 = 0.5 of the map
+    // (measured with povray 3.7: the index as the manual says, the fog's mixing).
+    auto seenThrough = [](const std::string& rainbow) {
+        const Loaded l = load("background { rgb <0.2, 0.4, 0.6> }\nrainbow { angle 30 width 20 " + rainbow + " }\n");
+        EXPECT_TRUE(l.warnings.empty()) << l.warnings[0];
+        return seen(l.scene, 0, 0);
+    };
+    const std::string below = "direction <0, -0.5, 0.8660254> ";
+    const std::string map = "color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] }";
+    expectColor(seenThrough(below + map), {0.5, 0, 0.5}, 1e-6);
+    expectColor(seenThrough(below + "color_map { [0 rgbt <1, 0.5, 0, 0.5>] [1 rgbt <1, 0.5, 0, 0.5>] }"), {0.6, 0.45, 0.3}, 1e-6);
+    expectColor(seenThrough(below + "color_map { [0 rgbf <1, 0.5, 0, 1>] [1 rgbf <1, 0.5, 0, 1>] }"), {1, 0.5, 0}, 1e-6);
+    // Outside the band: the background.
+    expectColor(seenThrough("direction <0, -0.8, 0.6> " + map), {0.2, 0.4, 0.6}, 1e-9);
+    // arc_angle about up: this ray lies opposite up (φ = 180°) when the direction leans up.
+    expectColor(seenThrough("direction <0, 0.5, 0.8660254> arc_angle 120 " + map), {0.2, 0.4, 0.6}, 1e-9);
+    expectColor(seenThrough(below + "arc_angle 120 " + map), {0.5, 0, 0.5}, 1e-6);
+}
+
 TEST(PovLooksLike, TheObjectSitsAtTheLightAndCastsNoShadow) {
     // 8×8 render of a 1×1 view: pixel (6,3) at (.3125, .0625) sees the red sphere around the light
     // at (.5, 0, −1); pixel (5,3) at (.1875, .0625) the floor, lit unshadowed: .95280.

@@ -92,7 +92,7 @@ void SceneBuilder::add(const ParsedScene::Top& top) {
         }
         case Kw::sky_sphere: return addSkySphere(item);
         case Kw::fog: return addFog(item);
-        case Kw::rainbow: return notes_.note("rainbow", item.loc);
+        case Kw::rainbow: return addRainbow(item);
         case Kw::media: return notes_.note("atmospheric media", item.loc);
         default:
             if (isObjectKind(item.kind)) return addObject(item, Transform{}, nullptr, 0);

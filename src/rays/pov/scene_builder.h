@@ -78,6 +78,7 @@ private:
     };
     void globalSettings(const Item& g);
     void addFog(const Item& fog);
+    void addRainbow(const Item& rainbow);
     Material material(const Appearance& look);
     /// The scene's pigment root for a look with a pattern (its texture space completed to world
     /// space by SceneBuilder::addObject), or -1.

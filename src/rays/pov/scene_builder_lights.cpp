@@ -197,4 +197,43 @@ void SceneBuilder::addFog(const Item& item) {
     scene_.pov.fogs.push_back(f);
 }
 
+// POV-Ray 3.7 reference, "Rainbow": direction, angle, width, distance, colour map, jitter, up,
+// arc_angle, falloff_angle (render/pov_rainbow.h). A rainbow identifier's items come first.
+void SceneBuilder::addRainbow(const Item& item) {
+    PovRainbow r;
+    std::function<void(const Item&)> read = [&](const Item& it) {
+        for (const Entry& e : it.entries) {
+            if (e.positional()) {
+                for (const Value& v : e.args)
+                    if (v.type == VType::Item && v.item().kind == Kw::rainbow) read(v.item());
+                continue;
+            }
+            switch (e.kw()) {
+                case Kw::direction: r.direction = toVec3(e.args[0]); break;
+                case Kw::angle: r.angle = toFloat(e.args[0]); break;
+                case Kw::width: r.width = toFloat(e.args[0]); break;
+                case Kw::distance: r.distance = toFloat(e.args[0]); break;
+                case Kw::jitter: r.jitter = toFloat(e.args[0]); break;
+                case Kw::up: r.up = toVec3(e.args[0]); break;
+                case Kw::arc_angle: r.arcAngle = toFloat(e.args[0]); break;
+                case Kw::falloff_angle: r.falloffAngle = toFloat(e.args[0]); break;
+                case Kw::color_map: case Kw::colour_map:
+                    r.map.clear();
+                    for (const Entry& me : e.args[0].item().entries) {
+                        if (me.key != kMapEntry || me.args.size() < 2) continue;
+                        const double at = me.args[0].type == VType::Undefined ? 0 : toFloat(me.args[0]);
+                        const Rgbft c = toColor(me.args[1]);
+                        r.map.push_back({at, {c.rgb, c.filter, c.transmit}, -1});
+                    }
+                    break;
+                default: break;
+            }
+        }
+    };
+    read(item);
+    if (length(r.direction) == 0 || r.map.empty() || r.distance <= 0) return;
+    r.direction = normalize(r.direction);
+    scene_.pov.rainbows.push_back(std::move(r));
+}
+
 }  // namespace rays::pov

@@ -10,6 +10,7 @@
 #include "rays/render/pov_lighting.h"
 #include "rays/render/pov_normal.h"
 #include "rays/render/pov_pigment.h"
+#include "rays/render/pov_rainbow.h"
 #include "rays/render/pov_texture.h"
 #include "rays/render/texturing.h"
 #include "rays/util/stack_room.h"
@@ -93,9 +94,12 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
         if (povFades(in)) fade = povFade(in, hit.t);
     }
     const Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : povSky(scene_, ray.dir));
-    // Fog fills the space outside objects (measured: on every ray, reflected ones included).
-    if (scene_.pov.fogs.empty() || r.interior >= 0) return seen;
-    return povFog(scene_.pov.fogs, seen, ray, hit.t);
+    // Fog fills the space outside objects (measured: on every ray, reflected ones included), and
+    // rainbows lie in it as fogs do.
+    if ((scene_.pov.fogs.empty() && scene_.pov.rainbows.empty()) || r.interior >= 0) return seen;
+    const Vec3 bowed =
+        scene_.pov.rainbows.empty() ? seen : povRainbows(scene_.pov.rainbows, seen, ray, hit.t, ctx.rng.next());
+    return scene_.pov.fogs.empty() ? bowed : povFog(scene_.pov.fogs, bowed, ray, hit.t);
 }
 
 Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object& o, const PovRay& r, Vec3 segmentFade) const {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rays/math/vec3.h"
+#include "rays/pattern/color_map.h"
 #include "rays/pattern/noise.h"
 #include "rays/scene/pov_radiosity.h"
 
@@ -83,6 +84,18 @@ struct PovFog {
     double turbDepth = 0.5;          ///< where along the segment the turbulence is read (0 eye, 1 hit)
 };
 
+/// A rainbow (POV-Ray 3.7 reference, "Rainbow"): a fog-like arc of colours by the angle between
+/// the ray and `direction` (render/pov_rainbow.h).
+struct PovRainbow {
+    Vec3 direction{0, 0, 1};  ///< unit
+    double angle = 0, width = 0;
+    double distance = 1e7;  ///< as a fog's
+    double jitter = 0;
+    Vec3 up{0, 1, 0};
+    double arcAngle = 360, falloffAngle = 360;  ///< degrees (measured: the full circle by default)
+    std::vector<pattern::MapEntry> map;         ///< colours (flat entries)
+};
+
 /// Scene-wide settings of POV-Ray scenes (global_settings, background).
 struct PovGlobals {
     bool enabled = false;            ///< the scene follows POV-Ray's rules (objects use PovSurface)
@@ -100,6 +113,7 @@ struct PovGlobals {
     /// measured (<0.70, 0.52, 0.48>; the manual still gives 3.6's <0.25, 0.18, 0.14>).
     Vec3 iridWavelength{0.70, 0.52, 0.48};
     std::vector<PovFog> fogs;  ///< applied together to every ray outside objects
+    std::vector<PovRainbow> rainbows;  ///< applied, before the fogs, to every ray outside objects
     /// sky_sphere: its pigments, bottom layer first, as roots [skyFirst, skyFirst + skyCount) of
     /// Scene::pigments looked up by ray direction; none: the background colour.
     int skyFirst = -1, skyCount = 0;
