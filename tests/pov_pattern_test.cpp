@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
@@ -252,6 +254,22 @@ TEST(PovPattern, PatternedTexturesDrawTheirTexturesPigments) {
     EXPECT_NEAR(length(t.atRoot(s1.pigment, {0.1, 0, 0}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
 }
 
+TEST(PovPattern, TilesAreACheckerOfTwoTextures) {
+    // POV-Ray's old `tiles { texture {A} tile2 texture {B} }` (as `checker texture {A} texture {B}`);
+    // the block's transformations move the checker, then the texture's.
+    const Built b = build("sphere { 0, 1 texture { tiles { texture { pigment { rgb <1, 0, 0> } finish { ambient 0.7 } }\n"
+                          "  tile2 texture { pigment { rgb <0, 0, 1> } } scale 2 } translate x } }");
+    EXPECT_TRUE(b.warnings.empty()) << b.warnings[0];
+    const pattern::PigmentTable& t = b.scene.pigments;
+    const PovSurface& s = b.scene.povSurfaces.at(size_t(b.scene.objects[0].material.pov));
+    ASSERT_GE(s.pigment, 0);
+    EXPECT_NEAR(length(t.atRoot(s.pigment, {1.5, 0.5, 0.5}).rgb - Vec3{1, 0, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s.pigment, {3.5, 0.5, 0.5}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s.pigment, {0.5, 0.5, 0.5}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_DOUBLE_EQ(s.finish.ambient.x, 0.7);  // the first texture's finish
+    EXPECT_GE(s.texture, 0);  // each tile lit with its own texture
+}
+
 TEST(PovPattern, WarpsApplyInFileOrderWithTheTransformations) {
     // Values printed by POV-Ray 3.7.
     expectValues("gradient y warp { repeat 2*x offset <0, 0.25, 0> flip x }",
@@ -264,9 +282,84 @@ TEST(PovPattern, WarpsApplyInFileOrderWithTheTransformations) {
     int moved = 0;
     for (int i = 0; i < 20; ++i) moved += std::fabs(turb.at({0.5, 0.37 * i, 0.11 * i}).rgb.x - 0.5) > 1e-3;
     EXPECT_GT(moved, 15);
-    const Probe hole = pigment("gradient x warp { black_hole <0, 0, 0>, 1 }");
-    ASSERT_EQ(hole.b.warnings.size(), 1u);
-    EXPECT_NE(hole.b.warnings[0].find("warp black_hole"), std::string::npos);
+    const Probe torus = pigment("gradient x warp { toroidal }");
+    ASSERT_EQ(torus.b.warnings.size(), 1u);
+    EXPECT_NE(torus.b.warnings[0].find("warp toroidal"), std::string::npos);
+}
+
+// The x, y, z of the point a warp hands its pattern, through `function { 0.5 + 0.01·v }`; values
+// printed by POV-Ray 3.7 (pattern functions of the same pigments).
+void expectWarped(const std::string& warp, Vec3 p, Vec3 want) {
+    const char* axes[] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i)
+        expectValues(std::string("function { 0.5 + 0.01*") + axes[i] + " } warp { " + warp + " }",
+                     {{p, 0.5 + 0.01 * want[i]}}, 1e-7);
+}
+
+TEST(PovPattern, MappingWarpsMatchPovRay) {
+    expectWarped("planar", {0.3, 0.2, 0.1}, {0.3, 0.2, 0});
+    expectWarped("planar y, 2", {1.3, 0.5, -0.4}, {1.3, -2, 0.5});
+    expectWarped("planar x, 0", {-0.7, 0.25, 0.6}, {0, 0.25, 0.7});
+    expectWarped("planar <1,2,3>, 1", {0.3, 0.2, 0.1}, {0.66815, -0.32071, 0.82851});
+    expectWarped("planar <1,1,0>, 0", {-0.7, 0.25, 0.6}, {-0.49497, 0.17678, 0.67175});
+    expectWarped("cylindrical", {1.3, 0.5, -0.4}, {0.95249, 0.5, 1.36015});
+    expectWarped("cylindrical", {0, 0, -2}, {0.75, 0, 2});
+    expectWarped("cylindrical dist_exp 2", {-0.7, 0.25, 0.6}, {0.32914, 0.25, 0.92195});
+    expectWarped("cylindrical orientation y", {0.3, 0.2, 0.1}, {0.05121, -0.31623, 0.2});
+    expectWarped("cylindrical orientation <0,1,1>", {1.3, 0.5, -0.4}, {1.34703, -0.60822, 1.31532});
+    expectWarped("cylindrical orientation -x", {-0.7, 0.25, 0.6}, {-0.92195, -0.25, 0.38722});
+    expectWarped("spherical", {2, -1, 0.5}, {0.03899, 0.35624, 2.29129});
+    expectWarped("spherical dist_exp 1", {1.3, 0.5, -0.4}, {1.38029, 0.88706, 1.44914});
+}
+
+TEST(PovPattern, BlackHoleWarpMatchesPovRay) {
+    // Values printed by POV-Ray 3.7: pushed out by min(1, strength·(1 − d/R)^falloff).
+    expectWarped("black_hole <0,0,0>, 1", {0.3, 0.15, 0}, {0.432504, 0.216252, 0});
+    expectWarped("black_hole <0,0,0>, 1", {0.9, 0.45, 0}, {0.9, 0.45, 0});  // outside the radius
+    expectWarped("black_hole <0,0,0>, 1 inverse", {0.5, 0.25, 0}, {0.402767, 0.201383, 0});
+    expectWarped("black_hole <0,0,0>, 1 falloff 3 strength 0.5", {0.4, 0.2, 0}, {0.433783, 0.216892, 0});
+    expectWarped("black_hole <0.2,0,0>, 2 falloff 1 strength 2", {0.1, 0.05, 0}, {0, 0.1, 0});  // clamped at 1
+    expectWarped("black_hole <0,0,0>, 1 falloff 2 strength 2 inverse", {0.3, 0.15, 0}, {0.034992, 0.017496, 0});
+    // Repeated along x: the centres at R + 2n there (the location's x unused), its y kept.
+    expectWarped("black_hole <0.3,0.1,0>, 0.7 repeat <2,0,0>", {-1.5, 0.05, 0.1}, {-1.590498, 0.027376, 0.145249});
+    expectWarped("black_hole <0.3,0,0>, 0.4 repeat <2,0,0>", {2.3, 0.05, 0.1}, {2.260938, 0.069531, 0.139062});
+}
+
+TEST(PovPattern, PigmentPatternIsThePigmentsGrey) {
+    // Values printed by POV-Ray 3.7: 0.297·r + 0.589·g + 0.114·b, filter and transmit ignored.
+    expectValues("pigment_pattern { rgb <1, 0, 0> }", {{{0, 0, 0}, 0.297}});
+    expectValues("pigment_pattern { rgb <0, 1, 0> }", {{{0, 0, 0}, 0.589}});
+    expectValues("pigment_pattern { rgb <0, 0, 1> }", {{{0, 0, 0}, 0.114}});
+    expectValues("pigment_pattern { rgbft <0.5, 0.5, 0.5, 0.5, 0.3> }", {{{0, 0, 0}, 0.5}});
+    expectValues("pigment_pattern { gradient x color_map { [0 rgb 0] [1 rgb 1] } }",
+                 {{{0.3, 0, 0}, 0.3}, {{0.75, 2, 1}, 0.75}});
+    expectValues("pigment_pattern { gradient x color_map { [0 rgb 0] [1 rgb 1] } scale 2 } scale 0.5",
+                 {{{0.3, 0, 0}, 0.3}});
+    // As a normal it tilts the surface by the grey's gradient.
+    const test::PovLoaded n = test::loadPov(
+        "sphere { 0, 1 normal { pigment_pattern { gradient x color_map { [0 rgb 0] [1 rgb 1] } } 1 } }");
+    EXPECT_TRUE(n.warnings.empty());
+    const PovSurface& s = n.scene.povSurfaces.at(size_t(n.scene.objects.at(0).material.pov));
+    ASSERT_GE(s.normal, 0);
+    const Vec3 tilted = n.scene.normals.atRoot(n.scene.pigments, s.normal, {0.3, 0.5, -0.8}, {0, 0, -1});
+    EXPECT_GT(std::fabs(tilted.x), 0.05);
+}
+
+TEST(PovPattern, VturbulenceGivesTheTurbulenceDisplacement) {
+    // vturbulence(lambda, omega, octaves, P): the vector Rays' turbulence moves P by at amount 1.
+    pattern::Turbulence t;
+    t.amount = {1, 1, 1};
+    t.lambda = 2.5, t.omega = 0.4, t.octaves = 3;
+    const Vec3 want = pattern::turbulenceVector({0.3, 0.2, 0.1}, t);
+    ASSERT_GT(length(want), 1e-3);
+    char check[256];
+    std::snprintf(check, sizeof check, "#if (vlength(V - <%.17g, %.17g, %.17g>) > 1e-12) #error \"differs\" #end\n",
+                  want.x, want.y, want.z);
+    std::vector<std::string> warnings;
+    EXPECT_NO_THROW(test::buildPov(std::string("#declare V = vturbulence(2.5, 0.4, 3, <0.3, 0.2, 0.1>);\n") + check +
+                                       "sphere { 0, 1 }",
+                                   &warnings));
+    EXPECT_TRUE(warnings.empty());
 }
 
 TEST(PovPattern, TransformationsMoveThePatternInFileOrder) {

@@ -31,6 +31,16 @@ Vec3 turbulenceVector(Vec3 p, const Turbulence& t) {
     return sum;
 }
 
+double turbulenceSum(Vec3 p, const Turbulence& t) {
+    double sum = 0, amp = 1, freq = 1;
+    for (int i = 0; i < t.octaves; ++i) {
+        sum += amp * noise(p * freq);
+        amp *= t.omega;
+        freq *= t.lambda;
+    }
+    return sum;
+}
+
 double turbulenceScalar(Vec3 p, int octaves, double omega, double lambda) {
     double sum = 0, amp = 1, freq = 1;
     for (int i = 0; i < octaves; ++i) {

@@ -24,6 +24,9 @@ Vec3 vectorNoise(Vec3 p);
 Vec3 turbulenceVector(Vec3 p, const Turbulence& t);
 /// Σ omega^i · |2·noise(p · lambda^i) − 1|: the scalar turbulence of marble, agate and granite-like sums.
 double turbulenceScalar(Vec3 p, int octaves, double omega, double lambda);
+/// Σ omega^i · noise(p · lambda^i) over the octaves (each term in [0, 1]): the scalar turbulence fog
+/// reads (measured with POV-Ray 3.7: its mean grows as Σ omega^i / 2, about 1 for the defaults).
+double turbulenceSum(Vec3 p, const Turbulence& t);
 /// p displaced by the turbulence: p + amount ⊙ turbulenceVector(p).
 inline Vec3 turbulent(Vec3 p, const Turbulence& t) {
     const Vec3 d = turbulenceVector(p, t);

@@ -44,9 +44,9 @@ Vec3 patternPoint(const PigmentTable& patterns, const PigmentNode& pn, Vec3 p) {
 }
 
 // The pattern's value at q (pattern space): a block pattern's index, else the value after the wave.
-double rawValue(const PigmentNode& pn, Vec3 q) {
+double rawValue(const PigmentTable& patterns, const PigmentNode& pn, Vec3 q) {
     if (isBlockPattern(pn.kind)) return blockIndex(pn.kind, pn.params, q);
-    return applyWave(pn.wave, patternValue(pn.kind, pn.params, q));
+    return applyWave(pn.wave, patterns.rawValue(pn, q));
 }
 
 // The slope map's cubic (Hermite) curve through the entries' heights with their slopes, the slopes
@@ -113,7 +113,7 @@ double NormalTable::height(const PigmentTable& patterns, const NormalNode& node,
         if (pn.params.turbulence.on()) q = turbulent(q, pn.params.turbulence);
         return specialHeight(node.kind, pn, q);
     }
-    return slopeHeight(slopes.data() + node.slopeBegin, node.slopeCount, rawValue(pn, q));
+    return slopeHeight(slopes.data() + node.slopeBegin, node.slopeCount, rawValue(patterns, pn, q));
 }
 
 Vec3 NormalTable::perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 normal) const {
@@ -160,7 +160,7 @@ Vec3 NormalTable::perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 norm
             for (int i = 0; i < node.mapCount; ++i) out += map[i].value * entry(i);
         } else {
             // The map's two entries about the value, blended (the first wins at a shared value).
-            const double v = rawValue(pn, q);
+            const double v = rawValue(patterns, pn, q);
             int hi = 0;
             while (hi < node.mapCount && map[hi].value <= v) ++hi;
             if (hi == 0) out = entry(0);

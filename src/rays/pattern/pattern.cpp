@@ -185,7 +185,7 @@ int blockIndex(PatternKind kind, const PatternParams& params, Vec3 p) {
     }
 }
 
-double patternValue(PatternKind kind, const PatternParams& params, Vec3 p) {
+double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 N) {
     const Turbulence& t = params.turbulence;
     // marble and agate add scalar turbulence to their value instead of moving the point (the
     // manual: old-style turbulence "is handled slightly differently" for them).
@@ -226,6 +226,7 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p) {
         case PatternKind::Mandel: return escapeTime(params, p.x, p.y, p.x, p.y);
         case PatternKind::Julia: return escapeTime(params, p.x, p.y, params.juliaR, params.juliaI);
         case PatternKind::Spiral1: return spiral1(params.arms, p);
+        case PatternKind::Slope: return slopeValue(params.slope, p, N);
         case PatternKind::Function: {
             // Wrapped above 1 like gradient (measured: 1.2 gives 0.2 under triangle_wave 0.4).
             const double v = params.function ? functionValue(*params.function, p) : 0;

@@ -7,6 +7,7 @@
 #include "rays/fn/program.h"
 #include "rays/math/vec3.h"
 #include "rays/pattern/noise.h"
+#include "rays/pattern/slope.h"
 
 namespace rays::pattern {
 
@@ -19,6 +20,8 @@ enum class PatternKind : uint8_t {
     Julia,     ///< a Julia set in the x-y plane: mandel's iteration with a fixed c, z starting at the point
     Spiral1,   ///< a spiral of N arms winding around z, one turn per unit along z
     Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
+    Slope,     ///< the surface normal's angle to a direction, and the altitude (pattern/slope.h)
+    PigmentPattern,  ///< a pigment's grey (PigmentTable::rawValue; PatternParams::source)
     Average,  ///< the weighted mean of a pigment_map's pigments
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
@@ -41,11 +44,15 @@ struct PatternParams {
     double arms = 1;                   ///< spiral1's number of arms
     int exterior = 1, interior = 0;    ///< mandel's colouring types (0..8, 0..6)
     double exteriorFactor = 1, interiorFactor = 1;
+    Slope slope;                       ///< Slope's direction, altitude and ranges
+    int source = -1;                   ///< PigmentPattern: the pigment's node in the same table
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
 };
 
 /// The value of a continuous pattern at p (pattern space), turbulence included, before the wave.
-double patternValue(PatternKind kind, const PatternParams& params, Vec3 p);
+/// N: the world normal facing the viewer at the surface point (only slope reads it; zero where
+/// there is no surface).
+double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 N = {});
 /// The list index (0, 1 or 2) of a block pattern at p, turbulence included.
 int blockIndex(PatternKind kind, const PatternParams& params, Vec3 p);
 

@@ -11,6 +11,8 @@ Vec3 applyWarp(const WarpStep& w, Vec3 p) {
     switch (w.kind) {
         case WarpStep::Kind::Transform: return w.toInner.point(p);
         case WarpStep::Kind::Turbulence: return turbulent(p, w.turbulence);
+        case WarpStep::Kind::Mapping: return applyMappingWarp(w.mapping, p);
+        case WarpStep::Kind::BlackHole: return applyBlackHole(w.hole, p);
         case WarpStep::Kind::Repeat: {
             if (w.width == 0) return p;
             const double copy = std::floor(p[w.axis] / w.width);

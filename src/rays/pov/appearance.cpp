@@ -168,7 +168,21 @@ void applyFinish(const Item& f, PovFinish& fin, NotRendered& notes) {
             }
             case Kw::reflection_exponent: fin.reflectionExponent = arg(0); break;
             case Kw::conserve_energy: fin.conserveEnergy = true; break;
-            case Kw::irid: notes.note("irid", e.loc); break;
+            case Kw::irid: {  // irid { amount [thickness T] [turbulence U] }
+                const Value& v = e.args[0];
+                if (v.type != VType::Item) {
+                    fin.irid = toFloat(v);
+                    break;
+                }
+                std::vector<const Value*> pos = positionals(v.item());
+                if (!pos.empty()) fin.irid = toFloat(*pos[0]);
+                for (const Entry& ie : v.item().entries) {
+                    if (ie.positional() || ie.args.empty()) continue;
+                    if (ie.kw() == Kw::thickness) fin.iridThickness = toFloat(ie.args[0]);
+                    if (ie.kw() == Kw::turbulence) fin.iridTurbulence = toVec3(ie.args[0]).x;
+                }
+                break;
+            }
             case Kw::crand: fin.crand = std::max(0.0, arg(0)); break;
             case Kw::subsurface: notes.note("subsurface", e.loc); break;
             case Kw::fresnel: fin.reflectionFresnel = arg(0) != 0; break;
@@ -199,7 +213,7 @@ void applyInterior(const Item& i, InteriorLook& in, NotRendered& notes, PigmentC
                     in.media.push_back(std::move(m));
                 }
                 break;
-            case Kw::caustics: notes.note("caustics", e.loc); break;
+            case Kw::caustics: in.caustics = toFloat(e.args[0]); break;
             case Kw::dispersion: notes.note("dispersion", e.loc); break;
             default: break;
         }
@@ -292,6 +306,7 @@ void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCom
 bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler& pigments,
                            const Appearance* base) {
     const Entry* patternAt = nullptr;
+    const Item* tiles = nullptr;  // tiles { texture {A} tile2 texture {B} }: POV-Ray's old checker of textures
     for (const Entry& e : t.entries) {
         if (e.positional()) {
             for (const Value& v : e.args)
@@ -299,6 +314,10 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
             continue;
         }
         if (e.key != kMapEntry && isPatternKeyword(e.kw())) patternAt = &e;
+        if (e.key != kMapEntry && e.kw() == Kw::tiles && !e.args.empty() && e.args[0].type == VType::Item) {
+            patternAt = &e;
+            tiles = &e.args[0].item();
+        }
     }
     if (!patternAt) return false;
     std::vector<PigmentCompiler::Placed> entries;
@@ -328,13 +347,32 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
             else
                 for (const Entry& r : row.entries) addTexture(r.args[0].item(), 0);
         }
+        if (e.kw() == Kw::tiles && tiles) {
+            // The textures before tile2 make the first tile (layered when several), those after
+            // the second; the block's transformations move them with the checker.
+            std::vector<const Item*> parts[2];
+            int part = 0;
+            for (const Entry& te : tiles->entries) {
+                if (te.positional() || te.key == kMapEntry) continue;
+                if (te.kw() == Kw::tile2) part = 1;
+                if (te.kw() == Kw::texture) parts[part].push_back(&te.args[0].item());
+            }
+            for (const auto& textures : parts) {
+                if (textures.empty()) continue;
+                addTexture(*textures[0], 0);
+                for (size_t i = 1; i < textures.size(); ++i) applyLayer(*textures[i], looks.back(), notes, &pigments, base);
+                for (const Entry& te : tiles->entries)
+                    if (!te.positional() && te.key != kMapEntry && isTransformEntry(te)) moveLook(looks.back(), te);
+                entries.back() = {looks.back().pigmentNode, looks.back().pigment, looks.back().pigmentToObject};
+            }
+        }
         if (e.kw() == Kw::texture_map)
             for (const Entry& me : e.args[0].item().entries)
                 if (me.key == kMapEntry && me.args.size() > 1 && me.args[1].type == VType::Item)
                     // An average's entries may leave their weight out: 1 (as in pigment maps).
                     addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 1 : toFloat(me.args[0]));
     }
-    const int node = pigments.patternedTexture(t, entries, values);
+    const int node = tiles ? pigments.tilesTexture(t, *tiles, entries) : pigments.patternedTexture(t, entries, values);
     if (node < 0) return false;
     // The texture's transformations move its textures with the pattern.
     for (const Entry& e : t.entries)
@@ -403,7 +441,7 @@ void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompi
                     }
                 break;
             case Kw::material_map: notes.note("material_map", e.loc); break;
-            case Kw::tiles: notes.note("tiles", e.loc); break;
+            case Kw::tiles: notes.note("tiles", e.loc, "(not two textures: drawn with the first)"); break;
             default:
                 if (isPatternKeyword(e.kw())) notes.note("texture pattern", e.loc);
                 break;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "rays/pattern/default_maps.h"
 #include "rays/pov/normal_compile.h"
@@ -46,6 +47,8 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::mandel: out = PatternKind::Mandel; return true;
         case Kw::julia: out = PatternKind::Julia; return true;
         case Kw::spiral1: out = PatternKind::Spiral1; return true;
+        case Kw::slope: out = PatternKind::Slope; return true;
+        case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
         default: return false;
     }
 }
@@ -58,6 +61,27 @@ bool callsPatternFunction(const fn::Program& p, int depth = 0) {
     for (const auto& c : p.callees)
         if (c && depth < 64 && callsPatternFunction(*c, depth + 1)) return true;
     return false;
+}
+
+// slope <Direction> (the old form) or slope { <Direction> [, Lo_slope, Hi_slope] [altitude
+// <Altitude> [, Lo_alt, Hi_alt]] } (POV-Ray 3.7 reference, "Slope").
+pattern::Slope readSlope(const Value& v) {
+    if (v.type != VType::Item) return pattern::makeSlope(toVec3(v), 0, 1, {}, 0, 1);
+    std::vector<const Value*> values;  // the direction and the slope range, in order
+    Vec3 altitude;
+    double range[4] = {0, 1, 0, 1};
+    for (const Entry& e : v.item().entries) {
+        if (e.positional()) {
+            for (const Value& a : e.args)
+                if (a.isNumeric()) values.push_back(&a);
+        } else if (e.kw() == Kw::altitude && !e.args.empty()) {
+            altitude = toVec3(e.args[0]);
+            if (e.args.size() >= 3) range[2] = toFloat(e.args[1]), range[3] = toFloat(e.args[2]);
+        }
+    }
+    const Vec3 direction = values.empty() ? Vec3{0, 1, 0} : toVec3(*values[0]);
+    if (values.size() >= 3) range[0] = toFloat(*values[1]), range[1] = toFloat(*values[2]);
+    return pattern::makeSlope(direction, range[0], range[1], altitude, range[2], range[3]);
 }
 
 pattern::Rgbft toPatternColor(const Value& v) {
@@ -216,7 +240,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
     PatternKind kind;
     const bool special = k == Kw::dents || k == Kw::ripples || k == Kw::waves;  // normal-only (bumps, wrinkles known)
-    if (patternKind(k, kind) || (s.normal && special)) {
+    // slope reads the surface normal: as a normal pattern it is not rendered (noted below).
+    const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope);
+    if (known || (s.normal && special)) {
         if (special) kind = PatternKind::Bozo;
         s.pattern = true;
         s.unrendered = false;
@@ -234,6 +260,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
             s.node.params.iterations = e.args.size() > 1 ? int(std::clamp(toFloat(e.args[1]), 0.0, 1e6)) : 0;
         }
         if (kind == PatternKind::Spiral1) s.node.params.arms = toFloat(e.args[0]);
+        if (kind == PatternKind::Slope) s.node.params.slope = readSlope(e.args[0]);
+        if (kind == PatternKind::PigmentPattern) s.node.params.source = nested(e.args[0].item(), depth);
         if (kind == PatternKind::Function) {
             const sdl::FunctionValue& f = e.args[0].fn();
             if (f.kind != sdl::FunctionValue::Kind::Float || !f.table || f.index < 0 ||
@@ -303,15 +331,27 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     }
 }
 
-// warp { turbulence ... } and warp { repeat ... }; the other warps are noted and left out.
+// warp { turbulence ... }, warp { repeat ... } and the mapping warps planar, cylindrical and
+// spherical (with orientation and dist_exp); the other warps are noted and left out.
 void PigmentCompiler::readWarp(const Item& warp, State& s) {
     pattern::WarpStep step;
     bool known = false;
+    auto mapping = [&](pattern::MappingKind kind) {
+        step.kind = pattern::WarpStep::Kind::Mapping;
+        step.mapping.kind = kind;
+        known = true;
+    };
+    Vec3 orientation{0, 0, 1};
     for (const Entry& e : warp.entries) {
         if (e.positional()) continue;
         const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
         switch (e.kw()) {
-            case Kw::turbulence:
+            case Kw::turbulence:  // a black hole's turbulence moves its holes at random: not reproduced
+                if (step.kind == pattern::WarpStep::Kind::BlackHole) {
+                    if (length(toVec3(e.args[0])) > 0)
+                        notes_.note("warp black_hole turbulence", e.loc, "(the holes stay on their lattice)");
+                    break;
+                }
                 step.kind = pattern::WarpStep::Kind::Turbulence;
                 step.turbulence.amount = toVec3(e.args[0]);
                 known = true;
@@ -320,6 +360,10 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
             case Kw::omega: step.turbulence.omega = num(0); break;
             case Kw::lambda: step.turbulence.lambda = num(0); break;
             case Kw::repeat: {
+                if (step.kind == pattern::WarpStep::Kind::BlackHole) {
+                    step.hole.repeat = toVec3(e.args[0]);
+                    break;
+                }
                 const Vec3 v = toVec3(e.args[0]);
                 step.kind = pattern::WarpStep::Kind::Repeat;
                 step.axis = v.x != 0 ? 0 : (v.y != 0 ? 1 : 2);
@@ -329,8 +373,25 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
             }
             case Kw::offset: step.offset = toVec3(e.args[0]); break;
             case Kw::flip: step.flip = toVec3(e.args[0]); break;
-            case Kw::black_hole: case Kw::cylindrical: case Kw::spherical: case Kw::toroidal: case Kw::planar:
-            case Kw::cubic:
+            case Kw::planar:  // planar [<normal>, distance]
+                mapping(pattern::MappingKind::Planar);
+                if (!e.args.empty()) orientation = toVec3(e.args[0]);
+                step.mapping.distance = num(1);
+                break;
+            case Kw::cylindrical: mapping(pattern::MappingKind::Cylindrical); break;
+            case Kw::spherical: mapping(pattern::MappingKind::Spherical); break;
+            case Kw::orientation: orientation = toVec3(e.args[0]); break;
+            case Kw::dist_exp: step.mapping.distExp = num(0); break;
+            case Kw::black_hole:  // black_hole <location>, radius
+                step.kind = pattern::WarpStep::Kind::BlackHole;
+                step.hole.center = toVec3(e.args[0]);
+                step.hole.radius = num(1);
+                known = true;
+                break;
+            case Kw::falloff: step.hole.falloff = num(0); break;
+            case Kw::strength: step.hole.strength = num(0); break;
+            case Kw::inverse: step.hole.inverse = true; break;
+            case Kw::toroidal: case Kw::cubic:
                 notes_.note(std::string("warp ") + std::string(sdl::keywordName(e.kw())), e.loc,
                             "(the pattern is drawn without it)");
                 return;
@@ -338,6 +399,8 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
         }
     }
     if (!known) return;
+    if (step.kind == pattern::WarpStep::Kind::Mapping)
+        step.mapping.orientation = length(orientation) > 0 ? normalize(orientation) : Vec3{0, 0, 1};
     s.steps.push_back(step);
     s.warped = true;
 }
@@ -433,6 +496,19 @@ int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Pla
         list.push_back(MapEntry{i < values.size() ? values[i] : 0.0, {}, placed(entries[i])});
     if (pattern::isBlockPattern(s.node.kind)) s.list = list;
     else s.map = list, s.mapSet = true;
+    return emit(s);
+}
+
+int PigmentCompiler::tilesTexture(const Item& texture, const Item& tiles, const std::vector<Placed>& entries) {
+    if (entries.size() != 2) return -1;
+    State s;
+    s.what = "texture";
+    for (const Item* block : {&tiles, &texture})
+        for (const Entry& e : block->entries)
+            if (!e.positional() && e.key != kMapEntry && isTransformEntry(e)) readEntry(e, s, 0);
+    s.node.kind = PatternKind::Checker;
+    s.pattern = true;
+    for (const Placed& p : entries) s.list.push_back(MapEntry{0, {}, placed(p)});
     return emit(s);
 }
 

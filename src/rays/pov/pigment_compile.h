@@ -52,6 +52,9 @@ public:
     /// a pigment: the texture's pattern and modifiers choosing among the textures' pigments
     /// (entries, at `values` in a map); -1 when the pattern is not rendered (noted).
     int patternedTexture(const Item& texture, const std::vector<Placed>& entries, const std::vector<double>& values);
+    /// `texture { tiles { texture {A} tile2 texture {B} } }`: a checker of the two (the tiles
+    /// block's transformations, then the texture's, move it); -1 when not two entries.
+    int tilesTexture(const Item& texture, const Item& tiles, const std::vector<Placed>& entries);
     /// The pattern of a normal item (its pattern type, modifiers, transformations, warps and wave;
     /// a base normal identifier first) as a node whose map is unused; bumps, dents, ripples, waves
     /// and wrinkles give a node of kind Bozo carrying their modifiers. -1 when the normal has no

@@ -1,8 +1,10 @@
 #include "rays/pov/pov_host.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rays/accel/bvh.h"
+#include "rays/pattern/noise.h"
 #include "rays/pov/grammar.h"
 #include "rays/pov/item_values.h"
 #include "rays/pov/pattern_function.h"
@@ -135,6 +137,21 @@ bool PovHost::extent(const sdl::ItemRef& object, double lo[3], double hi[3]) {
         lo[i] = unbounded ? -kHuge : all.lo[i];
         hi[i] = unbounded ? kHuge : all.hi[i];
     }
+    return true;
+}
+
+// vturbulence (POV-Ray 3.7 reference, "Vector Functions": the turbulence vector at a point for
+// the given lambda, omega and octaves): the displacement Rays' own turbulence applies at amount 1
+// (pattern/noise: the sum of the octaves' vector noise), so the vectors match Rays' patterns, not
+// POV-Ray's noise.
+bool PovHost::turbulence(const double p[3], double lambda, double omega, int octaves, double out[3]) {
+    pattern::Turbulence t;
+    t.amount = {1, 1, 1};
+    t.lambda = lambda;
+    t.omega = omega;
+    t.octaves = std::clamp(octaves, 1, 10);
+    const Vec3 v = pattern::turbulenceVector({p[0], p[1], p[2]}, t);
+    out[0] = v.x, out[1] = v.y, out[2] = v.z;
     return true;
 }
 

@@ -40,6 +40,7 @@ public:
     bool extent(const sdl::ItemRef& object, double lo[3], double hi[3]) override;
     std::array<double, 12> transformMatrix(const sdl::Item& transform) override;
     fn::HostFunction patternFunction(const sdl::Item& item, bool pigment) override;
+    bool turbulence(const double p[3], double lambda, double omega, int octaves, double out[3]) override;
     /// How the objects built for trace() and the extents find files (text's fonts).
     void setFileFinder(std::function<std::string(const std::string&)> find) { findFile_ = std::move(find); }
     /// The fonts read while parsing, for the scene's builder to reuse.

@@ -99,7 +99,7 @@ void SceneBuilder::add(const ParsedScene::Top& top) {
         }
         case Kw::sky_sphere: return addSkySphere(item);
         case Kw::fog: return addFog(item);
-        case Kw::rainbow: return notes_.note("rainbow", item.loc);
+        case Kw::rainbow: return addRainbow(item);
         case Kw::media: return addAtmosphericMedia(item);
         default:
             if (isObjectKind(item.kind)) return addObject(item, Transform{}, nullptr, 0);
@@ -611,6 +611,7 @@ void SceneBuilder::globalSettings(const Item& g) {
             case Kw::ambient_light: scene_.pov.ambientLight = toColor(e.args[0]).rgb; break;
             case Kw::max_trace_level: scene_.pov.maxTraceLevel = clampedInt(toFloat(e.args[0]), 1, 256); break;
             case Kw::adc_bailout: scene_.pov.adcBailout = toFloat(e.args[0]); break;
+            case Kw::irid_wavelength: scene_.pov.iridWavelength = toColor(e.args[0]).rgb; break;
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
             case Kw::photons: notes_.note("photons", e.loc); break;
             case Kw::subsurface: notes_.note("subsurface", e.loc); break;

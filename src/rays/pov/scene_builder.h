@@ -91,6 +91,7 @@ private:
     /// The look's interior media appended to Scene::povMedia (the last entries reused when they
     /// are the same): in's media range.
     void placeInteriorMedia(const InteriorLook& look, PovInterior& in);
+    void addRainbow(const Item& rainbow);
     Material material(const Appearance& look);
     /// The scene's pigment root for a look with a pattern (its texture space completed to world
     /// space by SceneBuilder::addObject), or -1.

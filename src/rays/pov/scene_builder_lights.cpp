@@ -46,6 +46,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
     double radius = -1, falloff = -1;  // the light type's default unless set
     bool radiusSet = false, falloffSet = false;
     const Item* looksLike = nullptr;
+    const Item* projector = nullptr;
     for (const Entry& e : item.entries) {
         if (e.positional()) continue;
         if (isTransformEntry(e)) {
@@ -82,7 +83,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             case Kw::fade_distance: l.fadeDistance = std::max(0.0, toFloat(e.args[0])); break;
             case Kw::fade_power: l.fadePower = toFloat(e.args[0]); break;
             case Kw::looks_like: looksLike = lookedLikeObject(e); break;
-            case Kw::projected_through: notes_.note("projected_through", e.loc); break;
+            case Kw::projected_through: projector = lookedLikeObject(e); break;
             default: break;
         }
     }
@@ -128,6 +129,18 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
     if (l.area && (length(cross(l.axis1, l.axis2)) == 0)) l.area = false;
     if (inLightGroup_) l.mediaInteraction = false;
     scene_.lights.push_back(l);
+    // projected_through (POV-Ray 3.7 reference, "Projected Through": the light is cast only
+    // through the object): the object, moved by the light's transformations, is built aside in
+    // Scene::projectors; it is neither drawn nor casts shadows itself.
+    if (projector) {
+        const size_t before = scene_.objects.size();
+        addObject(*projector, world, nullptr, 0);
+        Light& added = scene_.lights.back();
+        added.projectorBegin = int(scene_.projectors.size());
+        for (size_t i = before; i < scene_.objects.size(); ++i) scene_.projectors.push_back(std::move(scene_.objects[i]));
+        scene_.objects.erase(scene_.objects.begin() + std::ptrdiff_t(before), scene_.objects.end());
+        added.projectorCount = int(scene_.projectors.size()) - added.projectorBegin;
+    }
     // looks_like: the object, moved to the light's place, is seen but casts no shadow (the manual).
     if (looksLike) {
         const bool saved = noShadow_;
@@ -140,11 +153,11 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
 // ---- atmosphere -----------------------------------------------------------------------------
 
 // POV-Ray 3.7 reference, "Fog": fog_type 1 (constant) and 2 (ground fog along up), distance and
-// the colour with filter and transmit; transformations turn up. A fog identifier's items come
-// first. distance 0 turns the fog off (the manual).
+// the colour with filter and transmit; transformations turn up; turbulence with turb_depth,
+// octaves, omega and lambda (render/pov_lighting.cpp). A fog identifier's items come first.
+// distance 0 turns the fog off (the manual).
 void SceneBuilder::addFog(const Item& item) {
     PovFog f;
-    bool turbulent = false;
     Transform m;
     std::function<void(const Item&)> read = [&](const Item& it) {
         for (const Entry& e : it.entries) {
@@ -171,17 +184,59 @@ void SceneBuilder::addFog(const Item& item) {
                 case Kw::fog_offset: f.offset = toFloat(e.args[0]); break;
                 case Kw::fog_alt: f.alt = toFloat(e.args[0]); break;
                 case Kw::up: f.up = toVec3(e.args[0]); break;
-                case Kw::turbulence: turbulent = turbulent || length(toVec3(e.args[0])) > 0; break;
-                default: break;  // turb_depth, omega, lambda, octaves: only with turbulence
+                case Kw::turbulence: f.turbulence.amount = toVec3(e.args[0]); break;
+                case Kw::turb_depth: f.turbDepth = toFloat(e.args[0]); break;
+                case Kw::octaves: f.turbulence.octaves = int(std::clamp(toFloat(e.args[0]), 1.0, 10.0)); break;
+                case Kw::omega: f.turbulence.omega = toFloat(e.args[0]); break;
+                case Kw::lambda: f.turbulence.lambda = toFloat(e.args[0]); break;
+                default: break;
             }
         }
     };
     read(item);
-    if (turbulent) notes_.note("fog turbulence", item.loc, "(the fog is drawn smooth)");
     f.up = m.vector(f.up);
     if (f.distance <= 0 || length(f.up) == 0) return;
     f.up = normalize(f.up);
     scene_.pov.fogs.push_back(f);
+}
+
+// POV-Ray 3.7 reference, "Rainbow": direction, angle, width, distance, colour map, jitter, up,
+// arc_angle, falloff_angle (render/pov_rainbow.h). A rainbow identifier's items come first.
+void SceneBuilder::addRainbow(const Item& item) {
+    PovRainbow r;
+    std::function<void(const Item&)> read = [&](const Item& it) {
+        for (const Entry& e : it.entries) {
+            if (e.positional()) {
+                for (const Value& v : e.args)
+                    if (v.type == VType::Item && v.item().kind == Kw::rainbow) read(v.item());
+                continue;
+            }
+            switch (e.kw()) {
+                case Kw::direction: r.direction = toVec3(e.args[0]); break;
+                case Kw::angle: r.angle = toFloat(e.args[0]); break;
+                case Kw::width: r.width = toFloat(e.args[0]); break;
+                case Kw::distance: r.distance = toFloat(e.args[0]); break;
+                case Kw::jitter: r.jitter = toFloat(e.args[0]); break;
+                case Kw::up: r.up = toVec3(e.args[0]); break;
+                case Kw::arc_angle: r.arcAngle = toFloat(e.args[0]); break;
+                case Kw::falloff_angle: r.falloffAngle = toFloat(e.args[0]); break;
+                case Kw::color_map: case Kw::colour_map:
+                    r.map.clear();
+                    for (const Entry& me : e.args[0].item().entries) {
+                        if (me.key != kMapEntry || me.args.size() < 2) continue;
+                        const double at = me.args[0].type == VType::Undefined ? 0 : toFloat(me.args[0]);
+                        const Rgbft c = toColor(me.args[1]);
+                        r.map.push_back({at, {c.rgb, c.filter, c.transmit}, -1});
+                    }
+                    break;
+                default: break;
+            }
+        }
+    };
+    read(item);
+    if (length(r.direction) == 0 || r.map.empty() || r.distance <= 0) return;
+    r.direction = normalize(r.direction);
+    scene_.pov.rainbows.push_back(std::move(r));
 }
 
 }  // namespace rays::pov

@@ -25,7 +25,7 @@ Vec3 albedoAt(const Scene& scene, const Hit& h, Vec3 P) {
     const bool pov = scene.pov.enabled;
     if (pov && o.material.pov >= 0 && size_t(o.material.pov) < scene.povSurfaces.size()) {
         const PovSurface& s = scene.povSurfaces[size_t(o.material.pov)];
-        if (s.pigment >= 0) C = povPigmentAt(scene, s, P).color;
+        if (s.pigment >= 0) C = povPigmentAt(scene, s, P, h.normal).color;  // slope: the outward normal
     }
     if (o.material.pigmentMap >= 0) {
         Vec3 N = h.normal;

@@ -56,6 +56,42 @@ double groundFogDepth(const PovFog& f, const Ray& ray, double t) {
     return (top - groundFogIntegral(f, h0)) / du;
 }
 
+// What a fog's turbulence leaves of the segment's optical depth (POV-Ray 3.7 reference, "Fog": the
+// turbulence is read at one point, turb_depth of the way from the ray's start to the hit, and only
+// the distance-based attenuation changes, not the fog's density). The rule as measured with
+// POV-Ray 3.7 on constant and ground fogs, pixel by pixel: the depth is multiplied by
+// 1 − c·exp(−t/distance), c = min(1, turb_depth·T), T the sum over the octaves of
+// omega^i·noise(lambda^i·(amount ⊙ P)) (mean about 1 for the default octaves, omega and lambda);
+// the same c for both fog types, the exponential always the constant fog's. Rays' noise is not
+// POV-Ray's, so the pattern is alike, not the same: T's spread about its mean (Σ omega^i / 2) is
+// widened 2.6 times to POV-Ray's (measured over an 80×60 view of a wall: POV-Ray's c from 0.33 to
+// 0.71 between its 10th and 90th percentiles at turb_depth 0.5, Rays' noise alone 0.42 to 0.57).
+constexpr double kFogTurbulenceSpread = 2.6;
+
+double fogTurbulenceFactor(const PovFog& f, const Ray& ray, double t) {
+    if (!f.turbulence.on() || !std::isfinite(t)) return 1.0;  // nothing hit: exp(−t/distance) is 0
+    const Vec3 P = ray.origin + (f.turbDepth * t) * ray.dir;
+    const Vec3 a = f.turbulence.amount;
+    double mean = 0, amp = 1;
+    for (int i = 0; i < f.turbulence.octaves; ++i, amp *= f.turbulence.omega) mean += 0.5 * amp;
+    const double T = pattern::turbulenceSum({P.x * a.x, P.y * a.y, P.z * a.z}, f.turbulence);
+    const double c = std::clamp(f.turbDepth * (mean + kFogTurbulenceSpread * (T - mean)), 0.0, 1.0);
+    return 1.0 - c * std::exp(-t / f.distance);
+}
+
+// The thickness' variation Y under irid's turbulence (measured: mean 1, from −0.8 to 2.8, 10th to
+// 90th percentile 0.18 to 1.72 over a plane): Rays' turbulence sum (POV-Ray's octaves, omega and
+// lambda are fixed and not documented; the defaults here) about its mean, widened 5 times to
+// POV-Ray's spread (the noise is not POV-Ray's: alike, not the same).
+constexpr double kIridSpread = 5.0;
+
+double iridThicknessVariation(Vec3 P) {
+    const pattern::Turbulence t;  // octaves 6, omega 0.5, lambda 2
+    double mean = 0, amp = 1;
+    for (int i = 0; i < t.octaves; ++i, amp *= t.omega) mean += 0.5 * amp;
+    return 1 + kIridSpread * (pattern::turbulenceSum(P, t) - mean) / mean;
+}
+
 // cosine^brilliance, without pow for the default brilliance 1.
 double brilliant(double cosine, double brilliance) { return brilliance == 1 ? cosine : std::pow(cosine, brilliance); }
 
@@ -161,10 +197,21 @@ double povLightFade(const Light& light, double distance) {
     return 2.0 / (1.0 + std::pow(distance / light.fadeDistance, light.fadePower));
 }
 
+Vec3 povIridTint(const PovFinish& f, Vec3 wavelength, Vec3 N, Vec3 L, Vec3 V, Vec3 P) {
+    if (f.irid == 0) return Vec3(1.0);
+    double t = f.iridThickness;
+    if (f.iridTurbulence != 0) t *= 1 + f.iridTurbulence * iridThicknessVariation(P);
+    const double path = 2 * std::numbers::pi * t * (dot(N, L) + dot(N, V));
+    Vec3 out;
+    for (int i = 0; i < 3; ++i)
+        out[i] = 1 + f.irid * (wavelength[i] != 0 ? std::cos(path / wavelength[i]) : 1.0);
+    return out;
+}
+
 Vec3 povFog(const std::vector<PovFog>& fogs, Vec3 behind, const Ray& ray, double t) {
     Vec3 keep(1.0), add;
     for (const PovFog& f : fogs) {
-        const double depth = f.ground ? groundFogDepth(f, ray, t) : t;
+        const double depth = (f.ground ? groundFogDepth(f, ray, t) : t) * fogTurbulenceFactor(f, ray, t);
         const double a = std::max(std::exp(-depth / f.distance), f.transmit);
         keep *= a * (Vec3(1.0 - f.filter) + f.filter * f.color);
         add += (1.0 - a) * f.color;

@@ -3,6 +3,7 @@
 // (docs/povray-lighting.md; the scenes are in tests/data/povray/shading). Pure functions: the
 // tracer (tracer_povray.cpp) finds the lights, rays and colours they combine.
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "rays/geometry/ray.h"
@@ -80,6 +81,25 @@ double povSpotFactor(const Light& light, Vec3 toPoint);
 /// Light fading at a distance from the light: 2/(1 + (distance/fade_distance)^fade_power), 1
 /// without fade_distance (the manual, "Light Fading"; measured).
 double povLightFade(const Light& light, double distance);
+
+/// POV-Ray's iridescence (POV-Ray 3.7 reference, "Iridescence": thin-film interference, a
+/// function of the angle between the light and the surface, `amount` its contribution, the
+/// film's `thickness`, varied by `turbulence`): the factor a light's colour is multiplied by at
+/// world point P for diffuse and highlights alike (ambient is not touched). Measured with povray
+/// 3.7 on a lit plane: per channel 1 + amount·cos(2π·t·(N·L + N·V)/λ), λ the irid_wavelength
+/// (N·L and N·V enter alike: turning the camera or the light gives the same colour), and the
+/// turbulence scales the thickness, t = thickness·(1 + turbulence·Y), Y turbulence noise of mean 1.
+Vec3 povIridTint(const PovFinish& f, Vec3 wavelength, Vec3 N, Vec3 L, Vec3 V, Vec3 P);
+
+/// POV-Ray's fake caustics (POV-Ray 3.7 reference, "Faked Caustics": the light reaching a point
+/// through a transparent object is brightened where the light ray runs nearly along the
+/// object's surface normal, less as the angle grows): the light is multiplied by
+/// 1 + |N·L|^(45·caustics) at each surface of the object the shadow ray crosses (measured with
+/// povray 3.7 through a tilted pane: ×4 along the normal, ×(1 + cos^45) per face at caustics 1,
+/// the exponent proportional to the power; filter and transmit as without caustics).
+inline double povCausticGain(double caustics, double cosine) {
+    return caustics > 0 ? 1 + std::pow(std::fabs(cosine), 45 * caustics) : 1.0;
+}
 
 /// The colour behind a ray segment from ray.origin to ray.at(t) (t may be infinite; ray.dir
 /// unit) seen through the fogs: each keeps a·(1 − filter + filter·color) of it and adds

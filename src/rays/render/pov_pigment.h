@@ -12,9 +12,10 @@ struct PovPigmentSample {
     double filter = 0, transmit = 0;
 };
 
-/// The pattern colour of surface s at world point P; s.pigment must be ≥ 0.
-inline PovPigmentSample povPigmentAt(const Scene& scene, const PovSurface& s, Vec3 P) {
-    const pattern::Rgbft c = scene.pigments.atRoot(s.pigment, P);
+/// The pattern colour of surface s at world point P, N the (perturbed) normal facing the viewer
+/// there (for the slope pattern); s.pigment must be ≥ 0.
+inline PovPigmentSample povPigmentAt(const Scene& scene, const PovSurface& s, Vec3 P, Vec3 N) {
+    const pattern::Rgbft c = scene.pigments.atRoot(s.pigment, P, N);
     return {c.rgb, std::clamp(c.filter, 0.0, 1.0), c.transmit};
 }
 

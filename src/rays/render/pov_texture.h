@@ -22,21 +22,23 @@ inline int povTextureSeen(const PovSurface& s, bool entering) {
 /// At most this many textures are blended at one point (more are left out).
 constexpr int kMaxTextureChoices = 8;
 
-/// The runs of layers texture node `node` shows at world point P, with weights summing to 1: one
+/// The runs of layers texture node `node` shows at world point P (N: the normal facing the viewer,
+/// for the slope pattern), with weights summing to 1: one
 /// for layers, the pattern's map entry or block entry, two between map entries (linearly: the
 /// manual blends the whole textures' colours), all of an average by the map's weights. Returns
 /// how many were written to out.
-int povTextureChoices(const Scene& scene, int node, Vec3 P, PovTextureChoice (&out)[kMaxTextureChoices]);
+int povTextureChoices(const Scene& scene, int node, Vec3 P, Vec3 N, PovTextureChoice (&out)[kMaxTextureChoices]);
 
-/// A layer's pigment at world point P (its pattern, or its flat colour).
-inline PovPigmentSample povLayerPigment(const Scene& scene, const PovLayer& l, Vec3 P) {
-    if (l.surface.pigment >= 0) return povPigmentAt(scene, l.surface, P);
+/// A layer's pigment at world point P, N the layer's normal facing the viewer (its pattern, or its
+/// flat colour).
+inline PovPigmentSample povLayerPigment(const Scene& scene, const PovLayer& l, Vec3 P, Vec3 N) {
+    if (l.surface.pigment >= 0) return povPigmentAt(scene, l.surface, P, N);
     return {l.color, l.filter, l.surface.transmit};
 }
 
 /// What texture node `node` lets through at P, per channel: the product over each run's layers of
 /// filter·C + transmit, the runs blended by their weights (measured: a shadow through a layered
 /// pane is tinted by both layers).
-Vec3 povTextureTint(const Scene& scene, int node, Vec3 P);
+Vec3 povTextureTint(const Scene& scene, int node, Vec3 P, Vec3 N);
 
 }  // namespace rays

@@ -325,6 +325,7 @@ private:
     /// visible share of an area light's samples; shadow rays leave P on side Nl, aimed at the light
     /// (each sample) from there. centreOnly: an area light as a point
     /// light at its centre (the points radiosity gathers from: measured, docs/povray-lighting.md).
+    bool povThroughProjector(const Light& light, Vec3 P) const;
     Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
                           TraceContext& ctx, bool centreOnly = false) const;
     /// 1 when nothing lies on the shadow ray before tMax, else what the objects on it let through.

@@ -38,7 +38,8 @@ Vec3 Tracer::shadePovTextured(const Ray& ray, const Hit& hit, const PovRay& r, V
                               PathInfo* info, int texture) const {
     const PovPoint pt = povPointOf(ray, hit, shadedObject(scene_.objects, hit), r, segmentFade);
     PovTextureChoice choices[kMaxTextureChoices];
-    const int n = povTextureChoices(scene_, texture, pt.P, choices);
+    // A texture pattern's slope reads the surface's own normal (the textures' normals come after).
+    const int n = povTextureChoices(scene_, texture, pt.P, pt.entering ? hit.normal : -hit.normal, choices);
     if (n == 1) return shadePovLayers(ray, hit, pt, choices[0].begin, choices[0].count, r, ctx, info);
     // Between two entries of a texture map both textures are shaded in full, reflection and
     // refraction included, and their colours blended (the manual, "Texture Maps"; measured).
@@ -67,10 +68,10 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
         const PovLayer& l = scene_.povTextures.layers[size_t(begin + i)];
         PovLayerAt& a = layers[n++];
         a.surface = &l.surface;
-        const PovPigmentSample c = povLayerPigment(scene_, l, pt.P);
-        a.C = c.color, a.filter = c.filter, a.transmit = c.transmit;
         const Vec3 N = l.surface.normal >= 0 ? povNormalAt(scene_, l.surface, pt.P, hit.normal) : hit.normal;
         a.N = pt.entering ? N : -N;  // faces the viewer
+        const PovPigmentSample c = povLayerPigment(scene_, l, pt.P, a.N);  // slope reads the tilted normal
+        a.C = c.color, a.filter = c.filter, a.transmit = c.transmit;
         if (i == 0 && (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0))
             applyMaps(scene_, o, pt.P, SurfaceUV{hit.hasUV, hit.u, hit.v, hit.dpdu}, a.C, a.N);
         a.opacity = povOpacity(a.C, a.filter, a.transmit, scene_.pov.version);
@@ -153,7 +154,8 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
         for (int k = 0; k < count; ++k) {
             const PovLayerAt& a = layers[k];
             if (!layerLit(*a.surface, a.opacity, dot(a.N, L))) continue;
-            const PovLightTerms t = povLightTerms(*a.surface, a.C, a.N, L, V, reach);
+            const Vec3 irid = povIridTint(a.surface->finish, scene_.pov.iridWavelength, a.N, L, V, pt.P);
+            const PovLightTerms t = povLightTerms(*a.surface, a.C, a.N, L, V, reach * irid);
             const double crand = a.surface->finish.crand;
             const double grain = crand != 0 ? 1 - crand * ctx.rng.next() : 1.0;
             Vec3 add = (a.opacity * grain) * t.diffuse;

@@ -10,6 +10,7 @@
 #include "rays/render/pov_lighting.h"
 #include "rays/render/pov_normal.h"
 #include "rays/render/pov_pigment.h"
+#include "rays/render/pov_rainbow.h"
 #include "rays/render/pov_texture.h"
 #include "rays/render/texturing.h"
 #include "rays/util/stack_room.h"
@@ -105,9 +106,12 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
     // Radiosity's gathering rays pass media by (radiosity's `media` is off by default; Rays does
     // not read it).
     if (povMedia_ && !r.gathering) seen = povMediaAlong(ray, hit.t, r, seen, ctx);
-    // Fog fills the space outside objects (measured: on every ray, reflected ones included).
-    if (scene_.pov.fogs.empty() || r.interior >= 0) return seen;
-    return povFog(scene_.pov.fogs, seen, ray, hit.t);
+    // Fog fills the space outside objects (measured: on every ray, reflected ones included), and
+    // rainbows lie in it as fogs do.
+    if ((scene_.pov.fogs.empty() && scene_.pov.rainbows.empty()) || r.interior >= 0) return seen;
+    const Vec3 bowed =
+        scene_.pov.rainbows.empty() ? seen : povRainbows(scene_.pov.rainbows, seen, ray, hit.t, ctx.rng.next());
+    return scene_.pov.fogs.empty() ? bowed : povFog(scene_.pov.fogs, bowed, ray, hit.t);
 }
 
 Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object& o, const PovRay& r, Vec3 segmentFade) const {
@@ -139,7 +143,7 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     pt.filter = o.material.filter;
     pt.transmit = pt.surface->transmit;
     if (pt.surface->pigment >= 0) {
-        const PovPigmentSample c = povPigmentAt(scene_, *pt.surface, pt.P);
+        const PovPigmentSample c = povPigmentAt(scene_, *pt.surface, pt.P, pt.N);
         pt.C = c.color, pt.filter = c.filter, pt.transmit = c.transmit;
     }
     if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0)
@@ -261,7 +265,7 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         if (countBlocked && maxComponent(arriving) < 0.5 * maxComponent(light.color)) ++blocked;
         const Vec3 reach = scale * arriving;
         if (!useful || reach == Vec3{}) continue;
-        const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach);
+        const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach * povIridTint(f, scene_.pov.iridWavelength, N, L, V, P));
         const double grain = f.crand != 0 ? 1 - f.crand * ctx.rng.next() : 1.0;  // crand
         color += (opacity * grain) * t.diffuse;
         // Shadowless lights make no highlights (the manual; measured), nor do points radiosity gathers from.
@@ -270,12 +274,28 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
     return blocked;
 }
 
+// projected_through: whether the way from P to the light (its centre) crosses one of the light's
+// objects (nothing else is looked at: the objects of the scene block it as shadow rays find).
+bool Tracer::povThroughProjector(const Light& light, Vec3 P) const {
+    const Vec3 toLight = light.parallel ? -light.direction : light.position - P;
+    const double dist = length(toLight);
+    if (dist == 0) return false;
+    const Ray ray{P, toLight / dist};
+    const double tMax = light.parallel ? kInfinity : dist;
+    for (int i = 0; i < light.projectorCount; ++i) {
+        ShapeHit hit;
+        if (intersect(scene_.projectors[size_t(light.projectorBegin + i)], ray, kTMin, tMax, hit)) return true;
+    }
+    return false;
+}
+
 Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
                               bool intoSurface, TraceContext& ctx, bool centreOnly) const {
     // Spotlights, cylindrical lights and fading dim the light before anything blocks it.
     Vec3 color = light.color;
     if (light.spot != Light::Spot::None) color *= povSpotFactor(light, P - light.position);
     if (light.fadeDistance > 0) color *= povLightFade(light, length(P - light.position));
+    if (light.projectorCount > 0 && !povThroughProjector(light, P)) return {};
     if (light.shadowless || color == Vec3{}) return color;
     const Vec3 origin = P + kSurfaceOffset * Nl;
     if (light.parallel) {
@@ -376,13 +396,15 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             continue;
         }
         if (!letsLightThrough(o.material, s)) return {};
+        // The normal facing where the shadow ray comes from (for the slope pattern).
+        const Vec3 facing = dot(shadow.dir, h.normal) < 0 ? h.normal : -h.normal;
         if (const int node = povTextureSeen(s, dot(shadow.dir, h.geomNormal) < 0); node >= 0) {
-            tint *= povTextureTint(scene_, node, shadow.at(h.t));  // a layered or patterned texture: each layer tints
+            tint *= povTextureTint(scene_, node, shadow.at(h.t), facing);  // a layered or patterned texture: each layer tints
         } else {
             Vec3 C = o.material.color;
             double filter = o.material.filter, transmit = s.transmit;
             if (s.pigment >= 0) {
-                const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t));
+                const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t), facing);
                 C = c.color, filter = c.filter, transmit = c.transmit;
             }
             if (o.material.pigmentMap >= 0) {
@@ -404,6 +426,10 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
                     }
                 throughMedia(s.interior, from, h.t);
             }
+        }
+        if (s.interior.caustics > 0) {  // the surface's normal as its normal pattern tilts it (measured)
+            const Vec3 N = s.normal >= 0 ? povNormalAt(scene_, s, shadow.at(h.t), h.normal) : h.normal;
+            tint *= povCausticGain(s.interior.caustics, dot(N, shadow.dir));
         }
         if (povFades(s.interior)) {
             if (dot(shadow.dir, h.geomNormal) < 0) {

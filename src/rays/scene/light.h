@@ -33,6 +33,9 @@ struct Light {
     Spot spot = Spot::None;
     double spotRadius = 0, spotFalloff = 0, tightness = 0;
     bool shadowless = false;  ///< no shadow rays (nothing blocks it) and no highlights
+    /// projected_through: Scene::projectors[projectorBegin, + projectorCount); the light reaches
+    /// only points whose way to it crosses one of them (none: everywhere).
+    int projectorBegin = 0, projectorCount = 0;
     double fadeDistance = 0;  ///< > 0: light fading 2/(1 + (d/fadeDistance)^fadePower)
     double fadePower = 0;
     bool mediaInteraction = true;   ///< lights scattering media (media_interaction)

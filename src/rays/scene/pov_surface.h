@@ -6,6 +6,8 @@
 
 #include "rays/math/vec3.h"
 #include "rays/scene/pov_media.h"
+#include "rays/pattern/color_map.h"
+#include "rays/pattern/noise.h"
 #include "rays/scene/pov_radiosity.h"
 
 namespace rays {
@@ -27,6 +29,9 @@ struct PovFinish {
     /// Graininess: each light's diffuse term times 1 − crand·U, U uniform in [0, 1) drawn per light
     /// and pixel sample (the manual, "Crand Graininess"; the distribution measured).
     double crand = 0;
+    /// irid { amount thickness T turbulence U }: thin-film interference tinting each light
+    /// (render/pov_lighting.h, povIridTint); amount 0: none.
+    double irid = 0, iridThickness = 0, iridTurbulence = 0;
 
     bool operator==(const PovFinish&) const = default;
 };
@@ -38,6 +43,7 @@ struct PovInterior {
     Vec3 fadeColor{0, 0, 0};
     /// The interior's media: entries [mediaFirst, mediaFirst + mediaCount) of Scene::povMedia.
     int mediaFirst = 0, mediaCount = 0;
+    double caustics = 0;        ///< fake caustics' power (0: none): render/pov_lighting.h, povCausticGain
 
     bool operator==(const PovInterior&) const = default;
 };
@@ -70,7 +76,7 @@ struct PovSurface {
 /// A ray segment of length d keeps a = max(exp(−D/distance), transmit) of the colour behind,
 /// filtered by 1 − filter + filter·color, and adds (1 − a)·color, where D is d (constant fog) or,
 /// for ground fog, the integral along the segment of the density 1 below offset and
-/// 1/(1 + ((h − offset)/alt)²) above it, h the height along up.
+/// 1/(1 + ((h − offset)/alt)²) above it, h the height along up. Turbulence thins D (povFog).
 struct PovFog {
     bool ground = false;  ///< fog_type 2
     double distance = 0;
@@ -78,6 +84,20 @@ struct PovFog {
     double filter = 0, transmit = 0;
     double offset = 0, alt = 0;
     Vec3 up{0, 1, 0};  ///< unit
+    pattern::Turbulence turbulence;  ///< turbulence (amount off: none), octaves, omega, lambda
+    double turbDepth = 0.5;          ///< where along the segment the turbulence is read (0 eye, 1 hit)
+};
+
+/// A rainbow (POV-Ray 3.7 reference, "Rainbow"): a fog-like arc of colours by the angle between
+/// the ray and `direction` (render/pov_rainbow.h).
+struct PovRainbow {
+    Vec3 direction{0, 0, 1};  ///< unit
+    double angle = 0, width = 0;
+    double distance = 1e7;  ///< as a fog's
+    double jitter = 0;
+    Vec3 up{0, 1, 0};
+    double arcAngle = 360, falloffAngle = 360;  ///< degrees (measured: the full circle by default)
+    std::vector<pattern::MapEntry> map;         ///< colours (flat entries)
 };
 
 /// Scene-wide settings of POV-Ray scenes (global_settings, background).
@@ -93,9 +113,13 @@ struct PovGlobals {
     int maxTraceLevel = 5;
     double adcBailout = 1.0 / 255.0;
     Vec3 background{0, 0, 0};
+    /// irid_wavelength: the film's wavelengths per channel. The default is POV-Ray 3.7's as
+    /// measured (<0.70, 0.52, 0.48>; the manual still gives 3.6's <0.25, 0.18, 0.14>).
+    Vec3 iridWavelength{0.70, 0.52, 0.48};
     std::vector<PovFog> fogs;  ///< applied together to every ray outside objects
     /// Atmospheric media (top-level `media` blocks): outside objects and inside hollow ones.
     std::vector<PovMedia> media;
+    std::vector<PovRainbow> rainbows;  ///< applied, before the fogs, to every ray outside objects
     /// sky_sphere: its pigments, bottom layer first, as roots [skyFirst, skyFirst + skyCount) of
     /// Scene::pigments looked up by ray direction; none: the background colour.
     int skyFirst = -1, skyCount = 0;

@@ -25,6 +25,7 @@ struct Scene {
     std::vector<Camera> cameras;  ///< the first is the default; later ones are alternatives
     std::vector<Light> lights;
     std::vector<Object> objects;  ///< course object ID = index + 1
+    std::vector<Object> projectors;  ///< POV-Ray lights' projected_through objects (not drawn: Light)
     std::vector<Texture> textures;  ///< image, normal and bump maps referenced by materials
     std::vector<std::unique_ptr<Mesh>> meshes;  ///< geometry of Mesh objects (stable addresses)
     std::vector<std::unique_ptr<Csg>> csgs;     ///< trees of Csg objects (stable addresses)

@@ -137,10 +137,18 @@ Value Interpreter::builtin(Kw k, const Loc& at) {
             }
             return out.value();
         }
-        case Kw::vturbulence: {
-            callArgs("vturbulence", 4, 4);
-            warning(at, "not rendered yet: vturbulence (gives <0,0,0>)");
-            return Value::vec3(0, 0, 0);
+        case Kw::vturbulence: {  // vturbulence(Lambda, Omega, Octaves, <P>)
+            const Args a = callArgs("vturbulence", 4, 4);
+            const Value& v = a[3];
+            if (!v.isNumeric()) error(at, "vturbulence argument 4 must be a vector");
+            const bool scalar = v.type == VType::Float;  // a float stands for <f, f, f>
+            const double p[3] = {v.c[0], scalar ? v.c[0] : v.c[1], scalar ? v.c[0] : v.c[2]};
+            double out[3];
+            if (!host_.turbulence(p, f(a[0], 0), f(a[1], 1), int(f(a[2], 2)), out)) {
+                warning(at, "not rendered yet: vturbulence (gives <0,0,0>)");
+                return Value::vec3(0, 0, 0);
+            }
+            return Value::vec3(out[0], out[1], out[2]);
         }
         case Kw::now: return Value::number(povNow());
         case Kw::defined: {

@@ -51,6 +51,12 @@ public:
         (void)pigment;
         return {};
     }
+    /// vturbulence(lambda, omega, octaves, p): the displacement vector the host's turbulence
+    /// moves p by at amount 1; false when the host has no turbulence (the caller gives <0,0,0>).
+    virtual bool turbulence(const double p[3], double lambda, double omega, int octaves, double out[3]) {
+        (void)p, (void)lambda, (void)omega, (void)octaves, (void)out;
+        return false;
+    }
 };
 
 }  // namespace rays::sdl

@@ -1,0 +1,31 @@
+// The mapping warps planar, cylindrical and spherical (POV-Ray 3.7 reference, "Mapping using
+// warps"): they wrap the x-y plane of a pattern onto a plane, a cylinder or a sphere. Each
+// computes map coordinates c of the point and hands out M(o)·c, o the warp's orientation (default
+// z) or the planar warp's normal. All measured with POV-Ray 3.7's pattern functions
+// (`function { pattern { function { x } warp { ... } } }` at scattered points):
+//   planar <n>, d:   c = (x, y, d)                         (default n = z, d = 0)
+//   cylindrical:     c = (u·r^e, y, r)                     r = √(x² + z²)
+//   spherical:       c = (u·r^e, v·r^e, r)                 r = |p|
+// with u = atan2(z, x)/2π wrapped into [0, 1), v = asin(y/r)/π + 1/2 and e the dist_exp
+// (default 0). M(o), o normalised, is the measured orientation matrix
+//   [[oy + oz, 0, ox], [0, ox + oz, −oy], [−ox, oy, oz]]
+// (the identity for z; for y it takes (c0, c1, c2) to (c0, −c2, c1), for x to (c2, c1, −c0); it is
+// not a rotation for other directions, as POV-Ray's results show).
+#pragma once
+#include "rays/math/vec3.h"
+
+namespace rays::pattern {
+
+enum class MappingKind : unsigned char { Planar, Cylindrical, Spherical };
+
+struct MappingWarp {
+    MappingKind kind = MappingKind::Planar;
+    Vec3 orientation{0, 0, 1};  ///< unit: the planar warp's normal, the others' orientation
+    double distance = 0;        ///< planar: the plane's distance
+    double distExp = 0;         ///< cylindrical and spherical: dist_exp
+};
+
+/// p (the space enclosing the warp) moved into the space inside it.
+Vec3 applyMappingWarp(const MappingWarp& w, Vec3 p);
+
+}  // namespace rays::pattern
