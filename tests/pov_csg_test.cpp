@@ -130,7 +130,7 @@ TEST(PovCsgHits, NestedCsgFollowsEachLevelsTransforms) {
 }
 
 TEST(PovCsgHits, ABarWithEightHolesTestsItsLeavesBoxes) {
-    // Nine leaves: past kCsgBoxTestLeaves, leaves are tried only where the ray meets their box.
+    // Nine leaves, each tried only where the ray meets its window (Csg::leafWindow).
     const Scene s = build(
         "difference { box { <-5, -1, -1>, <5, 1, 1> }\n"
         "  #for (i, 0, 7) cylinder { <-4 + i * 1.1, -2, 0>, <-4 + i * 1.1, 2, 0>, 0.3 } #end }");

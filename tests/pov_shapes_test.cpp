@@ -250,6 +250,61 @@ TEST(PovShapesPoly, QuadricHitsMatchTheSphereOnRandomRays) {
     EXPECT_GT(hits, 50);
 }
 
+TEST(PovShapesPoly, QuadricInsideBoxesHoldTheirInsideTightly) {
+    // Ellipsoids and cylinders (moved, sheared, along an axis) get boxes; others none. Each box is
+    // checked against points sampled on the quadric's surface: all inside, the extremes reached.
+    const char* bounded[] = {"quadric { <1, 4, 9>, <0, 0, 0>, <0, 0, 0>, -36 }",
+                             "quadric { <1, 1, 1>, <0.5, 0, 0.3>, <-2, 1, 0.5>, -3 }",
+                             "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 }",
+                             "quadric { <2, 0, 1>, <0, 0.8, 0>, <1, 0, -1>, -2 }"};
+    for (const char* text : bounded) {
+        const Scene s = build(text);
+        ASSERT_EQ(s.objects.size(), 1u) << text;
+        const ShapeData& d = *s.objects[0].data;
+        Bounds box;
+        ASSERT_TRUE(quadricInsideBox(d, box)) << text;
+        // Along rays from the centre in many directions, the surface point p = 0.
+        const Vec3 centre = box.centroid();
+        Vec3 c = centre;
+        for (int a = 0; a < 3; ++a)
+            if (!std::isfinite(c[a])) c[a] = 0.3;
+        Bounds seen;
+        for (int i = 0; i < 4000; ++i) {
+            const double u = (i + 0.5) / 4000, phi = i * 2.399963229728653;
+            const double z = 1 - 2 * u, rxy = std::sqrt(1 - z * z);
+            const Vec3 dir{rxy * std::cos(phi), rxy * std::sin(phi), z};
+            ASSERT_LT(evalPolySurface(d, c), 0) << text;
+            double lo = 0, hi = 1;
+            while (evalPolySurface(d, c + hi * dir) < 0 && hi < 1e6) hi *= 2;
+            if (hi >= 1e6) continue;  // along a cylinder's axis
+            for (int it = 0; it < 100; ++it) (evalPolySurface(d, c + 0.5 * (lo + hi) * dir) < 0 ? lo : hi) = 0.5 * (lo + hi);
+            const Vec3 p = c + lo * dir;
+            seen.extend(p);
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_GE(p[a], box.lo[a] - 1e-9) << text;
+                EXPECT_LE(p[a], box.hi[a] + 1e-9) << text;
+            }
+        }
+        for (int a = 0; a < 3; ++a) {
+            if (!std::isfinite(box.lo[a])) continue;
+            EXPECT_NEAR(seen.lo[a], box.lo[a], 0.02) << text << " axis " << a;
+            EXPECT_NEAR(seen.hi[a], box.hi[a], 0.02) << text << " axis " << a;
+        }
+    }
+    // The cylinder along z is free in z alone.
+    Bounds cyl;
+    ASSERT_TRUE(quadricInsideBox(*build("quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 }").objects[0].data, cyl));
+    EXPECT_TRUE(std::isinf(cyl.lo.z) && std::isinf(cyl.hi.z));
+    EXPECT_NEAR(cyl.hi.x, 1, 1e-12);
+    // Hyperboloids, cones, paraboloids, planes and the cubic have no box.
+    for (const char* text : {"quadric { <1, 1, -1>, <0, 0, 0>, <0, 0, 0>, -1 }", "quadric { <1, 1, -1>, <0, 0, 0>, <0, 0, 0>, 0 }",
+                             "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, -1>, 0 }", "quadric { <0, 0, 0>, <0, 0, 0>, <0, 1, 0>, 0 }",
+                             "quadric { <-1, -1, -1>, <0, 0, 0>, <0, 0, 0>, 1 }"}) {
+        Bounds none;
+        EXPECT_FALSE(quadricInsideBox(*build(text).objects[0].data, none)) << text;
+    }
+}
+
 TEST(PovShapesCsg, TorusAndPolyCutByABox) {
     const Scene s = build("difference { torus { 2, 0.5 } box { <0, -1, -3>, <3, 1, 3> } }");
     ASSERT_EQ(s.objects.size(), 1u);

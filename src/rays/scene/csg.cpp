@@ -86,10 +86,32 @@ Bounds planeBounds(const Object& o, bool inverse) {
     return b;
 }
 
-// World bounds of a leaf, all space for unbounded ones (planes, polys).
+// Box b (sides may be infinite) mapped by the affine m: the box of the mapped box, where a zero
+// entry of m takes nothing from an infinite side (no 0·∞).
+Bounds mapBox(const Transform& m, const Bounds& b) {
+    Bounds w;
+    for (int i = 0; i < 3; ++i) {
+        double centre = m.m[i][3], half = 0;
+        for (int j = 0; j < 3; ++j) {
+            if (m.m[i][j] == 0) continue;
+            const bool finite = std::isfinite(b.lo[j]) && std::isfinite(b.hi[j]);
+            centre += finite ? m.m[i][j] * 0.5 * (b.lo[j] + b.hi[j]) : 0;
+            half += finite ? std::fabs(m.m[i][j]) * 0.5 * (b.hi[j] - b.lo[j]) : kInfinity;
+        }
+        w.lo[i] = std::isfinite(half) ? centre - half : -kInfinity;
+        w.hi[i] = std::isfinite(half) ? centre + half : kInfinity;
+    }
+    return w;
+}
+
+// World bounds of a leaf (its surface and its inside), all space for unbounded ones (planes,
+// polys); the sides of a quadric's box that are infinite (cylinders) may remain so.
 Bounds leafWorldBox(const Object& o) {
     const Bounds b = o.type == ShapeType::Plane ? Bounds{} : worldBounds(o);
-    return b.empty() && (o.type == ShapeType::Plane || o.type == ShapeType::Poly) ? allSpace() : b;
+    if (!b.empty() || (o.type != ShapeType::Plane && o.type != ShapeType::Poly)) return b;
+    Bounds q;
+    if (o.type == ShapeType::Poly && quadricInsideBox(*o.data, q)) return o.transformed ? mapBox(o.toObject.inverse(), q) : q;
+    return allSpace();
 }
 
 Bounds leafBounds(const Object& o, bool inverse) {
@@ -169,21 +191,118 @@ bool onSurface(const Csg& c, int k, Vec3 q, bool& flip) {
     return true;
 }
 
+// Whether leaf o (inverted or not) has a convex inside that insideInterval can follow.
+bool convexInside(const Object& o, bool inverse) {
+    Bounds box;
+    switch (o.type) {
+        case ShapeType::Plane: return true;
+        case ShapeType::Sphere: case ShapeType::Box: return !inverse;
+        case ShapeType::Poly: return !inverse && quadricInsideBox(*o.data, box);
+        default: return false;
+    }
+}
+
+// Narrows [lo, hi] to the stretch of the world ray within the closed inside of convex leaf o
+// (convexInside); lo ≥ hi when the ray misses it. Widened a little for rounding.
+void insideInterval(const Object& o, bool inverse, const Ray& worldRay, double& lo, double& hi) {
+    const Ray r = o.localSpace ? Ray{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)} : worldRay;
+    double a = -kInfinity, b = kInfinity;
+    switch (o.type) {
+        case ShapeType::Plane: {  // inside: p0·x < r0 (inverse: >)
+            double slope = dot(o.p0, r.dir), value = dot(o.p0, r.origin) - o.r0;
+            if (inverse) slope = -slope, value = -value;
+            if (slope == 0) {
+                if (value > 0) b = a;
+            } else if (slope > 0) {
+                b = -value / slope;
+            } else {
+                a = -value / slope;
+            }
+            break;
+        }
+        case ShapeType::Sphere: {
+            const Vec3 c = o.localSpace ? o.p0 : o.p1;
+            const double rad = o.localSpace ? o.r0 : o.r1;
+            const Vec3 oc = r.origin - c;
+            const double A = dot(r.dir, r.dir), B = dot(oc, r.dir), C = dot(oc, oc) - rad * rad;
+            const double disc = B * B - A * C;
+            if (!(disc >= 0) || A == 0) {
+                b = a;
+                break;
+            }
+            const double q = -(B + std::copysign(std::sqrt(disc), B));  // the stable pair of roots
+            double t0 = q / A, t1 = q != 0 ? C / q : t0;
+            if (t0 > t1) std::swap(t0, t1);
+            a = t0, b = t1;
+            break;
+        }
+        case ShapeType::Box:
+            for (int i = 0; i < 3; ++i) {
+                if (r.dir[i] == 0) {
+                    if (r.origin[i] < o.p0[i] || r.origin[i] > o.p1[i]) b = a;
+                    continue;
+                }
+                double n = (o.p0[i] - r.origin[i]) / r.dir[i], f = (o.p1[i] - r.origin[i]) / r.dir[i];
+                if (n > f) std::swap(n, f);
+                a = std::max(a, n);
+                b = std::min(b, f);
+            }
+            break;
+        case ShapeType::Poly: quadricInsideInterval(*o.data, r, a, b); break;
+        default: return;
+    }
+    if (!(a <= b)) {
+        hi = lo;
+        return;
+    }
+    const double pad = 1e-7 * ((std::isfinite(a) ? std::fabs(a) : 0) + (std::isfinite(b) ? std::fabs(b) : 0)) + 1e-12;
+    lo = std::max(lo, a - pad);
+    hi = std::min(hi, b + pad);
+}
+
 }  // namespace
 
 void Csg::finish() {
     bounds = nodes.empty() ? Bounds{} : nodeBounds(*this, 0);
     hasSurface.resize(leaves.size());
-    leafBox.resize(leaves.size());
+    leafWindow.resize(leaves.size());
     for (size_t k = 0; k < leaves.size(); ++k) {
         hasSurface[k] = leafHasSurface(*this, int(k));
+        // A surface point of the leaf that the tree shows lies on the surface of every node above
+        // it, so within each one's bounds (a union's and a merge's hold their children's, an
+        // intersection's and a clip's lie inside all their children, a difference's inside its
+        // first child): the leaf's box met with all of them.
+        int child = leafNode[k];
         Bounds b = leafWorldBox(leaves[k]);
+        for (int p = nodes[size_t(child)].parent; p >= 0; p = nodes[size_t(p)].parent) b = meet(b, nodeBounds(*this, p));
         if (!b.empty()) {  // room for the rounding of the slab test
             Vec3 pad;
-            for (int a = 0; a < 3; ++a) pad[a] = 1e-9 * (std::fabs(b.lo[a]) + std::fabs(b.hi[a])) + 1e-12;
+            for (int a = 0; a < 3; ++a)
+                pad[a] = 1e-9 * ((std::isfinite(b.lo[a]) ? std::fabs(b.lo[a]) : 0) +
+                                 (std::isfinite(b.hi[a]) ? std::fabs(b.hi[a]) : 0)) + 1e-12;
             b = Bounds{b.lo - pad, b.hi + pad};
         }
-        leafBox[k] = b;
+        leafWindow[k] = b;
+    }
+    // The convex constraints of each leaf with a surface.
+    clipStart.assign(1, 0);
+    clipList.clear();
+    for (size_t k = 0; k < leaves.size(); ++k) {
+        auto take = [&](int s) {
+            const CsgNode& sn = nodes[size_t(s)];
+            if (sn.op == CsgOp::Leaf && convexInside(leaves[size_t(sn.leaf)], sn.inverse)) clipList.push_back(sn.leaf);
+        };
+        int child = leafNode[k];
+        for (int p = nodes[size_t(child)].parent; hasSurface[k] && p >= 0; child = p, p = nodes[size_t(p)].parent) {
+            const CsgNode& node = nodes[size_t(p)];
+            if (node.op == CsgOp::Intersection || node.op == CsgOp::Clip) {
+                for (int s = node.firstChild; s >= 0; s = nodes[size_t(s)].nextSibling)
+                    if (s != child) take(s);
+            } else if (node.op == CsgOp::Difference && child != node.firstChild) {
+                take(node.firstChild);
+            }
+        }
+        clipStart.push_back(int32_t(clipList.size()));
     }
 }
 
@@ -253,17 +372,19 @@ bool insideCsg(const Csg& c, int n, Vec3 q) {
 
 namespace {
 
-// Whether the ray may meet box b with t in [tMin, tMax] (slab test; an undecided NaN counts as a
-// meeting).
-bool meetsBox(const Bounds& b, const Ray& r, Vec3 invDir, double tMin, double tMax) {
+// The part of [tMin, tMax] where the ray is within box b (slab test; an undecided NaN leaves the
+// interval as it is), widened a little for the slab test's rounding; lo > hi when the ray misses.
+void clipToBox(const Bounds& b, const Ray& r, Vec3 invDir, double& tMin, double& tMax) {
+    double lo = -kInfinity, hi = kInfinity;
     for (int a = 0; a < 3; ++a) {
         double n = (b.lo[a] - r.origin[a]) * invDir[a], f = (b.hi[a] - r.origin[a]) * invDir[a];
         if (n > f) std::swap(n, f);
-        if (n > tMin) tMin = n;
-        if (f < tMax) tMax = f;
-        if (tMin > tMax) return false;
+        if (n > lo) lo = n;
+        if (f < hi) hi = f;
     }
-    return true;
+    const double pad = 1e-9 * ((std::isfinite(lo) ? std::fabs(lo) : 0) + (std::isfinite(hi) ? std::fabs(hi) : 0));
+    tMin = std::max(tMin, lo - pad);
+    tMax = std::min(tMax, hi + pad);
 }
 
 }  // namespace
@@ -271,18 +392,47 @@ bool meetsBox(const Bounds& b, const Ray& r, Vec3 invDir, double tMin, double tM
 bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeHit* hit) {
     const int n = int(c.leaves.size());
     const int cached = std::min(n, kCsgCachedLeaves);
-    const bool boxTest = n >= kCsgBoxTestLeaves;
     const Vec3 invDir{1 / ray.dir.x, 1 / ray.dir.y, 1 / ray.dir.z};
-    // Whether leaf i can have a surface hit in (from, to).
-    auto candidate = [&](int i, double from, double to) {
-        return c.hasSurface[size_t(i)] && (!boxTest || meetsBox(c.leafBox[size_t(i)], ray, invDir, from, to));
+    // Leaf i's hits are sought only where the ray is within its window and the convex leaves it
+    // must be inside (csg.h).
+    double winLo[kCsgCachedLeaves], winHi[kCsgCachedLeaves];
+    auto clipToWindow = [&](int i, double& lo, double& hi) {
+        clipToBox(c.leafWindow[size_t(i)], ray, invDir, lo, hi);
+        for (int j = c.clipStart[size_t(i)]; j < c.clipStart[size_t(i) + 1] && lo < hi; ++j) {
+            const int k = c.clipList[size_t(j)];
+            insideInterval(c.leaves[size_t(k)], c.nodes[size_t(c.leafNode[size_t(k)])].inverse, ray, lo, hi);
+        }
+    };
+    auto window = [&](int i, double& lo, double& hi) {
+        if (i < cached) {
+            lo = winLo[i], hi = winHi[i];
+            return;
+        }
+        lo = tMin, hi = tMax;
+        if (c.hasSurface[size_t(i)]) clipToWindow(i, lo, hi);
+        else hi = lo;
+    };
+    // Leaf i's nearest hit in (from, to) and its window.
+    auto hitLeaf = [&](int i, double from, double to, ShapeHit& h) {
+        double lo, hi;
+        window(i, lo, hi);
+        lo = std::max(lo, from), hi = std::min(hi, to);
+        if (!(lo < hi)) return false;
+        // Meshes keep the whole interval: their float traversal may miss a hit on a sliver of it
+        // (a flat mesh's window is one).
+        const Object& leaf = c.leaves[size_t(i)];
+        if (leaf.type == ShapeType::Mesh || leaf.type == ShapeType::Triangle) lo = from, hi = to;
+        return intersect(leaf, ray, lo, hi, h);
     };
     double nextT[kCsgCachedLeaves];  // leaf i's nearest hit after from[i] (infinite: none)
     double from[kCsgCachedLeaves];
     ShapeHit sh;
     for (int i = 0; i < cached; ++i) {
+        winLo[i] = tMin, winHi[i] = tMax;
+        if (c.hasSurface[size_t(i)]) clipToWindow(i, winLo[i], winHi[i]);
+        else winHi[i] = winLo[i];
         from[i] = tMin;
-        nextT[i] = candidate(i, tMin, tMax) && intersect(c.leaves[size_t(i)], ray, tMin, tMax, sh) ? sh.t : kInfinity;
+        nextT[i] = hitLeaf(i, tMin, tMax, sh) ? sh.t : kInfinity;
     }
     double tLast = tMin;  // the hits taken so far lie at or before it
     for (;;) {
@@ -291,8 +441,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
         for (int i = 0; i < cached; ++i)
             if (nextT[i] < bestT) best = i, bestT = nextT[i];
         for (int i = cached; i < n; ++i)  // beyond the cache: recomputed (a tie with a taken hit is lost)
-            if (candidate(i, tLast, bestT) && intersect(c.leaves[size_t(i)], ray, tLast, bestT, sh))
-                best = i, bestT = sh.t;
+            if (hitLeaf(i, tLast, bestT, sh)) best = i, bestT = sh.t;
         if (best < 0) return false;
         if (best < cached) bestFrom = from[best];
         bool flip = false;
@@ -300,7 +449,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
             if (!hit) return true;
             // The same test again, for the normals: the nearest hit after bestFrom is bestT.
             const Object& leaf = c.leaves[size_t(best)];
-            if (!intersect(leaf, ray, bestFrom, tMax, *hit)) return false;
+            if (!hitLeaf(best, bestFrom, tMax, *hit)) return false;
             if (flip) {
                 hit->normal = -hit->normal;
                 hit->geomNormal = -hit->geomNormal;
@@ -311,7 +460,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
         tLast = bestT;
         if (best < cached) {
             from[best] = bestT;
-            nextT[best] = intersect(c.leaves[size_t(best)], ray, bestT, tMax, sh) ? sh.t : kInfinity;
+            nextT[best] = hitLeaf(best, bestT, tMax, sh) ? sh.t : kInfinity;
         }
     }
 }

@@ -10,9 +10,12 @@
 // its other children, an intersection those inside all of them, a difference those of its first
 // child outside the rest and those of the rest inside the first and outside the others, a clip
 // node those of its object inside all its clipping objects (the clipping objects have no
-// surface of their own). No heap allocation or virtual call per ray: the walk keeps the next hits
-// of the first kCachedLeaves leaves on the stack and recomputes those of the others at each step;
-// the inside tests recurse at most as deep as the tree.
+// surface of their own). Each leaf is intersected only on the stretch of the ray inside its
+// window (Csg::leafWindow), so a clipped unbounded surface (a poly clipped by a cylinder and two
+// planes) is solved on the clip's box alone, not along the whole ray. No heap allocation or
+// virtual call per ray: the walk keeps the next hits of the first kCachedLeaves leaves on the
+// stack and recomputes those of the others at each step; the inside tests recurse at most as deep
+// as the tree.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -44,7 +47,17 @@ struct Csg {
     std::vector<Object> leaves;   ///< primitives in world space (prepared), with their materials
     std::vector<int32_t> leafNode;  ///< node of each leaf
     std::vector<unsigned char> hasSurface;  ///< per leaf: may its surface be seen (not a clipping object)
-    std::vector<Bounds> leafBox;  ///< per leaf: its world box, slightly widened (all space for planes)
+    /// Per leaf: its window, the box where its surface can be part of the tree's surface: its world
+    /// box (all space for planes and polys; a quadric's inside box) met with the bounds of every
+    /// node above it, slightly widened. The walk seeks the leaf's hits only where the ray is in it.
+    std::vector<Bounds> leafWindow;
+    /// Per leaf k: the convex leaves (planes, spheres, boxes, ellipsoid and cylinder quadrics) whose
+    /// inside the tree asks k's surface to be in (the other children of an intersection or clip
+    /// above k, the first child of a difference that subtracts k), as leaf indices
+    /// clipList[clipStart[k] .. clipStart[k + 1]): the walk seeks k's hits only on the stretch of the
+    /// ray within all of them (Roth, "Ray casting for modeling solids", 1982: a ray's intervals in
+    /// the solids of an intersection are intersected).
+    std::vector<int32_t> clipStart, clipList;
     Bounds bounds;                ///< world bounds; components may be infinite (planes)
 
     /// Appends a node under parent (-1: the root) and returns its index.
@@ -67,8 +80,6 @@ struct Csg {
 /// Leaves whose next hits the walk keeps on the stack; the hits of further leaves are recomputed
 /// at every step of the walk (correct, slower).
 constexpr int kCsgCachedLeaves = 128;
-/// From this many leaves on, a leaf is intersected only when the ray meets its box.
-constexpr int kCsgBoxTestLeaves = 6;
 
 /// Whether world point q is strictly inside solid primitive o: 1 or 0; -1 when o has no inside
 /// (triangles, meshes). A plane's inside is the side its normal points away from; open cones

@@ -169,4 +169,79 @@ bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, Sha
 
 bool insidePolySurface(const Object& o, Vec3 q) { return evalPolySurface(*o.data, q) < 0; }
 
+void quadricInsideInterval(const ShapeData& d, const Ray& r, double& lo, double& hi) {
+    const double* a = d.values.data();
+    const Vec3 O = r.origin, D = r.dir;
+    // p(O + tD) = A t² + B t + C with A ≥ 0 (a convex quadric): inside between the two roots.
+    const double A = a[0] * D.x * D.x + a[1] * D.x * D.y + a[2] * D.x * D.z + a[4] * D.y * D.y + a[5] * D.y * D.z +
+                     a[7] * D.z * D.z;
+    const double B = dot(quadricGradient(a, O), D), C = evalQuadric(a, O);
+    if (!(A > 0)) {  // along a cylinder's axis: p is (nearly) constant
+        if (C > 0 && B == 0) hi = lo;
+        return;
+    }
+    double roots[2];
+    if (quadraticRoots(A, B, C, roots) < 2) {
+        hi = lo;
+        return;
+    }
+    lo = std::max(lo, roots[0]);
+    hi = std::min(hi, roots[1]);
+}
+
+bool quadricInsideBox(const ShapeData& d, Bounds& box) {
+    if (d.order != 2 || d.values.size() < 10) return false;
+    // p(x) = xᵀAx + b·x + c. Where A's block over the variables that appear is positive definite,
+    // {p ≤ 0} is the ellipsoid (x − m)ᵀA(x − m) ≤ r with m = −A⁻¹b/2 and r = −p(m), whose extent
+    // along axis i is √(r·(A⁻¹)ᵢᵢ) (the support function of an ellipsoid); A is tested and
+    // inverted by Cholesky factorisation (Golub & Van Loan, "Matrix Computations", §4.2).
+    const double* a = d.values.data();
+    const double A[3][3] = {{a[0], a[1] / 2, a[2] / 2}, {a[1] / 2, a[4], a[5] / 2}, {a[2] / 2, a[5] / 2, a[7]}};
+    const double b[3] = {a[3], a[6], a[8]}, c = a[9];
+    int idx[3], k = 0;
+    for (int i = 0; i < 3; ++i)
+        if (A[i][0] != 0 || A[i][1] != 0 || A[i][2] != 0 || b[i] != 0) idx[k++] = i;
+    if (k == 0) return false;
+    double L[3][3] = {};
+    for (int i = 0; i < k; ++i)
+        for (int j = 0; j <= i; ++j) {
+            double s = A[idx[i]][idx[j]];
+            for (int m = 0; m < j; ++m) s -= L[i][m] * L[j][m];
+            if (i == j) {
+                if (!(s > 1e-12 * std::fabs(A[idx[i]][idx[i]]))) return false;  // not positive definite
+                L[i][i] = std::sqrt(s);
+            } else {
+                L[i][j] = s / L[j][j];
+            }
+        }
+    // Columns of A⁻¹ by two triangular solves each.
+    double inv[3][3] = {};
+    for (int col = 0; col < k; ++col) {
+        double y[3];
+        for (int i = 0; i < k; ++i) {
+            double s = i == col ? 1.0 : 0.0;
+            for (int m = 0; m < i; ++m) s -= L[i][m] * y[m];
+            y[i] = s / L[i][i];
+        }
+        for (int i = k - 1; i >= 0; --i) {
+            double s = y[i];
+            for (int m = i + 1; m < k; ++m) s -= L[m][i] * inv[m][col];
+            inv[i][col] = s / L[i][i];
+        }
+    }
+    double m[3] = {}, bm = 0;
+    for (int i = 0; i < k; ++i) {
+        for (int j = 0; j < k; ++j) m[i] -= 0.5 * inv[i][j] * b[idx[j]];
+        bm += b[idx[i]] * m[i];
+    }
+    const double r = std::max(0.0, -(c + 0.5 * bm));  // −p(m) = −(c + b·m/2); below 0: no inside
+    box = Bounds{Vec3(-kInfinity), Vec3(kInfinity)};
+    for (int i = 0; i < k; ++i) {
+        const double half = std::sqrt(r * inv[i][i]);
+        box.lo[idx[i]] = m[i] - half;
+        box.hi[idx[i]] = m[i] + half;
+    }
+    return true;
+}
+
 }  // namespace rays

@@ -19,5 +19,12 @@ double evalPolySurface(const ShapeData& d, Vec3 q);
 bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h);
 /// Whether object-space point q is strictly inside (p < 0).
 bool insidePolySurface(const Object& o, Vec3 q);
+/// The object-space box of a quadric's closed inside {p ≤ 0}, which holds its surface too, when
+/// the quadric is an ellipsoid or an elliptic cylinder along some axes (the variables that appear
+/// in no term are free: those sides are infinite): false for other quadrics and higher orders.
+bool quadricInsideBox(const ShapeData& d, Bounds& box);
+/// For a quadric that quadricInsideBox accepts (a convex inside): narrows [lo, hi] to the ray's
+/// stretch within its closed inside (object-space ray); lo ≥ hi when the ray misses it.
+void quadricInsideInterval(const ShapeData& d, const Ray& r, double& lo, double& hi);
 
 }  // namespace rays
