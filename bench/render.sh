@@ -83,15 +83,18 @@ rows=0
 # One row: NAME, Rays' scene, POV-Ray's scene, then Rays' extra flags; runs alternated.
 row() {
   local name=$1 rscene=$2 pscene=$3
+  local file=${name//\//-}  # output file names: objects/quartic/helix → quartic-helix
   shift 3
   : > "$tmp/rays.t"
   : > "$tmp/pov.t"
   for ((i = 0; i < runs; i++)); do
     t0=$EPOCHREALTIME
-    "$rays" render "$rscene" "$w" "$h" "$@" "${rays_aa[@]}" -o "$tmp/$name-rays.png" --quiet
+    "$rays" render "$rscene" "$w" "$h" "$@" "${rays_aa[@]}" -o "$tmp/$file-rays.png" --quiet || { echo "$name: rays failed" >&2; return 0; }
     t1=$EPOCHREALTIME
-    (cd "$tmp" && povray "+I$pscene" "+O$tmp/$name-pov.png" "+W$w" "+H$h" -D "${pov_aa[@]}" "Work_Threads=$threads" \
-       "+L$povinc" >/dev/null 2>&1)
+    # The scene's own folder on the library path (its includes: objects/chess.inc); a failure is
+    # reported, not a silent exit.
+    (cd "$tmp" && povray "+I$pscene" "+O$tmp/$file-pov.png" "+W$w" "+H$h" -D "${pov_aa[@]}" "Work_Threads=$threads" \
+       "+L$(dirname "$pscene")" "+L$povinc" >/dev/null 2>&1) || { echo "$name: povray failed" >&2; return 0; }
     t2=$EPOCHREALTIME
     echo "$t1 - $t0" | bc -l >> "$tmp/rays.t"
     echo "$t2 - $t1" | bc -l >> "$tmp/pov.t"
