@@ -15,7 +15,7 @@
 # -p (primitives): POV-Ray's own example scenes of its objects/ folder (objects/*.pov,
 # objects/quartic, objects/csg: one scene per primitive or CSG case), at 320x240 with +A0.3 unless
 # -s / -a say otherwise, each row with its target ratio (5x; 3x for the isosurface scene) and a
-# closing line counting the scenes that reach it.
+# closing line counting the scenes that reach it; scenes named after -p replace the folder's.
 # Needs the `povray` package (RAYS_BENCH_DEPS=1 scripts/install-deps.sh) and a built ./build/rays
 # (or RAYS=path/to/rays: a copy keeps a rebuild from changing the binary during a run).
 set -euo pipefail
@@ -48,7 +48,7 @@ gi_row=0
 povex=/usr/share/doc/povray/examples
 if [ "$primitives" = 1 ]; then
   [ -d "$povex/objects" ] || { echo "missing $povex/objects (RAYS_BENCH_DEPS=1 scripts/install-deps.sh)" >&2; exit 2; }
-  mapfile -t scenes < <(find "$povex/objects" -name '*.pov' | LC_ALL=C sort)
+  [ ${#scenes[@]} -gt 0 ] || mapfile -t scenes < <(find "$povex/objects" -name '*.pov' | LC_ALL=C sort)
 elif [ ${#scenes[@]} -eq 0 ]; then
   gi_row=1
   [ "$gi_only" = 1 ] || for s in bunny gnarly balls2; do scenes+=("$(bench/course_scene.sh "$s")"); done

@@ -3,6 +3,7 @@
 // iteration written out here; the quaternion c = 0 case (the unit ball, whatever max_iteration).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -104,6 +105,74 @@ TEST(PovJuliaFractal, InsideAndFirstHitsAgreeWithTheIterationByHand) {
         EXPECT_TRUE(insideByHand(from + (h.t + 1e-6) * d, p, 8));
         for (double t = 0; t < h.t - 1e-6; t += 1.0 / 200) EXPECT_FALSE(insideByHand(from + t * d, p, 8)) << "missed at " << t;
         EXPECT_LT(dot(h.normal, d), 0);
+    }
+}
+
+// The products written out on components: Hamilton's quaternions (ij = k = −ji) and the
+// hypercomplex numbers (ij = ji = k, i² = j² = −1, k² = 1, reference 3.4.5.1.7).
+using Q4 = std::array<double, 4>;
+Q4 hamilton(const Q4& x, const Q4& y) {
+    return {x[0] * y[0] - x[1] * y[1] - x[2] * y[2] - x[3] * y[3], x[0] * y[1] + x[1] * y[0] + x[2] * y[3] - x[3] * y[2],
+            x[0] * y[2] - x[1] * y[3] + x[2] * y[0] + x[3] * y[1], x[0] * y[3] + x[1] * y[2] - x[2] * y[1] + x[3] * y[0]};
+}
+Q4 hypercomplex(const Q4& x, const Q4& y) {
+    return {x[0] * y[0] - x[1] * y[1] - x[2] * y[2] + x[3] * y[3], x[0] * y[1] + x[1] * y[0] - x[2] * y[3] - x[3] * y[2],
+            x[0] * y[2] + x[2] * y[0] - x[1] * y[3] - x[3] * y[1], x[0] * y[3] + x[3] * y[0] + x[1] * y[2] + x[2] * y[1]};
+}
+
+// Inside by the definition, for f(h) = h·h (or h·h·h) in the given product, escape radius r.
+template <class Mul>
+bool insideByProduct(Vec3 q, const Q4& p, int n, bool cube, double r, Mul mul) {
+    Q4 h{q.x, q.y, q.z, 0};
+    auto norm2 = [](const Q4& x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3]; };
+    if (norm2(h) > r * r) return false;
+    for (int k = 1; k < n; ++k) {
+        Q4 f = mul(h, h);
+        if (cube) f = mul(f, h);
+        for (int i = 0; i < 4; ++i) h[i] = f[i] + p[i];
+        if (norm2(h) > r * r) return false;
+    }
+    return true;
+}
+
+// Quaternion cube (h³ in closed form in the renderer) and hypercomplex sqr (two complex squares)
+// against the products above, on random points; first hits lie on a change of state.
+TEST(PovJuliaFractal, CubeAndHypercomplexInsideAgreeWithTheProducts) {
+    const Q4 p = {0.33, 0.54, 0.52, 0.32};
+    const double pn = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3]);
+    struct Case {
+        const char* algebra;
+        bool cube, hyper;
+    };
+    for (const Case& c : {Case{"quaternion cube", true, false}, Case{"hypercomplex sqr", false, true}}) {
+        const Scene s = test::buildPov(std::string("julia_fractal { <0.33, 0.54, 0.52, 0.32> ") + c.algebra +
+                                       " max_iteration 7 precision 200 }");
+        ASSERT_EQ(s.objects.size(), 1u) << c.algebra;
+        const double r = c.hyper ? 4.0 : 1 + pn;
+        auto inside = [&](Vec3 q) {
+            return c.hyper ? insideByProduct(q, p, 7, false, r, hypercomplex) : insideByProduct(q, p, 7, true, r, hamilton);
+        };
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> U(-1.5, 1.5);  // the sets lie within |x| < 1.5
+        int in = 0;
+        for (int i = 0; i < 3000; ++i) {
+            const Vec3 q{U(rng), U(rng), U(rng)};
+            const bool want = inside(q);
+            in += want;
+            EXPECT_EQ(insideShape(s.objects[0], q), want ? 1 : 0) << c.algebra << " at " << q.x << " " << q.y << " " << q.z;
+        }
+        EXPECT_GT(in, 10) << c.algebra;
+        int hits = 0;
+        for (int i = 0; i < 60; ++i) {
+            const Vec3 from = (r + 0.5) * normalize(Vec3{U(rng), U(rng), U(rng)});
+            const Vec3 d = normalize(Vec3{0.2 * U(rng), 0.2 * U(rng), 0.2 * U(rng)} - from);
+            const Hit h = test::shootPov(s, from, d);
+            if (!h.valid()) continue;
+            ++hits;
+            EXPECT_FALSE(inside(from + (h.t - 1e-7) * d)) << c.algebra;
+            EXPECT_TRUE(inside(from + (h.t + 1e-7) * d)) << c.algebra;
+        }
+        EXPECT_GT(hits, 10) << c.algebra;
     }
 }
 

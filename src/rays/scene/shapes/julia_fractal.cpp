@@ -18,6 +18,11 @@ using Cx = std::complex<double>;
 enum JuliaSlot { kJuliaP = 0, kJuliaN = 4, kJuliaD = 8, kJuliaIter, kJuliaStep, kJuliaR2, kJuliaAlgebra, kJuliaFn, kJuliaPwr,
                  kJuliaSlots = kJuliaPwr + 2 };
 
+// Bisection stops when the crossing is bracketed this tightly in object units: far below the
+// march step (1/precision) and the 0.001 offset of secondary rays, and half the halvings of a
+// bracket at double precision.
+constexpr double kJuliaTolerance = 1e-9;
+
 struct Quat {
     double a, b, c, d;
 };
@@ -86,51 +91,106 @@ Cx juliaSlope(JuliaFunction f, Cx w, const double* pw) {
     return one;
 }
 
-// Whether h(0) stays within the escape sphere for max_iteration − 1 iterations. When it escapes, *reach
-// gets a step along which no inside point is expected: half the first-order distance to the sphere
-// of the escaping iterate, (|h(k)| − R) / D(k), D(k) a bound on the derivative of h(k) by h(0)
-// (|f'| bounds: 2|h| for sqr, 3|h|² for cube, the larger |f'(w)| of the two complex parts).
-bool juliaIterate(const double* v, Quat h, double* reach) {
+// The iteration steps h ← f(h) + p, each also giving grow2, a bound on |f'(h)|² (the derivative's
+// growth, squared, for juliaIterate's reach). n2 is |h|². Quaternions are (a, v) with a real and v
+// a 3-vector; hypercomplex numbers are carried as their two complex parts (w1, w2) in the four slots.
+
+// Quaternion square: (a, v)² = (a² − |v|², 2av); |d(h²)| ≤ 2|h|.
+struct QuatSqrStep {
+    const double* p;
+    Quat operator()(const Quat& h, double n2, double& grow2) const {
+        grow2 = 4 * n2;
+        const double a2 = 2 * h.a;
+        return {h.a * h.a - h.b * h.b - h.c * h.c - h.d * h.d + p[0], a2 * h.b + p[1], a2 * h.c + p[2], a2 * h.d + p[3]};
+    }
+};
+
+// Quaternion cube: h and h² share their vector's direction, so (a, v)³ = (a³ − 3a|v|², (3a² − |v|²)v);
+// |d(h³)| ≤ 3|h|².
+struct QuatCubeStep {
+    const double* p;
+    Quat operator()(const Quat& h, double n2, double& grow2) const {
+        grow2 = 9 * n2 * n2;
+        const double a2 = h.a * h.a, v2 = h.b * h.b + h.c * h.c + h.d * h.d, k = 3 * a2 - v2;
+        return {h.a * (a2 - 3 * v2) + p[0], k * h.b + p[1], k * h.c + p[2], k * h.d + p[3]};
+    }
+};
+
+// Hypercomplex square (POV-Ray's hypercomplex cube squares too): each complex part squared, in real
+// arithmetic; |f'| ≤ 2 max(|w1|, |w2|). c holds p's two complex parts.
+struct HyperSqrStep {
+    double c[4];
+    Quat operator()(const Quat& w, double, double& grow2) const {
+        const double n1 = w.a * w.a + w.b * w.b, n2 = w.c * w.c + w.d * w.d;
+        grow2 = 4 * std::max(n1, n2);
+        return {w.a * w.a - w.b * w.b + c[0], 2 * w.a * w.b + c[1], w.c * w.c - w.d * w.d + c[2], 2 * w.c * w.d + c[3]};
+    }
+};
+
+// Any other hypercomplex function, through std::complex; grow2 only when asked (it costs f').
+struct HyperAnyStep {
+    JuliaFunction fn;
+    const double* pw;
+    Cx c1, c2;
+    bool wantGrowth;
+    Quat operator()(const Quat& w, double, double& grow2) const {
+        const Cx w1(w.a, w.b), w2(w.c, w.d);
+        grow2 = wantGrowth ? std::max(std::norm(juliaSlope(fn, w1, pw)), std::norm(juliaSlope(fn, w2, pw))) : 1;
+        const Cx f1 = juliaComplex(fn, w1, pw) + c1, f2 = juliaComplex(fn, w2, pw) + c2;
+        return {f1.real(), f1.imag(), f2.real(), f2.imag()};
+    }
+};
+
+// |h|² of a state: the quaternion's norm, or (|w1|² + |w2|²) / 2 for the hypercomplex parts.
+template <bool kHyper>
+double stateNorm2(const Quat& h) {
+    return kHyper ? 0.5 * qnorm2(h) : qnorm2(h);
+}
+
+// Whether the state h(0) stays within the escape sphere (|h|² ≤ r2) for count iterations. When it
+// escapes, *reach gets a step along which no inside point is expected: half the first-order
+// distance to the sphere of the escaping iterate, (|h(k)| − R) / D(k), D(k) the product of the
+// steps' derivative bounds. NaN counts as escaped. *margin gets max |h(k)| − R over the iterates
+// looked at (up to the escaping one): ≤ 0 exactly when inside, and continuous where a point
+// crosses the surface (the crossing iterate passes R), which the crossing's refinement uses.
+template <bool kHyper, class Step>
+bool escapeLoop(Quat h, int count, double r2, double* reach, double* margin, const Step& step) {
+    double n2 = stateNorm2<kHyper>(h), slope2 = 1, most = n2;
+    bool in = true;
+    for (int k = 0; k <= count; ++k) {
+        most = std::max(most, n2);
+        if (!(n2 <= r2)) {
+            if (reach) *reach = std::isfinite(n2) ? 0.5 * (std::sqrt(n2) - std::sqrt(r2)) / std::sqrt(slope2) : kInfinity;
+            most = std::isnan(n2) ? kInfinity : n2;
+            in = false;
+            break;
+        }
+        if (k == count) break;
+        double grow2;
+        h = step(h, n2, grow2);
+        slope2 *= grow2;
+        n2 = stateNorm2<kHyper>(h);
+    }
+    if (margin) *margin = in ? std::min(0.0, std::sqrt(most) - std::sqrt(r2)) : std::max(std::sqrt(most) - std::sqrt(r2), 1e-300);
+    return in;
+}
+
+// Whether h(0) stays within the escape sphere for max_iteration − 1 iterations (see escapeLoop).
+bool juliaIterate(const double* v, Quat h, double* reach, double* margin = nullptr) {
     const double* p = v + kJuliaP;
     const double r2 = v[kJuliaR2];
     const int count = int(v[kJuliaIter]) - 1;
-    double slope = 1;
-    auto escaped = [&](double n2) {
-        if (reach) *reach = std::isfinite(n2) ? 0.5 * (std::sqrt(n2) - std::sqrt(r2)) / slope : kInfinity;
-        return false;
-    };
-    const double h2 = qnorm2(h);
-    if (h2 > r2) return escaped(h2);
-    if (v[kJuliaAlgebra] == 0) {
-        const bool cube = JuliaFunction(int(v[kJuliaFn])) == JuliaFunction::Cube;
-        double slope2 = 1;  // slope squared (no root per iteration)
-        for (int k = 0; k < count; ++k) {
-            const double n2 = qnorm2(h);
-            slope2 *= cube ? 9 * n2 * n2 : 4 * n2;
-            const Quat s = {h.a * h.a - h.b * h.b - h.c * h.c - h.d * h.d, 2 * h.a * h.b, 2 * h.a * h.c, 2 * h.a * h.d};
-            const Quat f = cube ? qmul(s, h) : s;
-            h = {f.a + p[0], f.b + p[1], f.c + p[2], f.d + p[3]};
-            const double m2 = qnorm2(h);
-            if (!(m2 <= r2)) {
-                slope = std::sqrt(slope2);
-                return escaped(m2);
-            }
-        }
-        return true;
-    }
     const JuliaFunction fn = JuliaFunction(int(v[kJuliaFn]));
-    const Cx c1(p[0] - p[3], p[1] + p[2]), c2(p[0] + p[3], p[1] - p[2]);
-    Cx w1(h.a - h.d, h.b + h.c), w2(h.a + h.d, h.b - h.c);
-    for (int k = 0; k < count; ++k) {
-        if (reach) {
-            slope *= std::sqrt(std::max(std::norm(juliaSlope(fn, w1, v + kJuliaPwr)), std::norm(juliaSlope(fn, w2, v + kJuliaPwr))));
-        }
-        w1 = juliaComplex(fn, w1, v + kJuliaPwr) + c1;
-        w2 = juliaComplex(fn, w2, v + kJuliaPwr) + c2;
-        const double m2 = 0.5 * (std::norm(w1) + std::norm(w2));
-        if (!(m2 <= r2)) return escaped(m2);  // NaN counts as escaped
+    if (v[kJuliaAlgebra] == 0) {
+        if (fn == JuliaFunction::Cube) return escapeLoop<false>(h, count, r2, reach, margin, QuatCubeStep{p});
+        return escapeLoop<false>(h, count, r2, reach, margin, QuatSqrStep{p});
     }
-    return true;
+    const Quat w = {h.a - h.d, h.b + h.c, h.a + h.d, h.b - h.c};
+    if (fn == JuliaFunction::Sqr || fn == JuliaFunction::Cube)
+        return escapeLoop<true>(w, count, r2, reach, margin, HyperSqrStep{{p[0] - p[3], p[1] + p[2], p[0] + p[3], p[1] - p[2]}});
+    return escapeLoop<true>(w, count, r2, reach, margin,
+                            HyperAnyStep{fn, v + kJuliaPwr, Cx(p[0] - p[3], p[1] + p[2]), Cx(p[0] + p[3], p[1] - p[2]),
+                                         reach != nullptr});
 }
 
 bool juliaInside(const double* v, Vec3 p) { return juliaIterate(v, juliaStart(v, p), nullptr); }
@@ -189,6 +249,30 @@ Vec3 juliaNormal(const double* v, Vec3 pt) {
     return g;
 }
 
+// The crossing of the surface between lo and hi (margins glo and ghi of opposite states, see
+// escapeLoop), narrowed to kJuliaTolerance by the Illinois variant of regula falsi on the margin
+// (Dowell and Jarratt 1971), which keeps the crossing bracketed; a secant point outside the
+// bracket falls back to its middle. Returns the end on hi's side.
+double refineCrossing(const double* v, const Ray& r, double len, double lo, double glo, double hi, double ghi) {
+    int kept = 0;  // which end the last two steps kept: −1 lo, +1 hi
+    for (int i = 0; i < 60 && (hi - lo) * len > kJuliaTolerance; ++i) {
+        double mid = (glo * hi - ghi * lo) / (glo - ghi);
+        if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+        double g;
+        juliaIterate(v, juliaStart(v, r.at(mid)), nullptr, &g);
+        if ((g > 0) == (glo > 0)) {
+            lo = mid, glo = g;
+            if (kept == 1) ghi *= 0.5;
+            kept = 1;
+        } else {
+            hi = mid, ghi = g;
+            if (kept == -1) glo *= 0.5;
+            kept = -1;
+        }
+    }
+    return hi;
+}
+
 }  // namespace
 
 bool makeJuliaFractal(const JuliaParams& q, ShapeData& data) {
@@ -227,19 +311,15 @@ bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, Sh
     if (t0 >= t1) return false;
     const double len = std::sqrt(dd), step = v[kJuliaStep] / len;
     // Steps of 1/precision, longer where the point's iterate escaped far (juliaIterate's reach).
-    double reach = 0;
-    const bool startIn = juliaIterate(v, juliaStart(v, r.at(t0)), &reach);
-    double prev = t0, ahead = startIn ? step : std::max(step, reach / len);
+    double reach = 0, margin = 0;
+    const bool startIn = juliaIterate(v, juliaStart(v, r.at(t0)), &reach, &margin);
+    double prev = t0, prevMargin = margin, ahead = startIn ? step : std::max(step, reach / len);
     while (prev < t1) {
         const double t = std::min(t1, prev + ahead);
         reach = 0;
-        const bool in = juliaIterate(v, juliaStart(v, r.at(t)), startIn ? nullptr : &reach);
+        const bool in = juliaIterate(v, juliaStart(v, r.at(t)), startIn ? nullptr : &reach, &margin);
         if (in != startIn) {
-            double lo = prev, hi = t;  // bisect the crossing
-            for (int i = 0; i < 60 && hi - lo > 1e-12 * (1 + std::fabs(hi)); ++i) {
-                const double mid = 0.5 * (lo + hi);
-                (juliaInside(v, r.at(mid)) == startIn ? lo : hi) = mid;
-            }
+            const double hi = refineCrossing(v, r, len, prev, prevMargin, t, margin);
             if (!(hi > tMin && hi < tMax)) return false;
             h.t = hi;
             Vec3 n = juliaNormal(v, r.at(hi));
@@ -248,6 +328,7 @@ bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, Sh
             return true;
         }
         prev = t;
+        prevMargin = margin;
         ahead = std::max(step, reach / len);
     }
     return false;  // no crossing (no inside point reaches the widened sphere)
