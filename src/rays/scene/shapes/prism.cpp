@@ -28,6 +28,25 @@ bool insideOutline(const std::vector<double>& e, double px, double pz) {
 // cut where z(u) turns into pieces monotone in z; a piece crosses when (z > pz) differs at its two
 // ends (the half-open rule of polygons, so a joint or a turning point on the ray counts right), and
 // the crossing, found by bisection, counts when it lies at x > px.
+// Where the cubic z(u) (c) takes the value pz on [lo, hi], a piece on which it is monotone and
+// crosses pz: a straight segment's by division, else Newton's steps kept within the bracket,
+// which shrinks with each step (bisection where a step would leave it).
+double crossingOf(const double* c, double pz, double lo, double hi) {
+    if (c[2] == 0 && c[3] == 0) return std::clamp((pz - c[0]) / c[1], lo, hi);
+    const bool rising = cubicAt(c, hi) > cubicAt(c, lo);
+    double u = 0.5 * (lo + hi);
+    for (int n = 0; n < 60 && hi - lo > 1e-15; ++n) {
+        const double f = cubicAt(c, u) - pz;
+        if (f == 0) return u;
+        ((f < 0) == rising ? lo : hi) = u;
+        const double slope = cubicSlope(c, u);
+        const double next = slope != 0 ? u - f / slope : lo - 1;
+        if (std::fabs(next - u) < 1e-15 && next >= lo && next <= hi) return next;
+        u = next > lo && next < hi ? next : 0.5 * (lo + hi);
+    }
+    return u;
+}
+
 bool insideCurves(const std::vector<double>& v, double px, double pz) {
     bool in = false;
     for (size_t i = 0; i + kCurveStride <= v.size(); i += kCurveStride) {
@@ -41,11 +60,7 @@ bool insideCurves(const std::vector<double>& v, double px, double pz) {
             double lo = cuts[j], hi = cuts[j + 1];
             const bool above = cubicAt(seg + 4, lo) > pz;
             if (above == (cubicAt(seg + 4, hi) > pz)) continue;
-            for (int n = 0; n < 60 && hi - lo > 1e-15; ++n) {
-                const double mid = 0.5 * (lo + hi);
-                ((cubicAt(seg + 4, mid) > pz) == above ? lo : hi) = mid;
-            }
-            if (cubicAt(seg, 0.5 * (lo + hi)) > px) in = !in;
+            if (cubicAt(seg, crossingOf(seg + 4, pz, lo, hi)) > px) in = !in;
         }
     }
     return in;
