@@ -1,6 +1,7 @@
 // Distribution effects: anti-aliasing modes, area lights, depth of field, edge-guided AA, GI.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -8,6 +9,7 @@
 #include "rays/error.h"
 #include "rays/io/scene_parser.h"
 #include "rays/render/renderer.h"
+#include "support/pov_scene.h"
 
 using namespace rays;
 
@@ -179,6 +181,71 @@ TEST(Distribution, EdgeGuidedAaTouchesOnlyEdgePixelsAndMatchesFullAa) {
         }
     EXPECT_GT(edges, 50);                      // the sphere outline and its shadow
     EXPECT_LT(edges, s.width * s.height / 4);  // but only a small part of the image
+}
+
+// POV-Ray's method 1 (+A0.3): the pixels supersampled are those whose colour differs from the
+// left or upper neighbour's by more than the threshold, and that neighbour; the difference is
+// |Δr| + |Δg| + |Δb| of the linear colours raised to 1/2.5 (Antialias_Gamma). Worked out here
+// from the one-sample image (sRGB-decoded by the IEC formula); pixels within 1e-4 of the threshold
+// are left out (float rounding).
+TEST(Distribution, PovRayThresholdAaSupersamplesWhereColoursChange) {
+    // A checker whose squares differ by little (0.05 in red: below 0.3) and a sphere that
+    // differs from them by much.
+    const Scene scene = test::buildPov(
+        "global_settings { assumed_gamma 1 }\n"
+        "camera { location <0, 2, -8> look_at <0, 0, 0> }\n"
+        "light_source { <5, 10, -5> color rgb 1 }\n"
+        "plane { y, -1 pigment { checker rgb <0.60, 0.5, 0.5> rgb <0.65, 0.5, 0.5> } }\n"
+        "sphere { 0, 1 pigment { rgb <0, 0, 1> } }\n");
+    RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.aa = AaMode::Stratified;
+    s.spp = 9;
+    RenderSettings one = s;
+    one.aa = AaMode::Grid;
+    one.spp = 1;
+    const ImageF single = renderScene(scene, one);
+    s.aaEdges = true;
+    s.aaThreshold = 0.3;
+    s.aaGamma = 2.5;
+    const Bvh bvh(scene.objects);
+    TraceStats stats;
+    std::vector<uint8_t> marked;
+    const ImageF img = render(scene, bvh, s, stats, {}, &marked);
+    auto look = [&](int x, int y) {
+        Vec3 r;
+        for (int k = 0; k < 3; ++k) {
+            const double e = single.at(x, y)[k];
+            const double linear = e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+            r[k] = std::pow(linear, 1 / 2.5);
+        }
+        return r;
+    };
+    auto diff = [&](int x0, int y0, int x1, int y1) {
+        const Vec3 d = look(x0, y0) - look(x1, y1);
+        return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
+    };
+    int want = 0, checked = 0;
+    for (int y = 0; y < s.height; ++y)
+        for (int x = 0; x < s.width; ++x) {
+            double most = 0;  // the largest difference to a 4-neighbour
+            if (x > 0) most = std::max(most, diff(x, y, x - 1, y));
+            if (y > 0) most = std::max(most, diff(x, y, x, y - 1));
+            if (x + 1 < s.width) most = std::max(most, diff(x, y, x + 1, y));
+            if (y + 1 < s.height) most = std::max(most, diff(x, y, x, y + 1));
+            if (std::fabs(most - 0.3) < 1e-4) continue;
+            ++checked;
+            want += most > 0.3;
+            const size_t i = size_t(y) * s.width + x;
+            EXPECT_EQ(marked[i], most > 0.3 ? 1 : 0) << x << "," << y << " difference " << most;
+            if (!marked[i]) {
+                EXPECT_EQ(img.pixels[i], single.pixels[i]) << x << "," << y;
+            }
+        }
+    EXPECT_GT(checked, s.width * s.height * 9 / 10);
+    EXPECT_GT(want, 40);                       // the sphere's outline
+    EXPECT_LT(want, s.width * s.height / 4);  // not the checker's squares
 }
 
 TEST(Distribution, SameImageForAnyThreadCount) {

@@ -90,6 +90,10 @@ TEST(PovOptionsSwitch, AntialiasSwitches) {
     EXPECT_TRUE(aa({"-J", "+J"}).jitter);
     EXPECT_DOUBLE_EQ(aa({"+J0.5"}).jitterAmount, 0.5);
     EXPECT_FALSE(aa({"+J0"}).jitter);  // "If n.n <= 0 aa-jitter is set off"
+    EXPECT_DOUBLE_EQ(aa({}).gamma, 2.5);  // Antialias_Gamma's default (POV-Ray 3.7's change log)
+    EXPECT_DOUBLE_EQ(aa({"+AG2.2"}).gamma, 2.2);
+    EXPECT_FALSE(aa({"+AG2.2"}).given);  // the gamma alone does not choose the sampling
+    EXPECT_DOUBLE_EQ(aa({"Antialias_Gamma=1.8"}).gamma, 1.8);
 }
 
 TEST(PovOptionsSwitch, FilesAndLibraryPaths) {
@@ -200,6 +204,7 @@ TEST(PovOptionsSwitch, MalformedValuesAreErrorsNamingTheSwitch) {
     EXPECT_EQ(errorOf({"+R10"}), "rays: error: +R10: Antialias_Depth must be a whole number from 1 to 9, got '10'");
     EXPECT_EQ(errorOf({"+AM3"}), "rays: error: +AM3: Sampling_Method must be a whole number from 1 to 2, got '3'");
     EXPECT_EQ(errorOf({"+Ax"}), "rays: error: +Ax: Antialias_Threshold must be a number, got 'x'");
+    EXPECT_EQ(errorOf({"+AG0"}), "rays: error: +AG0: Antialias_Gamma must be more than 0, got '0'");
     EXPECT_EQ(errorOf({"+KFFx"}), "rays: error: +KFFx: Final_Frame must be a whole number, got 'x'");
     EXPECT_EQ(errorOf({"+KFI-2"}), "rays: error: +KFI-2: Initial_Frame must be a whole number, 0 or more, got '-2'");
     EXPECT_EQ(errorOf({"+STP0"}), "rays: error: +STP0: Frame_Step must be a positive integer, got '0'");
@@ -478,6 +483,8 @@ TEST(PovSettings, AntialiasMapsToTheNearestRaysSampling) {
     EXPECT_EQ(c.spp, 9);
     EXPECT_EQ(c.mode, AaMode::Stratified);
     EXPECT_TRUE(c.edges);
+    EXPECT_DOUBLE_EQ(c.threshold, 0.3);  // POV-Ray's colour rule, with its threshold and gamma
+    EXPECT_DOUBLE_EQ(c.gamma, 2.5);
     aa.method = 2;
     EXPECT_EQ(mapPovAntialias(aa).spp, 16);
     aa.method = 1;

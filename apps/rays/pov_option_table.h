@@ -11,7 +11,7 @@ namespace rays::cli::pov {
 /// when their value asks for something Rays does not do, warned about once.
 enum class Key {
     InputFileName, OutputFileName, Width, Height,
-    Antialias, AntialiasThreshold, AntialiasDepth, SamplingMethod, Jitter, JitterAmount,
+    Antialias, AntialiasThreshold, AntialiasDepth, AntialiasGamma, SamplingMethod, Jitter, JitterAmount,
     LibraryPath, Declare, Version,
     Clock, InitialFrame, FinalFrame, InitialClock, FinalClock, SubsetStartFrame, SubsetEndFrame, FrameStep, CyclicAnimation,
     StartRow, EndRow, StartColumn, EndColumn,

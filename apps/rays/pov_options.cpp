@@ -312,6 +312,10 @@ bool PovOptionReader::setAntialias(const Value& v) {
             aa.threshold = v.number;
             break;
         case Key::AntialiasDepth: aa.depth = v.inRange(1, 9); break;
+        case Key::AntialiasGamma:  // how colours are compared; does not itself choose the sampling
+            if (!(v.number > 0)) v.fail("more than 0");
+            aa.gamma = v.number;
+            return true;
         case Key::SamplingMethod: aa.method = v.inRange(1, 2); break;
         case Key::Jitter: aa.jitter = v.flag; break;
         case Key::JitterAmount:

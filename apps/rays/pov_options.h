@@ -24,6 +24,7 @@ struct PovAntialias {
     bool on = false;           ///< Antialias, +A / -A
     double threshold = 0.3;    ///< Antialias_Threshold, +An.n
     int depth = 3;             ///< Antialias_Depth, +Rn (1 to 9)
+    double gamma = 2.5;        ///< Antialias_Gamma, +AGn.n: colours are compared as linear^(1/gamma)
     int method = 1;            ///< Sampling_Method, +AMn (1 adaptive, 2 adaptive recursive)
     bool jitter = true;        ///< Jitter, +J / -J
     double jitterAmount = 1;   ///< Jitter_Amount, +Jn.n (0 or less turns jitter off)

@@ -38,6 +38,8 @@ AaChoice mapPovAntialias(const PovAntialias& aa) {
     c.spp = n * n;
     c.mode = aa.jitter ? AaMode::Stratified : AaMode::Grid;
     c.edges = aa.threshold > 0;  // threshold 0: "every pixel is super-sampled"
+    c.threshold = aa.threshold;
+    c.gamma = aa.gamma;
     return c;
 }
 
@@ -92,7 +94,9 @@ void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job) {
         s.aa = aa.mode;
         s.spp = aa.spp;
         s.aaEdges = aa.edges;
+        s.aaThreshold = aa.edges ? aa.threshold : -1;
     }
+    s.aaGamma = o.antialias.gamma;
     if (o.threads >= 0) s.threads = o.threads;
     if (o.jpegQuality > 0) job.jpegQuality = o.jpegQuality;
     job.outputPath = povOutputPath(o, povForm);

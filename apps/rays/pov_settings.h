@@ -13,15 +13,17 @@ namespace rays::cli {
 struct AaChoice {
     AaMode mode = AaMode::Grid;
     int spp = 1;
-    bool edges = false;  ///< edge-guided: supersample only where object ids or shadows change
+    bool edges = false;      ///< one sample per pixel first, then supersample where the threshold says
+    double threshold = -1;   ///< with edges: POV-Ray's colour threshold (RenderSettings::aaThreshold)
+    double gamma = 2.5;      ///< Antialias_Gamma
 };
 
-/// The Rays sampling closest to POV-Ray's adaptive anti-aliasing (reference 3.2.8.7). POV-Ray
-/// supersamples a pixel whose colour differs from a neighbour's by more than the threshold; Rays'
-/// nearest is --aa-edges (supersample where object ids or shadows differ), which ignores the
-/// threshold's size: threshold 0 supersamples every pixel, 3 or more none, anything between uses
-/// edges. Samples: depth² (method 1) or (depth+1)² (method 2), at least 4; jitter picks stratified
-/// samples, no jitter a regular grid. This is the seam where a true POV-Ray adaptive sampler goes.
+/// POV-Ray's adaptive anti-aliasing (reference 3.2.8.7, method 1): one sample per pixel, then
+/// every pixel whose colour differs from its left or upper neighbour's by more than the threshold
+/// (|Δr| + |Δg| + |Δb| of linear colours raised to 1/Antialias_Gamma), and that neighbour, is
+/// supersampled. Threshold 0 supersamples every pixel, 3 or more none. Samples: depth² (method 1)
+/// or (depth+1)² (method 2; Rays does not recurse), at least 4; jitter picks stratified samples,
+/// no jitter a regular grid.
 AaChoice mapPovAntialias(const PovAntialias& aa);
 
 /// The extension of Output_File_Type `type` (0: PNG): ".png", ".ppm", ".tga", ".jpg" or ".bmp".

@@ -14,6 +14,7 @@ uint64_t bytesPerPixel(const BufferFeatures& f) {
     // The render's float image while the caller's is alive (2 × 24), and the 8-bit output (3).
     uint64_t b = 2 * sizeof(Vec3) + 3;
     if (f.aaEdges) b += sizeof(PathInfo) + 1;
+    if (f.aaEdges && f.aaColours) b += sizeof(Vec3);
     if (f.lines) b += 2 * sizeof(EdgeRecord) + 3 + sizeof(float);
     if (f.mask) b += 1;
     if (f.post) b += 2 * 3 * sizeof(float) + sizeof(Vec3);

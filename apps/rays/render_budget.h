@@ -18,6 +18,7 @@ inline constexpr double kMaxSamplesPerImage = 1099511627776.0;
 /// What a render keeps per pixel besides the scene.
 struct BufferFeatures {
     bool aaEdges = false;  ///< per-pixel hit records and marks of edge-guided AA
+    bool aaColours = false;  ///< with aaEdges: the colours POV-Ray's threshold rule compares
     bool lines = false;    ///< feature-line records, candidates and coverage
     bool mask = false;     ///< --edge-mask greyscale image
     bool post = false;     ///< --post filters (planar float copies)

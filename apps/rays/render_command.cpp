@@ -265,6 +265,7 @@ int runRender(const RenderJob& job) {
     const EdgeSettings edges = resolveEdges(scene.edges, job.edges);
     BufferFeatures buffers;
     buffers.aaEdges = s.aaEdges && !edges.linesOnly;
+    buffers.aaColours = s.aaThreshold >= 0;
     buffers.lines = edges.enabled() || edges.linesOnly;
     buffers.mask = !job.edges.maskPath.empty();
     buffers.post = !job.post.empty();

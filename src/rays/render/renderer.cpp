@@ -29,6 +29,51 @@ Vec3 pixelOutput(Vec3 c, bool povScene, bool linear, double assumedGamma) {
     return linear ? povLinearColor(c, assumedGamma) : povOutputColor(c, assumedGamma);
 }
 
+// A linear colour as POV-Ray 3.7's anti-aliasing compares it: clamped to [0, 1] and raised to
+// 1/gamma (Antialias_Gamma; POV-Ray's change log for 3.7: the comparison uses gamma-adjusted
+// copies of the samples, the averaging the linear ones).
+Vec3 aaLook(Vec3 linear, double gamma) {
+    Vec3 r;
+    for (int k = 0; k < 3; ++k) r[k] = std::pow(std::clamp(linear[k], 0.0, 1.0), 1 / gamma);
+    return r;
+}
+
+// POV-Ray's method 1 (reference 3.2.8.7): a pixel whose colour differs from its left or upper
+// neighbour's by more than the threshold (|Δr| + |Δg| + |Δb|) is supersampled, and so is that
+// neighbour.
+std::vector<uint8_t> markColourChanges(const std::vector<Vec3>& looks, int w, int h, double threshold) {
+    std::vector<uint8_t> mark(looks.size(), 0);
+    auto differ = [&](size_t a, size_t b) {
+        const Vec3 d = looks[a] - looks[b];
+        return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z) > threshold;
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            if (x > 0 && differ(i, i - 1)) mark[i] = mark[i - 1] = 1;
+            if (y > 0 && differ(i, i - size_t(w))) mark[i] = mark[i - size_t(w)] = 1;
+        }
+    return mark;
+}
+
+// Rays' edge-guided rule: pixels whose first sample saw other objects or shadows than any of its
+// 8 neighbours'.
+std::vector<uint8_t> markPathChanges(const std::vector<PathInfo>& seen, int w, int h) {
+    std::vector<uint8_t> mark(seen.size(), 0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int dy = -1; dy <= 1 && !mark[size_t(y) * w + x]; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                    if (!(seen[size_t(y) * w + x] == seen[size_t(ny) * w + nx])) {
+                        mark[size_t(y) * w + x] = 1;
+                        break;
+                    }
+                }
+    return mark;
+}
+
 // Support radius (pixels, around the centre) and weight of the reconstruction filters.
 double filterRadius(PixelFilter f) {
     switch (f) {
@@ -322,23 +367,16 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         pinhole.samples = 1;
         pinhole.aperture = 0;
         std::vector<PathInfo> seen(size_t(s.width) * size_t(s.height));
+        const bool byColour = s.aaThreshold >= 0;
+        std::vector<Vec3> looks(byColour ? seen.size() : 0);  // the colours POV-Ray's rule compares
         forTiles([&](int x, int y, TraceContext& ctx) {
-            img.at(x, y) =
-                pixelOut(renderPixel(tracer, pinhole, one, x, s.height - 1 - y, ctx, &seen[size_t(y) * s.width + x]));
+            const size_t i = size_t(y) * s.width + x;
+            const Vec3 c = renderPixel(tracer, pinhole, one, x, s.height - 1 - y, ctx, &seen[i]);
+            img.at(x, y) = pixelOut(c);
+            if (byColour) looks[i] = aaLook(povOutput ? povLinearColor(c, assumedGamma) : c, s.aaGamma);
         }, progress ? ProgressFn([&](double f) { progress(0.5 * f); }) : ProgressFn{});
-        // Mark pixels that differ from any of their 8 neighbours.
-        std::vector<uint8_t> mark(seen.size(), 0);
-        for (int y = 0; y < s.height; ++y)
-            for (int x = 0; x < s.width; ++x)
-                for (int dy = -1; dy <= 1 && !mark[size_t(y) * s.width + x]; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const int nx = x + dx, ny = y + dy;
-                        if (nx < 0 || ny < 0 || nx >= s.width || ny >= s.height) continue;
-                        if (!(seen[size_t(y) * s.width + x] == seen[size_t(ny) * s.width + nx])) {
-                            mark[size_t(y) * s.width + x] = 1;
-                            break;
-                        }
-                    }
+        std::vector<uint8_t> mark =
+            byColour ? markColourChanges(looks, s.width, s.height, s.aaThreshold) : markPathChanges(seen, s.width, s.height);
         // Pass 2: full sampling of the marked pixels only.
         forTiles([&](int x, int y, TraceContext& ctx) {
             if (mark[size_t(y) * s.width + x])

@@ -69,7 +69,10 @@ private:
 /// writes them (render/pov_output.h: sRGB(c^assumed_gamma), clamped to [0, 1]); course scenes as
 /// traced. Deterministic: the result is bit-identical for any thread count. stats receives the summed counters. With settings.aaEdges, pass one renders
 /// one centre sample per pixel and pass two supersamples only pixels whose PathInfo differs
-/// from a neighbour's; edgePixels (optional) receives that mask (row-major, top row first).
+/// from a neighbour's, or with settings.aaThreshold ≥ 0 (POV-Ray's method 1) pixels whose colour
+/// differs from the left or upper neighbour's by more than the threshold, and that neighbour
+/// (the difference: |Δr| + |Δg| + |Δb| of linear colours clamped to [0, 1] and raised to
+/// 1/aaGamma, as POV-Ray 3.7's Antialias_Gamma); edgePixels (optional) receives that mask (row-major, top row first).
 /// onRecord (optional) is called, from worker threads, with each pixel's first-sample PathInfo
 /// (x right, y down from the top row); calls for different pixels may run concurrently.
 /// onRows (optional, single-pass renders only: not with aaEdges) is called from the worker that

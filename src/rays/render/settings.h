@@ -33,6 +33,8 @@ struct RenderSettings {
     int spp = 1;               ///< samples per pixel; 1 with Grid is the pixel centre (course)
     PixelFilter filter = PixelFilter::Box;
     bool aaEdges = false;      ///< one sample per pixel, then spp samples only where ids or shadows change
+    double aaThreshold = -1;   ///< ≥ 0 with aaEdges: POV-Ray's rule instead, where the colour changes by more (renderer.h)
+    double aaGamma = 2.5;      ///< colours compared as linear^(1/aaGamma) under aaThreshold (POV-Ray's Antialias_Gamma)
     uint64_t seed = 0;         ///< seeds the per-sample hash RNG
 
     int areaSamples = 0;       ///< > 0: area lights use this many samples per axis instead of the scene's
