@@ -1,7 +1,7 @@
 // The ray is clipped to the unit box and cut where it crosses the planes x = 0, y = 0, z = 0 and
 // |x| = |y| (where the absolute values make the function non-smooth), as in Franklin & Barr's
 // "Faster calculation of superquadric shapes" (IEEE CG&A 1981); each piece is sampled for a sign
-// change of f − 1, which bisection then pins down. A ray grazing the surface between two samples
+// change of f − 1, which regula falsi (Illinois) then pins down. A ray grazing the surface between two samples
 // may miss it.
 #include "rays/scene/shapes/superellipsoid.h"
 
@@ -14,9 +14,12 @@ namespace {
 
 constexpr int kSamples = 12;  // per piece of the ray
 
+// f(p) − 1 for f = (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n), its powers as exp2 of scaled log2
+// (a zero coordinate: log2 0 = −∞ and exp2 −∞ = 0, as the powers with positive exponents give).
 double superF(double e, double n, Vec3 p) {
-    const double a = std::pow(std::fabs(p.x), 2 / e) + std::pow(std::fabs(p.y), 2 / e);
-    return std::pow(a, e / n) + std::pow(std::fabs(p.z), 2 / n) - 1;
+    const double u = 2 / e, v = 2 / n;
+    const double a = std::exp2(u * std::log2(std::fabs(p.x))) + std::exp2(u * std::log2(std::fabs(p.y)));
+    return std::exp2((e / n) * std::log2(a)) + std::exp2(v * std::log2(std::fabs(p.z))) - 1;
 }
 
 // Slab test against the box [-w, w]³: the ray's t range inside it.
@@ -33,6 +36,29 @@ bool clipToBox(const Ray& r, double w, double& t0, double& t1) {
         if (t0 > t1) return false;
     }
     return true;
+}
+
+// The crossing of f − 1 = 0 between lo and hi (values flo and fhi of opposite signs), narrowed by
+// the Illinois variant of regula falsi (Dowell and Jarratt 1971; f is smooth within a piece),
+// which keeps it bracketed; a secant point outside the bracket falls back to its middle.
+double refineCrossing(double e, double n, const Ray& r, double lo, double flo, double hi, double fhi) {
+    int kept = 0;  // which end the last step kept: −1 lo, +1 hi
+    for (int it = 0; it < 100 && hi - lo > 1e-13 * (1 + std::fabs(lo)); ++it) {
+        double mid = (flo * hi - fhi * lo) / (flo - fhi);
+        if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+        const double f = superF(e, n, r.at(mid));
+        if (f == 0) return mid;
+        if ((f < 0) == (flo < 0)) {
+            lo = mid, flo = f;
+            if (kept == 1) fhi *= 0.5;
+            kept = 1;
+        } else {
+            hi = mid, fhi = f;
+            if (kept == -1) flo *= 0.5;
+            kept = -1;
+        }
+    }
+    return 0.5 * (lo + hi);
 }
 
 }  // namespace
@@ -60,14 +86,7 @@ bool hitSuperellipsoid(const Object& o, const Ray& r, double tMin, double tMax, 
             const double b = s == kSamples ? end : a + (end - a) / (kSamples - s + 1);
             const double fb = superF(e, n, r.at(b));
             if ((fa < 0) != (fb < 0)) {
-                double lo = a, hi = b;
-                const bool loNeg = fa < 0;  // the side of lo
-                for (int it = 0; it < 60 && hi - lo > 1e-13 * (1 + std::fabs(lo)); ++it) {
-                    const double mid = 0.5 * (lo + hi);
-                    if ((superF(e, n, r.at(mid)) < 0) == loNeg) lo = mid;
-                    else hi = mid;
-                }
-                h.t = 0.5 * (lo + hi);
+                h.t = refineCrossing(e, n, r, a, fa, b, fb);
                 if (!(h.t > tMin && h.t < tMax)) return false;
                 // The gradient of f (outward).
                 const Vec3 p = r.at(h.t);
