@@ -4,11 +4,50 @@
 // to its point nearest the centre, so the quartic's coefficients stay of the size of the torus.
 #include "rays/scene/shapes/torus.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rays/math/poly_roots.h"
 
 namespace rays {
+
+namespace {
+
+// Narrows [sLo, sHi] (along the unit direction d from o) to the slab |y| ≤ r, widened a little as
+// the bounding sphere is, and says false when the ray misses the torus' shell there: all of it
+// within the hole (distance from the y axis below |R| − r) or all of it beyond |R| + r. Cheap
+// tests that spare the quartic most rays through a thin ring's box.
+bool clipToTorusShell(Vec3 o, Vec3 d, double R, double r, double& sLo, double& sHi) {
+    const double half = 1.001 * r;
+    if (d.y != 0) {
+        double a = (-half - o.y) / d.y, b = (half - o.y) / d.y;
+        if (a > b) std::swap(a, b);
+        sLo = std::max(sLo, a);
+        sHi = std::min(sHi, b);
+        if (!(sLo < sHi)) return false;
+    } else if (std::fabs(o.y) > half) {
+        return false;
+    }
+    // ρ²(s) = |o_xz + s·d_xz|², a convex quadratic: its largest value on the interval is at an end,
+    // its smallest at the vertex when that lies inside.
+    auto rho2 = [&](double s) {
+        const double x = o.x + s * d.x, z = o.z + s * d.z;
+        return x * x + z * z;
+    };
+    const double aLo = rho2(sLo), aHi = rho2(sHi);
+    const double inner = std::fabs(R) - half;
+    if (inner > 0 && std::max(aLo, aHi) < inner * inner) return false;  // in the hole throughout
+    const double flat = d.x * d.x + d.z * d.z;
+    double least = std::min(aLo, aHi);
+    if (flat > 0) {
+        const double v = -(o.x * d.x + o.z * d.z) / flat;
+        if (v > sLo && v < sHi) least = std::min(least, rho2(v));
+    }
+    const double outer = std::fabs(R) + half;
+    return least <= outer * outer;
+}
+
+}  // namespace
 
 bool hitTorus(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     const double R = o.r0, rr = o.r1;
@@ -21,8 +60,9 @@ bool hitTorus(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
     const double disc = b * b - c;
     if (disc <= 0) return false;
     const double sq = std::sqrt(disc);
-    const double sLo = std::max(-b - sq, tMin * len), sHi = std::min(-b + sq, tMax * len);
+    double sLo = std::max(-b - sq, tMin * len), sHi = std::min(-b + sq, tMax * len);
     if (!(sLo < sHi)) return false;
+    if (!clipToTorusShell(r.origin, d, R, rr, sLo, sHi)) return false;
     const double s0 = -b;  // shifted origin: the ray's point nearest the centre
     const Vec3 O = r.origin + s0 * d;
     const double a1 = 2 * dot(O, d);
