@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -144,6 +145,70 @@ TEST(PovCsgHits, ABarWithEightHolesTestsItsLeavesBoxes) {
         EXPECT_NEAR(wall.t, 0.3, 1e-9) << i;
         EXPECT_TRUE(near(wall.normal, {-1, 0, 0})) << i;  // facing into the hole
     }
+}
+
+// Random CSG trees (intersection, difference and merge, three levels deep, of spheres, boxes,
+// cylinders, cones and tori, each turned, scaled and moved) against dense steps along random rays,
+// judged by the trees' inside test alone: wherever a step finds a point inside, the nearest hit
+// is found, at or before it and after the last step outside. The hit search solves each leaf
+// only within its ancestors' bounds and inside convex clippers (Csg::leafWindow); this is its
+// brute-force check.
+std::string randomLeaf(std::mt19937& rng) {
+    std::uniform_real_distribution<double> U(-1, 1);
+    auto num = [&](double lo, double hi) { return std::to_string(lo + (hi - lo) * 0.5 * (U(rng) + 1)); };
+    auto vec = [&](double r) { return "<" + num(-r, r) + ", " + num(-r, r) + ", " + num(-r, r) + ">"; };
+    std::string leaf;
+    switch (std::uniform_int_distribution<int>(0, 4)(rng)) {
+        case 0: leaf = "sphere { " + vec(0.5) + ", " + num(0.4, 1.2) + " }"; break;
+        case 1: leaf = "box { " + vec(0.3) + " - 0.6, " + vec(0.3) + " + 0.6 }"; break;
+        case 2: leaf = "cylinder { " + vec(1) + ", " + vec(1) + ", " + num(0.2, 0.6) + " }"; break;
+        case 3: leaf = "cone { " + vec(1) + ", " + num(0.1, 0.7) + ", " + vec(1) + ", " + num(0, 0.5) + " }"; break;
+        default: leaf = "torus { " + num(0.5, 1) + ", " + num(0.1, 0.4) + " }"; break;
+    }
+    return "object { " + leaf + " rotate " + vec(90) + " scale <" + num(0.7, 1.3) + ", " + num(0.7, 1.3) + ", " +
+           num(0.7, 1.3) + "> translate " + vec(0.6) + " }";
+}
+
+std::string randomTree(std::mt19937& rng, int depth) {
+    if (depth == 0) return randomLeaf(rng);
+    static const char* kOps[] = {"intersection", "difference", "merge"};
+    const char* op = kOps[std::uniform_int_distribution<int>(0, 2)(rng)];
+    const int n = std::uniform_int_distribution<int>(2, 3)(rng);
+    std::string t = std::string(op) + " { ";
+    for (int i = 0; i < n; ++i) t += randomTree(rng, std::uniform_int_distribution<int>(0, depth - 1)(rng)) + " ";
+    return t + "rotate <" + std::to_string(30 * depth) + ", 10, 0> }";
+}
+
+TEST(PovCsgHits, RandomTreesAgreeWithDenseInsideSteps) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int checked = 0;
+    for (int tree = 0; tree < 40; ++tree) {
+        const std::string text = randomTree(rng, 3);
+        // A merge of opaque parts may come out as its parts, an intersection of parts whose
+        // bounds do not meet as nothing.
+        const Scene s = build(text);
+        auto inside = [&](Vec3 q) {
+            for (const Object& o : s.objects)
+                if (insideShape(o, q) == 1) return true;
+            return false;
+        };
+        for (int i = 0; i < 60; ++i) {
+            const Vec3 from = 6.0 * normalize(Vec3{U(rng), U(rng), U(rng)});
+            const Vec3 d = normalize(Vec3{1.5 * U(rng), 1.5 * U(rng), 1.5 * U(rng)} - from);
+            const double step = 2e-3;
+            for (double t = 6 - 4; t < 6 + 4; t += step) {
+                if (!inside(from + t * d)) continue;
+                ++checked;
+                const Hit h = shoot(s, from, d);
+                ASSERT_TRUE(h.valid()) << text << "\nray " << i << " inside at " << t;
+                EXPECT_LE(h.t, t + 1e-9) << text << "\nray " << i;
+                EXPECT_GE(h.t, t - step - 1e-9) << text << "\nray " << i;
+                break;
+            }
+        }
+    }
+    EXPECT_GT(checked, 300);
 }
 
 TEST(PovCsgHits, UnionInsideCsgKeepsInnerSurfacesAndMergeRemovesThem) {
