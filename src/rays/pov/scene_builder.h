@@ -43,6 +43,7 @@ public:
 private:
     void updateDefaults(const ParsedScene::Top& top);
     void addCamera(const Item& camera);
+    int cameraNormal(const Entry& normal);  ///< the root of a camera `normal { }` (-1: none)
     /// Sets the window or angles of a non-perspective camera from the camera block's vectors.
     static void finishProjection(Camera& c, Vec3 dir, Vec3 right, Vec3 up, Vec3 lookAt, bool rightOrUpSet,
                                  bool angleSet, const double angles[2]);

@@ -16,6 +16,16 @@ using sdl::VType;
 // keeping the handedness of the vectors before it); transformations move the location and turn
 // the vectors after every other item, wherever they stand (measured with povray 3.7: `rotate`,
 // `translate` or a shearing `matrix` before `location` or `look_at` give the same image as after).
+// The camera's `normal { }`: a normal root in world space (camera rays are tilted by it as
+// surface normals are; the camera's own transformations do not move it).
+int SceneBuilder::cameraNormal(const Entry& e) {
+    if (!pigments_.compilesNormals()) return -1;
+    const int node = pigments_.compileNormal(e.args[0].item());
+    if (node < 0) return -1;
+    scene_.normals.roots.push_back(pattern::NormalRoot{Transform{}, Transform{}, node});
+    return int(scene_.normals.roots.size()) - 1;
+}
+
 void SceneBuilder::addCamera(const Item& cam) {
     Vec3 loc{0, 0, 0}, dir{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
     Vec3 lookAt{0, 0, 1};  // POV-Ray's default look_at point (measured: orthographic's window size)
@@ -98,7 +108,7 @@ void SceneBuilder::addCamera(const Item& cam) {
             case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
             case Kw::aperture: c.aperture = 0.5 * toFloat(e.args[0]); break;
             case Kw::blur_samples: c.blurSamples = clampedInt(toFloat(e.args.back()), 0, 65536); break;
-            case Kw::normal: notes_.note("camera normal", e.loc); break;
+            case Kw::normal: c.normal = cameraNormal(e); break;
             case Kw::bokeh: notes_.note("bokeh", e.loc); break;
             default: break;
         }

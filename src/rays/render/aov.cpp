@@ -102,7 +102,9 @@ AovBuffers computeAovs(const Scene& scene, const Bvh& bvh, const RenderSettings&
     parallelFor(s.height, s.threads, [&](int y) {
         for (int x = 0; x < s.width; ++x) {
             // The renderer's pixel (x, y from the top) is camera pixel (x, height − 1 − y).
-            const Ray ray = view.rays.rayThrough(x + 0.5, s.height - 1 - y + 0.5, s.width, s.height);
+            const double px = x + 0.5, py = s.height - 1 - y + 0.5;
+            const Ray ray = tiltedCameraRay(view, view.rays.rayThrough(px, py, s.width, s.height), px / s.width - 0.5,
+                                            py / s.height - 0.5);
             if (CameraRays::missed(ray)) continue;
             const Hit h = tracer.firstHit(ray);
             if (!h.valid()) continue;

@@ -181,11 +181,23 @@ ViewSetup resolveView(const Scene& scene, const RenderSettings& s) {
     v.focalDistance = s.focalDistance > 0 ? s.focalDistance : v.camera.focalDistance();
     if (v.focalDistance <= 0) v.focalDistance = length(v.camera.lookAt - v.camera.location);
     v.samples = sampleCount(s.aa, s.spp);
+    v.normals = &scene.normals;
+    v.patterns = &scene.pigments;
     if (v.aperture > 0) {
         const int dof = s.dofSamples > 0 ? s.dofSamples : (v.camera.blurSamples > 0 ? v.camera.blurSamples : 16);
         v.samples = std::max(v.samples, sampleCount(s.aa == AaMode::Grid && s.spp == 1 ? AaMode::Stratified : s.aa, dof));
     }
     return v;
+}
+
+// POV-Ray's camera `normal` (reference 3.4.2.3, "Camera Ray Perturbation"), as measured with
+// POV-Ray 3.7 (sine-wave gradient normals seen on a ramp-coloured wall): the pattern is evaluated
+// at the sample's screen point (u, v, 0), u and v in [−½, ½] across the image (v up), whatever the
+// camera's place, and the unit ray direction is tilted as a surface normal there (world axes).
+Ray tiltedCameraRay(const ViewSetup& view, Ray ray, double u, double v) {
+    if (view.camera.normal < 0 || CameraRays::missed(ray)) return ray;
+    ray.dir = view.normals->atRoot(*view.patterns, view.camera.normal, Vec3{u, v, 0}, normalize(ray.dir));
+    return ray;
 }
 
 namespace {
@@ -238,7 +250,8 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
         // Map [0,1)² onto the filter support around the pixel centre.
         const double dx = (2 * a - 1) * radius, dy = (2 * b - 1) * radius;
         const double w = filterWeight(s.filter, dx, dy);
-        Ray ray = view.rays.rayThrough(i + 0.5 + dx, j + 0.5 + dy, s.width, s.height);
+        const double px = i + 0.5 + dx, py = j + 0.5 + dy;
+        Ray ray = tiltedCameraRay(view, view.rays.rayThrough(px, py, s.width, s.height), px / s.width - 0.5, py / s.height - 0.5);
         if (view.aperture > 0) {
             // Thin lens: start on a disc of radius `aperture` around the eye (camera plane), aim
             // at the point where the pinhole ray meets the focal plane.

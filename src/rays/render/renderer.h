@@ -25,7 +25,14 @@ struct ViewSetup {
     double aperture = 0;       ///< lens radius; 0 = pinhole
     double focalDistance = 1;  ///< along the view direction
     int samples = 1;           ///< samples per pixel (anti-aliasing and lens together)
+    const pattern::NormalTable* normals = nullptr;    ///< with camera.normal ≥ 0: the scene's normals
+    const pattern::PigmentTable* patterns = nullptr;  ///< and patterns
 };
+
+/// A camera ray tilted by the camera's `normal` (POV-Ray): its unit direction taken as the normal
+/// of a surface at the pattern point (u, v, 0), (u, v) the sample's screen position in [−½, ½]²
+/// (v up). Rays of cameras without one are returned as they are.
+Ray tiltedCameraRay(const ViewSetup& view, Ray ray, double u, double v);
 
 /// Resolves the camera and the sample count from the scene and the settings.
 ViewSetup resolveView(const Scene& scene, const RenderSettings& s);

@@ -34,6 +34,7 @@ struct Camera {
     Projection projection = Projection::Perspective;
     double angleH = 0, angleV = 0;  ///< viewing angles (radians) of the angle-based projections
     std::shared_ptr<const MeshCamera> mesh;  ///< Projection::Mesh: the faces rays start from
+    int normal = -1;  ///< POV-Ray's camera `normal`: a Scene::normals root tilting each camera ray (-1: none)
 
     /// Distance from location to the focal plane (along the view direction).
     double focalDistance() const { return dot(focalPoint - location, forward()); }

@@ -1,0 +1,76 @@
+// POV-Ray's camera `normal { }`: camera rays tilted as surface normals by the pattern at the
+// sample's screen point (u, v, 0), u and v in [−½, ½] (v up), along world axes. The expected
+// places come from POV-Ray 3.7 renders (160×120, -A) of a camera at <0, 0, −5> looking at the
+// origin (angle 40) through a sine-wave gradient normal, in front of a wall whose colour ramps
+// with x (or y): the wall point each pixel sees moved with the tilt, and it did not move at
+// columns 27 and 132 for `gradient x 0.2 sine_wave scale 1.3` (the slope of the wave is zero at
+// u = ±0.325) and at rows 23, 66 and 108 (from the top) for `gradient y 0.2 sine_wave scale 0.7
+// translate 0.13*y` (v = 0.305, −0.045, −0.395); at the centre the first moved towards −x.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "rays/render/renderer.h"
+#include "support/pov_scene.h"
+
+namespace rays {
+namespace {
+
+constexpr int kW = 160, kH = 120;
+
+Scene sceneWith(const std::string& normal) {
+    return test::buildPov("camera { location <0, 0, -5> look_at <0, 0, 0> angle 40 normal { " + normal +
+                          " } }\nplane { z, 0 pigment { rgb 1 } }\n");
+}
+
+// The tilt of the camera ray through pixel (x, y) (y from the top row): its direction minus the
+// untilted one.
+Vec3 tiltAt(const Scene& scene, double x, double y) {
+    RenderSettings s;
+    s.width = kW;
+    s.height = kH;
+    const ViewSetup view = resolveView(scene, s);
+    const double px = x + 0.5, py = kH - 1 - y + 0.5;
+    const Ray plain = view.rays.rayThrough(px, py, kW, kH);
+    const Ray tilted = tiltedCameraRay(view, plain, px / kW - 0.5, py / kH - 0.5);
+    EXPECT_NEAR(length(tilted.dir), 1, 1e-12);
+    return tilted.dir - plain.dir;
+}
+
+TEST(PovCameraNormal, TiltsAlongXWhereThePatternSlopesAcrossTheScreen) {
+    const Scene scene = sceneWith("gradient x 0.2 sine_wave scale 1.3");
+    ASSERT_EQ(scene.cameras.at(0).normal, 0);
+    // No tilt where u = ±0.325 (pixel centres at 28 and 132 of 160: x = 27.5 and 131.5), the
+    // columns where POV-Ray's wall stood still (27 and 132, each the first past the crossing).
+    const Vec3 centre = tiltAt(scene, 79.5, 60);
+    EXPECT_LT(centre.x, -0.01);  // towards −x, as POV-Ray's wall showed
+    EXPECT_LT(std::fabs(tiltAt(scene, 27.5, 60).x), 0.02 * std::fabs(centre.x));
+    EXPECT_LT(std::fabs(tiltAt(scene, 131.5, 60).x), 0.02 * std::fabs(centre.x));
+    EXPECT_NEAR(centre.y, 0, 1e-4);  // only the renormalisation moves y
+    // Between the zero columns the tilt keeps its sign; beyond them it turns.
+    EXPECT_LT(tiltAt(scene, 50, 60).x, 0);
+    EXPECT_GT(tiltAt(scene, 10, 60).x, 0);
+    EXPECT_GT(tiltAt(scene, 150, 60).x, 0);
+}
+
+TEST(PovCameraNormal, ScreenVCountsUpAndTheWaveKeepsItsTranslation) {
+    const Scene scene = sceneWith("gradient y 0.2 sine_wave scale 0.7 translate 0.13*y");
+    // v = 0.305, −0.045 and −0.395 lie at pixel centres 23.4, 65.4 and 107.4 from the top (rows
+    // 22.9, 64.9 and 106.9 here): POV-Ray's wall stood still at rows 23, 66 and 108, each the
+    // first past its crossing.
+    const double most = std::fabs(tiltAt(scene, 80, 44).y);
+    EXPECT_GT(most, 0.01);
+    for (double row : {22.9, 64.9, 106.9}) EXPECT_LT(std::fabs(tiltAt(scene, 80, row).y), 0.02 * most) << row;
+    // The tilt's sign alternates between the crossings.
+    EXPECT_LT(tiltAt(scene, 80, 44).y * tiltAt(scene, 80, 86).y, 0);
+}
+
+TEST(PovCameraNormal, CamerasWithoutOneKeepTheirRays) {
+    const Scene scene = test::buildPov("camera { location <0, 0, -5> look_at 0 }\nsphere { 0, 1 }\n");
+    EXPECT_EQ(scene.cameras.at(0).normal, -1);
+    EXPECT_EQ(length(tiltAt(scene, 30, 40)), 0);
+}
+
+}  // namespace
+}  // namespace rays
