@@ -227,6 +227,7 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 
         case PatternKind::Julia: return escapeTime(params, p.x, p.y, params.juliaR, params.juliaI);
         case PatternKind::Spiral1: return spiral1(params.arms, p);
         case PatternKind::Slope: return slopeValue(params.slope, p, N);
+        case PatternKind::DensityFile: return params.grid ? params.grid->at(p, params.interpolate) : 0;
         case PatternKind::Function: {
             // Wrapped above 1 like gradient (measured: 1.2 gives 0.2 under triangle_wave 0.4).
             const double v = params.function ? functionValue(*params.function, p) : 0;

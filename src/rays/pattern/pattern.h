@@ -6,6 +6,7 @@
 
 #include "rays/fn/program.h"
 #include "rays/math/vec3.h"
+#include "rays/pattern/density_file.h"
 #include "rays/pattern/noise.h"
 #include "rays/pattern/slope.h"
 
@@ -25,6 +26,7 @@ enum class PatternKind : uint8_t {
     Average,  ///< the weighted mean of a pigment_map's pigments
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
+    DensityFile,  ///< density_file df3: a DF3 grid over the unit cube (pattern/density_file.h)
 };
 
 /// True for checker, hexagon and brick (a list of 2 or 3 colours, no wave, no map).
@@ -47,6 +49,8 @@ struct PatternParams {
     Slope slope;                       ///< Slope's direction, altitude and ranges
     int source = -1;                   ///< PigmentPattern: the pigment's node in the same table
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
+    const DensityGrid* grid = nullptr;      ///< DensityFile: the grid (kept alive by the PigmentTable)
+    int interpolate = 0;                    ///< DensityFile: 0 nearest, 1 trilinear, 2 tricubic
 };
 
 /// The value of a continuous pattern at p (pattern space), turbulence included, before the wave.

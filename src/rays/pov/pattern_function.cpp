@@ -41,6 +41,7 @@ fn::HostFunction compilePatternFunction(const Item& item, bool pigment, NotRende
     {
         PigmentCompiler compiler(compiled->table, notes);
         compiler.imageFiles().setFileFinder(findFile);
+        compiler.densityFiles().setFileFinder(findFile);
         compiled->node = compiler.compileFunction(item);
     }
     if (compiled->node < 0) return {};

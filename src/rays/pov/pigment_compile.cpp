@@ -286,6 +286,17 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         readImageMap(e.args[0].item(), s);
         return;
     }
+    if (k == Kw::density_file) {  // density_file df3 "NAME" [interpolate N]
+        s.pattern = true;
+        s.unrendered = false;
+        s.node.kind = PatternKind::DensityFile;
+        s.list.clear();
+        table_.grids.push_back(densityFiles_.load(e.args[0].str(), e.loc));
+        s.node.params.grid = table_.grids.back().get();
+        if (e.args.size() > 1) s.node.params.interpolate = int(std::clamp(toFloat(e.args[1]), 0.0, 2.0));
+        if (!s.waveSet) s.node.wave.type = WaveType::Ramp;
+        return;
+    }
     if (isPatternType(k) || k == Kw::image_map) {
         s.unrendered = true;
         s.pattern = false;
@@ -299,6 +310,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::pigment_map: case Kw::density_map: readPigmentMap(e.args[0].item(), s, depth); break;
         case Kw::pigment: case Kw::density: s.list.push_back(MapEntry{0, {}, nested(e.args[0].item(), depth)}); break;
         case Kw::turbulence: pp.turbulence.amount = toVec3(e.args[0]); break;
+        case Kw::interpolate: pp.interpolate = int(std::clamp(num(0), 0.0, 2.0)); break;  // density_file's
         case Kw::octaves: pp.turbulence.octaves = int(std::clamp(num(0), 1.0, 10.0)); break;
         case Kw::omega: pp.turbulence.omega = num(0); break;
         case Kw::lambda: pp.turbulence.lambda = num(0); break;

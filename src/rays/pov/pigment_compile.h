@@ -8,6 +8,7 @@
 
 #include "rays/pattern/normal.h"
 #include "rays/pattern/pigment.h"
+#include "rays/pov/density_files.h"
 #include "rays/pov/image_files.h"
 #include "rays/pov/item_values.h"
 #include "rays/pov/not_rendered.h"
@@ -39,6 +40,7 @@ public:
     const pattern::PigmentTable& table() const { return table_; }
     /// The scene's image files (image maps here; height fields share them).
     ImageFiles& imageFiles() { return images_; }
+    DensityFiles& densityFiles() { return densityFiles_; }
     /// A pigment seen through a transformation (its texture space → the enclosing one); node -1
     /// stands for the flat colour.
     struct Placed {
@@ -80,6 +82,7 @@ private:
     pattern::NormalTable* normalTable_ = nullptr;
     std::unique_ptr<NormalCompiler> normals_;  ///< made on the first normal
     ImageFiles images_{notes_};
+    DensityFiles densityFiles_{notes_};
 };
 
 }  // namespace rays::pov

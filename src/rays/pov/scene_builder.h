@@ -32,6 +32,7 @@ public:
     void setFileFinder(std::function<std::string(const std::string&)> find) {
         findFile_ = std::move(find);
         pigments_.imageFiles().setFileFinder(findFile_);
+        pigments_.densityFiles().setFileFinder(findFile_);
     }
     /// Reads fonts through cache (kept by the caller, outliving the builder) instead of its own.
     void setFontCache(FontCache* cache) { fonts_ = cache ? cache : &ownFonts_; }
