@@ -211,6 +211,29 @@ TEST(PovCsgHits, RandomTreesAgreeWithDenseInsideSteps) {
     EXPECT_GT(checked, 300);
 }
 
+// A disc's inside is its plane's half-space away from the normal, unbounded by the radius
+// (reference 3.4.5.2.2): desk.pov's paperweight, a sphere cut by a disc. The heights are POV-Ray
+// 3.7's trace() from y = 50 straight down at x = 0 ... 8 (z = 0.01).
+TEST(PovCsgHits, ADiscCutsLikeItsPlane) {
+    const Scene s = build("intersection { sphere { <0, -5, 0>, 10 } disc { 0, -y, 10.1 } }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const double traced[9] = {5.0, 4.9499, 4.7980, 4.5394, 4.1651, 3.6602, 3.0, 2.1414, 1.0};
+    for (int x = 0; x <= 8; ++x) {
+        const Hit h = shoot(s, {double(x), 50, 0.01}, {0, -1, 0});
+        ASSERT_TRUE(h.valid()) << x;
+        EXPECT_NEAR(50 - h.t, traced[x], 1e-4) << x;
+    }
+    EXPECT_FALSE(shoot(s, {9, 50, 0.01}, {0, -1, 0}).valid());  // beyond the cap (POV-Ray: none)
+    const Hit under = shoot(s, {2, -5, 0}, {0, 1, 0});           // the flat face, from below
+    EXPECT_NEAR(under.t, 5, 1e-9);
+    EXPECT_TRUE(near(under.normal, {0, -1, 0}));
+    EXPECT_EQ(insideShape(s.objects[0], {0, 1, 0}), 1);
+    EXPECT_EQ(insideShape(s.objects[0], {0, -1, 0}), 0);
+    const Scene d = build("disc { 0, y, 1 }");
+    EXPECT_EQ(insideShape(d.objects[0], {20, -1, 0}), 1);  // below, far beyond the radius
+    EXPECT_EQ(insideShape(d.objects[0], {0, 1, 0}), 0);
+}
+
 TEST(PovCsgHits, UnionInsideCsgKeepsInnerSurfacesAndMergeRemovesThem) {
     const std::string spheres = "sphere { <-0.5, 0, 0>, 1 } sphere { <0.5, 0, 0>, 1 }";
     const Scene u = build("intersection { union { " + spheres + " } box { -10, 10 } }");

@@ -116,7 +116,7 @@ Bounds leafWorldBox(const Object& o) {
 
 Bounds leafBounds(const Object& o, bool inverse) {
     if (o.type == ShapeType::Plane) return planeBounds(o, inverse);
-    if (inverse) return allSpace();
+    if (inverse || o.type == ShapeType::Disc) return allSpace();  // a disc's inside is its plane's half-space
     return leafWorldBox(o);
 }
 
@@ -342,7 +342,10 @@ int insideShape(const Object& o, Vec3 q) {
         case ShapeType::HeightField: return insideHeightField(o, p);
         case ShapeType::JuliaFractal: return insideJuliaFractal(o, p);
         case ShapeType::Ovus: return insideOvus(o, p);
-        case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Disc: case ShapeType::Polygon: return -1;
+        // "The inside of a disc is the inside of the plane that contains the disc" (reference
+        // 3.4.5.2.2): the side its normal points away from, whatever the radius.
+        case ShapeType::Disc: return dot(o.p1, p - o.p0) < 0;
+        case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Polygon: return -1;
     }
     return -1;
 }

@@ -1,5 +1,6 @@
 // POV-Ray's disc (reference 3.4.5.2.2): centre Object::p0, unit normal p1, radius r0, hole radius
-// r1 (0: none). A flat patch: no inside.
+// r1 (0: none). Its inside (for CSG) is the half-space of its plane away from the normal, not
+// bounded by the radius (reference: "the inside of a disc is the inside of the plane").
 #pragma once
 #include "rays/scene/object.h"
 
