@@ -51,10 +51,13 @@ bool clipToTorusShell(Vec3 o, Vec3 d, double R, double r, double& sLo, double& s
 
 bool hitTorus(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     const double R = o.r0, rr = o.r1;
-    const double len = length(r.dir);
-    const Vec3 d = r.dir / len;
-    // The bounding sphere, a little wider so that no root lies on its ends: s along the unit direction.
+    // The bounding sphere, a little wider so that no root lies on its ends: first missed or not
+    // with the direction as it is (no root, no division), then s along the unit direction.
     const double bound = 1.001 * (std::fabs(R) + rr);
+    const double dd = dot(r.dir, r.dir), od = dot(r.origin, r.dir), oo = dot(r.origin, r.origin) - bound * bound;
+    if (od * od - dd * oo <= 0) return false;
+    const double len = std::sqrt(dd);
+    const Vec3 d = r.dir / len;
     const double b = dot(r.origin, d);
     const double c = dot(r.origin, r.origin) - bound * bound;
     const double disc = b * b - c;
