@@ -392,6 +392,29 @@ TEST(PovCsgParseTime, InsideAndTraceAnswerForCsgObjects) {
     EXPECT_TRUE(near(s.objects[1].p0, {0.3, 10.2, 0}));  // the cut face at z = 0
 }
 
+// trace() and inside() need the shape only: an object whose look Rays draws otherwise (here an
+// interior's dispersion, noted) still answers; one whose shape is left out does not (<0, 0, 0>).
+TEST(PovCsgParseTime, TraceAnswersWhateverTheTextureAndNotForShapesLeftOut) {
+    std::vector<std::string> warnings;
+    const Scene s = build(
+        "#declare D = sphere { 0, 1 interior { dispersion 1.1 } }\n"
+        "#declare N = <0, 0, 0>;\n"
+        "#declare P = trace(D, <0, 0, -5>, z, N);\n"
+        "sphere { P + <0, 10, 0>, 0.5 }\n"
+        "#declare H = height_field { sys \"x.sys\" }\n"
+        "#declare Q = trace(H, <0.5, 5, 0.5>, -y, N);\n"
+        "sphere { Q + <0, 20, 0>, 0.5 }\n",
+        &warnings);
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_TRUE(near(s.objects[0].p0, {0, 10, -1}));  // the sphere's front
+    EXPECT_TRUE(near(s.objects[1].p0, {0, 20, 0}));   // no height field: <0, 0, 0>
+    std::vector<std::string> traceNotes;
+    for (const std::string& w : warnings)
+        if (w.find("trace() of this object") != std::string::npos) traceNotes.push_back(w);
+    ASSERT_EQ(traceNotes.size(), 1u);  // for the height field only (line 7, after #version)
+    EXPECT_NE(traceNotes[0].find(":7:"), std::string::npos) << traceNotes[0];
+}
+
 }  // namespace
 }  // namespace rays
 

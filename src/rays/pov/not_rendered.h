@@ -21,6 +21,9 @@ public:
     /// the first note only (what Rays does instead, e.g. "(left out)").
     void note(const std::string& what, const sdl::Loc& at, const std::string& detail = "");
     size_t count() const { return seen_.size(); }
+    /// How many of the kinds noted left something out of the scene ("(left out)": a shape or a
+    /// CSG object), as against drawing it otherwise (a pattern in its mean colour, ...).
+    size_t leftOut() const { return leftOut_; }
     /// "file:line:col" of a location (for the builder's errors).
     std::string where(const sdl::Loc& at) const { return where_(at); }
 
@@ -29,6 +32,7 @@ private:
     std::function<void(const std::string&)> warn_;
     bool strict_;
     std::set<std::string> seen_;
+    size_t leftOut_ = 0;
 };
 
 }  // namespace rays::pov

@@ -39,7 +39,9 @@ const PovHost::Probe& PovHost::probe(const sdl::ItemRef& object) {
         b.setFontCache(&fonts_);
         b.add(ParsedScene::Top{object, nullptr, 0, 3.7});
         slot->scene = b.finish("");
-        slot->complete = quiet.count() == 0;
+        // trace(), inside() and the extents need the shapes only: a texture drawn otherwise (a
+        // pattern Rays does not render) leaves them whole.
+        slot->complete = quiet.leftOut() == 0;
         slot->bvh = Bvh(slot->scene.objects);
     }
     return *slot;
