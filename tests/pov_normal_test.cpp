@@ -117,10 +117,23 @@ TEST(PovNormal, IdentifiersBumpSizeAndPlacesOfTheNormal) {
 
 TEST(PovNormal, UnrenderedNormalsAreNotedAndDrawnSmooth) {
     const Loaded l = load("light_source { <1, 0, -1>*1000 color 1 parallel point_at 0 }\n"
-                          "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { quilted 0.5 } }\n");
+                          "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { pavement 0.5 } }\n");
     ASSERT_EQ(l.warnings.size(), 1u);
-    EXPECT_EQ(l.warnings[0], "scene.pov:4:76: warning: not rendered yet: normal pattern quilted (drawn smooth)");
+    EXPECT_EQ(l.warnings[0], "scene.pov:4:76: warning: not rendered yet: normal pattern pavement (drawn smooth)");
     EXPECT_NEAR(seen(l.scene, 0.35, 0.2).x, std::sqrt(0.5), 1e-9);
+}
+
+TEST(PovNormal, QuiltedTiltsAlongTheOffsetFromTheCubesCentreAsPovRayDoes) {
+    // povray 3.7 (measured on the lit plane): the normal plus amount·B(|d|)·d·2/√3, d the point's
+    // offset from its unit cube's centre, B the control0/control1 curve.
+    EXPECT_NEAR(planeBrightness("quilted 1", 1, 0.35), 0.59858, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 1", 1, 0.9), 0.88621, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 1", 1, -0.3), 0.79115, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 1", 0, 0.05), 0.87100, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 2 control0 0.5 control1 1", 1, 0.7), 0.80459, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 1 translate z*0.2", -1, 0.35), 0.76323, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 0.6 scale 0.5", 1, 0.35), 0.77037, kMeasured);
+    EXPECT_TRUE(load(litPlane("quilted 1", 1)).warnings.empty());
 }
 
 TEST(PovNormal, SphereWithATransformedGradientMatchesPovRaysPixels) {

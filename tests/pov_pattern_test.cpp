@@ -115,6 +115,23 @@ TEST(PovPattern, Spiral1MatchesPovRay) {
     EXPECT_EQ(f.scene.objects.size(), 1u);
 }
 
+TEST(PovPattern, QuiltedMatchesPovRay) {
+    // Values printed by POV-Ray 3.7 at scattered points, with the default and other controls.
+    expectValues("quilted", {{{0.1, 0.1, 0.1}, 0.448492497}, {{0.3, 0.2, 0.1}, 0.312364697}, {{0.5, 0.5, 0.5}, 0},
+                             {{0, 0, 0}, 0.575961888}, {{-0.75, 0.5, 0.5}, 0.055630103},
+                             {{-2.921, 2.025, -1.444}, 0.348924547}, {{2.019, -0.142, 0.834}, 0.437557369}});
+    expectValues("quilted control0 0.5 control1 -0.2", {{{0.139, 1.448, 1.028}, 0.092576429},
+                                                        {{-2.616, 1.549, 0.547}, 0.011758776},
+                                                        {{1.805, -0.332, 2.614}, 0.049432285}});
+    expectValues("quilted control0 2.5 control1 1.7", {{{0.76, -1.194, 0.043}, 0.655295193},
+                                                       {{2.574, 2.138, 2.946}, 0.571510315}});
+    // Negative curves give their magnitude; values above 1 are 1.
+    expectValues("quilted control0 -1 control1 0.3", {{{2.788, 2.428, 0.415}, 0.060604423},
+                                                      {{0.441, -1.29, -2.619}, 0.054346632}});
+    expectValues("quilted control0 5 control1 5", {{{0, 0, 0}, 1}, {{0.2, 0.1, 0.3}, 1}});
+    expectValues("quilted control0 -5 control1 -5", {{{0, 0, 0}, 0.629809499}, {{0.1, 0.1, 0.1}, 1}});
+}
+
 TEST(PovPattern, WaveTypesFrequencyAndPhaseMatchPovRay) {
     const Vec3 xs[] = {{0.1, 0, 0}, {0.3, 0, 0}, {0.5, 0, 0}, {0.75, 0, 0}, {0.95, 0, 0}, {1, 0, 0}, {-0.25, 0, 0}};
     struct Row {

@@ -7,7 +7,8 @@
 // the unit normal there (a gradient along the normal changes nothing), the wave and slopes included.
 // bumps, dents, ripples, waves and wrinkles have their own perturbation in POV-Ray; here they are
 // gradients of look-alike heights on Rays' noise and Rays' wave centres, not POV-Ray's (ripples
-// and waves: analytic, the tilt independent of the frequency, as measured).
+// and waves: analytic, the tilt independent of the frequency, as measured). quilted has POV-Ray's
+// own tilt, measured (pattern/quilted.h).
 #include "rays/pattern/normal.h"
 
 #include <algorithm>
@@ -134,7 +135,11 @@ Vec3 NormalTable::perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 norm
             const PigmentNode& pn = patterns.nodes[size_t(node.pattern)];
             Vec3 q = patternPoint(patterns, pn, p);
             if (pn.params.turbulence.on()) q = turbulent(q, pn.params.turbulence);
-            if (node.kind == NormalKind::Ripples || node.kind == NormalKind::Waves) {
+            if (node.kind == NormalKind::Quilted) {
+                // Not a gradient: POV-Ray tilts the normal along the point's offset from its cube's
+                // centre (measured, pattern/quilted.h).
+                g = quiltedTilt(pn.params.quilt, q) * (-1 / kPovBumpScale);
+            } else if (node.kind == NormalKind::Ripples || node.kind == NormalKind::Waves) {
                 const bool ripples = node.kind == NormalKind::Ripples;
                 g = (ripples ? kRipplesScale : kWavesScale) * wavesGradient(q, pn.wave, ripples);
             } else {

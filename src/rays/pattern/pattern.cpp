@@ -226,6 +226,7 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 
         case PatternKind::Mandel: return escapeTime(params, p.x, p.y, p.x, p.y);
         case PatternKind::Julia: return escapeTime(params, p.x, p.y, params.juliaR, params.juliaI);
         case PatternKind::Spiral1: return spiral1(params.arms, p);
+        case PatternKind::Quilted: return quiltedValue(params.quilt, p);
         case PatternKind::Slope: return slopeValue(params.slope, p, N);
         case PatternKind::Function: {
             // Wrapped above 1 like gradient (measured: 1.2 gives 0.2 under triangle_wave 0.4).

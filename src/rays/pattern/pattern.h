@@ -7,6 +7,7 @@
 #include "rays/fn/program.h"
 #include "rays/math/vec3.h"
 #include "rays/pattern/noise.h"
+#include "rays/pattern/quilted.h"
 #include "rays/pattern/slope.h"
 
 namespace rays::pattern {
@@ -19,6 +20,7 @@ enum class PatternKind : uint8_t {
     Mandel,    ///< the Mandelbrot set in the x-y plane (exponent, exterior and interior colouring)
     Julia,     ///< a Julia set in the x-y plane: mandel's iteration with a fixed c, z starting at the point
     Spiral1,   ///< a spiral of N arms winding around z, one turn per unit along z
+    Quilted,   ///< unit cubes rising from their centres along a cubic curve (pattern/quilted.h)
     Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
     Slope,     ///< the surface normal's angle to a direction, and the altitude (pattern/slope.h)
     PigmentPattern,  ///< a pigment's grey (PigmentTable::rawValue; PatternParams::source)
@@ -45,6 +47,7 @@ struct PatternParams {
     int exterior = 1, interior = 0;    ///< mandel's colouring types (0..8, 0..6)
     double exteriorFactor = 1, interiorFactor = 1;
     Slope slope;                       ///< Slope's direction, altitude and ranges
+    Quilt quilt;                       ///< quilted's control0 and control1
     int source = -1;                   ///< PigmentPattern: the pigment's node in the same table
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
 };

@@ -22,6 +22,7 @@ NormalKind kindOf(Kw k) {
         case Kw::ripples: return NormalKind::Ripples;
         case Kw::waves: return NormalKind::Waves;
         case Kw::wrinkles: return NormalKind::Wrinkles;
+        case Kw::quilted: return NormalKind::Quilted;
         case Kw::average: return NormalKind::Average;
         default: return NormalKind::Pattern;
     }

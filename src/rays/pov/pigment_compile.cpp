@@ -47,6 +47,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::mandel: out = PatternKind::Mandel; return true;
         case Kw::julia: out = PatternKind::Julia; return true;
         case Kw::spiral1: out = PatternKind::Spiral1; return true;
+        case Kw::quilted: out = PatternKind::Quilted; return true;
         case Kw::slope: out = PatternKind::Slope; return true;
         case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
         default: return false;
@@ -317,6 +318,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
         case Kw::mortar: pp.mortar = num(0); break;
         case Kw::agate_turb: pp.agateTurb = num(0); break;
+        case Kw::control0: pp.quilt.control0 = num(0); break;
+        case Kw::control1: pp.quilt.control1 = num(0); break;
         case Kw::exponent: pp.exponent = int(std::clamp(num(0), 2.0, 33.0)); break;
         case Kw::exterior:
             pp.exterior = int(num(0));
