@@ -136,6 +136,17 @@ TEST(PovNormal, QuiltedTiltsAlongTheOffsetFromTheCubesCentreAsPovRayDoes) {
     EXPECT_TRUE(load(litPlane("quilted 1", 1)).warnings.empty());
 }
 
+TEST(PovNormal, SpiralsTakeTheirAmountAfterTheArms) {
+    // povray 3.7 on the lit plane: `spiral2 5, 1.0` as `spiral2 5 1.0`; without an amount 0.5. The
+    // five arms' steep, kinked value makes the sampled gradients differ by up to 2e-3 (the amounts'
+    // pixels are 5e-3 apart).
+    constexpr double kSampled = 2.5e-3;
+    EXPECT_NEAR(planeBrightness("spiral2 5, 1.0", 1, 0.35), 0.78102, kSampled);
+    EXPECT_NEAR(planeBrightness("spiral2 5 1.0", 1, 0.35), 0.78102, kSampled);
+    EXPECT_NEAR(planeBrightness("spiral2 5", 1, 0.35), 0.78579, kSampled);
+    EXPECT_GT(planeBrightness("spiral2 5", 1, 0.35) - planeBrightness("spiral2 5, 1.0", 1, 0.35), 4e-3);
+}
+
 TEST(PovNormal, ASurfaceSeenFromBehindTiltsAsOneSeenFromTheFront) {
     // POV-Ray tilts the normal facing the viewer: plane { z, 0.5 } (its normal pointing away from
     // the camera) gives the pixels of plane { -z, -0.5 } (povray 3.7: 0.6074 for both, gradient and

@@ -72,7 +72,7 @@ TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
     expectValues("function { 1 } phase 0.0001", {{{0, 0, 0}, 0.00009}});
     expectValues("function { 2 } phase 0.0001", {{{0, 0, 0}, 0.0001}});
     // A pattern function of a pattern Rays does not render gives 0: a function calling one is noted.
-    const Built b = build("#declare P = function { pattern { spiral2 2 } }\n"
+    const Built b = build("#declare P = function { pattern { pavement } }\n"
                           "sphere { 0, 1 pigment { function { P(x, y, z) } } }");
     EXPECT_EQ(b.scene.povSurfaces.at(0).pigment, -1);
     ASSERT_EQ(b.warnings.size(), 1u);
@@ -113,6 +113,21 @@ TEST(PovPattern, Spiral1MatchesPovRay) {
                           "#if (abs(S(0.3, 0.2, 0) - 0.3912957) < 1e-6) sphere { 0, 1 } #end");
     EXPECT_TRUE(f.warnings.empty());
     EXPECT_EQ(f.scene.objects.size(), 1u);
+}
+
+TEST(PovPattern, Spiral2MatchesPovRay) {
+    // Values printed by POV-Ray 3.7: T(r + z + N·a) + T(r), T a unit triangle; triangle wave by default.
+    expectValues("spiral2 1", {{{0.3, 0.2, 0}, 0.625645936}, {{0.1, 0.1, 0.1}, 0.099979997},
+                               {{-0.5, 0.1, 0.1}, 0.725685894}});
+    // Frequency 0.01 shows the value before the wave's wrap (in [0, 2]).
+    expectValues("spiral2 2 ramp_wave frequency 0.01", {{{-0.882, 1.665, 1.063}, 0.00436128}, {{0.47, -1.493, -1.993}, 0.01530918},
+                                                        {{1.93, 1.49, -0.843}, 0.01485491}}, 2e-8);
+    expectValues("spiral2 3 ramp_wave frequency 0.01", {{{-1.181, 1.764, 0.763}, 0.00910628}, {{-1.739, -0.795, 0.412}, 0.00618114}}, 2e-8);
+    expectValues("spiral2 -2 ramp_wave frequency 0.01", {{{-0.737, -0.075, 0.819}, 0.00573437}, {{1.151, -0.535, 0.314}, 0.00982044}}, 2e-8);
+    // A fractional number of arms is cut to an integer (measured: 1.5 gives 1's values, −1.5 −1's).
+    expectValues("spiral2 1.5 ramp_wave frequency 0.01", {{{0.492, 0.967, 1.181}, 0.00787814}, {{-1.884, -0.138, 1.773}, 0.01069274}}, 2e-8);
+    expectValues("spiral2 -1.5 ramp_wave frequency 0.01", {{{0.3, 0.2, 0.1}, 0.009550534}, {{1.1, -0.4, 0.3}, 0.008928972}}, 2e-8);
+    expectValues("spiral1 1.5 ramp_wave frequency 0.01", {{{0.3, 0.2, 0.1}, 0.008041386}, {{1.1, -0.4, 0.3}, 0.016649613}}, 2e-8);
 }
 
 TEST(PovPattern, QuiltedMatchesPovRay) {

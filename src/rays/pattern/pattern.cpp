@@ -145,13 +145,21 @@ double escapeTime(const PatternParams& m, double zr, double zi, double cr, doubl
 }
 
 // spiral1 N (POV-Ray 3.7 reference, "Spiral1"; the formula measured with povray 3.7's pattern
-// functions): r + z + N·a, a the angle about z from −y towards +x in turns, in [0, 1), wrapped
-// with a period of 1.00001 (measured: 2.25 gives 0.24998).
+// functions): r + z + N·a, a the angle about z from −y towards +x in turns, in [0, 1). The wave
+// wraps it (measured: 2.25 gives 0.24998; with frequency 0.01 the value before any wrap shows).
 double spiral1(double arms, Vec3 p) {
-    constexpr double kPeriod = 1.00001;
     const double turns = std::atan2(p.x, -p.y) / kTwoPi;  // (−0.5, 0.5]
-    const double v = std::sqrt(p.x * p.x + p.y * p.y) + p.z + arms * (turns < 0 ? turns + 1 : turns);
-    return v - kPeriod * std::floor(v / kPeriod);
+    return std::sqrt(p.x * p.x + p.y * p.y) + p.z + arms * (turns < 0 ? turns + 1 : turns);
+}
+
+// spiral2 N (POV-Ray 3.7 reference, "Spiral2"; the formula measured with povray 3.7's pattern
+// functions at scattered points, N = −2 … 3): T(r + z + N·a) + T(r), T the triangle
+// 1 − |2·frac(u) − 1|, r and a as for spiral1; a value in [0, 2] that the wave wraps.
+double spiral2(double arms, Vec3 p) {
+    const auto tri = [](double u) { return 1 - std::fabs(2 * frac(u) - 1); };
+    const double turns = std::atan2(p.x, -p.y) / kTwoPi;
+    const double r = std::sqrt(p.x * p.x + p.y * p.y);
+    return tri(r + p.z + arms * (turns < 0 ? turns + 1 : turns)) + tri(r);
 }
 
 // A function pattern: the user function at (x, y, z) (further parameters 0), on this thread's
@@ -226,6 +234,7 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 
         case PatternKind::Mandel: return escapeTime(params, p.x, p.y, p.x, p.y);
         case PatternKind::Julia: return escapeTime(params, p.x, p.y, params.juliaR, params.juliaI);
         case PatternKind::Spiral1: return spiral1(params.arms, p);
+        case PatternKind::Spiral2: return spiral2(params.arms, p);
         case PatternKind::Quilted: return quiltedValue(params.quilt, p);
         case PatternKind::Slope: return slopeValue(params.slope, p, N);
         case PatternKind::Function: {

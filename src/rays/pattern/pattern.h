@@ -20,6 +20,7 @@ enum class PatternKind : uint8_t {
     Mandel,    ///< the Mandelbrot set in the x-y plane (exponent, exterior and interior colouring)
     Julia,     ///< a Julia set in the x-y plane: mandel's iteration with a fixed c, z starting at the point
     Spiral1,   ///< a spiral of N arms winding around z, one turn per unit along z
+    Spiral2,   ///< two spirals crossing: spiral1's triangle plus rings round z
     Quilted,   ///< unit cubes rising from their centres along a cubic curve (pattern/quilted.h)
     Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
     Slope,     ///< the surface normal's angle to a direction, and the altitude (pattern/slope.h)
@@ -43,7 +44,7 @@ struct PatternParams {
     Turbulence turbulence;         ///< turbulence, octaves, omega, lambda
     int iterations = 0, exponent = 2;  ///< mandel, julia
     double juliaR = 0, juliaI = 0;     ///< julia's complex constant c
-    double arms = 1;                   ///< spiral1's number of arms
+    double arms = 1;                   ///< spiral1's and spiral2's number of arms (an integer)
     int exterior = 1, interior = 0;    ///< mandel's colouring types (0..8, 0..6)
     double exteriorFactor = 1, interiorFactor = 1;
     Slope slope;                       ///< Slope's direction, altitude and ranges

@@ -128,6 +128,9 @@ void NormalCompiler::read(const Item& normal, State& s, int depth) {
             // bumps, dents, ripples, waves and wrinkles take their amount as an argument.
             if (s.kind >= NormalKind::Bumps && !e.args.empty() && e.args[0].type == VType::Float)
                 s.amount = toFloat(e.args[0]);
+            // spiral1 N, AMOUNT and spiral2 N, AMOUNT (measured: `spiral2 5, 1.0` tilts as `spiral2 5 1.0`).
+            if ((k == Kw::spiral1 || k == Kw::spiral2) && e.args.size() > 1 && e.args[1].isNumeric())
+                s.amount = toFloat(e.args[1]);
             continue;
         }
         switch (k) {

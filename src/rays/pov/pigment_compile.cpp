@@ -47,6 +47,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::mandel: out = PatternKind::Mandel; return true;
         case Kw::julia: out = PatternKind::Julia; return true;
         case Kw::spiral1: out = PatternKind::Spiral1; return true;
+        case Kw::spiral2: out = PatternKind::Spiral2; return true;
         case Kw::quilted: out = PatternKind::Quilted; return true;
         case Kw::slope: out = PatternKind::Slope; return true;
         case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
@@ -260,7 +261,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
             s.node.params.juliaI = c.y;
             s.node.params.iterations = e.args.size() > 1 ? int(std::clamp(toFloat(e.args[1]), 0.0, 1e6)) : 0;
         }
-        if (kind == PatternKind::Spiral1) s.node.params.arms = toFloat(e.args[0]);
+        // The number of arms is cut to an integer (measured: spiral1 1.5 and spiral2 1.5 are 1's).
+        if (kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2) s.node.params.arms = std::trunc(toFloat(e.args[0]));
         if (kind == PatternKind::Slope) s.node.params.slope = readSlope(e.args[0]);
         if (kind == PatternKind::PigmentPattern) s.node.params.source = nested(e.args[0].item(), depth);
         if (kind == PatternKind::Function) {
@@ -278,7 +280,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         }
         if (!s.waveSet)
             s.node.wave.type =
-                kind == PatternKind::Wood || kind == PatternKind::Marble || kind == PatternKind::Spiral1
+                kind == PatternKind::Wood || kind == PatternKind::Marble || kind == PatternKind::Spiral1 ||
+                        kind == PatternKind::Spiral2
                     ? WaveType::Triangle
                     : WaveType::Ramp;
         return;
