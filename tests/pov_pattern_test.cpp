@@ -92,6 +92,28 @@ TEST(PovPattern, MandelMatchesPovRay) {
     EXPECT_NEAR(length(m.at({1, 1, 0}).rgb), 0, 1e-6);
 }
 
+TEST(PovPattern, MandelInteriorSixIsRealSquaredPlusFactorTimesImaginarySquared) {
+    // Values printed by POV-Ray 3.7 (frequency 0.01 shows them unwrapped): zr² + factor·zi².
+    expectValues("mandel 30 interior 6, 1 frequency 0.01", {{{0.1, 0.2, 0}, 0.000527864}, {{-0.5, 0.3, 0}, 0.00175993}}, 5e-9);
+    expectValues("mandel 30 interior 6, 2 frequency 0.01", {{{0.1, 0.2, 0}, 0.001027864}, {{-0.5, 0.3, 0}, 0.00205112},
+                                                           {{0.25, 0, 0}, 0.002232444}}, 5e-9);
+}
+
+TEST(PovPattern, MagnetMatchesPovRay) {
+    // Values printed by POV-Ray 3.7 (single-precision colours): the orbit stops when |z|² > 10000
+    // or |z − 1|² < 0.0001; mandel's colouring types; black to white by default.
+    expectValues("magnet 1 mandel 30", {{{0, 0, 0}, 1}, {{-1, 0.5, 0}, 0.13333334}, {{1.5, 0.3, 0}, 0.600000024},
+                                        {{0.2, -1.3, 0}, 0.266666681}, {{1.133, -0.796, 0}, 1}}, 2e-7);
+    expectValues("magnet 2 mandel 30 exterior 2, 1", {{{0, 0, 0}, 0.992524087}, {{-1, 0.5, 0}, 0.999994934},
+                                                      {{1.5, 0.3, 0}, 0.000001606}, {{0.2, -1.3, 0}, 0.000463304}}, 2e-7);
+    expectValues("magnet 1 julia <0.4, -0.3>, 30 interior 1, 1",
+                 {{{0, 0, 0}, 0}, {{-1, 0.5, 0}, 0.12527065}, {{1.5, 0.3, 0}, 0.256722569}, {{-0.15, 0.416, 0}, 0.191056967},
+                  {{1.133, -0.796, 0}, 0.258017629}}, 2e-7);
+    expectValues("magnet 2 julia <0.2, 0.6>, 25 exterior 6, 0.5 interior 3, 1",
+                 {{{0, 0, 0}, 0.240695924}, {{1.5, 0.3, 0}, 0.500006557}, {{0.2, -1.3, 0}, 0.240695283}}, 2e-7);
+    EXPECT_NEAR(pigment("magnet 1 mandel 30").at({-1, 0.5, 0}).rgb.y, 0.13333334, 2e-7);  // no built-in map
+}
+
 TEST(PovPattern, JuliaMatchesPovRay) {
     // Values printed by POV-Ray 3.7 (as the file's comment says; z starts at the point, c is fixed).
     expectValues("julia <0.353, 0.288>, 30", {{{0.1, 0.2, 0}, 1}, {{-0.5, 0.3, 0}, 0.2}, {{0.7, -0.2, 0}, 0.1},

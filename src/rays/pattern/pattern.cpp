@@ -12,6 +12,7 @@
 
 #include "rays/fn/compile.h"
 #include "rays/fn/machine.h"
+#include "rays/pattern/magnet.h"
 
 namespace rays::pattern {
 namespace {
@@ -127,7 +128,12 @@ double escapeTime(const PatternParams& m, double zr, double zi, double cr, doubl
         if (a2 > 4) break;
         minAbs2 = std::min(minAbs2, a2);
     }
-    const bool escaped = n < m.iterations;
+    return escapeColouring(m, n < m.iterations, n, zr, zi, minAbs2);
+}
+
+}  // namespace
+
+double escapeColouring(const PatternParams& m, bool escaped, int n, double zr, double zi, double minAbs2) {
     const int type = escaped ? m.exterior : m.interior;
     const double f = escaped ? m.exteriorFactor : m.interiorFactor;
     switch (type) {
@@ -137,12 +143,16 @@ double escapeTime(const PatternParams& m, double zr, double zi, double cr, doubl
         case 3: return zi * f;
         case 4: return zr * zr * f;
         case 5: return zi * zi * f;
-        case 6: return std::sqrt(zr * zr + zi * zi) * f;
+        // Exterior 6 is |z|·factor; interior 6 measured as zr² + factor·zi² (mandel, julia and
+        // magnet alike, factors 0.25 to 2, at scattered interior points).
+        case 6: return escaped ? std::sqrt(zr * zr + zi * zi) * f : zr * zr + f * zi * zi;
         case 7: return f != 0 ? std::fmod(double(n), f) / f : 0;
         case 8: return f != 0 ? std::fmod(double(n), f + 1) / f : 0;
         default: return 0;
     }
 }
+
+namespace {
 
 // spiral1 N (POV-Ray 3.7 reference, "Spiral1"; the formula measured with povray 3.7's pattern
 // functions): r + z + N·a, a the angle about z from −y towards +x in turns, in [0, 1). The wave
@@ -233,6 +243,7 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 
         case PatternKind::Crackle: return crackle(p);
         case PatternKind::Mandel: return escapeTime(params, p.x, p.y, p.x, p.y);
         case PatternKind::Julia: return escapeTime(params, p.x, p.y, params.juliaR, params.juliaI);
+        case PatternKind::Magnet: return magnetValue(params, p.x, p.y);
         case PatternKind::Spiral1: return spiral1(params.arms, p);
         case PatternKind::Spiral2: return spiral2(params.arms, p);
         case PatternKind::Quilted: return quiltedValue(params.quilt, p);

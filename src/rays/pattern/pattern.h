@@ -19,6 +19,7 @@ enum class PatternKind : uint8_t {
     Bozo, Granite, Marble, Wood, Agate, Wrinkles, Crackle,
     Mandel,    ///< the Mandelbrot set in the x-y plane (exponent, exterior and interior colouring)
     Julia,     ///< a Julia set in the x-y plane: mandel's iteration with a fixed c, z starting at the point
+    Magnet,    ///< fractint's magnet 1 or 2, mandel or julia type (pattern/magnet.h)
     Spiral1,   ///< a spiral of N arms winding around z, one turn per unit along z
     Spiral2,   ///< two spirals crossing: spiral1's triangle plus rings round z
     Quilted,   ///< unit cubes rising from their centres along a cubic curve (pattern/quilted.h)
@@ -43,7 +44,9 @@ struct PatternParams {
     double agateTurb = 1;          ///< agate_turb
     Turbulence turbulence;         ///< turbulence, octaves, omega, lambda
     int iterations = 0, exponent = 2;  ///< mandel, julia
-    double juliaR = 0, juliaI = 0;     ///< julia's complex constant c
+    double juliaR = 0, juliaI = 0;     ///< julia's (and magnet julia's) complex constant c
+    int magnetFormula = 1;             ///< magnet 1 or 2
+    bool magnetJulia = false;          ///< magnet's julia type (z starts at the point, c fixed)
     double arms = 1;                   ///< spiral1's and spiral2's number of arms (an integer)
     int exterior = 1, interior = 0;    ///< mandel's colouring types (0..8, 0..6)
     double exteriorFactor = 1, interiorFactor = 1;
@@ -52,6 +55,11 @@ struct PatternParams {
     int source = -1;                   ///< PigmentPattern: the pigment's node in the same table
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
 };
+
+/// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type
+/// when the orbit escaped after n + 1 new points (n counted from 0), else from the interior type;
+/// (zr, zi) the last point, minAbs2 the smallest |z|² of the orbit.
+double escapeColouring(const PatternParams& m, bool escaped, int n, double zr, double zi, double minAbs2);
 
 /// The value of a continuous pattern at p (pattern space), turbulence included, before the wave.
 /// N: the world normal facing the viewer at the surface point (only slope reads it; zero where

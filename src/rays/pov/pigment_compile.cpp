@@ -46,6 +46,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::function: out = PatternKind::Function; return true;
         case Kw::mandel: out = PatternKind::Mandel; return true;
         case Kw::julia: out = PatternKind::Julia; return true;
+        case Kw::magnet: out = PatternKind::Magnet; return true;
         case Kw::spiral1: out = PatternKind::Spiral1; return true;
         case Kw::spiral2: out = PatternKind::Spiral2; return true;
         case Kw::quilted: out = PatternKind::Quilted; return true;
@@ -255,6 +256,16 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
             s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
         }
         if (kind == PatternKind::Mandel) s.node.params.iterations = int(std::clamp(toFloat(e.args[0]), 0.0, 1e6));
+        if (kind == PatternKind::Magnet) {  // magnet 1|2, 0 (mandel) | 1 (julia) [, <c>], ITERATIONS (specs_texture)
+            s.node.params.magnetFormula = num(0) == 2 ? 2 : 1;
+            s.node.params.magnetJulia = num(1) != 0;
+            if (s.node.params.magnetJulia && e.args.size() > 3) {
+                const Vec3 c = toVec3(e.args[2]);
+                s.node.params.juliaR = c.x;
+                s.node.params.juliaI = c.y;
+            }
+            s.node.params.iterations = int(std::clamp(toFloat(e.args.back()), 0.0, 1e6));
+        }
         if (kind == PatternKind::Julia) {  // julia <c>, ITERATIONS
             const Vec3 c = toVec3(e.args[0]);
             s.node.params.juliaR = c.x;
