@@ -261,6 +261,35 @@ TEST(PovPattern, BlockPatternsMatchPovRay) {
     EXPECT_EQ(brick.at({1, 2.7, 1}).rgb, Vec3(1));   // y mortar at 2.5..3
 }
 
+// The list index a block pattern picks at p: entry i is rgb i/10.
+void expectIndices(const std::string& pattern, int entries, std::initializer_list<std::pair<Vec3, int>> samples) {
+    std::string body = pattern;
+    for (int i = 0; i < entries; ++i) body += (i ? ", rgb " : " rgb ") + std::to_string(i / 10.0);
+    const Probe pr = pigment(body);
+    ASSERT_GE(pr.surface().pigment, 0) << pattern;
+    EXPECT_TRUE(pr.b.warnings.empty()) << pattern;
+    for (const auto& [p, i] : samples)
+        EXPECT_NEAR(pr.at(p).rgb.x, i / 10.0, 1e-9) << pattern << " at " << p.x << " " << p.y << " " << p.z;
+}
+
+TEST(PovPattern, TilingBlockPatternsMatchPovRay) {
+    // Indices printed by POV-Ray 3.7 (the layouts checked at 300 random points each).
+    expectIndices("square", 4, {{{0.3, 0, 0.2}, 0}, {{1.7, 2, 0.4}, 3}, {{-0.6, 0, 0.3}, 3}, {{0.4, -1, -0.8}, 1},
+                                {{-1.2, 0, -1.9}, 0}, {{3.3, 0, 2.1}, 3}, {{1.5, 0, 1.5}, 2}});
+    expectIndices("triangular", 6, {{{0.5, 0, 0.2}, 0}, {{0.05, 0, 0.2}, 1}, {{0.95, 0, 0.2}, 3}, {{1.5, 0, 0.2}, 4},
+                                    {{-0.5, 0, 0.2}, 2}, {{-0.95, 0, 0.2}, 5}, {{0.1, 0, 0.9}, 4}, {{0.5, 0, 1.2}, 5},
+                                    {{-0.3, 1, -0.5}, 3}, {{2.2, 0, -2.4}, 0}, {{-3.7, 0, 3.1}, 3}, {{4.05, 0, -1}, 3}});
+    expectIndices("cubic", 6, {{{0.9, 0.1, 0.1}, 0}, {{-0.9, 0.5, 0.1}, 3}, {{0.1, 0.9, -0.5}, 1}, {{0.1, -0.9, 0.3}, 4},
+                               {{0.3, 0.1, 0.9}, 2}, {{-0.2, 0.1, -0.9}, 5}, {{5, -4, 2}, 0}});
+    // Built-in colours (measured): square red, green, blue, yellow; triangular and cubic add cyan, magenta.
+    EXPECT_EQ(pigment("square").at({1.5, 0, 0.5}).rgb, (Vec3{1, 1, 0}));
+    EXPECT_EQ(pigment("square rgb 0.5").at({0.5, 0, 1.5}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(pigment("triangular").at({1.5, 0, 0.5}).rgb, (Vec3{0, 1, 1}));
+    EXPECT_EQ(pigment("cubic").at({0, 0, -1}).rgb, (Vec3{1, 0, 1}));
+    // Pigment lists.
+    EXPECT_NEAR(pigment("square pigment { gradient x } rgb 1, rgb 1, rgb 1").at({0.25, 0, 0.5}).rgb.y, 0.25, 1e-9);
+}
+
 TEST(PovPattern, PigmentMapsAndAverageNestPigments) {
     const Probe pm = pigment("gradient x pigment_map { [0.2 checker] [0.6 gradient y color_map { [0 rgb <1, 0, 0>] "
                              "[1 rgb <0, 1, 0>] }] }");

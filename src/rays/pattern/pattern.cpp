@@ -13,6 +13,7 @@
 #include "rays/fn/compile.h"
 #include "rays/fn/machine.h"
 #include "rays/pattern/magnet.h"
+#include "rays/pattern/tiles.h"
 
 namespace rays::pattern {
 namespace {
@@ -199,6 +200,9 @@ int blockIndex(PatternKind kind, const PatternParams& params, Vec3 p) {
         case PatternKind::Checker: return checkerIndex(p);
         case PatternKind::Hexagon: return hexagonIndex(p);
         case PatternKind::Brick: return brickIndex(p, params.brickSize, params.mortar);
+        case PatternKind::Square: return squareIndex(p);
+        case PatternKind::Triangular: return triangularIndex(p);
+        case PatternKind::Cubic: return cubicIndex(p);
         default: return 0;
     }
 }

@@ -1,6 +1,6 @@
 // Pattern types (POV-Ray 3.7 reference, "Patterns"): each maps a point of pattern space to a value
-// in [0, 1] (before the wave), or, for the block patterns checker, hexagon and brick, to the index
-// of one of their two or three colours or pigments.
+// in [0, 1] (before the wave), or, for the block patterns (checker, hexagon, brick, square,
+// triangular, cubic), to the index of one of their two to six colours or pigments.
 #pragma once
 #include <cstdint>
 
@@ -14,7 +14,7 @@ namespace rays::pattern {
 
 enum class PatternKind : uint8_t {
     Solid,  ///< no pattern: one colour
-    Checker, Hexagon, Brick,  // block patterns
+    Checker, Hexagon, Brick, Square, Triangular, Cubic,  // block patterns
     Gradient, Radial, Onion, Spherical, Cylindrical, Planar, Boxed, Leopard,
     Bozo, Granite, Marble, Wood, Agate, Wrinkles, Crackle,
     Mandel,    ///< the Mandelbrot set in the x-y plane (exponent, exterior and interior colouring)
@@ -31,10 +31,9 @@ enum class PatternKind : uint8_t {
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
 };
 
-/// True for checker, hexagon and brick (a list of 2 or 3 colours, no wave, no map).
-constexpr bool isBlockPattern(PatternKind k) {
-    return k == PatternKind::Checker || k == PatternKind::Hexagon || k == PatternKind::Brick;
-}
+/// True for checker, hexagon, brick, square, triangular and cubic (a list of 2 to 6 colours, no
+/// wave, no map).
+constexpr bool isBlockPattern(PatternKind k) { return k >= PatternKind::Checker && k <= PatternKind::Cubic; }
 
 /// The modifiers some patterns read.
 struct PatternParams {
@@ -65,7 +64,7 @@ double escapeColouring(const PatternParams& m, bool escaped, int n, double zr, d
 /// N: the world normal facing the viewer at the surface point (only slope reads it; zero where
 /// there is no surface).
 double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 N = {});
-/// The list index (0, 1 or 2) of a block pattern at p, turbulence included.
+/// The list index (0 to 5) of a block pattern at p, turbulence included.
 int blockIndex(PatternKind kind, const PatternParams& params, Vec3 p);
 
 }  // namespace rays::pattern

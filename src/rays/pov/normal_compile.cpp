@@ -28,7 +28,10 @@ NormalKind kindOf(Kw k) {
     }
 }
 
-bool isBlock(Kw k) { return k == Kw::checker || k == Kw::hexagon || k == Kw::brick; }
+bool isBlock(Kw k) {
+    return k == Kw::checker || k == Kw::hexagon || k == Kw::brick || k == Kw::square || k == Kw::triangular ||
+           k == Kw::cubic;
+}
 
 }  // namespace
 

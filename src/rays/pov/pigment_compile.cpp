@@ -27,6 +27,9 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::checker: out = PatternKind::Checker; return true;
         case Kw::hexagon: out = PatternKind::Hexagon; return true;
         case Kw::brick: out = PatternKind::Brick; return true;
+        case Kw::square: out = PatternKind::Square; return true;
+        case Kw::triangular: out = PatternKind::Triangular; return true;
+        case Kw::cubic: out = PatternKind::Cubic; return true;
         case Kw::gradient: out = PatternKind::Gradient; return true;
         case Kw::radial: out = PatternKind::Radial; return true;
         case Kw::onion: out = PatternKind::Onion; return true;
