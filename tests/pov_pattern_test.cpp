@@ -546,6 +546,52 @@ TEST(PovPatternRender, SkySphereIsLookedUpByDirection) {
 
 // Rays' noise is not POV-Ray's, so noise patterns cannot match point for point; their mean and
 // spread over space can. POV-Ray 3.7's figures over the same 400 points (printed as above).
+TEST(PovPattern, RipplesPigmentIsASineOfPeriodOneFarFromItsCentres) {
+    // POV-Ray 3.7 along x from 1000 at y = 0.37, z = 0.21: a sine of period 1 about 0.5 (extremes
+    // 0.2415 and 0.7585 there; Rays' centres give their own phase and amplitude).
+    const Probe pr = pigment(std::string("ripples") + kGrey);
+    double lo = 1, hi = 0;
+    for (int i = 0; i < 40; ++i) {
+        const double v = pr.at({1000 + i / 40.0, 0.37, 0.21}).rgb.x;
+        EXPECT_NEAR(v, pr.at({1001 + i / 40.0, 0.37, 0.21}).rgb.x, 1e-3);
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+    }
+    EXPECT_NEAR((lo + hi) / 2, 0.5, 0.01);
+    EXPECT_GT(hi - lo, 0.1);
+}
+
+TEST(PovPattern, RipplesWavesAndDentsPigmentsSpreadAsPovRaysDo) {
+    // POV-Ray 3.7 over 400 random points in [−5, 5]³ (mean, standard deviation); here 400 points
+    // of a fixed pseudo-random sequence in the same cube.
+    struct Stat {
+        const char* body;
+        double mean, sd;
+    };
+    const Stat stats[] = {{"ripples", 0.500, 0.108}, {"waves", 0.476, 0.114}, {"dents", 0.157, 0.111},
+                          {"ripples frequency 3", 0.515, 0.274}};
+    for (const Stat& st : stats) {
+        const Probe pr = pigment(std::string(st.body) + kGrey);
+        ASSERT_GE(pr.surface().pigment, 0) << st.body;
+        uint32_t seed = 12345;
+        auto next = [&] {
+            seed = seed * 1664525u + 1013904223u;
+            return -5 + 10 * (seed >> 8) / double(1u << 24);
+        };
+        double sum = 0, sum2 = 0;
+        const int n = 400;
+        for (int i = 0; i < n; ++i) {
+            const double x = next(), y = next(), z = next();
+            const double v = pr.at({x, y, z}).rgb.x;
+            sum += v;
+            sum2 += v * v;
+        }
+        const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+        EXPECT_NEAR(mean, st.mean, 0.03) << st.body;
+        EXPECT_NEAR(sd, st.sd, 0.02) << st.body;
+    }
+}
+
 TEST(PovPattern, NoisePatternsSpreadAsPovRaysDo) {
     struct Stat {
         const char* body;

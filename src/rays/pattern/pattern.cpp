@@ -13,6 +13,7 @@
 #include "rays/fn/compile.h"
 #include "rays/fn/machine.h"
 #include "rays/pattern/magnet.h"
+#include "rays/pattern/ripples.h"
 #include "rays/pattern/tiles.h"
 
 namespace rays::pattern {
@@ -245,6 +246,9 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 
         case PatternKind::Wood: return std::sqrt(p.x * p.x + p.y * p.y);
         case PatternKind::Wrinkles: return wrinkles(p);
         case PatternKind::Crackle: return crackle(p);
+        case PatternKind::Ripples: return ripplesValue(p);
+        case PatternKind::Waves: return wavesValue(p);
+        case PatternKind::Dents: return dentsValue(p);
         case PatternKind::Mandel: return escapeTime(params, p.x, p.y, p.x, p.y);
         case PatternKind::Julia: return escapeTime(params, p.x, p.y, params.juliaR, params.juliaI);
         case PatternKind::Magnet: return magnetValue(params, p.x, p.y);

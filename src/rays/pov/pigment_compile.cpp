@@ -45,6 +45,9 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::agate: out = PatternKind::Agate; return true;
         case Kw::wrinkles: out = PatternKind::Wrinkles; return true;
         case Kw::crackle: out = PatternKind::Crackle; return true;
+        case Kw::ripples: out = PatternKind::Ripples; return true;
+        case Kw::waves: out = PatternKind::Waves; return true;
+        case Kw::dents: out = PatternKind::Dents; return true;
         case Kw::average: out = PatternKind::Average; return true;
         case Kw::function: out = PatternKind::Function; return true;
         case Kw::mandel: out = PatternKind::Mandel; return true;
@@ -245,11 +248,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     const Kw k = e.kw();
     const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
     PatternKind kind;
-    const bool special = k == Kw::dents || k == Kw::ripples || k == Kw::waves;  // normal-only (bumps, wrinkles known)
     // slope reads the surface normal: as a normal pattern it is not rendered (noted below).
     const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope);
-    if (known || (s.normal && special)) {
-        if (special) kind = PatternKind::Bozo;
+    if (known) {
         s.pattern = true;
         s.unrendered = false;
         s.node.kind = kind;
