@@ -30,6 +30,7 @@ enum class PatternKind : uint8_t {
     Average,  ///< the weighted mean of a pigment_map's pigments
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
+    ImagePattern,  ///< image_pattern: the grey of PigmentTable::images[node.image] (ImageMap::value)
 };
 
 /// True for checker, hexagon, brick, square, triangular and cubic (a list of 2 to 6 colours, no

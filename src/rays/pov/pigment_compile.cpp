@@ -305,6 +305,10 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         readImageMap(e.args[0].item(), s);
         return;
     }
+    if (k == Kw::image_pattern) {
+        readImageMap(e.args[0].item(), s, true);
+        return;
+    }
     if (isPatternType(k) || k == Kw::image_map) {
         s.unrendered = true;
         s.pattern = false;
@@ -428,8 +432,8 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
 
 // image_map { TYPE "file" [gamma G] [map_type M] [once] [interpolate N] [filter|transmit all|N, A] }
 // (POV-Ray 3.7 reference, "Image Map", "Bitmap Modifiers"). The node has no map: the image gives
-// the colour.
-void PigmentCompiler::readImageMap(const Item& map, State& s) {
+// the colour. As image_pattern { ... [use_alpha] } (asPattern) the image's grey is the pattern's value.
+void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern) {
     pattern::ImageMap m;
     const ImageFile* file = nullptr;
     bool gammaSet = false;
@@ -460,6 +464,7 @@ void PigmentCompiler::readImageMap(const Item& map, State& s) {
                 return;
             case Kw::map_type: m.mapType = int(num(0)); break;
             case Kw::once: m.once = true; break;
+            case Kw::use_alpha: m.useAlpha = true; break;
             case Kw::interpolate: m.interpolate = int(num(0)); break;
             case Kw::gamma: {
                 const double g = num(0);
@@ -491,11 +496,12 @@ void PigmentCompiler::readImageMap(const Item& map, State& s) {
         m.mapType = 0;
     }
     m.image = file->image;
+    m.setPatternGamma(gammaSet && m.fileGamma.kind == pattern::FileGamma::Kind::Power ? m.fileGamma.gamma : 1.0);
     if (!gammaSet) m.fileGamma = ImageFiles::defaultGamma(*file);
     m.setWorkingGamma(1.0);  // until the scene's assumed_gamma is known (PigmentTable::setWorkingGamma)
     s.pattern = true;
     s.unrendered = false;
-    s.node.kind = PatternKind::ImageMap;
+    s.node.kind = asPattern ? PatternKind::ImagePattern : PatternKind::ImageMap;
     s.node.image = int(table_.images.size());
     s.list.clear();
     table_.images.push_back(std::move(m));
