@@ -18,6 +18,7 @@ enum class PatternKind : uint8_t {
     Gradient, Radial, Onion, Spherical, Cylindrical, Planar, Boxed, Leopard,
     Bozo, Granite, Marble, Wood, Agate, Wrinkles, Crackle,
     Ripples, Waves, Dents,  ///< look-alikes of POV-Ray's (pattern/ripples.h)
+    Cells,     ///< one random value per unit cube
     Mandel,    ///< the Mandelbrot set in the x-y plane (exponent, exterior and interior colouring)
     Julia,     ///< a Julia set in the x-y plane: mandel's iteration with a fixed c, z starting at the point
     Magnet,    ///< fractint's magnet 1 or 2, mandel or julia type (pattern/magnet.h)

@@ -48,6 +48,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::ripples: out = PatternKind::Ripples; return true;
         case Kw::waves: out = PatternKind::Waves; return true;
         case Kw::dents: out = PatternKind::Dents; return true;
+        case Kw::cells: out = PatternKind::Cells; return true;
         case Kw::average: out = PatternKind::Average; return true;
         case Kw::function: out = PatternKind::Function; return true;
         case Kw::mandel: out = PatternKind::Mandel; return true;
