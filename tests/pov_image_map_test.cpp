@@ -40,6 +40,57 @@ Scene withMap(const std::string& path, const std::string& modifiers, const std::
     return test::loadPov("plane { z, 0 pigment { image_map { png \"" + path + "\" " + modifiers + " } } }", head).scene;
 }
 
+// A 4×2 image: top row red, green, blue, (200, 100, 50); bottom row black, white, grey 128,
+// (30, 60, 90); with alpha 255, 128, 0, 64 / 255, 200, 30, 100 when asked.
+std::string colourImage(const test::TempDir& dir, bool alpha) {
+    const int ch = alpha ? 4 : 3;
+    Image8 img(4, 2, ch);
+    const uint8_t rgb[8][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {200, 100, 50},
+                               {0, 0, 0},   {255, 255, 255}, {128, 128, 128}, {30, 60, 90}};
+    const uint8_t a[8] = {255, 128, 0, 64, 255, 200, 30, 100};
+    for (int i = 0; i < 8; ++i) {
+        for (int c = 0; c < 3; ++c) img.pixels[size_t(i * ch + c)] = rgb[i][c];
+        if (alpha) img.pixels[size_t(i * ch + 3)] = a[i];
+    }
+    const std::string path = (dir.path() / (alpha ? "a42.png" : "c42.png")).string();
+    writeImage(path, img);
+    return path;
+}
+
+// The value of `image_pattern { ... }` (black to white) at p.
+double imagePatternAt(const std::string& pattern, Vec3 p) {
+    return pigmentAt(test::loadPov("plane { z, 0 pigment { " + pattern + " color_map { [0 rgb 0] [1 rgb 1] } } }").scene, p)
+        .rgb.x;
+}
+
+TEST(PovImageMap, ImagePatternIsTheImagesGreyAsPovRayReadsIt) {
+    test::TempDir dir;
+    const std::string c = colourImage(dir, false), a = colourImage(dir, true);
+    // Values printed by POV-Ray 3.7's pattern functions on the same images.
+    struct Sample {
+        Vec3 p;
+        double v;
+    };
+    const std::string plain = "image_pattern { png \"" + c + "\" }";
+    for (const Sample& s : {Sample{{0.125, 0.75, 0}, 0.297}, Sample{{0.375, 0.75, 0}, 0.589}, Sample{{0.625, 0.75, 0}, 0.114},
+                            Sample{{0.875, 0.75, 0}, 0.486274511}, Sample{{0.625, 0.25, 0}, 0.501960814},
+                            Sample{{0.875, 0.25, 0}, 0.213764712}, Sample{{1.3, -0.4, 0}, 0.589}})
+        EXPECT_NEAR(imagePatternAt(plain, s.p), s.v, 1e-7) << s.p.x << " " << s.p.y;
+    // An explicit gamma decodes each channel; interpolation and once as image_map's.
+    const std::string gamma = "image_pattern { png \"" + c + "\" gamma 2.2 }";
+    EXPECT_NEAR(imagePatternAt(gamma, {0.875, 0.75, 0}), 0.252313137, 1e-7);
+    EXPECT_NEAR(imagePatternAt(gamma, {0.625, 0.25, 0}), 0.219519734, 1e-7);
+    EXPECT_NEAR(imagePatternAt("image_pattern { png \"" + c + "\" interpolate 2 }", {0.3, 0.6, 0}), 0.560979962, 1e-7);
+    const std::string once = "image_pattern { png \"" + c + "\" once } scale 0.5";
+    EXPECT_NEAR(imagePatternAt(once, {0.3, 0.45, 0}), 0.114, 1e-7);
+    EXPECT_NEAR(imagePatternAt(once, {0.6, 0.3, 0}), 0, 1e-7);
+    // use_alpha: the transparency 1 − alpha.
+    const std::string alpha = "image_pattern { png \"" + a + "\" gamma 1.0 use_alpha }";
+    EXPECT_NEAR(imagePatternAt(alpha, {0.375, 0.75, 0}), 0.498039186, 1e-7);
+    EXPECT_NEAR(imagePatternAt(alpha, {0.875, 0.75, 0}), 0.749019623, 1e-7);
+    EXPECT_NEAR(imagePatternAt(alpha, {0.625, 0.25, 0}), 0.882352948, 1e-7);
+}
+
 TEST(PovImageMap, PlanarTexelsRepeatUnlessOnce) {
     test::TempDir dir;
     const std::string path = greyImage(dir);

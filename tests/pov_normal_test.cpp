@@ -117,10 +117,50 @@ TEST(PovNormal, IdentifiersBumpSizeAndPlacesOfTheNormal) {
 
 TEST(PovNormal, UnrenderedNormalsAreNotedAndDrawnSmooth) {
     const Loaded l = load("light_source { <1, 0, -1>*1000 color 1 parallel point_at 0 }\n"
-                          "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { quilted 0.5 } }\n");
+                          "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { pavement 0.5 } }\n");
     ASSERT_EQ(l.warnings.size(), 1u);
-    EXPECT_EQ(l.warnings[0], "scene.pov:4:76: warning: not rendered yet: normal pattern quilted (drawn smooth)");
+    EXPECT_EQ(l.warnings[0], "scene.pov:4:76: warning: not rendered yet: normal pattern pavement (drawn smooth)");
     EXPECT_NEAR(seen(l.scene, 0.35, 0.2).x, std::sqrt(0.5), 1e-9);
+}
+
+TEST(PovNormal, QuiltedTiltsAlongTheOffsetFromTheCubesCentreAsPovRayDoes) {
+    // povray 3.7 (measured on the lit plane): the normal plus amount·B(|d|)·d·2/√3, d the point's
+    // offset from its unit cube's centre, B the control0/control1 curve.
+    EXPECT_NEAR(planeBrightness("quilted 1", 1, 0.35), 0.59858, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 1", 1, 0.9), 0.88621, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 1", 1, -0.3), 0.79115, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 1", 0, 0.05), 0.87100, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 2 control0 0.5 control1 1", 1, 0.7), 0.80459, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 1 translate z*0.2", -1, 0.35), 0.76323, kMeasured);
+    EXPECT_NEAR(planeBrightness("quilted 0.6 scale 0.5", 1, 0.35), 0.77037, kMeasured);
+    EXPECT_TRUE(load(litPlane("quilted 1", 1)).warnings.empty());
+}
+
+TEST(PovNormal, SpiralsTakeTheirAmountAfterTheArms) {
+    // povray 3.7 on the lit plane: `spiral2 5, 1.0` as `spiral2 5 1.0`; without an amount 0.5. The
+    // five arms' steep, kinked value makes the sampled gradients differ by up to 2e-3 (the amounts'
+    // pixels are 5e-3 apart).
+    constexpr double kSampled = 2.5e-3;
+    EXPECT_NEAR(planeBrightness("spiral2 5, 1.0", 1, 0.35), 0.78102, kSampled);
+    EXPECT_NEAR(planeBrightness("spiral2 5 1.0", 1, 0.35), 0.78102, kSampled);
+    EXPECT_NEAR(planeBrightness("spiral2 5", 1, 0.35), 0.78579, kSampled);
+    EXPECT_GT(planeBrightness("spiral2 5", 1, 0.35) - planeBrightness("spiral2 5, 1.0", 1, 0.35), 4e-3);
+}
+
+TEST(PovNormal, ASurfaceSeenFromBehindTiltsAsOneSeenFromTheFront) {
+    // POV-Ray tilts the normal facing the viewer: plane { z, 0.5 } (its normal pointing away from
+    // the camera) gives the pixels of plane { -z, -0.5 } (povray 3.7: 0.6074 for both, gradient and
+    // quilted; 0.8836 at x = 0.9, y = 0.3 for quilted).
+    for (const char* plane : {"plane { -z, -0.5 ", "plane { z, 0.5 ", "plane { z, 0.5 clipped_by { box { -10, 10 } } "}) {
+        auto at = [&](const std::string& normal, double x, double y) {
+            const Loaded l = load(std::string("light_source { <1, 0, -1>*1000 color 1 parallel point_at 0 }\n") + plane +
+                                  "pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { " + normal + " } }\n");
+            return seen(l.scene, x, y).x;
+        };
+        EXPECT_NEAR(at("gradient x 1", 0.35, 0.2), 0.6074, kMeasured) << plane;
+        EXPECT_NEAR(at("quilted 1 translate z*0.2", 0.35, 0.2), 0.6074, kMeasured) << plane;
+        EXPECT_NEAR(at("quilted 1 translate z*0.2", 0.9, 0.3), 0.8836, kMeasured) << plane;
+    }
 }
 
 TEST(PovNormal, SphereWithATransformedGradientMatchesPovRaysPixels) {

@@ -72,7 +72,7 @@ TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
     expectValues("function { 1 } phase 0.0001", {{{0, 0, 0}, 0.00009}});
     expectValues("function { 2 } phase 0.0001", {{{0, 0, 0}, 0.0001}});
     // A pattern function of a pattern Rays does not render gives 0: a function calling one is noted.
-    const Built b = build("#declare P = function { pattern { spiral2 2 } }\n"
+    const Built b = build("#declare P = function { pattern { pavement } }\n"
                           "sphere { 0, 1 pigment { function { P(x, y, z) } } }");
     EXPECT_EQ(b.scene.povSurfaces.at(0).pigment, -1);
     ASSERT_EQ(b.warnings.size(), 1u);
@@ -90,6 +90,28 @@ TEST(PovPattern, MandelMatchesPovRay) {
     const Probe m = pigment("mandel 25");
     EXPECT_NEAR(length(m.at({0.5, 0.5, 0}).rgb - Vec3{0, 1, 1}), 0, 1e-6);
     EXPECT_NEAR(length(m.at({1, 1, 0}).rgb), 0, 1e-6);
+}
+
+TEST(PovPattern, MandelInteriorSixIsRealSquaredPlusFactorTimesImaginarySquared) {
+    // Values printed by POV-Ray 3.7 (frequency 0.01 shows them unwrapped): zr² + factor·zi².
+    expectValues("mandel 30 interior 6, 1 frequency 0.01", {{{0.1, 0.2, 0}, 0.000527864}, {{-0.5, 0.3, 0}, 0.00175993}}, 5e-9);
+    expectValues("mandel 30 interior 6, 2 frequency 0.01", {{{0.1, 0.2, 0}, 0.001027864}, {{-0.5, 0.3, 0}, 0.00205112},
+                                                           {{0.25, 0, 0}, 0.002232444}}, 5e-9);
+}
+
+TEST(PovPattern, MagnetMatchesPovRay) {
+    // Values printed by POV-Ray 3.7 (single-precision colours): the orbit stops when |z|² > 10000
+    // or |z − 1|² < 0.0001; mandel's colouring types; black to white by default.
+    expectValues("magnet 1 mandel 30", {{{0, 0, 0}, 1}, {{-1, 0.5, 0}, 0.13333334}, {{1.5, 0.3, 0}, 0.600000024},
+                                        {{0.2, -1.3, 0}, 0.266666681}, {{1.133, -0.796, 0}, 1}}, 2e-7);
+    expectValues("magnet 2 mandel 30 exterior 2, 1", {{{0, 0, 0}, 0.992524087}, {{-1, 0.5, 0}, 0.999994934},
+                                                      {{1.5, 0.3, 0}, 0.000001606}, {{0.2, -1.3, 0}, 0.000463304}}, 2e-7);
+    expectValues("magnet 1 julia <0.4, -0.3>, 30 interior 1, 1",
+                 {{{0, 0, 0}, 0}, {{-1, 0.5, 0}, 0.12527065}, {{1.5, 0.3, 0}, 0.256722569}, {{-0.15, 0.416, 0}, 0.191056967},
+                  {{1.133, -0.796, 0}, 0.258017629}}, 2e-7);
+    expectValues("magnet 2 julia <0.2, 0.6>, 25 exterior 6, 0.5 interior 3, 1",
+                 {{{0, 0, 0}, 0.240695924}, {{1.5, 0.3, 0}, 0.500006557}, {{0.2, -1.3, 0}, 0.240695283}}, 2e-7);
+    EXPECT_NEAR(pigment("magnet 1 mandel 30").at({-1, 0.5, 0}).rgb.y, 0.13333334, 2e-7);  // no built-in map
 }
 
 TEST(PovPattern, JuliaMatchesPovRay) {
@@ -113,6 +135,38 @@ TEST(PovPattern, Spiral1MatchesPovRay) {
                           "#if (abs(S(0.3, 0.2, 0) - 0.3912957) < 1e-6) sphere { 0, 1 } #end");
     EXPECT_TRUE(f.warnings.empty());
     EXPECT_EQ(f.scene.objects.size(), 1u);
+}
+
+TEST(PovPattern, Spiral2MatchesPovRay) {
+    // Values printed by POV-Ray 3.7: T(r + z + N·a) + T(r), T a unit triangle; triangle wave by default.
+    expectValues("spiral2 1", {{{0.3, 0.2, 0}, 0.625645936}, {{0.1, 0.1, 0.1}, 0.099979997},
+                               {{-0.5, 0.1, 0.1}, 0.725685894}});
+    // Frequency 0.01 shows the value before the wave's wrap (in [0, 2]).
+    expectValues("spiral2 2 ramp_wave frequency 0.01", {{{-0.882, 1.665, 1.063}, 0.00436128}, {{0.47, -1.493, -1.993}, 0.01530918},
+                                                        {{1.93, 1.49, -0.843}, 0.01485491}}, 2e-8);
+    expectValues("spiral2 3 ramp_wave frequency 0.01", {{{-1.181, 1.764, 0.763}, 0.00910628}, {{-1.739, -0.795, 0.412}, 0.00618114}}, 2e-8);
+    expectValues("spiral2 -2 ramp_wave frequency 0.01", {{{-0.737, -0.075, 0.819}, 0.00573437}, {{1.151, -0.535, 0.314}, 0.00982044}}, 2e-8);
+    // A fractional number of arms is cut to an integer (measured: 1.5 gives 1's values, −1.5 −1's).
+    expectValues("spiral2 1.5 ramp_wave frequency 0.01", {{{0.492, 0.967, 1.181}, 0.00787814}, {{-1.884, -0.138, 1.773}, 0.01069274}}, 2e-8);
+    expectValues("spiral2 -1.5 ramp_wave frequency 0.01", {{{0.3, 0.2, 0.1}, 0.009550534}, {{1.1, -0.4, 0.3}, 0.008928972}}, 2e-8);
+    expectValues("spiral1 1.5 ramp_wave frequency 0.01", {{{0.3, 0.2, 0.1}, 0.008041386}, {{1.1, -0.4, 0.3}, 0.016649613}}, 2e-8);
+}
+
+TEST(PovPattern, QuiltedMatchesPovRay) {
+    // Values printed by POV-Ray 3.7 at scattered points, with the default and other controls.
+    expectValues("quilted", {{{0.1, 0.1, 0.1}, 0.448492497}, {{0.3, 0.2, 0.1}, 0.312364697}, {{0.5, 0.5, 0.5}, 0},
+                             {{0, 0, 0}, 0.575961888}, {{-0.75, 0.5, 0.5}, 0.055630103},
+                             {{-2.921, 2.025, -1.444}, 0.348924547}, {{2.019, -0.142, 0.834}, 0.437557369}});
+    expectValues("quilted control0 0.5 control1 -0.2", {{{0.139, 1.448, 1.028}, 0.092576429},
+                                                        {{-2.616, 1.549, 0.547}, 0.011758776},
+                                                        {{1.805, -0.332, 2.614}, 0.049432285}});
+    expectValues("quilted control0 2.5 control1 1.7", {{{0.76, -1.194, 0.043}, 0.655295193},
+                                                       {{2.574, 2.138, 2.946}, 0.571510315}});
+    // Negative curves give their magnitude; values above 1 are 1.
+    expectValues("quilted control0 -1 control1 0.3", {{{2.788, 2.428, 0.415}, 0.060604423},
+                                                      {{0.441, -1.29, -2.619}, 0.054346632}});
+    expectValues("quilted control0 5 control1 5", {{{0, 0, 0}, 1}, {{0.2, 0.1, 0.3}, 1}});
+    expectValues("quilted control0 -5 control1 -5", {{{0, 0, 0}, 0.629809499}, {{0.1, 0.1, 0.1}, 1}});
 }
 
 TEST(PovPattern, WaveTypesFrequencyAndPhaseMatchPovRay) {
@@ -205,6 +259,35 @@ TEST(PovPattern, BlockPatternsMatchPovRay) {
     EXPECT_EQ(brick.at({7.6, 4, 3}).rgb, Vec3(0));
     EXPECT_EQ(brick.at({2, 4, 4.2}).rgb, Vec3(1));   // and not along z
     EXPECT_EQ(brick.at({1, 2.7, 1}).rgb, Vec3(1));   // y mortar at 2.5..3
+}
+
+// The list index a block pattern picks at p: entry i is rgb i/10.
+void expectIndices(const std::string& pattern, int entries, std::initializer_list<std::pair<Vec3, int>> samples) {
+    std::string body = pattern;
+    for (int i = 0; i < entries; ++i) body += (i ? ", rgb " : " rgb ") + std::to_string(i / 10.0);
+    const Probe pr = pigment(body);
+    ASSERT_GE(pr.surface().pigment, 0) << pattern;
+    EXPECT_TRUE(pr.b.warnings.empty()) << pattern;
+    for (const auto& [p, i] : samples)
+        EXPECT_NEAR(pr.at(p).rgb.x, i / 10.0, 1e-9) << pattern << " at " << p.x << " " << p.y << " " << p.z;
+}
+
+TEST(PovPattern, TilingBlockPatternsMatchPovRay) {
+    // Indices printed by POV-Ray 3.7 (the layouts checked at 300 random points each).
+    expectIndices("square", 4, {{{0.3, 0, 0.2}, 0}, {{1.7, 2, 0.4}, 3}, {{-0.6, 0, 0.3}, 3}, {{0.4, -1, -0.8}, 1},
+                                {{-1.2, 0, -1.9}, 0}, {{3.3, 0, 2.1}, 3}, {{1.5, 0, 1.5}, 2}});
+    expectIndices("triangular", 6, {{{0.5, 0, 0.2}, 0}, {{0.05, 0, 0.2}, 1}, {{0.95, 0, 0.2}, 3}, {{1.5, 0, 0.2}, 4},
+                                    {{-0.5, 0, 0.2}, 2}, {{-0.95, 0, 0.2}, 5}, {{0.1, 0, 0.9}, 4}, {{0.5, 0, 1.2}, 5},
+                                    {{-0.3, 1, -0.5}, 3}, {{2.2, 0, -2.4}, 0}, {{-3.7, 0, 3.1}, 3}, {{4.05, 0, -1}, 3}});
+    expectIndices("cubic", 6, {{{0.9, 0.1, 0.1}, 0}, {{-0.9, 0.5, 0.1}, 3}, {{0.1, 0.9, -0.5}, 1}, {{0.1, -0.9, 0.3}, 4},
+                               {{0.3, 0.1, 0.9}, 2}, {{-0.2, 0.1, -0.9}, 5}, {{5, -4, 2}, 0}});
+    // Built-in colours (measured): square red, green, blue, yellow; triangular and cubic add cyan, magenta.
+    EXPECT_EQ(pigment("square").at({1.5, 0, 0.5}).rgb, (Vec3{1, 1, 0}));
+    EXPECT_EQ(pigment("square rgb 0.5").at({0.5, 0, 1.5}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(pigment("triangular").at({1.5, 0, 0.5}).rgb, (Vec3{0, 1, 1}));
+    EXPECT_EQ(pigment("cubic").at({0, 0, -1}).rgb, (Vec3{1, 0, 1}));
+    // Pigment lists.
+    EXPECT_NEAR(pigment("square pigment { gradient x } rgb 1, rgb 1, rgb 1").at({0.25, 0, 0.5}).rgb.y, 0.25, 1e-9);
 }
 
 TEST(PovPattern, PigmentMapsAndAverageNestPigments) {
@@ -384,10 +467,10 @@ TEST(PovPattern, RenderedPatternsAreNotNotedUnrenderedOnesAre) {
     const Probe checker = pigment("checker rgb 1, rgb 0");
     EXPECT_TRUE(checker.b.warnings.empty());
     EXPECT_EQ(checker.b.scene.objects[0].material.color, Vec3(0.5));  // the mean stays the flat colour
-    const Probe cells = pigment("cells");
-    EXPECT_EQ(cells.surface().pigment, -1);
-    ASSERT_EQ(cells.b.warnings.size(), 1u);
-    EXPECT_NE(cells.b.warnings[0].find("pigment pattern cells (drawn in its mean colour)"), std::string::npos);
+    const Probe pavement = pigment("pavement");
+    EXPECT_EQ(pavement.surface().pigment, -1);
+    ASSERT_EQ(pavement.b.warnings.size(), 1u);
+    EXPECT_NE(pavement.b.warnings[0].find("pigment pattern pavement (drawn in its mean colour)"), std::string::npos);
 }
 
 TEST(PovPattern, NoisePatternsStayInRangeAndRepeat) {
@@ -463,6 +546,74 @@ TEST(PovPatternRender, SkySphereIsLookedUpByDirection) {
 
 // Rays' noise is not POV-Ray's, so noise patterns cannot match point for point; their mean and
 // spread over space can. POV-Ray 3.7's figures over the same 400 points (printed as above).
+TEST(PovPattern, RipplesPigmentIsASineOfPeriodOneFarFromItsCentres) {
+    // POV-Ray 3.7 along x from 1000 at y = 0.37, z = 0.21: a sine of period 1 about 0.5 (extremes
+    // 0.2415 and 0.7585 there; Rays' centres give their own phase and amplitude).
+    const Probe pr = pigment(std::string("ripples") + kGrey);
+    double lo = 1, hi = 0;
+    for (int i = 0; i < 40; ++i) {
+        const double v = pr.at({1000 + i / 40.0, 0.37, 0.21}).rgb.x;
+        EXPECT_NEAR(v, pr.at({1001 + i / 40.0, 0.37, 0.21}).rgb.x, 1e-3);
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+    }
+    EXPECT_NEAR((lo + hi) / 2, 0.5, 0.01);
+    EXPECT_GT(hi - lo, 0.1);
+}
+
+TEST(PovPattern, RipplesWavesAndDentsPigmentsSpreadAsPovRaysDo) {
+    // POV-Ray 3.7 over 400 random points in [−5, 5]³ (mean, standard deviation); here 400 points
+    // of a fixed pseudo-random sequence in the same cube.
+    struct Stat {
+        const char* body;
+        double mean, sd;
+    };
+    const Stat stats[] = {{"ripples", 0.500, 0.108}, {"waves", 0.476, 0.114}, {"dents", 0.157, 0.111},
+                          {"ripples frequency 3", 0.515, 0.274}};
+    for (const Stat& st : stats) {
+        const Probe pr = pigment(std::string(st.body) + kGrey);
+        ASSERT_GE(pr.surface().pigment, 0) << st.body;
+        uint32_t seed = 12345;
+        auto next = [&] {
+            seed = seed * 1664525u + 1013904223u;
+            return -5 + 10 * (seed >> 8) / double(1u << 24);
+        };
+        double sum = 0, sum2 = 0;
+        const int n = 400;
+        for (int i = 0; i < n; ++i) {
+            const double x = next(), y = next(), z = next();
+            const double v = pr.at({x, y, z}).rgb.x;
+            sum += v;
+            sum2 += v * v;
+        }
+        const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+        EXPECT_NEAR(mean, st.mean, 0.03) << st.body;
+        EXPECT_NEAR(sd, st.sd, 0.02) << st.body;
+    }
+}
+
+TEST(PovPattern, CellsGiveOneUniformValuePerUnitCube) {
+    // POV-Ray 3.7: constant within a cube (0.711818933 at both <0.5, 0.5, 0.5> and <0.1, 0.9, 0.2>),
+    // mean 0.505 and spread 0.286 over 400 random points; Rays' values are its own hash's.
+    const Probe pr = pigment(std::string("cells") + kGrey);
+    ASSERT_GE(pr.surface().pigment, 0);
+    EXPECT_EQ(pr.at({0.5, 0.5, 0.5}).rgb.x, pr.at({0.1, 0.9, 0.2}).rgb.x);
+    EXPECT_EQ(pr.at({2.5, 3.5, -4.5}).rgb.x, pr.at({2.1, 3.9, -4.1}).rgb.x);
+    EXPECT_NE(pr.at({0.5, 0.5, 0.5}).rgb.x, pr.at({-0.5, 0.5, 0.5}).rgb.x);
+    double sum = 0, sum2 = 0;
+    const int n = 1000;
+    for (int i = 0; i < n; ++i) {
+        const double v = pr.at({i * 1.0 + 0.5, (i * 7) % 13 + 0.5, -(i % 5) + 0.5}).rgb.x;
+        ASSERT_GE(v, 0);
+        ASSERT_LT(v, 1);
+        sum += v;
+        sum2 += v * v;
+    }
+    const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+    EXPECT_NEAR(mean, 0.505, 0.03);
+    EXPECT_NEAR(sd, 0.286, 0.02);
+}
+
 TEST(PovPattern, NoisePatternsSpreadAsPovRaysDo) {
     struct Stat {
         const char* body;

@@ -11,6 +11,9 @@ std::vector<MapEntry> defaultMap(PatternKind kind) {
     switch (kind) {
         case PatternKind::Checker: return {at(0, 0, 0, 1), at(0, 0, 1, 0)};
         case PatternKind::Hexagon: return {at(0, 0, 0, 1), at(0, 0, 1, 0), at(0, 1, 0, 0)};
+        case PatternKind::Square: return {at(0, 1, 0, 0), at(0, 0, 1, 0), at(0, 0, 0, 1), at(0, 1, 1, 0)};  // measured
+        case PatternKind::Triangular: case PatternKind::Cubic:  // measured
+            return {at(0, 1, 0, 0), at(0, 0, 1, 0), at(0, 0, 0, 1), at(0, 1, 1, 0), at(0, 0, 1, 1), at(0, 1, 0, 1)};
         case PatternKind::Brick: return {at(0, 0.5, 0.5, 0.5), at(0, 0.6, 0.15, 0.15)};
         case PatternKind::Wood:
             return {at(0, 0.666, 0.312, 0.2), at(0.6, 0.666, 0.312, 0.2), at(0.6, 0.4, 0.1333, 0.066),

@@ -91,43 +91,79 @@ Rgbft ImageMap::texel(int x, int y) const {
     return c;
 }
 
-Rgbft ImageMap::color(Vec3 p) const {
-    double u = 0, v = 0;
-    if (!image || image->width <= 0 || image->height <= 0) return {};
-    if (!coordinates(p, u, v)) return {Vec3(0), 0, 1};  // outside a `once` image: fully transparent
+ImageMap::Taps ImageMap::taps(double u, double v) const {
+    Taps t;
     const int w = image->width, h = image->height;
     // Image rows run top to bottom; v runs bottom to top.
     const double fx = u * w, fy = (1 - v) * h;
-    if (interpolate != 2 && interpolate != 4) return texel(std::min(int(fx), w - 1), std::min(int(fy), h - 1));
+    if (interpolate != 2 && interpolate != 4) {
+        t.x[0] = std::min(int(fx), w - 1), t.y[0] = std::min(int(fy), h - 1), t.w[0] = 1, t.count = 1;
+        return t;
+    }
     // Between the four nearest texel centres.
     const double x = fx - 0.5, y = fy - 0.5;
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const double tx = x - x0, ty = y - y0;
-    double wts[4];
+    const int at[4][2] = {{x0, y0}, {x0 + 1, y0}, {x0, y0 + 1}, {x0 + 1, y0 + 1}};
+    for (int i = 0; i < 4; ++i) t.x[i] = at[i][0], t.y[i] = at[i][1];
+    t.count = 4;
     if (interpolate == 2) {
-        wts[0] = (1 - tx) * (1 - ty), wts[1] = tx * (1 - ty), wts[2] = (1 - tx) * ty, wts[3] = tx * ty;
-    } else {
-        // Normalised distance: each texel weighted by the inverse square of its distance to the
-        // point, the weights normalised to sum to one (measured with POV-Ray 3.7: a 4×2 image).
-        const double dx[4] = {tx, 1 - tx, tx, 1 - tx}, dy[4] = {ty, ty, 1 - ty, 1 - ty};
-        double sum = 0;
-        for (int i = 0; i < 4; ++i) {
-            const double d2 = dx[i] * dx[i] + dy[i] * dy[i];
-            if (d2 < 1e-12) {
-                const int at[4][2] = {{x0, y0}, {x0 + 1, y0}, {x0, y0 + 1}, {x0 + 1, y0 + 1}};
-                return texel(at[i][0], at[i][1]);
-            }
-            sum += wts[i] = 1 / d2;
-        }
-        for (double& wt : wts) wt /= sum;
+        t.w[0] = (1 - tx) * (1 - ty), t.w[1] = tx * (1 - ty), t.w[2] = (1 - tx) * ty, t.w[3] = tx * ty;
+        return t;
     }
-    const Rgbft c[4] = {texel(x0, y0), texel(x0 + 1, y0), texel(x0, y0 + 1), texel(x0 + 1, y0 + 1)};
-    Rgbft out;
+    // Normalised distance: each texel weighted by the inverse square of its distance to the
+    // point, the weights normalised to sum to one (measured with POV-Ray 3.7: a 4×2 image).
+    const double dx[4] = {tx, 1 - tx, tx, 1 - tx}, dy[4] = {ty, ty, 1 - ty, 1 - ty};
+    double sum = 0;
     for (int i = 0; i < 4; ++i) {
-        out.rgb += c[i].rgb * wts[i];
-        out.filter += c[i].filter * wts[i];
-        out.transmit += c[i].transmit * wts[i];
+        const double d2 = dx[i] * dx[i] + dy[i] * dy[i];
+        if (d2 < 1e-12) {
+            t.x[0] = at[i][0], t.y[0] = at[i][1], t.w[0] = 1, t.count = 1;
+            return t;
+        }
+        sum += t.w[i] = 1 / d2;
     }
+    for (double& wt : t.w) wt /= sum;
+    return t;
+}
+
+Rgbft ImageMap::color(Vec3 p) const {
+    double u = 0, v = 0;
+    if (!image || image->width <= 0 || image->height <= 0) return {};
+    if (!coordinates(p, u, v)) return {Vec3(0), 0, 1};  // outside a `once` image: fully transparent
+    const Taps t = taps(u, v);
+    if (t.count == 1) return texel(t.x[0], t.y[0]);
+    Rgbft out;
+    for (int i = 0; i < t.count; ++i) {
+        const Rgbft c = texel(t.x[i], t.y[i]);
+        out.rgb += c.rgb * t.w[i];
+        out.filter += c.filter * t.w[i];
+        out.transmit += c.transmit * t.w[i];
+    }
+    return out;
+}
+
+void ImageMap::setPatternGamma(double g) {
+    for (int i = 0; i < 256; ++i) patternDecode[size_t(i)] = float(g == 1 ? i / 255.0 : std::pow(i / 255.0, g));
+}
+
+double ImageMap::texelValue(int x, int y) const {
+    const Image8& img = *image;
+    x = wrap(x, img.width);
+    y = wrap(y, img.height);
+    const uint8_t* px = img.pixels.data() + (size_t(y) * size_t(img.width) + size_t(x)) * size_t(img.channels);
+    if (useAlpha) return img.channels == 2 || img.channels == 4 ? 1 - px[img.channels - 1] / 255.0 : 0.0;
+    const auto& d = patternDecode;
+    if (img.channels < 3) return d[px[0]];
+    return 0.297 * d[px[0]] + 0.589 * d[px[1]] + 0.114 * d[px[2]];
+}
+
+double ImageMap::value(Vec3 p) const {
+    double u = 0, v = 0;
+    if (!image || image->width <= 0 || image->height <= 0 || !coordinates(p, u, v)) return 0;
+    const Taps t = taps(u, v);
+    double out = 0;
+    for (int i = 0; i < t.count; ++i) out += texelValue(t.x[i], t.y[i]) * t.w[i];
     return out;
 }
 

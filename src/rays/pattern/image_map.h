@@ -42,13 +42,36 @@ struct ImageMap {
 
     /// Fills decode for the scene's assumed_gamma (0: legacy scene, bytes used as they are).
     void setWorkingGamma(double assumedGamma);
+    bool useAlpha = false;               ///< image_pattern's use_alpha
+    std::array<float, 256> patternDecode{};  ///< image_pattern: byte → value (setPatternGamma)
+
+    /// image_pattern's decoding: the bytes as they are, or to the power of an explicit `gamma G`
+    /// (measured: POV-Ray's image_pattern ignores the file's own gamma).
+    void setPatternGamma(double g);
+
     /// The colour at p (the image map's pattern space).
     Rgbft color(Vec3 p) const;
+    /// image_pattern's value at p (POV-Ray 3.7 reference, "Image Pattern"; measured with POV-Ray's
+    /// pattern functions on 4×2 images): a colour texel's grey 0.297·r + 0.589·g + 0.114·b of its
+    /// decoded channels, a grey texel's value, or with use_alpha the transparency 1 − alpha (0
+    /// without an alpha channel); placed and interpolated as the colour; 0 outside a `once` image.
+    /// POV-Ray re-quantises grey images (80 reads as 79/255): not reproduced.
+    double value(Vec3 p) const;
     /// Texture coordinates (u, v) ∈ [0, 1)² (v = 0 at the bottom row) of p for the map type;
     /// false where `once` leaves p outside the image.
     bool coordinates(Vec3 p, double& u, double& v) const;
     /// Texel (x, y) (y = 0 the top row) as a colour, with filter and transmit.
     Rgbft texel(int x, int y) const;
+    /// Texel (x, y) as image_pattern reads it.
+    double texelValue(int x, int y) const;
+
+    /// Up to four texels and their weights about texture coordinates (u, v).
+    struct Taps {
+        int x[4], y[4];
+        double w[4];
+        int count = 0;
+    };
+    Taps taps(double u, double v) const;
 };
 
 }  // namespace rays::pattern

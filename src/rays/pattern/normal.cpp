@@ -7,8 +7,11 @@
 // the unit normal there (a gradient along the normal changes nothing), the wave and slopes included.
 // bumps, dents, ripples, waves and wrinkles have their own perturbation in POV-Ray; here they are
 // gradients of look-alike heights on Rays' noise and Rays' wave centres, not POV-Ray's (ripples
-// and waves: analytic, the tilt independent of the frequency, as measured).
+// and waves: analytic, the tilt independent of the frequency, as measured). quilted has POV-Ray's
+// own tilt, measured (pattern/quilted.h).
 #include "rays/pattern/normal.h"
+
+#include "rays/pattern/ripples.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,11 +31,6 @@ constexpr Vec3 kPyramid[4] = {{kT, kT, kT}, {kT, -kT, -kT}, {-kT, kT, -kT}, {-kT
 // (measured over a plane, tests/pov_normal_test.cpp, SpecialisedNormalsTiltAboutAsMuchAsPovRays).
 constexpr double kBumpsScale = 8.5, kDentsScale = 12.5, kRipplesScale = 18.8, kWavesScale = 34.5,
                  kWrinklesScale = 1.15;
-
-// Ten wave centres in the unit cube for ripples and waves (POV-Ray's are its own random ones).
-constexpr Vec3 kCentres[10] = {{0.12, 0.84, 0.37}, {0.71, 0.22, 0.91}, {0.45, 0.58, 0.06}, {0.93, 0.67, 0.49},
-                               {0.28, 0.11, 0.62}, {0.59, 0.95, 0.73}, {0.04, 0.39, 0.18}, {0.81, 0.03, 0.27},
-                               {0.36, 0.76, 0.88}, {0.67, 0.48, 0.55}};
 
 Vec3 patternPoint(const PigmentTable& patterns, const PigmentNode& pn, Vec3 p) {
     if (pn.warpCount > 0) {
@@ -72,7 +70,7 @@ double slopeHeight(const SlopeEntry* s, int count, double v) {
 // frequencies, as in var_refl.pov, stay calm).
 Vec3 wavesGradient(Vec3 q, const Wave& w, bool ripples) {
     Vec3 g;
-    for (const Vec3& centre : kCentres) {
+    for (const Vec3& centre : kWaveCentres) {
         const Vec3 r = q - centre;
         const double d = length(r);
         if (d == 0) continue;
@@ -134,7 +132,11 @@ Vec3 NormalTable::perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 norm
             const PigmentNode& pn = patterns.nodes[size_t(node.pattern)];
             Vec3 q = patternPoint(patterns, pn, p);
             if (pn.params.turbulence.on()) q = turbulent(q, pn.params.turbulence);
-            if (node.kind == NormalKind::Ripples || node.kind == NormalKind::Waves) {
+            if (node.kind == NormalKind::Quilted) {
+                // Not a gradient: POV-Ray tilts the normal along the point's offset from its cube's
+                // centre (measured, pattern/quilted.h).
+                g = quiltedTilt(pn.params.quilt, q) * (-1 / kPovBumpScale);
+            } else if (node.kind == NormalKind::Ripples || node.kind == NormalKind::Waves) {
                 const bool ripples = node.kind == NormalKind::Ripples;
                 g = (ripples ? kRipplesScale : kWavesScale) * wavesGradient(q, pn.wave, ripples);
             } else {

@@ -17,6 +17,7 @@ enum class NormalKind : uint8_t {
     Map,      ///< normal_map: the pattern value blends the entries' normals
     Average,  ///< average: the weighted mean of the map's normals
     Bumps, Dents, Ripples, Waves, Wrinkles,  ///< POV-Ray's specialised normals (look-alikes)
+    Quilted,  ///< quilted's own tilt (pattern/quilted.h, measured)
 };
 
 /// One slope_map entry: at pattern value `value` the height and its slope (height per value).

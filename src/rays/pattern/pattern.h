@@ -1,6 +1,6 @@
 // Pattern types (POV-Ray 3.7 reference, "Patterns"): each maps a point of pattern space to a value
-// in [0, 1] (before the wave), or, for the block patterns checker, hexagon and brick, to the index
-// of one of their two or three colours or pigments.
+// in [0, 1] (before the wave), or, for the block patterns (checker, hexagon, brick, square,
+// triangular, cubic), to the index of one of their two to six colours or pigments.
 #pragma once
 #include <cstdint>
 
@@ -8,18 +8,24 @@
 #include "rays/math/vec3.h"
 #include "rays/pattern/density_file.h"
 #include "rays/pattern/noise.h"
+#include "rays/pattern/quilted.h"
 #include "rays/pattern/slope.h"
 
 namespace rays::pattern {
 
 enum class PatternKind : uint8_t {
     Solid,  ///< no pattern: one colour
-    Checker, Hexagon, Brick,  // block patterns
+    Checker, Hexagon, Brick, Square, Triangular, Cubic,  // block patterns
     Gradient, Radial, Onion, Spherical, Cylindrical, Planar, Boxed, Leopard,
     Bozo, Granite, Marble, Wood, Agate, Wrinkles, Crackle,
+    Ripples, Waves, Dents,  ///< look-alikes of POV-Ray's (pattern/ripples.h)
+    Cells,     ///< one random value per unit cube
     Mandel,    ///< the Mandelbrot set in the x-y plane (exponent, exterior and interior colouring)
     Julia,     ///< a Julia set in the x-y plane: mandel's iteration with a fixed c, z starting at the point
+    Magnet,    ///< fractint's magnet 1 or 2, mandel or julia type (pattern/magnet.h)
     Spiral1,   ///< a spiral of N arms winding around z, one turn per unit along z
+    Spiral2,   ///< two spirals crossing: spiral1's triangle plus rings round z
+    Quilted,   ///< unit cubes rising from their centres along a cubic curve (pattern/quilted.h)
     Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
     Slope,     ///< the surface normal's angle to a direction, and the altitude (pattern/slope.h)
     PigmentPattern,  ///< a pigment's grey (PigmentTable::rawValue; PatternParams::source)
@@ -27,12 +33,12 @@ enum class PatternKind : uint8_t {
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
     DensityFile,  ///< density_file df3: a DF3 grid over the unit cube (pattern/density_file.h)
+    ImagePattern,  ///< image_pattern: the grey of PigmentTable::images[node.image] (ImageMap::value)
 };
 
-/// True for checker, hexagon and brick (a list of 2 or 3 colours, no wave, no map).
-constexpr bool isBlockPattern(PatternKind k) {
-    return k == PatternKind::Checker || k == PatternKind::Hexagon || k == PatternKind::Brick;
-}
+/// True for checker, hexagon, brick, square, triangular and cubic (a list of 2 to 6 colours, no
+/// wave, no map).
+constexpr bool isBlockPattern(PatternKind k) { return k >= PatternKind::Checker && k <= PatternKind::Cubic; }
 
 /// The modifiers some patterns read.
 struct PatternParams {
@@ -42,22 +48,30 @@ struct PatternParams {
     double agateTurb = 1;          ///< agate_turb
     Turbulence turbulence;         ///< turbulence, octaves, omega, lambda
     int iterations = 0, exponent = 2;  ///< mandel, julia
-    double juliaR = 0, juliaI = 0;     ///< julia's complex constant c
-    double arms = 1;                   ///< spiral1's number of arms
+    double juliaR = 0, juliaI = 0;     ///< julia's (and magnet julia's) complex constant c
+    int magnetFormula = 1;             ///< magnet 1 or 2
+    bool magnetJulia = false;          ///< magnet's julia type (z starts at the point, c fixed)
+    double arms = 1;                   ///< spiral1's and spiral2's number of arms (an integer)
     int exterior = 1, interior = 0;    ///< mandel's colouring types (0..8, 0..6)
     double exteriorFactor = 1, interiorFactor = 1;
     Slope slope;                       ///< Slope's direction, altitude and ranges
+    Quilt quilt;                       ///< quilted's control0 and control1
     int source = -1;                   ///< PigmentPattern: the pigment's node in the same table
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
     const DensityGrid* grid = nullptr;      ///< DensityFile: the grid (kept alive by the PigmentTable)
     int interpolate = 0;                    ///< DensityFile: 0 nearest, 1 trilinear, 2 tricubic
 };
 
+/// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type
+/// when the orbit escaped after n + 1 new points (n counted from 0), else from the interior type;
+/// (zr, zi) the last point, minAbs2 the smallest |z|² of the orbit.
+double escapeColouring(const PatternParams& m, bool escaped, int n, double zr, double zi, double minAbs2);
+
 /// The value of a continuous pattern at p (pattern space), turbulence included, before the wave.
 /// N: the world normal facing the viewer at the surface point (only slope reads it; zero where
 /// there is no surface).
 double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 N = {});
-/// The list index (0, 1 or 2) of a block pattern at p, turbulence included.
+/// The list index (0 to 5) of a block pattern at p, turbulence included.
 int blockIndex(PatternKind kind, const PatternParams& params, Vec3 p);
 
 }  // namespace rays::pattern

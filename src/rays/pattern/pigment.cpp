@@ -14,6 +14,10 @@ Vec3 PigmentTable::inNodeSpace(const PigmentNode& node, Vec3 p) const {
 }
 
 double PigmentTable::rawValue(const PigmentNode& node, Vec3 q, Vec3 N) const {
+    if (node.kind == PatternKind::ImagePattern) {
+        if (node.params.turbulence.on()) q = turbulent(q, node.params.turbulence);
+        return node.image >= 0 ? images[size_t(node.image)].value(q) : 0;
+    }
     if (node.kind != PatternKind::PigmentPattern) return patternValue(node.kind, node.params, q, N);
     if (node.params.source < 0) return 0;
     if (node.params.turbulence.on()) q = turbulent(q, node.params.turbulence);

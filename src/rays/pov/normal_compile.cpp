@@ -22,12 +22,16 @@ NormalKind kindOf(Kw k) {
         case Kw::ripples: return NormalKind::Ripples;
         case Kw::waves: return NormalKind::Waves;
         case Kw::wrinkles: return NormalKind::Wrinkles;
+        case Kw::quilted: return NormalKind::Quilted;
         case Kw::average: return NormalKind::Average;
         default: return NormalKind::Pattern;
     }
 }
 
-bool isBlock(Kw k) { return k == Kw::checker || k == Kw::hexagon || k == Kw::brick; }
+bool isBlock(Kw k) {
+    return k == Kw::checker || k == Kw::hexagon || k == Kw::brick || k == Kw::square || k == Kw::triangular ||
+           k == Kw::cubic;
+}
 
 }  // namespace
 
@@ -127,6 +131,9 @@ void NormalCompiler::read(const Item& normal, State& s, int depth) {
             // bumps, dents, ripples, waves and wrinkles take their amount as an argument.
             if (s.kind >= NormalKind::Bumps && !e.args.empty() && e.args[0].type == VType::Float)
                 s.amount = toFloat(e.args[0]);
+            // spiral1 N, AMOUNT and spiral2 N, AMOUNT (measured: `spiral2 5, 1.0` tilts as `spiral2 5 1.0`).
+            if ((k == Kw::spiral1 || k == Kw::spiral2) && e.args.size() > 1 && e.args[1].isNumeric())
+                s.amount = toFloat(e.args[1]);
             continue;
         }
         switch (k) {

@@ -27,6 +27,9 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::checker: out = PatternKind::Checker; return true;
         case Kw::hexagon: out = PatternKind::Hexagon; return true;
         case Kw::brick: out = PatternKind::Brick; return true;
+        case Kw::square: out = PatternKind::Square; return true;
+        case Kw::triangular: out = PatternKind::Triangular; return true;
+        case Kw::cubic: out = PatternKind::Cubic; return true;
         case Kw::gradient: out = PatternKind::Gradient; return true;
         case Kw::radial: out = PatternKind::Radial; return true;
         case Kw::onion: out = PatternKind::Onion; return true;
@@ -42,11 +45,18 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::agate: out = PatternKind::Agate; return true;
         case Kw::wrinkles: out = PatternKind::Wrinkles; return true;
         case Kw::crackle: out = PatternKind::Crackle; return true;
+        case Kw::ripples: out = PatternKind::Ripples; return true;
+        case Kw::waves: out = PatternKind::Waves; return true;
+        case Kw::dents: out = PatternKind::Dents; return true;
+        case Kw::cells: out = PatternKind::Cells; return true;
         case Kw::average: out = PatternKind::Average; return true;
         case Kw::function: out = PatternKind::Function; return true;
         case Kw::mandel: out = PatternKind::Mandel; return true;
         case Kw::julia: out = PatternKind::Julia; return true;
+        case Kw::magnet: out = PatternKind::Magnet; return true;
         case Kw::spiral1: out = PatternKind::Spiral1; return true;
+        case Kw::spiral2: out = PatternKind::Spiral2; return true;
+        case Kw::quilted: out = PatternKind::Quilted; return true;
         case Kw::slope: out = PatternKind::Slope; return true;
         case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
         default: return false;
@@ -239,11 +249,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     const Kw k = e.kw();
     const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
     PatternKind kind;
-    const bool special = k == Kw::dents || k == Kw::ripples || k == Kw::waves;  // normal-only (bumps, wrinkles known)
     // slope reads the surface normal: as a normal pattern it is not rendered (noted below).
     const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope);
-    if (known || (s.normal && special)) {
-        if (special) kind = PatternKind::Bozo;
+    if (known) {
         s.pattern = true;
         s.unrendered = false;
         s.node.kind = kind;
@@ -253,13 +261,24 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
             s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
         }
         if (kind == PatternKind::Mandel) s.node.params.iterations = int(std::clamp(toFloat(e.args[0]), 0.0, 1e6));
+        if (kind == PatternKind::Magnet) {  // magnet 1|2, 0 (mandel) | 1 (julia) [, <c>], ITERATIONS (specs_texture)
+            s.node.params.magnetFormula = num(0) == 2 ? 2 : 1;
+            s.node.params.magnetJulia = num(1) != 0;
+            if (s.node.params.magnetJulia && e.args.size() > 3) {
+                const Vec3 c = toVec3(e.args[2]);
+                s.node.params.juliaR = c.x;
+                s.node.params.juliaI = c.y;
+            }
+            s.node.params.iterations = int(std::clamp(toFloat(e.args.back()), 0.0, 1e6));
+        }
         if (kind == PatternKind::Julia) {  // julia <c>, ITERATIONS
             const Vec3 c = toVec3(e.args[0]);
             s.node.params.juliaR = c.x;
             s.node.params.juliaI = c.y;
             s.node.params.iterations = e.args.size() > 1 ? int(std::clamp(toFloat(e.args[1]), 0.0, 1e6)) : 0;
         }
-        if (kind == PatternKind::Spiral1) s.node.params.arms = toFloat(e.args[0]);
+        // The number of arms is cut to an integer (measured: spiral1 1.5 and spiral2 1.5 are 1's).
+        if (kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2) s.node.params.arms = std::trunc(toFloat(e.args[0]));
         if (kind == PatternKind::Slope) s.node.params.slope = readSlope(e.args[0]);
         if (kind == PatternKind::PigmentPattern) s.node.params.source = nested(e.args[0].item(), depth);
         if (kind == PatternKind::Function) {
@@ -277,7 +296,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         }
         if (!s.waveSet)
             s.node.wave.type =
-                kind == PatternKind::Wood || kind == PatternKind::Marble || kind == PatternKind::Spiral1
+                kind == PatternKind::Wood || kind == PatternKind::Marble || kind == PatternKind::Spiral1 ||
+                        kind == PatternKind::Spiral2
                     ? WaveType::Triangle
                     : WaveType::Ramp;
         return;
@@ -295,6 +315,10 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         s.node.params.grid = table_.grids.back().get();
         if (e.args.size() > 1) s.node.params.interpolate = int(std::clamp(toFloat(e.args[1]), 0.0, 2.0));
         if (!s.waveSet) s.node.wave.type = WaveType::Ramp;
+        return;
+    }
+    if (k == Kw::image_pattern) {
+        readImageMap(e.args[0].item(), s, true);
         return;
     }
     if (isPatternType(k) || k == Kw::image_map) {
@@ -329,6 +353,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
         case Kw::mortar: pp.mortar = num(0); break;
         case Kw::agate_turb: pp.agateTurb = num(0); break;
+        case Kw::control0: pp.quilt.control0 = num(0); break;
+        case Kw::control1: pp.quilt.control1 = num(0); break;
         case Kw::exponent: pp.exponent = int(std::clamp(num(0), 2.0, 33.0)); break;
         case Kw::exterior:
             pp.exterior = int(num(0));
@@ -419,8 +445,8 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
 
 // image_map { TYPE "file" [gamma G] [map_type M] [once] [interpolate N] [filter|transmit all|N, A] }
 // (POV-Ray 3.7 reference, "Image Map", "Bitmap Modifiers"). The node has no map: the image gives
-// the colour.
-void PigmentCompiler::readImageMap(const Item& map, State& s) {
+// the colour. As image_pattern { ... [use_alpha] } (asPattern) the image's grey is the pattern's value.
+void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern) {
     pattern::ImageMap m;
     const ImageFile* file = nullptr;
     bool gammaSet = false;
@@ -451,6 +477,7 @@ void PigmentCompiler::readImageMap(const Item& map, State& s) {
                 return;
             case Kw::map_type: m.mapType = int(num(0)); break;
             case Kw::once: m.once = true; break;
+            case Kw::use_alpha: m.useAlpha = true; break;
             case Kw::interpolate: m.interpolate = int(num(0)); break;
             case Kw::gamma: {
                 const double g = num(0);
@@ -482,11 +509,12 @@ void PigmentCompiler::readImageMap(const Item& map, State& s) {
         m.mapType = 0;
     }
     m.image = file->image;
+    m.setPatternGamma(gammaSet && m.fileGamma.kind == pattern::FileGamma::Kind::Power ? m.fileGamma.gamma : 1.0);
     if (!gammaSet) m.fileGamma = ImageFiles::defaultGamma(*file);
     m.setWorkingGamma(1.0);  // until the scene's assumed_gamma is known (PigmentTable::setWorkingGamma)
     s.pattern = true;
     s.unrendered = false;
-    s.node.kind = PatternKind::ImageMap;
+    s.node.kind = asPattern ? PatternKind::ImagePattern : PatternKind::ImageMap;
     s.node.image = int(table_.images.size());
     s.list.clear();
     table_.images.push_back(std::move(m));

@@ -68,7 +68,7 @@ private:
     void read(const Item& pigment, State& s, int depth);
     void readEntry(const Entry& e, State& s, int depth);
     void readWarp(const Item& warp, State& s);
-    void readImageMap(const Item& map, State& s);
+    void readImageMap(const Item& map, State& s, bool asPattern = false);
     void readColorMap(const Item& map, State& s, int depth);
     void readPigmentMap(const Item& map, State& s, int depth);
     int emit(State& s);

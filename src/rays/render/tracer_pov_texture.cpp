@@ -68,8 +68,8 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
         const PovLayer& l = scene_.povTextures.layers[size_t(begin + i)];
         PovLayerAt& a = layers[n++];
         a.surface = &l.surface;
-        const Vec3 N = l.surface.normal >= 0 ? povNormalAt(scene_, l.surface, pt.P, hit.normal) : hit.normal;
-        a.N = pt.entering ? N : -N;  // faces the viewer
+        // The normal facing the viewer, tilted (as POV-Ray does, measured).
+        a.N = l.surface.normal >= 0 ? povNormalAt(scene_, l.surface, pt.P, Nraw) : Nraw;
         const PovPigmentSample c = povLayerPigment(scene_, l, pt.P, a.N);  // slope reads the tilted normal
         a.C = c.color, a.filter = c.filter, a.transmit = c.transmit;
         if (i == 0 && (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0))

@@ -136,9 +136,10 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     }
     PovPoint pt = povPointOf(ray, hit, o, r, segmentFade);
     // The normal pattern tilts the shading normal (lighting, highlights, reflection, refraction);
-    // inside or outside is still decided by the geometric normal.
-    const Vec3 N = pt.surface->normal >= 0 ? povNormalAt(scene_, *pt.surface, pt.P, hit.normal) : hit.normal;
-    pt.N = pt.entering ? N : -N;  // faces the viewer
+    // inside or outside is still decided by the geometric normal. POV-Ray tilts the normal facing
+    // the viewer (measured: a plane seen from its back tilts as one seen from its front).
+    const Vec3 facing = pt.entering ? hit.normal : -hit.normal;
+    pt.N = pt.surface->normal >= 0 ? povNormalAt(scene_, *pt.surface, pt.P, facing) : facing;
     pt.C = o.material.color;
     pt.filter = o.material.filter;
     pt.transmit = pt.surface->transmit;
@@ -428,7 +429,8 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             }
         }
         if (s.interior.caustics > 0) {  // the surface's normal as its normal pattern tilts it (measured)
-            const Vec3 N = s.normal >= 0 ? povNormalAt(scene_, s, shadow.at(h.t), h.normal) : h.normal;
+            const Vec3 facing = dot(shadow.dir, h.geomNormal) < 0 ? h.normal : -h.normal;
+            const Vec3 N = s.normal >= 0 ? povNormalAt(scene_, s, shadow.at(h.t), facing) : facing;
             tint *= povCausticGain(s.interior.caustics, dot(N, shadow.dir));
         }
         if (povFades(s.interior)) {

@@ -1,0 +1,36 @@
+#include "rays/pattern/ripples.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "rays/pattern/noise.h"
+
+namespace rays::pattern {
+namespace {
+
+constexpr double kRingTurn = 2 * std::numbers::pi;
+
+}  // namespace
+
+double ripplesValue(Vec3 p) {
+    double sum = 0;
+    for (const Vec3& c : kWaveCentres) sum += std::sin(kRingTurn * length(p - c));
+    return 0.5 + 0.0885 * sum;
+}
+
+double wavesValue(Vec3 p) {
+    double sum = 0;
+    for (const Vec3& c : kWaveCentres) {
+        const double k = std::cos(kRingTurn * length(p - c));
+        sum += k * std::fabs(k);
+    }
+    return 0.476 + 0.107 * sum;
+}
+
+double dentsValue(Vec3 p) {
+    const double n = std::clamp(0.5 + 1.15 * (noise(p) - 0.5), 0.0, 1.0);  // widened to POV-Ray's spread
+    return n * n * n;
+}
+
+}  // namespace rays::pattern
