@@ -58,6 +58,22 @@ bool finiteBounds(const Bounds& b) {
     return true;
 }
 
+// best becomes triangle object o (index id) hit at t with barycentrics (u, v): the numbers of
+// intersect() (triangleHitT, then triangleNormals) without its dispatch, the flat normal the one
+// computed at build.
+void takeTriangleHit(Hit& best, const Object& o, uint32_t id, Vec3 flatNormal, double t, double u, double v) {
+    best.t = t;
+    best.object = int(id);
+    best.hasUV = false;
+    best.part = nullptr;
+    if (o.smooth) {
+        triangleNormals(o, u, v, best.geomNormal, best.normal);
+    } else {
+        best.geomNormal = flatNormal;
+        best.normal = flatNormal;
+    }
+}
+
 }  // namespace
 
 int32_t Bvh::planeIndexIn(std::vector<Plane>& planes, Vec3 n, const Object& o) {
@@ -264,16 +280,7 @@ Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, do
         const Object& o = objects[id];
         double t, u, v;
         if (triangleHitT(o, ray, tMin, kInfinity, t, u, v) && t < best.t) {
-            best.t = t;
-            best.object = int(id);
-            best.hasUV = false;
-            best.part = nullptr;
-            if (o.smooth) {
-                triangleNormals(o, u, v, best.geomNormal, best.normal);
-            } else {
-                best.geomNormal = triNormal_[th.prim];
-                best.normal = best.geomNormal;
-            }
+            takeTriangleHit(best, o, id, triNormal_[th.prim], t, u, v);
         } else if (double(th.t) < best.t && double(th.t) > tMin) {
             best.t = th.t;
             best.object = int(id);
@@ -459,16 +466,7 @@ void Bvh::closestOnPlanes(const std::vector<Object>& objects, const Ray& ray, do
             // As testing every object in order: the nearest, the first of equals.
             if (!(t < best.t || (fromTriangle && t == best.t && int(id) < best.object))) continue;
             fromTriangle = true;
-            best.t = t;
-            best.object = int(id);
-            best.hasUV = false;
-            best.part = nullptr;
-            if (o.smooth) {
-                triangleNormals(o, u, v, best.geomNormal, best.normal);
-            } else {
-                best.geomNormal = triNormal_[tri];
-                best.normal = best.geomNormal;
-            }
+            takeTriangleHit(best, o, id, triNormal_[tri], t, u, v);
         }
     }
 }

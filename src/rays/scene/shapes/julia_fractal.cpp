@@ -9,6 +9,8 @@
 #include <cmath>
 #include <complex>
 
+#include "rays/math/regula_falsi.h"
+
 namespace rays {
 
 namespace {
@@ -171,7 +173,7 @@ bool escapeLoop(Quat h, int count, double r2, double* reach, double* margin, con
         slope2 *= grow2;
         n2 = stateNorm2<kHyper>(h);
     }
-    if (margin) *margin = in ? std::min(0.0, std::sqrt(most) - std::sqrt(r2)) : std::max(std::sqrt(most) - std::sqrt(r2), 1e-300);
+    if (margin) *margin = in ? std::min(-1e-300, std::sqrt(most) - std::sqrt(r2)) : std::max(std::sqrt(most) - std::sqrt(r2), 1e-300);
     return in;
 }
 
@@ -250,26 +252,15 @@ Vec3 juliaNormal(const double* v, Vec3 pt) {
 }
 
 // The crossing of the surface between lo and hi (margins glo and ghi of opposite states, see
-// escapeLoop), narrowed to kJuliaTolerance by the Illinois variant of regula falsi on the margin
-// (Dowell and Jarratt 1971), which keeps the crossing bracketed; a secant point outside the
-// bracket falls back to its middle. Returns the end on hi's side.
+// escapeLoop), narrowed to kJuliaTolerance by regula falsi on the margin (math/regula_falsi.h).
+// Returns the end on hi's side.
 double refineCrossing(const double* v, const Ray& r, double len, double lo, double glo, double hi, double ghi) {
-    int kept = 0;  // which end the last two steps kept: −1 lo, +1 hi
-    for (int i = 0; i < 60 && (hi - lo) * len > kJuliaTolerance; ++i) {
-        double mid = (glo * hi - ghi * lo) / (glo - ghi);
-        if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+    auto margin = [&](double t) {
         double g;
-        juliaIterate(v, juliaStart(v, r.at(mid)), nullptr, &g);
-        if ((g > 0) == (glo > 0)) {
-            lo = mid, glo = g;
-            if (kept == 1) ghi *= 0.5;
-            kept = 1;
-        } else {
-            hi = mid, ghi = g;
-            if (kept == -1) glo *= 0.5;
-            kept = -1;
-        }
-    }
+        juliaIterate(v, juliaStart(v, r.at(t)), nullptr, &g);
+        return g;
+    };
+    illinoisBracket(margin, lo, glo, hi, ghi, [&](double a, double b) { return (b - a) * len > kJuliaTolerance; }, 60);
     return hi;
 }
 

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rays/math/regula_falsi.h"
+
 namespace rays {
 
 namespace {
@@ -39,25 +41,11 @@ bool clipToBox(const Ray& r, double w, double& t0, double& t1) {
 }
 
 // The crossing of f − 1 = 0 between lo and hi (values flo and fhi of opposite signs), narrowed by
-// the Illinois variant of regula falsi (Dowell and Jarratt 1971; f is smooth within a piece),
-// which keeps it bracketed; a secant point outside the bracket falls back to its middle.
+// regula falsi (math/regula_falsi.h; f is smooth within a piece) on 1 − f, whose sign is positive
+// inside as the samples count it (f − 1 < 0).
 double refineCrossing(double e, double n, const Ray& r, double lo, double flo, double hi, double fhi) {
-    int kept = 0;  // which end the last step kept: −1 lo, +1 hi
-    for (int it = 0; it < 100 && hi - lo > 1e-13 * (1 + std::fabs(lo)); ++it) {
-        double mid = (flo * hi - fhi * lo) / (flo - fhi);
-        if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
-        const double f = superF(e, n, r.at(mid));
-        if (f == 0) return mid;
-        if ((f < 0) == (flo < 0)) {
-            lo = mid, flo = f;
-            if (kept == 1) fhi *= 0.5;
-            kept = 1;
-        } else {
-            hi = mid, fhi = f;
-            if (kept == -1) flo *= 0.5;
-            kept = -1;
-        }
-    }
+    auto inward = [&](double t) { return -superF(e, n, r.at(t)); };
+    illinoisBracket(inward, lo, -flo, hi, -fhi, [](double a, double b) { return b - a > 1e-13 * (1 + std::fabs(a)); }, 100);
     return 0.5 * (lo + hi);
 }
 
