@@ -248,6 +248,31 @@ TEST(Distribution, PovRayThresholdAaSupersamplesWhereColoursChange) {
     EXPECT_LT(want, s.width * s.height / 4);  // not the checker's squares
 }
 
+// Focal blur samples every pixel whatever the anti-aliasing rule (as POV-Ray's does): a sharp
+// first pass would leave the unmarked pixels in focus.
+TEST(Distribution, AdaptiveAaLeavesFocalBlurToEveryPixel) {
+    const Scene scene = test::buildPov(
+        "camera { location <0, 2, -8> look_at <0, 0, 0> aperture 0.8 focal_point <0, 0, 4> blur_samples 16 }\n"
+        "light_source { <5, 10, -5> color rgb 1 }\n"
+        "plane { y, -1 pigment { checker rgb 1 rgb 0 } }\n"
+        "sphere { 0, 1 pigment { rgb <0, 0, 1> } }\n");
+    RenderSettings s;
+    s.width = 32;
+    s.height = 24;
+    s.aa = AaMode::Stratified;
+    s.spp = 9;
+    const ImageF full = renderScene(scene, s);
+    s.aaEdges = true;
+    s.aaThreshold = 0.3;
+    const Bvh bvh(scene.objects);
+    TraceStats stats;
+    std::vector<uint8_t> marked;
+    const ImageF adaptive = render(scene, bvh, s, stats, {}, &marked);
+    EXPECT_EQ(adaptive.pixels, full.pixels);
+    ASSERT_EQ(marked.size(), size_t(s.width * s.height));
+    for (uint8_t m : marked) EXPECT_EQ(m, 1);
+}
+
 TEST(Distribution, SameImageForAnyThreadCount) {
     const Scene scene = sceneFrom(
         "camera { location <0, 1, 8> up <0, 1, 0> right <1.33333, 0, 0> look_at <0, 0, 0> aperture 0.2 blur_samples 8 }\n"

@@ -310,9 +310,13 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
               const RowsFn& onRows) {
     ImageF img = ImageF::uninitialized(s.width, s.height);  // every pixel is written below
     const ViewSetup view = resolveView(scene, s);
-    // Primary rays start at the eye unless a lens spreads them (the edge pass is a pinhole) or
-    // they start on a mesh camera's faces.
-    const bool pinholeRays = (view.aperture <= 0 || s.aaEdges) && !view.rays.mesh;
+    // The two passes of adaptive AA (a first sample, then supersampling where the rule says)
+    // need a sharp first image: with a lens every pixel takes its blur samples instead (as
+    // POV-Ray's focal blur samples every pixel whatever the anti-aliasing).
+    const bool twoPass = s.aaEdges && view.aperture <= 0;
+    // Primary rays start at the eye unless a lens spreads them or they start on a mesh camera's
+    // faces.
+    const bool pinholeRays = view.aperture <= 0 && !view.rays.mesh;
     const SharedOrigins origins =
         Tracer::buildSharedOrigins(scene, bvh, pinholeRays ? &view.rays.location : nullptr,
                                    double(s.width) * double(s.height) * double(view.samples), s.threads);
@@ -335,7 +339,7 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     bool firstPass = true;
     // Tiles still to finish per row of tiles (for onRows).
     std::unique_ptr<std::atomic<int>[]> rowTilesLeft;
-    if (onRows && !s.aaEdges) {
+    if (onRows && !twoPass) {
         rowTilesLeft = std::make_unique<std::atomic<int>[]>(size_t(tilesY));
         for (int r = 0; r < tilesY; ++r) rowTilesLeft[size_t(r)].store(tilesX, std::memory_order_relaxed);
     }
@@ -365,12 +369,13 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         firstPass = false;
     };
 
-    if (!s.aaEdges) {
+    if (!twoPass) {
         forTiles([&](int x, int y, TraceContext& ctx) {
             PathInfo info;
             img.at(x, y) = pixelOut(renderPixel(tracer, view, s, x, s.height - 1 - y, ctx, onRecord ? &info : nullptr));
             if (onRecord) onRecord(x, y, info);
         }, progress);
+        if (edgePixels && s.aaEdges) edgePixels->assign(size_t(s.width) * size_t(s.height), 1);  // all fully sampled
     } else {
         // Pass 1: one centre sample per pixel, remembering what it saw.
         RenderSettings one = s;

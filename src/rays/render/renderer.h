@@ -74,7 +74,8 @@ private:
 
 /// Renders the whole image (top row first). Scenes with Scene::pov.enabled come out as POV-Ray
 /// writes them (render/pov_output.h: sRGB(c^assumed_gamma), clamped to [0, 1]); course scenes as
-/// traced. Deterministic: the result is bit-identical for any thread count. stats receives the summed counters. With settings.aaEdges, pass one renders
+/// traced. Deterministic: the result is bit-identical for any thread count. stats receives the summed counters. With settings.aaEdges
+/// and no lens (a lens samples every pixel in full, edgePixels all set), pass one renders
 /// one centre sample per pixel and pass two supersamples only pixels whose PathInfo differs
 /// from a neighbour's, or with settings.aaThreshold ≥ 0 (POV-Ray's method 1) pixels whose colour
 /// differs from the left or upper neighbour's by more than the threshold, and that neighbour
