@@ -27,6 +27,13 @@ ImageF renderScene(const Scene& scene, const RenderSettings& s) {
     return render(scene, bvh, s, stats);
 }
 
+// The render and the pixels adaptive AA supersampled (render's edgePixels).
+ImageF renderMarked(const Scene& scene, const RenderSettings& s, std::vector<uint8_t>& marked) {
+    const Bvh bvh(scene.objects);
+    TraceStats stats;
+    return render(scene, bvh, s, stats, {}, &marked);
+}
+
 double luminance(Vec3 c) { return (c.x + c.y + c.z) / 3; }
 
 // Number of pixels along row y whose luminance is strictly between 10 % and 90 % of the way
@@ -164,10 +171,8 @@ TEST(Distribution, EdgeGuidedAaTouchesOnlyEdgePixelsAndMatchesFullAa) {
     one.spp = 1;
     const ImageF single = renderScene(scene, one);
     s.aaEdges = true;
-    const Bvh bvh(scene.objects);
-    TraceStats stats;
     std::vector<uint8_t> marked;
-    const ImageF guided = render(scene, bvh, s, stats, {}, &marked);
+    const ImageF guided = renderMarked(scene, s, marked);
     int edges = 0;
     for (int y = 0; y < s.height; ++y)
         for (int x = 0; x < s.width; ++x) {
@@ -209,10 +214,8 @@ TEST(Distribution, PovRayThresholdAaSupersamplesWhereColoursChange) {
     s.aaEdges = true;
     s.aaThreshold = 0.3;
     s.aaGamma = 2.5;
-    const Bvh bvh(scene.objects);
-    TraceStats stats;
     std::vector<uint8_t> marked;
-    const ImageF img = render(scene, bvh, s, stats, {}, &marked);
+    const ImageF img = renderMarked(scene, s, marked);
     auto look = [&](int x, int y) {
         Vec3 r;
         for (int k = 0; k < 3; ++k) {
@@ -264,10 +267,8 @@ TEST(Distribution, AdaptiveAaLeavesFocalBlurToEveryPixel) {
     const ImageF full = renderScene(scene, s);
     s.aaEdges = true;
     s.aaThreshold = 0.3;
-    const Bvh bvh(scene.objects);
-    TraceStats stats;
     std::vector<uint8_t> marked;
-    const ImageF adaptive = render(scene, bvh, s, stats, {}, &marked);
+    const ImageF adaptive = renderMarked(scene, s, marked);
     EXPECT_EQ(adaptive.pixels, full.pixels);
     ASSERT_EQ(marked.size(), size_t(s.width * s.height));
     for (uint8_t m : marked) EXPECT_EQ(m, 1);
