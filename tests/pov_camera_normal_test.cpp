@@ -33,7 +33,7 @@ Vec3 tiltAt(const Scene& scene, double x, double y) {
     const ViewSetup view = resolveView(scene, s);
     const double px = x + 0.5, py = kH - 1 - y + 0.5;
     const Ray plain = view.rays.rayThrough(px, py, kW, kH);
-    const Ray tilted = tiltedCameraRay(view, plain, px / kW - 0.5, py / kH - 0.5);
+    const Ray tilted = cameraRayAt(view, px, py, kW, kH);
     EXPECT_NEAR(length(tilted.dir), 1, 1e-12);
     return tilted.dir - plain.dir;
 }

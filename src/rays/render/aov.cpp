@@ -102,9 +102,7 @@ AovBuffers computeAovs(const Scene& scene, const Bvh& bvh, const RenderSettings&
     parallelFor(s.height, s.threads, [&](int y) {
         for (int x = 0; x < s.width; ++x) {
             // The renderer's pixel (x, y from the top) is camera pixel (x, height − 1 − y).
-            const double px = x + 0.5, py = s.height - 1 - y + 0.5;
-            const Ray ray = tiltedCameraRay(view, view.rays.rayThrough(px, py, s.width, s.height), px / s.width - 0.5,
-                                            py / s.height - 0.5);
+            const Ray ray = cameraRayAt(view, x + 0.5, s.height - 1 - y + 0.5, s.width, s.height);
             if (CameraRays::missed(ray)) continue;
             const Hit h = tracer.firstHit(ray);
             if (!h.valid()) continue;

@@ -31,8 +31,7 @@ void pretraceBatch(const Tracer& tracer, const ViewSetup& view, const RenderSett
         const int py = std::min(s.height - 1, (k / bx) * step + step / 2);
         TraceContext& ctx = contexts[size_t(worker)];
         ctx.rng = SampleRng(uint32_t(px), uint32_t(py), kPretraceSample + uint32_t(pass), s.seed);
-        const Ray ray = tiltedCameraRay(view, view.rays.rayThrough(px + 0.5, py + 0.5, s.width, s.height),
-                                        (px + 0.5) / s.width - 0.5, (py + 0.5) / s.height - 0.5);
+        const Ray ray = cameraRayAt(view, px + 0.5, py + 0.5, s.width, s.height);
         if (CameraRays::missed(ray)) return;
         tracer.tracePrimary(ray, ctx);
         made[size_t(i)] = ctx.radLocal;

@@ -194,9 +194,11 @@ ViewSetup resolveView(const Scene& scene, const RenderSettings& s) {
 // POV-Ray 3.7 (sine-wave gradient normals seen on a ramp-coloured wall): the pattern is evaluated
 // at the sample's screen point (u, v, 0), u and v in [−½, ½] across the image (v up), whatever the
 // camera's place, and the unit ray direction is tilted as a surface normal there (world axes).
-Ray tiltedCameraRay(const ViewSetup& view, Ray ray, double u, double v) {
+Ray cameraRayAt(const ViewSetup& view, double px, double py, int w, int h) {
+    Ray ray = view.rays.rayThrough(px, py, w, h);
     if (view.camera.normal < 0 || CameraRays::missed(ray)) return ray;
-    ray.dir = view.normals->atRoot(*view.patterns, view.camera.normal, Vec3{u, v, 0}, normalize(ray.dir));
+    const Vec3 screen{px / w - 0.5, py / h - 0.5, 0};
+    ray.dir = view.normals->atRoot(*view.patterns, view.camera.normal, screen, normalize(ray.dir));
     return ray;
 }
 
@@ -250,8 +252,7 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
         // Map [0,1)² onto the filter support around the pixel centre.
         const double dx = (2 * a - 1) * radius, dy = (2 * b - 1) * radius;
         const double w = filterWeight(s.filter, dx, dy);
-        const double px = i + 0.5 + dx, py = j + 0.5 + dy;
-        Ray ray = tiltedCameraRay(view, view.rays.rayThrough(px, py, s.width, s.height), px / s.width - 0.5, py / s.height - 0.5);
+        Ray ray = cameraRayAt(view, i + 0.5 + dx, j + 0.5 + dy, s.width, s.height);
         if (view.aperture > 0) {
             // Thin lens: start on a disc of radius `aperture` around the eye (camera plane), aim
             // at the point where the pinhole ray meets the focal plane.

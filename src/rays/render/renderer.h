@@ -29,10 +29,10 @@ struct ViewSetup {
     const pattern::PigmentTable* patterns = nullptr;  ///< and patterns
 };
 
-/// A camera ray tilted by the camera's `normal` (POV-Ray): its unit direction taken as the normal
-/// of a surface at the pattern point (u, v, 0), (u, v) the sample's screen position in [−½, ½]²
-/// (v up). Rays of cameras without one are returned as they are.
-Ray tiltedCameraRay(const ViewSetup& view, Ray ray, double u, double v);
+/// The camera ray through sub-pixel position (px, py) of a w × h image (CameraRays::rayThrough),
+/// tilted by the camera's `normal` when it has one (POV-Ray): its unit direction taken as the
+/// normal of a surface at the pattern point (u, v, 0), (u, v) = (px/w − ½, py/h − ½) (v up).
+Ray cameraRayAt(const ViewSetup& view, double px, double py, int w, int h);
 
 /// Resolves the camera and the sample count from the scene and the settings.
 ViewSetup resolveView(const Scene& scene, const RenderSettings& s);
