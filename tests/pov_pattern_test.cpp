@@ -13,6 +13,7 @@
 #include "rays/error.h"
 #include "rays/render/renderer.h"
 #include "rays/render/tracer.h"
+#include "rays/pattern/black_hole.h"
 #include "rays/pattern/wave.h"
 #include "rays/pov/load_pov.h"
 #include "support/pov_scene.h"
@@ -406,6 +407,53 @@ TEST(PovPattern, BlackHoleWarpMatchesPovRay) {
     // Repeated along x: the centres at R + 2n there (the location's x unused), its y kept.
     expectWarped("black_hole <0.3,0.1,0>, 0.7 repeat <2,0,0>", {-1.5, 0.05, 0.1}, {-1.590498, 0.027376, 0.145249});
     expectWarped("black_hole <0.3,0,0>, 0.4 repeat <2,0,0>", {2.3, 0.05, 0.1}, {2.260938, 0.069531, 0.139062});
+}
+
+TEST(PovPattern, BlackHoleTurbulenceMovesEachRepeatedHole) {
+    // Measured with POV-Ray 3.7 (`repeat <2,2,0> turbulence <0.5,0.25,0>`, radius 0.5; each hole's
+    // centre found from the displacements of a 0.1 grid over 100 cells): the centre moves from
+    // cell·2 + R by u·t on each repeated axis, u in [0, 1): offsets mean <0.258, 0.134>, spread
+    // <0.142, 0.072> (t/√12 is <0.144, 0.072>); without repeat the hole stays put.
+    pattern::BlackHole h;
+    h.radius = 0.5;
+    h.repeat = {2, 2, 0};
+    h.jitter = {0.5, 0.25, 0};
+    double sum[2] = {0, 0}, sq[2] = {0, 0};
+    const int n = 20;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const Vec3 p{2.0 * i + 0.3, 2.0 * j - 40 + 1.7, 0.4};
+            const Vec3 c = pattern::blackHoleCentre(h, p);
+            EXPECT_EQ(c, pattern::blackHoleCentre(h, p + Vec3{1.2, -1.1, 3}));  // one centre per cell
+            EXPECT_DOUBLE_EQ(c.z, 0);  // not repeated along z: the location's
+            for (int a = 0; a < 2; ++a) {
+                const double base = std::floor(p[a] / 2) * 2 + 0.5, off = c[a] - base;
+                EXPECT_GE(off, 0);
+                EXPECT_LT(off, h.jitter[a]);
+                sum[a] += off;
+                sq[a] += off * off;
+            }
+        }
+    for (int a = 0; a < 2; ++a) {
+        const double mean = sum[a] / (n * n), spread = std::sqrt(sq[a] / (n * n) - mean * mean);
+        EXPECT_NEAR(mean, h.jitter[a] / 2, 0.1 * h.jitter[a]);
+        EXPECT_NEAR(spread, h.jitter[a] / std::sqrt(12.0), 0.1 * h.jitter[a]);
+    }
+    pattern::BlackHole still = h;
+    still.repeat = {};
+    EXPECT_EQ(pattern::blackHoleCentre(still, {3.3, 1.2, 0}), still.center);
+    // From the scene language, without a note and moving the holes off their lattice.
+    const Probe jittered = pigment(std::string("function { 0.5 + 0.01*x } warp { black_hole <0,0,0>, 0.5 "
+                                               "repeat <2,2,0> turbulence <0.5,0.25,0> }") + kGrey);
+    EXPECT_TRUE(jittered.b.warnings.empty());
+    const Probe lattice = pigment(std::string("function { 0.5 + 0.01*x } warp { black_hole <0,0,0>, 0.5 "
+                                              "repeat <2,2,0> }") + kGrey);
+    int differ = 0;
+    for (int i = 0; i < 10; ++i) {
+        const Vec3 p{2.0 * i + 0.6, 0.55, 0};
+        differ += std::fabs(jittered.at(p).rgb.x - lattice.at(p).rgb.x) > 1e-6;
+    }
+    EXPECT_GE(differ, 5);
 }
 
 TEST(PovPattern, PigmentPatternIsThePigmentsGrey) {

@@ -12,6 +12,7 @@
 
 #include "rays/fn/compile.h"
 #include "rays/fn/machine.h"
+#include "rays/pattern/cell_hash.h"
 #include "rays/pattern/magnet.h"
 #include "rays/pattern/ripples.h"
 #include "rays/pattern/tiles.h"
@@ -113,14 +114,7 @@ double crackle(Vec3 p) {
 // values come from a hash of the cube's integer coordinates (splitmix64's finaliser), not POV-Ray's
 // table: the look is alike, the values are not point for point.
 double cells(Vec3 p) {
-    auto mix = [](uint64_t z) {
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    };
-    uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (const double c : {p.x, p.y, p.z}) h = mix(h ^ uint64_t(int64_t(std::floor(c))));
-    return double(h >> 11) * 0x1.0p-53;
+    return cellUniform(int64_t(std::floor(p.x)), int64_t(std::floor(p.y)), int64_t(std::floor(p.z)));
 }
 
 // mandel and julia (POV-Ray 3.7 reference, "Mandelbrot", "Julia"): z becomes z^exponent + c until

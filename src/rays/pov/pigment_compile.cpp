@@ -384,10 +384,9 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
         if (e.positional()) continue;
         const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
         switch (e.kw()) {
-            case Kw::turbulence:  // a black hole's turbulence moves its holes at random: not reproduced
+            case Kw::turbulence:  // a black hole's turbulence moves each repeated hole at random
                 if (step.kind == pattern::WarpStep::Kind::BlackHole) {
-                    if (length(toVec3(e.args[0])) > 0)
-                        notes_.note("warp black_hole turbulence", e.loc, "(the holes stay on their lattice)");
+                    step.hole.jitter = toVec3(e.args[0]);
                     break;
                 }
                 step.kind = pattern::WarpStep::Kind::Turbulence;
