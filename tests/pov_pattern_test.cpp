@@ -119,6 +119,10 @@ TEST(PovPattern, JuliaMatchesPovRay) {
     // Values printed by POV-Ray 3.7 (as the file's comment says; z starts at the point, c is fixed).
     expectValues("julia <0.353, 0.288>, 30", {{{0.1, 0.2, 0}, 1}, {{-0.5, 0.3, 0}, 0.2}, {{0.7, -0.2, 0}, 0.1},
                                                {{0.01, 0.01, 0}, 1}, {{1.5, 0.5, 0}, 0}});
+    // The comma before the iterations is optional (textures/patterns/fractals1.pov leaves it out);
+    // values printed by POV-Ray 3.7 for `julia <.3,.44> 30` with and without `interior 1,1`.
+    expectValues("julia <.3,.44> 30", {{{-1, -0.2, 0}, 0.033333}, {{-0.34, 0, 0}, 0.433333}, {{0.32, 0.2, 0}, 1}});
+    expectValues("julia <.3,.44> 30 interior 1,1", {{{-0.01, 0.1, 0}, 0.100499}, {{0.32, 0.2, 0}, 0.063851}});
     // The built-in map is mandel's: cyan inside.
     const Probe j = pigment("julia <0.353, 0.288>, 30");
     EXPECT_NEAR(length(j.at({0.1, 0.2, 0}).rgb - Vec3{0, 1, 1}), 0, 1e-6);

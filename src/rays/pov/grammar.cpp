@@ -57,8 +57,11 @@ void readArgs(Interpreter& in, const Rule& r, Entry& e) {
             return;
         case Arg::List:
             e.args.push_back(in.parseNumeric(false));
-            while ((r.n == 0 || int(e.args.size()) < r.n) && in.isSym(',')) {
-                in.next();
+            // A list of a fixed length takes its items with or without commas, as POV-Ray does
+            // (`julia <0.3, 0.44> 30`); an open-ended list needs them.
+            while (r.n == 0 || int(e.args.size()) < r.n) {
+                if (in.isSym(',')) in.next();
+                else if (r.n == 0 || !in.atNumericStart()) return;
                 if (!in.atNumericStart()) return;
                 e.args.push_back(in.parseNumeric(false));
             }
