@@ -231,5 +231,30 @@ TEST(PovNormal, SpecialisedNormalsTiltAboutAsMuchAsPovRays) {
     EXPECT_LT(huge, 0.0549 * 3);
 }
 
+
+// A normal block without a pattern of its own modifies the normal the look already has (the
+// default texture's here). povray 3.7, the plane of litPlane seen at (0.35, 0.2) under
+// `#default { normal { gradient x 1 } }`: `normal { }` and `normal { scale 0.5 }` 0.6074 (the
+// default's), `normal { slope_map { [0 <0,-1>] [1 <1,-1>] } }` 0.5284.
+TEST(PovNormal, ABlockWithoutAPatternModifiesTheNormalBelow) {
+    const std::string light = "light_source { <1, 0, -1>*1000 color 1 parallel point_at 0 }\n";
+    const std::string plane = "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } ";
+    const auto brightness = [&](const std::string& normal) {
+        const Loaded l = load("#default { normal { gradient x 1 } }\n" + light + plane + "normal { " + normal + " } }\n");
+        return seen(l.scene, 0.35, 0.2).x;
+    };
+    EXPECT_NEAR(brightness(""), 0.6074, kMeasured);
+    EXPECT_NEAR(brightness("scale 0.5"), 0.6074, kMeasured);
+    const std::string slopeMap = "slope_map { [0 <0,-1>] [1 <1,-1>] }";
+    // (a bending cubic between the entries: sampled gradients differ by up to 3e-3, as above)
+    EXPECT_NEAR(brightness(slopeMap), 0.5284, 4e-3);
+    // Each object's block modifies its own copy: the second object is not drawn with the first's.
+    const Loaded two = load("#default { normal { gradient x 1 } }\n" + light + plane + "normal { } translate 10*z }\n" +
+                            plane + "normal { " + slopeMap + " } }\n");
+    EXPECT_NEAR(seen(two.scene, 0.35, 0.2).x, 0.5284, 4e-3);
+    // A block with its own pattern replaces the normal below.
+    EXPECT_NEAR(brightness("gradient x 2"), 0.5010, kMeasured);
+}
+
 }  // namespace
 }  // namespace rays

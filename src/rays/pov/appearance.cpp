@@ -63,7 +63,24 @@ void setNormal(const Entry& e, Appearance& a, NotRendered& notes, PigmentCompile
         notes.note("normal", e.loc, "(surfaces drawn smooth)");
         return;
     }
-    a.normalNode = pigments->compileNormal(e.args[0].item());
+    const Item& block = e.args[0].item();
+    std::shared_ptr<const Item> source = e.args[0].itemRef();
+    // A block without a pattern or a normal of its own (`normal { slope_map {...} }`, `normal
+    // { scale 2 }`) modifies the normal the look has (measured with POV-Ray 3.7: under `#default
+    // { normal { onion } }`, an object's `normal { slope_map {...} }` shows the onion rings).
+    const bool ownBase = std::any_of(block.entries.begin(), block.entries.end(), [](const Entry& x) {
+        return x.positional() ? std::any_of(x.args.begin(), x.args.end(), [](const Value& v) { return v.type == VType::Item; })
+                              : isPatternKeyword(x.kw());
+    });
+    if (!ownBase && a.normalSource && a.normalToObject.isIdentity()) {
+        auto merged = std::make_shared<Item>(*a.normalSource);
+        merged->entries.insert(merged->entries.end(), block.entries.begin(), block.entries.end());
+        source = std::move(merged);
+        a.normalNode = pigments->compileNormal(source);
+    } else {
+        a.normalNode = pigments->compileNormal(*source);
+    }
+    a.normalSource = std::move(source);
     a.normalToObject = Transform{};
 }
 

@@ -5,6 +5,7 @@
 // order (POV-Ray 3.7 reference, "Texture", "Default Directive"); some pigment patterns are noted
 // as not rendered yet.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "rays/pov/item_values.h"
@@ -30,6 +31,10 @@ struct Appearance {
     Transform pigmentToObject;
     int normalNode = -1;  ///< the normal's node in the scene's NormalTable; -1: the surface's own normal
     Transform normalToObject;  ///< like pigmentToObject, for the normal
+    /// The normal block normalNode was compiled from: a later `normal { }` without a pattern of
+    /// its own modifies it (POV-Ray 3.7 reference, "Default Directive": a texture starts as a
+    /// copy of the default one).
+    std::shared_ptr<const Item> normalSource;
     PovFinish finish;
     InteriorLook interior;
     bool interiorSet = false;

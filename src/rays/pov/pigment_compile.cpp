@@ -130,6 +130,11 @@ int PigmentCompiler::compileNormal(const Item& normal) {
     return normals_->compile(normal);
 }
 
+int PigmentCompiler::compileNormal(std::shared_ptr<const Item> made) {
+    made_.push_back(std::move(made));
+    return compileNormal(*made_.back());
+}
+
 int PigmentCompiler::compile(const Item& pigment) {
     if (const auto it = done_.find(&pigment); it != done_.end()) return it->second;
     State s;

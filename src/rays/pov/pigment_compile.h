@@ -4,6 +4,7 @@
 // transformations). Each pigment item is compiled once; objects that share it share its nodes.
 #pragma once
 #include <memory>
+#include <vector>
 #include <unordered_map>
 
 #include "rays/pattern/normal.h"
@@ -24,6 +25,9 @@ public:
     ~PigmentCompiler();
     /// The node of a normal item in the NormalTable, or -1 (smooth; noted when not rendered).
     int compileNormal(const Item& normal);
+    /// compileNormal of an item made while building (not the parsed scene's), kept alive as long
+    /// as the compiler: compiled items are remembered by address.
+    int compileNormal(std::shared_ptr<const Item> made);
     /// True when normals are compiled (a NormalTable was given).
     bool compilesNormals() const { return normalTable_ != nullptr; }
     /// The node of a pigment with a rendered pattern, or -1 for a flat colour (a pigment with no
@@ -79,6 +83,7 @@ private:
     pattern::PigmentTable& table_;
     NotRendered& notes_;
     std::unordered_map<const Item*, int> done_;  ///< pigment items compiled (-1: flat)
+    std::vector<std::shared_ptr<const Item>> made_;  ///< items made while building (compileNormal)
     pattern::NormalTable* normalTable_ = nullptr;
     std::unique_ptr<NormalCompiler> normals_;  ///< made on the first normal
     ImageFiles images_{notes_};
