@@ -306,6 +306,37 @@ TEST(PovFog, TurbulenceThinsTheFogByTheMeasuredRule) {
     expectColor(seen(bg.scene, kCx, kCy), {0.2, 0.4, 0.8});
 }
 
+// A light with media_attenuation on is dimmed by the fogs on its way, by exp(−d/distance) of a
+// constant or ground fog (transmit a floor under it, filter tinting it once), without adding the
+// fog's colour; other lights are not. povray 3.7, a white plane at z = 0 (ambient 0, diffuse 1)
+// seen from z = −0.001 with `fog { ... distance 80 }`:
+TEST(PovFog, LightsWithMediaAttenuationAreDimmedByTheFog) {
+    struct Case {
+        const char *light, *fog;
+        double want;
+    } cases[] = {{"<0,0,-80>, rgb 1", "color rgb 0.5", 1.0},
+                 {"<0,0,-80>, rgb 1 media_attenuation on", "color rgb 0.5", 0.36788},
+                 {"<0,0,-160>, rgb 1 media_attenuation on", "color rgb 0.5", 0.13533},
+                 {"<0,0,-80>, rgb 1 media_attenuation on", "color rgbt <0.5,0.5,0.5,0.5>", 0.5},
+                 {"<0,0,-40>, rgb 1 media_attenuation on", "color rgbt <0.5,0.5,0.5,0.5>", 0.60653},
+                 {"<0,0,-80>, rgb 1 media_attenuation on", "color rgbft <0.5,0.5,0.5,0.5,0.5>", 0.28125},
+                 {"<0,0,-80>, rgb 1 media_attenuation on", "color rgbf <1,1,1,1>", 0.36788},
+                 {"<0,60,-60>, rgb 1 media_attenuation on", "color rgb 0.5", 0.24482},
+                 {"<0,60,-60>, rgb 1 media_attenuation on", "fog_type 2 fog_offset 10 fog_alt 5 color rgb 0.5", 0.52029},
+                 {"<0,60,-60>, rgb 1", "fog_type 2 fog_offset 10 fog_alt 5 color rgb 0.5", 0.7071}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::string(c.light) + " / " + c.fog);
+        const Loaded l = load(std::string("light_source { ") + c.light + " }\nfog { " + c.fog +
+                              " distance 80 }\nplane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n");
+        expectColor(seen(l.scene, 0, 0, -0.001), Vec3(c.want));
+    }
+    // The filter's tint is the fog's colour, channel by channel.
+    const Loaded tinted = load("light_source { <0,0,-80>, rgb 1 media_attenuation on }\n"
+                               "fog { color rgbf <1,0.5,0,1> distance 80 }\n"
+                               "plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n");
+    expectColor(seen(tinted.scene, 0, 0, -0.001), {0.36788, 0.09198, 0});
+}
+
 TEST(PovFog, DistanceZeroIsNoFog) {
     // Measured: distance 0 leaves the wall as it is.
     expectColor(seen(load(kWallAmbient + "fog { distance 0 color rgb 1 }").scene, kCx, kCy), {0.5, 0.6, 0.7});

@@ -208,11 +208,28 @@ Vec3 povIridTint(const PovFinish& f, Vec3 wavelength, Vec3 N, Vec3 L, Vec3 V, Ve
     return out;
 }
 
+namespace {
+
+// The share of what lies behind a fog's segment that it lets through (before its filter's tint).
+double fogKeeps(const PovFog& f, const Ray& ray, double t) {
+    const double depth = (f.ground ? groundFogDepth(f, ray, t) : t) * fogTurbulenceFactor(f, ray, t);
+    return std::max(std::exp(-depth / f.distance), f.transmit);
+}
+
+}  // namespace
+
+Vec3 povFogLightTransmittance(const std::vector<PovFog>& fogs, const Ray& ray, double t) {
+    Vec3 keep(1.0);
+    for (const PovFog& f : fogs) {
+        keep *= fogKeeps(f, ray, t) * (Vec3(1.0 - f.filter) + f.filter * f.color);
+    }
+    return keep;
+}
+
 Vec3 povFog(const std::vector<PovFog>& fogs, Vec3 behind, const Ray& ray, double t) {
     Vec3 keep(1.0), add;
     for (const PovFog& f : fogs) {
-        const double depth = (f.ground ? groundFogDepth(f, ray, t) : t) * fogTurbulenceFactor(f, ray, t);
-        const double a = std::max(std::exp(-depth / f.distance), f.transmit);
+        const double a = fogKeeps(f, ray, t);
         keep *= a * (Vec3(1.0 - f.filter) + f.filter * f.color);
         add += (1.0 - a) * f.color;
     }

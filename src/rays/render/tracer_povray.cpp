@@ -358,6 +358,9 @@ Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceCo
         air.add(scene_.pov.media.data(), int(scene_.pov.media.size()));
         tint *= povMediaTransmittance(scene_, air, shadow, 0, std::min(tMax, kPovMediaMissDistance));
     }
+    // So do fogs (measured).
+    if (!scene_.pov.fogs.empty() && scene_.lights[light].mediaAttenuation && !(tint == Vec3{}))
+        tint *= povFogLightTransmittance(scene_.pov.fogs, shadow, tMax);
     return tint;
 }
 
