@@ -446,5 +446,21 @@ TEST(PovLights, ProjectedThroughLightsOnlyWhereTheWayCrossesTheObject) {
     EXPECT_EQ(seen(l.scene, 0.5, 0.5).x, 0.0);              // its way misses the sphere
 }
 
+TEST(PovLights, ProjectedThroughShadowsOnlyBetweenThePointAndTheObject) {
+    // Measured with POV-Ray 3.7 (a lit wall, the projector's copy drawn in the scene, one box
+    // between the wall and the projector and one between the projector and the light): the copy
+    // and the far box leave the projected light whole, the near box shadows it. Floor point
+    // (0.15, 0): its way to the light crosses the sphere at z ≈ −0.5; the camera ray misses both.
+    const std::string projector = "#declare P = sphere { <0,0,-0.5>, 0.1 }\n";
+    const std::string light = "light_source { <0,0,-1>, rgb 1 projected_through { P } }\n";
+    const double alone = seen(load(projector + kFloor + light).scene, 0.15, 0).x;
+    EXPECT_GT(alone, 0.9);
+    const std::string copy = "object { P pigment { rgb 1 } }\n";
+    const std::string farBox = "box { <0.02,-0.02,-0.76>, <0.05,0.02,-0.74> pigment { rgb 1 } }\n";
+    EXPECT_NEAR(seen(load(projector + kFloor + light + copy + farBox).scene, 0.15, 0).x, alone, 1e-9);
+    const std::string nearBox = "box { <0.09,-0.02,-0.26>, <0.13,0.02,-0.24> pigment { rgb 1 } }\n";
+    EXPECT_EQ(seen(load(projector + kFloor + light + copy + nearBox).scene, 0.15, 0).x, 0.0);
+}
+
 }  // namespace
 }  // namespace rays

@@ -320,12 +320,14 @@ private:
     /// when countBlocked).
     int povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& ctx, Vec3& color,
                   bool countBlocked) const;
+    /// projected_through: the distance from P towards the light to the first of the light's
+    /// objects, or negative when the way crosses none of them.
+    double povProjectorDistance(const Light& light, Vec3 P) const;
     /// The light of one light that reaches P: its colour dimmed by a spotlight's cone and light
     /// fading (shadowless lights: nothing more), tinted by transparent objects on the way, times the
     /// visible share of an area light's samples; shadow rays leave P on side Nl, aimed at the light
     /// (each sample) from there. centreOnly: an area light as a point
     /// light at its centre (the points radiosity gathers from: measured, docs/povray-lighting.md).
-    bool povThroughProjector(const Light& light, Vec3 P) const;
     Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
                           TraceContext& ctx, bool centreOnly = false) const;
     /// 1 when nothing lies on the shadow ray before tMax, else what the objects on it let through.

@@ -275,19 +275,26 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
     return blocked;
 }
 
-// projected_through: whether the way from P to the light (its centre) crosses one of the light's
-// objects (nothing else is looked at: the objects of the scene block it as shadow rays find).
-bool Tracer::povThroughProjector(const Light& light, Vec3 P) const {
+// projected_through: how far from P, on the way to the light (its centre), the way first crosses
+// one of the light's objects; negative when it crosses none (then the light does not reach P).
+// Beyond that crossing nothing casts a shadow (measured with POV-Ray 3.7: the scene's own copy
+// of the projector and objects between it and the light leave the projected light whole; objects
+// between P and the projector shadow it).
+double Tracer::povProjectorDistance(const Light& light, Vec3 P) const {
     const Vec3 toLight = light.parallel ? -light.direction : light.position - P;
     const double dist = length(toLight);
-    if (dist == 0) return false;
+    if (dist == 0) return -1;
     const Ray ray{P, toLight / dist};
-    const double tMax = light.parallel ? kInfinity : dist;
+    double nearest = light.parallel ? kInfinity : dist;
+    bool crossed = false;
     for (int i = 0; i < light.projectorCount; ++i) {
         ShapeHit hit;
-        if (intersect(scene_.projectors[size_t(light.projectorBegin + i)], ray, kTMin, tMax, hit)) return true;
+        if (intersect(scene_.projectors[size_t(light.projectorBegin + i)], ray, kTMin, nearest, hit)) {
+            nearest = hit.t;
+            crossed = true;
+        }
     }
-    return false;
+    return crossed ? nearest : -1;
 }
 
 Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
@@ -296,13 +303,17 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
     Vec3 color = light.color;
     if (light.spot != Light::Spot::None) color *= povSpotFactor(light, P - light.position);
     if (light.fadeDistance > 0) color *= povLightFade(light, length(P - light.position));
-    if (light.projectorCount > 0 && !povThroughProjector(light, P)) return {};
+    double shadowEnd = kInfinity;  // shadow rays stop at a projector (projected_through)
+    if (light.projectorCount > 0) {
+        shadowEnd = povProjectorDistance(light, P);
+        if (shadowEnd < 0) return {};
+    }
     if (light.shadowless || color == Vec3{}) return color;
     const Vec3 origin = P + kSurfaceOffset * Nl;
     if (light.parallel) {
         // Shadow rays end at the plane through the light's position across its direction; points
         // beyond that plane are lit unshadowed (the manual, "Parallel Lights"; measured).
-        const double tMax = dot(light.position - origin, -light.direction);
+        const double tMax = std::min(dot(light.position - origin, -light.direction), shadowEnd - kSurfaceOffset);
         if (tMax <= 0) return color;
         return color * povShadowTint(Ray{origin, -light.direction}, tMax, index, ctx, intoSurface, nullptr);
     }
@@ -313,6 +324,10 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
         const Vec3 toLight = light.position - origin;
         const double d = length(toLight);
         if (d == 0) return color;
+        if (shadowEnd < d) {
+            if (shadowEnd <= kSurfaceOffset) return color;
+            return color * povShadowTint(Ray{origin, toLight / d}, shadowEnd - kSurfaceOffset, index, ctx, intoSurface, nullptr);
+        }
         const FromLight fromLight{-toLight, d};
         return color * povShadowTint(Ray{origin, toLight / d}, d - kSurfaceOffset, index, ctx, intoSurface, &fromLight);
     }
@@ -322,8 +337,9 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
     auto sampleTint = [&](Vec3 pos) {
         const Vec3 toLight = pos - origin;
         const double d = length(toLight);
-        if (d == 0) return Vec3(1.0);
-        return povShadowTint(Ray{origin, toLight / d}, d - kSurfaceOffset, index, ctx, intoSurface, nullptr);
+        const double end = std::min(d, shadowEnd) - kSurfaceOffset;
+        if (d == 0 || end <= 0) return Vec3(1.0);
+        return povShadowTint(Ray{origin, toLight / d}, end, index, ctx, intoSurface, nullptr);
     };
     const int count = grid.n1 * grid.n2;
     // adaptive: four corners that agree on all-or-nothing decide for the whole light (jittered
