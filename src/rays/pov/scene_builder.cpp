@@ -9,6 +9,7 @@
 #include "rays/pov/build_mesh.h"
 #include "rays/pov/build_shapes.h"
 #include "rays/pov/grammar.h"
+#include "rays/pov/pattern_object.h"
 #include "rays/pov/radiosity_settings.h"
 #include "rays/pov/scene_builder_parts.h"
 
@@ -618,6 +619,12 @@ void SceneBuilder::globalSettings(const Item& g) {
             default: break;
         }
     }
+}
+
+SceneBuilder::SceneBuilder(NotRendered& notes, uint64_t maxObjects) : notes_(notes), maxObjects_(maxObjects) {
+    pigments_.setObjectBuilder([this](const Item& pattern) {
+        return buildPatternObject(pattern, [this](const sdl::Loc& at) { return notes_.where(at); }, findFile_, fonts_);
+    });
 }
 
 void SceneBuilder::reserve(size_t n) {

@@ -1,0 +1,90 @@
+#include "rays/pov/pattern_object.h"
+
+#include <vector>
+
+#include "rays/pov/standalone_object.h"
+#include "rays/scene/csg.h"
+
+namespace rays::pov {
+
+using sdl::Kw;
+
+namespace {
+
+// The built object and its parts' world boxes (empty for unbounded parts: always tested).
+struct ObjectInside {
+    Scene scene;
+    std::vector<Bounds> bounds;
+};
+
+bool inBox(const Bounds& b, Vec3 p) {
+    return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y && p.z >= b.lo.z && p.z <= b.hi.z;
+}
+
+// Inside any part (a union's parts: POV-Ray's union is inside where any child is), as PovHost's
+// inside() decides; shapes without an inside (meshes) count as outside.
+bool insideObject(const void* data, Vec3 p) {
+    const auto& o = *static_cast<const ObjectInside*>(data);
+    for (size_t i = 0; i < o.scene.objects.size(); ++i) {
+        if (!o.bounds[i].empty() && !inBox(o.bounds[i], p)) continue;
+        if (insideShape(o.scene.objects[i], p) > 0) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool isObjectPatternListEntry(const sdl::Entry& e) {
+    if (e.positional()) {
+        for (const sdl::Value& v : e.args)
+            if (v.type == sdl::VType::Item) return false;
+        return true;  // a colour
+    }
+    const Kw k = e.kw();
+    return k == Kw::pigment || k == Kw::normal || k == Kw::texture || k == Kw::density;
+}
+
+BuiltPatternObject buildPatternObject(const sdl::Item& pattern, const std::function<std::string(const sdl::Loc&)>& where,
+                                      const std::function<std::string(const std::string&)>& findFile, FontCache* fonts) {
+    BuiltPatternObject out;
+    auto item = std::make_shared<sdl::Item>();
+    item->kind = Kw::object;
+    item->loc = pattern.loc;
+    item->depth = pattern.depth;
+    item->size = pattern.size;
+    for (const sdl::Entry& e : pattern.entries)
+        if (!isObjectPatternListEntry(e)) item->entries.push_back(e);
+    // Inside an intersection of one, so that `inverse` (which the scene builder reads only in CSG)
+    // turns the object inside out; the object alone when that leaves a part out (a mesh in CSG).
+    auto wrapped = std::make_shared<sdl::Item>();
+    wrapped->kind = Kw::intersection;
+    wrapped->loc = pattern.loc;
+    wrapped->depth = pattern.depth + 1;
+    wrapped->size = pattern.size + 1;
+    sdl::Entry child;
+    child.key = uint16_t(Kw::object);
+    child.loc = pattern.loc;
+    child.args.push_back(sdl::Value::item(item));
+    wrapped->entries.push_back(std::move(child));
+    StandaloneObject built = buildStandalone(wrapped, where, findFile, fonts);
+    if (!built.complete || built.scene.objects.empty()) built = buildStandalone(item, where, findFile, fonts);
+    if (built.scene.objects.empty()) {
+        out.complete = built.complete;
+        return out;
+    }
+    auto inside = std::make_shared<ObjectInside>();
+    inside->scene = std::move(built.scene);
+    for (const Object& o : inside->scene.objects) {
+        inside->bounds.push_back(worldBounds(o));
+        if (o.type == ShapeType::Mesh || o.type == ShapeType::Triangle || o.type == ShapeType::Polygon) out.hasMesh = true;
+    }
+    auto object = std::make_shared<pattern::PatternObject>();
+    object->inside = insideObject;
+    object->data = inside.get();
+    object->keep = std::move(inside);
+    out.object = std::move(object);
+    out.complete = built.complete;
+    return out;
+}
+
+}  // namespace rays::pov
