@@ -22,7 +22,8 @@ bool inBox(const Bounds& b, Vec3 p) {
 }
 
 // Inside any part (a union's parts: POV-Ray's union is inside where any child is), as PovHost's
-// inside() decides; shapes without an inside (meshes) count as outside.
+// inside() decides; shapes without an inside (triangles, polygons, meshes without inside_vector)
+// are outside everywhere, as in POV-Ray (measured).
 bool insideObject(const void* data, Vec3 p) {
     const auto& o = *static_cast<const ObjectInside*>(data);
     for (size_t i = 0; i < o.scene.objects.size(); ++i) {
@@ -74,10 +75,7 @@ BuiltPatternObject buildPatternObject(const sdl::Item& pattern, const std::funct
     }
     auto inside = std::make_shared<ObjectInside>();
     inside->scene = std::move(built.scene);
-    for (const Object& o : inside->scene.objects) {
-        inside->bounds.push_back(worldBounds(o));
-        if (o.type == ShapeType::Mesh || o.type == ShapeType::Triangle || o.type == ShapeType::Polygon) out.hasMesh = true;
-    }
+    for (const Object& o : inside->scene.objects) inside->bounds.push_back(worldBounds(o));
     auto object = std::make_shared<pattern::PatternObject>();
     object->inside = insideObject;
     object->data = inside.get();

@@ -20,7 +20,6 @@ bool isObjectPatternListEntry(const sdl::Entry& e);
 struct BuiltPatternObject {
     std::shared_ptr<const pattern::PatternObject> object;  ///< null when the item names no object
     bool complete = true;    ///< every shape of the object was built
-    bool hasMesh = false;    ///< it holds a mesh, triangle or polygon (no inside: outside everywhere)
 };
 
 /// The object of the object pattern item `pattern` (its entries but the list's items, as an

@@ -388,9 +388,6 @@ void PigmentCompiler::readObjectPattern(const Entry& e, State& s, int depth) {
         if (built.object && !built.complete)
             notes_.note(std::string(s.what) + " pattern object of shapes Rays does not render", e.loc,
                         "(the object without them)");
-        if (built.hasMesh)
-            notes_.note(std::string(s.what) + " pattern object of a mesh", e.loc,
-                        "(meshes have no inside in Rays: inside_vector is not read)");
         it = objects_.emplace(&item, built.object).first;
     }
     if (!it->second) {

@@ -28,3 +28,10 @@ Show("scaled", object { sphere { 0, 1 } scale <1.8, 0.6, 1> rotate z*45 })
 Show("superellipsoid", superellipsoid { <0.3, 0.6> scale 1.5 })
 Show("quadric", quadric { <1, -1, 1>, <0, 0, 0>, <0, 0, 0>, -0.5 })
 Show("ovus", ovus { 1, 0.6 })
+// Meshes: inside only with an inside_vector (the crossings along it counted); a triangle has none.
+#declare A = <-1,-1,-1>; #declare B = <1.5,-1,-1>; #declare C = <0,1.5,-1>; #declare D = <0,0,1.5>;
+#for (i, 0, N - 1) #declare P[i] = <rand(R), rand(R), rand(R)> * 2 - 0.8; #end
+Show("mesh", mesh { triangle { A, B, C } triangle { A, B, D } triangle { B, C, D } triangle { C, A, D } inside_vector <0.3, 0.2, 1> })
+Show("mesh2", mesh2 { vertex_vectors { 4, A, B, C, D } face_indices { 4, <0,1,2>, <0,1,3>, <1,2,3>, <2,0,3> } inside_vector x translate x*0.5 })
+Show("mesh_without_inside_vector", mesh { triangle { A, B, C } triangle { A, B, D } triangle { B, C, D } triangle { C, A, D } })
+Show("triangle", triangle { A, B, C })
