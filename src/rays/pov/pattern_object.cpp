@@ -45,9 +45,39 @@ bool isObjectPatternListEntry(const sdl::Entry& e) {
     return k == Kw::pigment || k == Kw::normal || k == Kw::texture || k == Kw::density;
 }
 
+BuiltPatternObject buildInsideTest(const sdl::ItemRef& object, const std::function<std::string(const sdl::Loc&)>& where,
+                                   const std::function<std::string(const std::string&)>& findFile, FontCache* fonts) {
+    BuiltPatternObject out;
+    // Inside an intersection of one, so that `inverse` (which the scene builder reads only in CSG)
+    // turns the object inside out; the object alone when that leaves a part out (a mesh without
+    // inside_vector in CSG).
+    auto wrapped = std::make_shared<sdl::Item>();
+    wrapped->kind = Kw::intersection;
+    wrapped->loc = object->loc;
+    wrapped->depth = object->depth + 1;
+    wrapped->size = object->size + 1;
+    sdl::Entry child;
+    child.key = uint16_t(object->kind);
+    child.loc = object->loc;
+    child.args.push_back(sdl::Value::item(object));
+    wrapped->entries.push_back(std::move(child));
+    StandaloneObject built = buildStandalone(wrapped, where, findFile, fonts);
+    if (!built.complete || built.scene.objects.empty()) built = buildStandalone(object, where, findFile, fonts);
+    out.complete = built.complete;
+    if (built.scene.objects.empty()) return out;
+    auto inside = std::make_shared<ObjectInside>();
+    inside->scene = std::move(built.scene);
+    for (const Object& o : inside->scene.objects) inside->bounds.push_back(worldBounds(o));
+    auto test = std::make_shared<pattern::PatternObject>();
+    test->inside = insideObject;
+    test->data = inside.get();
+    test->keep = std::move(inside);
+    out.object = std::move(test);
+    return out;
+}
+
 BuiltPatternObject buildPatternObject(const sdl::Item& pattern, const std::function<std::string(const sdl::Loc&)>& where,
                                       const std::function<std::string(const std::string&)>& findFile, FontCache* fonts) {
-    BuiltPatternObject out;
     auto item = std::make_shared<sdl::Item>();
     item->kind = Kw::object;
     item->loc = pattern.loc;
@@ -55,34 +85,7 @@ BuiltPatternObject buildPatternObject(const sdl::Item& pattern, const std::funct
     item->size = pattern.size;
     for (const sdl::Entry& e : pattern.entries)
         if (!isObjectPatternListEntry(e)) item->entries.push_back(e);
-    // Inside an intersection of one, so that `inverse` (which the scene builder reads only in CSG)
-    // turns the object inside out; the object alone when that leaves a part out (a mesh in CSG).
-    auto wrapped = std::make_shared<sdl::Item>();
-    wrapped->kind = Kw::intersection;
-    wrapped->loc = pattern.loc;
-    wrapped->depth = pattern.depth + 1;
-    wrapped->size = pattern.size + 1;
-    sdl::Entry child;
-    child.key = uint16_t(Kw::object);
-    child.loc = pattern.loc;
-    child.args.push_back(sdl::Value::item(item));
-    wrapped->entries.push_back(std::move(child));
-    StandaloneObject built = buildStandalone(wrapped, where, findFile, fonts);
-    if (!built.complete || built.scene.objects.empty()) built = buildStandalone(item, where, findFile, fonts);
-    if (built.scene.objects.empty()) {
-        out.complete = built.complete;
-        return out;
-    }
-    auto inside = std::make_shared<ObjectInside>();
-    inside->scene = std::move(built.scene);
-    for (const Object& o : inside->scene.objects) inside->bounds.push_back(worldBounds(o));
-    auto object = std::make_shared<pattern::PatternObject>();
-    object->inside = insideObject;
-    object->data = inside.get();
-    object->keep = std::move(inside);
-    out.object = std::move(object);
-    out.complete = built.complete;
-    return out;
+    return buildInsideTest(item, where, findFile, fonts);
 }
 
 }  // namespace rays::pov

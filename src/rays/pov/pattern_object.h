@@ -22,6 +22,12 @@ struct BuiltPatternObject {
     bool complete = true;    ///< every shape of the object was built
 };
 
+/// The inside test of an object item built alone inside an intersection of one, so that `inverse`
+/// turns it inside out (alone when that leaves a part out: a mesh without inside_vector). What the
+/// inside() function and the object pattern ask.
+BuiltPatternObject buildInsideTest(const sdl::ItemRef& object, const std::function<std::string(const sdl::Loc&)>& where,
+                                   const std::function<std::string(const std::string&)>& findFile, FontCache* fonts);
+
 /// The object of the object pattern item `pattern` (its entries but the list's items, as an
 /// `object { }` item), with its own transformations; the pattern's transformations apply on top
 /// (the pigment node's).

@@ -110,18 +110,18 @@ PovHost::TraceResult PovHost::trace(const sdl::ItemRef& object, const double ori
     return r;
 }
 
-// inside(): inside any part of the object (a union's parts, as POV-Ray's union is inside where
-// any child is).
+// inside(): the object pattern's inside test (pattern_object.h): inside any part of the object (a
+// union's parts, as POV-Ray's union is inside where any child is), `inverse` honoured; shapes
+// without an inside are outside.
 int PovHost::inside(const sdl::ItemRef& object, const double point[3]) {
-    const Probe& p = probe(object);
-    if (!p.complete || p.scene.objects.empty()) return -1;
-    const Vec3 q{point[0], point[1], point[2]};
-    for (const Object& o : p.scene.objects) {
-        const int in = insideShape(o, q);
-        if (in < 0) return -1;
-        if (in) return 1;
+    auto [it, added] = insides_.try_emplace(object.get());
+    InsideProbe& p = it->second;
+    if (added) {
+        p.object = object;
+        p.test = buildInsideTest(object, where_, findFile_, &fonts_);
     }
-    return 0;
+    if (!p.test.complete || !p.test.object) return -1;
+    return p.test.object->index(Vec3{point[0], point[1], point[2]});
 }
 
 bool PovHost::extent(const sdl::ItemRef& object, double lo[3], double hi[3]) {
