@@ -432,7 +432,9 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
         case Kw::parametric: {
             auto mesh = std::make_unique<Mesh>();
             const ShapeBuild made = buildParametric(a, terms_, *mesh, notes_.where(at));
-            if (made == ShapeBuild::NotAShape) notes_.note("parametric function calling a pattern or pigment function", at, "(left out)");
+            if (made == ShapeBuild::NotAShape)
+                notes_.note("parametric function calling a pattern or pigment function of a pattern Rays does not render",
+                            at, "(left out)");
             if (made != ShapeBuild::Made) return;
             placeTessellated(o, std::move(mesh), at);
             break;
