@@ -333,6 +333,25 @@ TEST(PovCsgNotes, CsgNeedingTheInsideOfAMeshIsLeftOutWithANote) {
     EXPECT_NEAR(shoot(s, {0, -0.5, -5}, {0, 0, 1}).t, 5, 1e-9);
 }
 
+// A mesh with an inside_vector has an inside (crossings counted along the vector): CSG may cut it.
+// The insides agree with POV-Ray's object pattern (tests/data/povray/object_patterns.pov).
+TEST(PovCsgNotes, MeshesWithAnInsideVectorMayBeCut) {
+    std::vector<std::string> warnings;
+    const Scene s = build(
+        "#declare A = <-1,-1,-1>; #declare B = <1.5,-1,-1>; #declare C = <0,1.5,-1>; #declare D = <0,0,1.5>;\n"
+        "difference { mesh { triangle { A, B, C } triangle { A, B, D } triangle { B, C, D } triangle { C, A, D }\n"
+        "  inside_vector <0.3, 0.2, 1> } sphere { <0, 0, -1>, 0.5 } }",
+        &warnings);
+    EXPECT_TRUE(warnings.empty());
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(insideShape(s.objects[0], {0, 0, 0}), 1);
+    EXPECT_EQ(insideShape(s.objects[0], {0, 0, -0.8}), 0);   // in the sphere cut out
+    EXPECT_EQ(insideShape(s.objects[0], {0, 0, 1.4}), 1);    // below the tip
+    EXPECT_EQ(insideShape(s.objects[0], {0, 0, 1.6}), 0);    // above it
+    // Along z the ray meets the sphere's dent (z = −0.5) instead of the face at z = −1.
+    EXPECT_NEAR(shoot(s, {0, 0, -5}, {0, 0, 1}).t, 4.5, 1e-6);
+}
+
 }  // namespace
 }  // namespace rays
 

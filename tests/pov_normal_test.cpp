@@ -65,6 +65,15 @@ TEST(PovNormal, GradientTiltsTheNormalAgainstThePatternByTwoFifteenthsOfTheAmoun
     EXPECT_NEAR(n.z, want.z, 1e-6);
 }
 
+// object { OBJECT normal { A }, normal { B } }: A outside, B inside (povray: 0.6074 outside, as
+// gradient x 1 alone, 0.5010 inside, as gradient x 2 alone).
+TEST(PovNormal, ObjectPatternTiltsByItsOutsideAndInsideNormals) {
+    const std::string n = "object { sphere { <0, 0, 0.5>, 1 } normal { gradient x 1 }, normal { gradient x 2 } }";
+    EXPECT_NEAR(planeBrightness(n, 1, 0.35), 0.5010, kMeasured);
+    EXPECT_NEAR(planeBrightness(n, 1, 1.5), 0.6074, kMeasured);
+    EXPECT_TRUE(load(litPlane(n, 1)).warnings.empty());
+}
+
 TEST(PovNormal, BumpSizeZeroAndGradientsAlongTheNormalChangeNothing) {
     EXPECT_NEAR(planeBrightness("gradient x 1 bump_size 0", 1), std::sqrt(0.5), 1e-9);
     EXPECT_NEAR(planeBrightness("gradient x 0", 1), std::sqrt(0.5), 1e-9);

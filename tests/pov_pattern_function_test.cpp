@@ -1,7 +1,8 @@
 // Pattern and pigment functions (`function { pattern { ... } }`, `function { pigment { ... } }`,
 // src/rays/pov/pattern_function.*): values while parsing against POV-Ray 3.7.0.10's own
-// (tests/data/povray/pattern_functions.pov and pigment_functions.pov wrote the .txt files beside
-// them), and the same functions in isosurfaces and function patterns at render time.
+// (tests/data/povray/pattern_functions.pov, pigment_functions.pov and object_patterns.pov wrote
+// the .txt files beside them), and the same functions in isosurfaces and function patterns at
+// render time.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -90,6 +91,11 @@ TEST(PovPatternFunction, PatternValuesMatchPovRay) {
 TEST(PovPatternFunction, PigmentColoursMatchPovRay) {
     // All five components and .gray, colour lists, maps, nested pigments, built-in maps.
     expectMeasured("pigment_functions");
+}
+
+TEST(PovPatternFunction, ObjectPatternsMatchPovRay) {
+    // 0 outside, 1 inside: spheres, boxes, cylinders, cones, tori, planes, CSG, inverse, quadrics ...
+    expectMeasured("object_patterns");
 }
 
 TEST(PovPatternFunction, CalledWhileParsingToPlaceObjects) {

@@ -80,6 +80,73 @@ TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
     EXPECT_NE(b.warnings[0].find("pattern function calling a pattern or pigment function"), std::string::npos);
 }
 
+// The object pattern (values printed by POV-Ray 3.7 through pigment and pattern functions): the
+// first list item outside the object, the second inside, a point on the surface outside; the
+// object's own transformations and modifiers apply, the pattern's on top.
+TEST(PovPattern, ObjectPatternIsTheFirstItemOutsideTheSecondInside) {
+    const Probe two = pigment("object { sphere { 0, 1 } rgb <1, 0, 0>, rgb <0, 1, 0> }", "plane { y, -5 ");
+    EXPECT_TRUE(two.b.warnings.empty());
+    EXPECT_EQ(two.at({0, 0, 0}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(two.at({0.999, 0, 0}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(two.at({1, 0, 0}).rgb, (Vec3{1, 0, 0}));
+    EXPECT_EQ(two.at({2, 0, 0}).rgb, (Vec3{1, 0, 0}));
+    const Probe bare = pigment("object { sphere { 0, 1 } }", "plane { y, -5 ");  // blue outside, green inside
+    EXPECT_EQ(bare.at({0, 0, 0}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(bare.at({2, 0, 0}).rgb, (Vec3{0, 0, 1}));
+    // The object's translation, then the pattern's scale: a sphere of radius 2 round x = 4.
+    const Probe moved = pigment("object { sphere { 0, 1 translate x*2 } rgb 0, rgb 1 } scale 2", "plane { y, -5 ");
+    for (const auto& [x, v] : {std::pair{0.0, 0.0}, {2.0, 0.0}, {4.0, 1.0}, {5.9, 1.0}, {6.1, 0.0}})
+        EXPECT_EQ(moved.at({x, 0, 0}).rgb.x, v) << x;
+    // Modifiers written after the object inside the braces move the object.
+    const Probe after = pigment("object { sphere { 0, 1 } translate x*2 rgb 0, rgb 1 }", "plane { y, -5 ");
+    EXPECT_EQ(after.at({0, 0, 0}).rgb.x, 0);
+    EXPECT_EQ(after.at({2, 0, 0}).rgb.x, 1);
+    // CSG and planes have their inside; an object identifier; pigments as the list's items.
+    const Probe csg = pigment("object { difference { box { -1, 1 } sphere { 0, 0.5 } } rgb 0, rgb 1 }", "plane { y, -5 ");
+    EXPECT_EQ(csg.at({0, 0, 0}).rgb.x, 0);
+    EXPECT_EQ(csg.at({0.8, 0, 0}).rgb.x, 1);
+    EXPECT_EQ(csg.at({1.2, 0, 0}).rgb.x, 0);
+    const Probe half = pigment("object { plane { y, 0 } rgb 0, rgb 1 } translate y", "sphere { 0, 1 ");
+    EXPECT_EQ(half.at({0, 0.5, 0}).rgb.x, 1);
+    EXPECT_EQ(half.at({0, 1.5, 0}).rgb.x, 0);
+    const Built maps = build("#declare S = sphere { 0, 1 }\n"
+                             "plane { y, -5 pigment { object { S pigment { gradient x }, pigment { rgb <0, 1, 0> } } } }");
+    EXPECT_TRUE(maps.warnings.empty());
+    const int root = maps.scene.povSurfaces.at(0).pigment;
+    ASSERT_GE(root, 0);
+    EXPECT_EQ(maps.scene.pigments.atRoot(root, {0.3, 0, 0}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_NEAR(maps.scene.pigments.atRoot(root, {1.3, 0, 0}).rgb.x, 0.3, 1e-9);
+    EXPECT_NEAR(maps.scene.pigments.atRoot(root, {1.7, 0, 0}).rgb.y, 0.7, 1e-9);
+    // As a pattern function: 1 inside, 0 outside and on the surface.
+    const Built fn = build("#declare F = function { pattern { object { sphere { 0, 1 } } } }\n"
+                           "plane { y, -5 pigment { function { F(x, y, z) * 0.5 + 0.25 }" + std::string(kGrey) + " } }");
+    EXPECT_TRUE(fn.warnings.empty());
+    const int f = fn.scene.povSurfaces.at(0).pigment;
+    ASSERT_GE(f, 0);
+    EXPECT_NEAR(fn.scene.pigments.atRoot(f, {0, 0, 0}).rgb.x, 0.75, 1e-9);
+    EXPECT_NEAR(fn.scene.pigments.atRoot(f, {1, 0, 0}).rgb.x, 0.25, 1e-9);
+    EXPECT_NEAR(fn.scene.pigments.atRoot(f, {2, 0, 0}).rgb.x, 0.25, 1e-9);
+}
+
+// A function pattern calling a pigment function whose pattern is a function calling a pigment
+// function of an object pattern (benchmark.pov's XsinPigm): values printed by POV-Ray 3.7.
+TEST(PovPattern, FunctionPatternsNestThroughPigmentFunctions) {
+    const Built b = build(
+        "#declare P = function { pigment { object { sphere { 0, 1 } rgb 1, rgb 0 } } }\n"
+        "#declare Q = function { pigment { function { P(x*2, y, z).gray } } }\n"
+        "plane { y, -5 pigment { function { Q(x, y, z).gray } color_map { [0 rgb <1,0,0>] [1 rgb <0,0,1>] } } }");
+    EXPECT_TRUE(b.warnings.empty());
+    const int r = b.scene.povSurfaces.at(0).pigment;
+    ASSERT_GE(r, 0);
+    // The grey of white is 0.297 + 0.589 + 0.114, 1 within rounding.
+    const auto off = [&](Vec3 p, Vec3 want) { return length(b.scene.pigments.atRoot(r, p).rgb - want); };
+    EXPECT_NEAR(off({0, 0, 0}, {1, 0, 0}), 0, 1e-12);
+    EXPECT_NEAR(off({0.4, 0, 0}, {1, 0, 0}), 0, 1e-12);
+    EXPECT_NEAR(off({0.6, 0, 0}, {0, 0, 1}), 0, 1e-12);
+    EXPECT_NEAR(off({0.6, 0.9, 0}, {0, 0, 1}), 0, 1e-12);
+    EXPECT_NEAR(off({0, 0.99, 0}, {1, 0, 0}), 0, 1e-12);
+}
+
 TEST(PovPattern, MandelMatchesPovRay) {
     // Values printed by POV-Ray 3.7.
     expectValues("mandel 25", {{{0, 0, 0}, 1}, {{1, 1, 0}, 0}, {{-2.5, 0, 0}, 0}, {{0.5, 0.5, 0}, 0.12},
@@ -340,6 +407,16 @@ TEST(PovPattern, PatternedTexturesDrawTheirTexturesPigments) {
     ASSERT_GE(s1.pigment, 0);
     EXPECT_NEAR(length(t.atRoot(s1.pigment, {0.5, 0, 0}).rgb - Vec3{0.5, 0.5, 0.5}), 0, 1e-9);
     EXPECT_NEAR(length(t.atRoot(s1.pigment, {0.1, 0, 0}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
+}
+
+TEST(PovPattern, ObjectTexturesChooseTheOutsideAndInsideTextures) {
+    const Built b = build("plane { y, -5 texture { object { sphere { 0, 1 } texture { pigment { rgb <1, 0, 0> } },\n"
+                          "  texture { pigment { rgb <0, 1, 0> } finish { ambient 0.7 } } } scale 2 } }");
+    EXPECT_TRUE(b.warnings.empty());
+    const PovSurface& s = b.scene.povSurfaces.at(size_t(b.scene.objects.at(0).material.pov));
+    ASSERT_GE(s.pigment, 0);
+    EXPECT_EQ(b.scene.pigments.atRoot(s.pigment, {1.5, 0, 0}).rgb, (Vec3{0, 1, 0}));
+    EXPECT_EQ(b.scene.pigments.atRoot(s.pigment, {2.5, 0, 0}).rgb, (Vec3{1, 0, 0}));
 }
 
 TEST(PovPattern, TilesAreACheckerOfTwoTextures) {

@@ -310,6 +310,21 @@ TEST(PovGeometry, InsideTellsSolidsApartAsPovRayDoes) {
     EXPECT_EQ(bits, "101101110");
 }
 
+TEST(PovGeometry, InsideHonoursInverseAndMeshesInsideVector) {
+    // POV-Ray 3.7 prints 0 1 1 0: an inverse sphere at its centre and outside, a closed mesh with an
+    // inside_vector at a point inside it and below it.
+    const Built b = build(
+        "#declare S = sphere { 0, 1 inverse }\n"
+        "#declare M = mesh { triangle { <-1,-1,-1>, <1.5,-1,-1>, <0,1.5,-1> } triangle { <-1,-1,-1>, <1.5,-1,-1>, <0,0,1.5> }\n"
+        "  triangle { <1.5,-1,-1>, <0,1.5,-1>, <0,0,1.5> } triangle { <0,1.5,-1>, <-1,-1,-1>, <0,0,1.5> } inside_vector z }\n"
+        "sphere { <inside(S, <0,0,0>), inside(S, <2,0,0>), 0>, 0.1 }\n"
+        "sphere { <inside(M, <0,0,0>), inside(M, <0,0,-2>), 0>, 0.1 }\n");
+    ASSERT_EQ(b.error, "");
+    ASSERT_EQ(b.scene.objects.size(), 2u);
+    EXPECT_TRUE(near(b.scene.objects[0].p0, {0, 1, 0}));
+    EXPECT_TRUE(near(b.scene.objects[1].p0, {1, 0, 0}));
+}
+
 TEST(PovGrammar, EveryKindOfItemIsReadInItsPlace) {
     // One of each of POV-Ray 3.7's items and modifiers; none may be a syntax error.
     const char* text = R"(#version 3.7;

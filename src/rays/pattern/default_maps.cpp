@@ -9,7 +9,8 @@ MapEntry at(double v, double r, double g, double b) { return MapEntry{v, Rgbft{V
 
 std::vector<MapEntry> defaultMap(PatternKind kind) {
     switch (kind) {
-        case PatternKind::Checker: return {at(0, 0, 0, 1), at(0, 0, 1, 0)};
+        // object without a list: blue outside, green inside, as checker (measured).
+        case PatternKind::Checker: case PatternKind::Object: return {at(0, 0, 0, 1), at(0, 0, 1, 0)};
         case PatternKind::Hexagon: return {at(0, 0, 0, 1), at(0, 0, 1, 0), at(0, 1, 0, 0)};
         case PatternKind::Square: return {at(0, 1, 0, 0), at(0, 0, 1, 0), at(0, 0, 0, 1), at(0, 1, 1, 0)};  // measured
         case PatternKind::Triangular: case PatternKind::Cubic:  // measured

@@ -213,6 +213,7 @@ int blockIndex(PatternKind kind, const PatternParams& params, Vec3 p) {
         case PatternKind::Square: return squareIndex(p);
         case PatternKind::Triangular: return triangularIndex(p);
         case PatternKind::Cubic: return cubicIndex(p);
+        case PatternKind::Object: return params.object ? params.object->index(p) : 0;
         default: return 0;
     }
 }

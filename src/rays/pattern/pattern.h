@@ -8,6 +8,7 @@
 #include "rays/math/vec3.h"
 #include "rays/pattern/density_file.h"
 #include "rays/pattern/noise.h"
+#include "rays/pattern/object_pattern.h"
 #include "rays/pattern/quilted.h"
 #include "rays/pattern/slope.h"
 
@@ -34,11 +35,14 @@ enum class PatternKind : uint8_t {
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
     DensityFile,  ///< density_file df3: a DF3 grid over the unit cube (pattern/density_file.h)
     ImagePattern,  ///< image_pattern: the grey of PigmentTable::images[node.image] (ImageMap::value)
+    Object,  ///< object: a list of two, outside and inside an object (pattern/object_pattern.h)
 };
 
-/// True for checker, hexagon, brick, square, triangular and cubic (a list of 2 to 6 colours, no
-/// wave, no map).
-constexpr bool isBlockPattern(PatternKind k) { return k >= PatternKind::Checker && k <= PatternKind::Cubic; }
+/// True for checker, hexagon, brick, square, triangular, cubic and object (a list of 2 to 6
+/// colours, no wave, no map).
+constexpr bool isBlockPattern(PatternKind k) {
+    return (k >= PatternKind::Checker && k <= PatternKind::Cubic) || k == PatternKind::Object;
+}
 
 /// The modifiers some patterns read.
 struct PatternParams {
@@ -60,6 +64,7 @@ struct PatternParams {
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
     const DensityGrid* grid = nullptr;      ///< DensityFile: the grid (kept alive by the PigmentTable)
     int interpolate = 0;                    ///< DensityFile: 0 nearest, 1 trilinear, 2 tricubic
+    const PatternObject* object = nullptr;  ///< Object: the inside test (kept alive by the PigmentTable)
 };
 
 /// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type

@@ -42,6 +42,7 @@ struct PigmentTable {
     std::vector<WarpStep> warps;  ///< each node's steps, outermost (written last) first
     std::vector<ImageMap> images;  ///< image_map pigments (their images shared per file)
     std::vector<std::shared_ptr<const DensityGrid>> grids;  ///< density_file patterns' grids, kept alive
+    std::vector<std::shared_ptr<const PatternObject>> objects;  ///< object patterns' objects, kept alive
 
     /// Decodes the image maps' texels into the scene's working gamma (assumed_gamma; 0 legacy).
     void setWorkingGamma(double assumedGamma) {

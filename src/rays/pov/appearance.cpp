@@ -352,6 +352,11 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
     };
     for (const Entry& e : t.entries) {
         if (e.positional() || e.key == kMapEntry) continue;
+        // object { OBJECT texture { A }, texture { B } }: its list is inside its braces.
+        if (e.kw() == Kw::object && !e.args.empty() && e.args[0].type == VType::Item)
+            for (const Entry& le : e.args[0].item().entries)
+                if (!le.positional() && le.kw() == Kw::texture && !le.args.empty() && le.args[0].type == VType::Item)
+                    addTexture(le.args[0].item(), 0);
         if (e.kw() == Kw::texture) {
             // Textures written in a row arrive as one layered item (grammar.cpp); in a pattern's
             // list they are its entries.

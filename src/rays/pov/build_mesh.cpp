@@ -120,7 +120,16 @@ std::unique_ptr<Mesh> fromMesh2(const Item& m, std::string& problem) {
 
 std::unique_ptr<Mesh> meshFromItem(const Item& m, std::string& problem) {
     problem.clear();
-    return m.kind == Kw::mesh2 ? fromMesh2(m, problem) : fromTriangles(m);
+    std::unique_ptr<Mesh> mesh = m.kind == Kw::mesh2 ? fromMesh2(m, problem) : fromTriangles(m);
+    // inside_vector (POV-Ray 3.7 reference, "Mesh"): the direction inside tests count crossings along.
+    if (const Entry* v = findEntry(m, Kw::inside_vector); mesh && v && !v->args.empty()) {
+        const Vec3 d = toVec3(v->args[0]);
+        if (length(d) > 0) {
+            mesh->insideVector = normalize(d);
+            mesh->hasInside = true;
+        }
+    }
+    return mesh;
 }
 
 }  // namespace rays::pov

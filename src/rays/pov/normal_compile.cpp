@@ -30,7 +30,7 @@ NormalKind kindOf(Kw k) {
 
 bool isBlock(Kw k) {
     return k == Kw::checker || k == Kw::hexagon || k == Kw::brick || k == Kw::square || k == Kw::triangular ||
-           k == Kw::cubic;
+           k == Kw::cubic || k == Kw::object;
 }
 
 }  // namespace
@@ -134,6 +134,11 @@ void NormalCompiler::read(const Item& normal, State& s, int depth) {
             // spiral1 N, AMOUNT and spiral2 N, AMOUNT (measured: `spiral2 5, 1.0` tilts as `spiral2 5 1.0`).
             if ((k == Kw::spiral1 || k == Kw::spiral2) && e.args.size() > 1 && e.args[1].isNumeric())
                 s.amount = toFloat(e.args[1]);
+            // object { OBJECT normal { A }, normal { B } }: its list is inside its braces.
+            if (k == Kw::object && !e.args.empty() && e.args[0].type == VType::Item)
+                for (const Entry& le : e.args[0].item().entries)
+                    if (!le.positional() && le.kw() == Kw::normal && !le.args.empty() && le.args[0].type == VType::Item)
+                        s.list.push_back({0, nested(le.args[0].item(), depth + 1)});
             continue;
         }
         switch (k) {

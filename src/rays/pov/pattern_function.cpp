@@ -36,12 +36,14 @@ void evalPigmentColor(const void* data, const double* in, double* out) {
 }  // namespace
 
 fn::HostFunction compilePatternFunction(const Item& item, bool pigment, NotRendered& notes,
-                                        const std::function<std::string(const std::string&)>& findFile) {
+                                        const std::function<std::string(const std::string&)>& findFile,
+                                        const PatternObjectBuilder& buildObject) {
     auto compiled = std::make_shared<CompiledPattern>();
     {
         PigmentCompiler compiler(compiled->table, notes);
         compiler.imageFiles().setFileFinder(findFile);
         compiler.densityFiles().setFileFinder(findFile);
+        compiler.setObjectBuilder(buildObject);
         compiled->node = compiler.compileFunction(item);
     }
     if (compiled->node < 0) return {};

@@ -9,6 +9,7 @@
 #include "rays/fn/program.h"
 #include "rays/pov/item_values.h"
 #include "rays/pov/not_rendered.h"
+#include "rays/pov/pattern_object.h"
 
 namespace rays::pov {
 
@@ -16,8 +17,10 @@ namespace rays::pov {
 /// its transformations, warps, turbulence and wave, its colour map ignored, a block pattern's
 /// list index) or of a pigment item (pigment = true: red, green, blue, filter, transmit). It owns
 /// its compiled pattern (HostFunction::keep). fn == nullptr when the item names a pattern Rays
-/// does not render (noted on `notes`). Image files are found with `findFile`.
+/// does not render (noted on `notes`). Image files are found with `findFile`; object patterns'
+/// objects are built by `buildObject`.
 fn::HostFunction compilePatternFunction(const Item& item, bool pigment, NotRendered& notes,
-                                        const std::function<std::string(const std::string&)>& findFile);
+                                        const std::function<std::string(const std::string&)>& findFile,
+                                        const PatternObjectBuilder& buildObject);
 
 }  // namespace rays::pov

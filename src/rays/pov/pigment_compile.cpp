@@ -63,8 +63,10 @@ bool patternKind(Kw k, PatternKind& out) {
     }
 }
 
-// True when the program or a function it calls calls a pattern or pigment function (those give
-// 0 outside the parse for now).
+// True when the program or a function it calls calls a pattern or pigment function of a pattern
+// Rays does not render (its stand-in gives 0). Pattern and pigment functions of rendered patterns
+// run for real at any depth: each nesting level has its own scratch (pattern.cpp, functionValue),
+// and their tables are immutable and owned by the functions (HostFunction::keep).
 bool callsPatternFunction(const fn::Program& p, int depth = 0) {
     for (const fn::HostFunction& h : p.hosts)
         if (sdl::isPatternStub(h)) return true;
@@ -292,8 +294,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
                 callsPatternFunction(f.table->program(f.index))) {
                 s.pattern = false;
                 s.unrendered = true;
-                notes_.note(std::string(s.what) + " pattern function calling a pattern or pigment function", e.loc,
-                            "(drawn in its mean colour)");
+                notes_.note(std::string(s.what) +
+                                " pattern function calling a pattern or pigment function of a pattern Rays does not render",
+                            e.loc, "(drawn in its mean colour)");
                 return;
             }
             table_.programs.push_back(f.table->shared(f.index));
@@ -324,6 +327,10 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     }
     if (k == Kw::image_pattern) {
         readImageMap(e.args[0].item(), s, true);
+        return;
+    }
+    if (k == Kw::object && !e.args.empty() && e.args[0].type == VType::Item && buildObject_) {
+        readObjectPattern(e, s, depth);
         return;
     }
     if (isPatternType(k) || k == Kw::image_map) {
@@ -371,6 +378,44 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
             break;
         case Kw::warp: readWarp(e.args[0].item(), s); break;
         default: break;
+    }
+}
+
+// The object pattern (POV-Ray 3.7 reference, "Object Pattern"): a list pattern of two entries,
+// the first outside the object, the second inside (measured: `object { sphere { 0, 1 } rgb <1,0,0>,
+// rgb <0,1,0> }` is green at the origin, red at <2, 0, 0>). Its list's items are written inside
+// its braces after the object; without them it is blue outside, green inside (measured).
+void PigmentCompiler::readObjectPattern(const Entry& e, State& s, int depth) {
+    const Item& item = e.args[0].item();
+    auto it = objects_.find(&item);
+    if (it == objects_.end()) {
+        const BuiltPatternObject built = buildObject_(item);
+        if (built.object && !built.complete)
+            notes_.note(std::string(s.what) + " pattern object of shapes Rays does not render", e.loc,
+                        "(the object without them)");
+        it = objects_.emplace(&item, built.object).first;
+    }
+    if (!it->second) {
+        s.unrendered = true;
+        s.pattern = false;
+        notes_.note(std::string(s.what) + " pattern object", e.loc, "(no object Rays renders: drawn in its mean colour)");
+        return;
+    }
+    s.pattern = true;
+    s.unrendered = false;
+    s.node.kind = PatternKind::Object;
+    s.list.clear();
+    table_.objects.push_back(it->second);
+    s.node.params.object = it->second.get();
+    for (const Entry& le : item.entries) {
+        if (!isObjectPatternListEntry(le)) continue;
+        if (le.positional()) {
+            for (const Value& v : le.args)
+                if (v.isNumeric()) s.list.push_back(MapEntry{0, toPatternColor(v), -1});
+        } else if ((le.kw() == Kw::pigment || le.kw() == Kw::density) && !le.args.empty() &&
+                   le.args[0].type == VType::Item) {
+            s.list.push_back(MapEntry{0, {}, nested(le.args[0].item(), depth)});
+        }
     }
 }
 

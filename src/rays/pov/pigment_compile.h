@@ -13,6 +13,7 @@
 #include "rays/pov/image_files.h"
 #include "rays/pov/item_values.h"
 #include "rays/pov/not_rendered.h"
+#include "rays/pov/pattern_object.h"
 
 namespace rays::pov {
 
@@ -44,6 +45,8 @@ public:
     const pattern::PigmentTable& table() const { return table_; }
     /// The scene's image files (image maps here; height fields share them).
     ImageFiles& imageFiles() { return images_; }
+    /// How object patterns' objects are built (without a builder they are not rendered: noted).
+    void setObjectBuilder(PatternObjectBuilder build) { buildObject_ = std::move(build); }
     DensityFiles& densityFiles() { return densityFiles_; }
     /// A pigment seen through a transformation (its texture space → the enclosing one); node -1
     /// stands for the flat colour.
@@ -75,6 +78,8 @@ private:
     void readImageMap(const Item& map, State& s, bool asPattern = false);
     void readColorMap(const Item& map, State& s, int depth);
     void readPigmentMap(const Item& map, State& s, int depth);
+    /// `object { OBJECT A, B }`: the pattern and its list (colours, pigments or densities).
+    void readObjectPattern(const Entry& e, State& s, int depth);
     int emit(State& s);
     void place(const State& s, pattern::PigmentNode& node);
     int nested(const Item& pigment, int depth);
@@ -88,6 +93,8 @@ private:
     std::unique_ptr<NormalCompiler> normals_;  ///< made on the first normal
     ImageFiles images_{notes_};
     DensityFiles densityFiles_{notes_};
+    PatternObjectBuilder buildObject_;
+    std::unordered_map<const Item*, std::shared_ptr<const pattern::PatternObject>> objects_;  ///< built per item
 };
 
 }  // namespace rays::pov

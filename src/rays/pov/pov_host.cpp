@@ -8,7 +8,9 @@
 #include "rays/pov/grammar.h"
 #include "rays/pov/item_values.h"
 #include "rays/pov/pattern_function.h"
+#include "rays/pov/pattern_object.h"
 #include "rays/pov/scene_builder.h"
+#include "rays/pov/standalone_object.h"
 
 namespace rays::pov {
 
@@ -31,17 +33,11 @@ const PovHost::Probe& PovHost::probe(const sdl::ItemRef& object) {
     if (!slot) {
         slot = std::make_unique<Probe>();
         slot->object = object;
-        std::function<std::string(const sdl::Loc&)> where = where_;
-        if (!where) where = [](const sdl::Loc&) { return std::string(); };
-        NotRendered quiet(where, nullptr, false);
-        SceneBuilder b(quiet);
-        b.setFileFinder(findFile_);
-        b.setFontCache(&fonts_);
-        b.add(ParsedScene::Top{object, nullptr, 0, 3.7});
-        slot->scene = b.finish("");
+        StandaloneObject built = buildStandalone(object, where_, findFile_, &fonts_);
+        slot->scene = std::move(built.scene);
         // trace(), inside() and the extents need the shapes only: a texture drawn otherwise (a
         // pattern Rays does not render) leaves them whole.
-        slot->complete = quiet.leftOut() == 0;
+        slot->complete = built.complete;
         slot->bvh = Bvh(slot->scene.objects);
     }
     return *slot;
@@ -55,7 +51,11 @@ fn::HostFunction PovHost::patternFunction(const sdl::Item& item, bool pigment) {
     std::function<std::string(const sdl::Loc&)> where = where_;
     if (!where) where = [](const sdl::Loc&) { return std::string(); };
     NotRendered quiet(where, nullptr, false);
-    return compilePatternFunction(item, pigment, quiet, findFile_);
+    // An object pattern's object is built alone, as inside() builds its object.
+    const PatternObjectBuilder buildObject = [this, where](const sdl::Item& pattern) {
+        return buildPatternObject(pattern, where, findFile_, &fonts_);
+    };
+    return compilePatternFunction(item, pigment, quiet, findFile_, buildObject);
 }
 
 bool PovHost::startsItem(Kw k) const { return itemSpec(k) != nullptr; }
@@ -110,18 +110,18 @@ PovHost::TraceResult PovHost::trace(const sdl::ItemRef& object, const double ori
     return r;
 }
 
-// inside(): inside any part of the object (a union's parts, as POV-Ray's union is inside where
-// any child is).
+// inside(): the object pattern's inside test (pattern_object.h): inside any part of the object (a
+// union's parts, as POV-Ray's union is inside where any child is), `inverse` honoured; shapes
+// without an inside are outside.
 int PovHost::inside(const sdl::ItemRef& object, const double point[3]) {
-    const Probe& p = probe(object);
-    if (!p.complete || p.scene.objects.empty()) return -1;
-    const Vec3 q{point[0], point[1], point[2]};
-    for (const Object& o : p.scene.objects) {
-        const int in = insideShape(o, q);
-        if (in < 0) return -1;
-        if (in) return 1;
+    auto [it, added] = insides_.try_emplace(object.get());
+    InsideProbe& p = it->second;
+    if (added) {
+        p.object = object;
+        p.test = buildInsideTest(object, where_, findFile_, &fonts_);
     }
-    return 0;
+    if (!p.test.complete || !p.test.object) return -1;
+    return p.test.object->index(Vec3{point[0], point[1], point[2]});
 }
 
 bool PovHost::extent(const sdl::ItemRef& object, double lo[3], double hi[3]) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rays/io/ttf_font.h"
+#include "rays/pov/pattern_object.h"
 #include "rays/sdl/host.h"
 #include "rays/sdl/interpreter.h"
 
@@ -55,6 +56,11 @@ private:
     ParsedScene& out_;
     std::shared_ptr<std::vector<sdl::Entry>> defaults_;
     std::unordered_map<const sdl::Item*, std::unique_ptr<Probe>> probes_;
+    struct InsideProbe {  // an object built alone for inside(), as the object pattern's
+        sdl::ItemRef object;  ///< keeps the item (the cache's key) alive
+        BuiltPatternObject test;
+    };
+    std::unordered_map<const sdl::Item*, InsideProbe> insides_;
     std::function<std::string(const std::string&)> findFile_;
     std::function<std::string(const sdl::Loc&)> where_;
     FontCache fonts_;

@@ -9,6 +9,7 @@
 #include "rays/pov/build_mesh.h"
 #include "rays/pov/build_shapes.h"
 #include "rays/pov/grammar.h"
+#include "rays/pov/pattern_object.h"
 #include "rays/pov/radiosity_settings.h"
 #include "rays/pov/scene_builder_parts.h"
 
@@ -431,7 +432,9 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
         case Kw::parametric: {
             auto mesh = std::make_unique<Mesh>();
             const ShapeBuild made = buildParametric(a, terms_, *mesh, notes_.where(at));
-            if (made == ShapeBuild::NotAShape) notes_.note("parametric function calling a pattern or pigment function", at, "(left out)");
+            if (made == ShapeBuild::NotAShape)
+                notes_.note("parametric function calling a pattern or pigment function of a pattern Rays does not render",
+                            at, "(left out)");
             if (made != ShapeBuild::Made) return;
             placeTessellated(o, std::move(mesh), at);
             break;
@@ -618,6 +621,12 @@ void SceneBuilder::globalSettings(const Item& g) {
             default: break;
         }
     }
+}
+
+SceneBuilder::SceneBuilder(NotRendered& notes, uint64_t maxObjects) : notes_(notes), maxObjects_(maxObjects) {
+    pigments_.setObjectBuilder([this](const Item& pattern) {
+        return buildPatternObject(pattern, [this](const sdl::Loc& at) { return notes_.where(at); }, findFile_, fonts_);
+    });
 }
 
 void SceneBuilder::reserve(size_t n) {

@@ -23,8 +23,9 @@ class SceneBuilder {
 public:
     /// maxObjects: objects it may make, copies of declared objects included (a mesh also counts its
     /// triangles); past it add() throws.
-    explicit SceneBuilder(NotRendered& notes, uint64_t maxObjects = uint64_t(1) << 26)
-        : notes_(notes), maxObjects_(maxObjects) {}
+    /// Object patterns' objects are built alone (pattern_object.h) with this builder's file finder
+    /// and fonts.
+    explicit SceneBuilder(NotRendered& notes, uint64_t maxObjects = uint64_t(1) << 26);
     /// Room for about n objects (one per top-level item), so that a scene of many objects does
     /// not grow its arrays step by step.
     void reserve(size_t n);

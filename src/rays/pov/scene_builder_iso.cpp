@@ -67,7 +67,8 @@ void SceneBuilder::addIsosurface(const std::vector<const Entry*>& entries, const
     if (!f) throw Error(notes_.where(at) + ": error: an isosurface needs function { ... }");
     if (f->kind != sdl::FunctionValue::Kind::Float || !f->table || f->index < 0 ||
         callsPatternStub(f->table->program(f->index))) {
-        notes_.note("isosurface function calling a pattern or pigment function", at, "(left out)");
+        notes_.note("isosurface function calling a pattern or pigment function of a pattern Rays does not render", at,
+                    "(left out)");
         return;
     }
     spec.function = f->table->shared(f->index);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rays/scene/mesh.h"
 #include "rays/scene/text_shape.h"
 #include "rays/scene/shapes/blob.h"
 #include "rays/scene/shapes/height_field.h"
@@ -345,7 +346,8 @@ int insideShape(const Object& o, Vec3 q) {
         // "The inside of a disc is the inside of the plane that contains the disc" (reference
         // 3.4.5.2.2): the side its normal points away from, whatever the radius.
         case ShapeType::Disc: return dot(o.p1, p - o.p0) < 0;
-        case ShapeType::Triangle: case ShapeType::Mesh: case ShapeType::Polygon: return -1;
+        case ShapeType::Mesh: return o.mesh->hasInside ? int(insideMesh(*o.mesh, p)) : -1;
+        case ShapeType::Triangle: case ShapeType::Polygon: return -1;
     }
     return -1;
 }

@@ -72,6 +72,21 @@ size_t Mesh::memoryBytes() const {
            uvs.capacity() * 4 + uvIndices.capacity() * 4 + tangents.capacity() * 4 + bvh.memoryBytes();
 }
 
+bool insideMesh(const Mesh& m, Vec3 p) {
+    if (!m.hasInside) return false;
+    const TriRay r = toTriRay(Ray{p, m.insideVector});
+    TriHit th;
+    float t = 0;
+    bool inside = false;
+    // Each search starts a little past the last crossing (the BVH's t is float): a ray through an
+    // edge meets the second triangle at the same t and counts once.
+    for (int crossings = 0; crossings < 1 << 20 && m.bvh.intersect(r, t, INFINITY, th); ++crossings) {
+        inside = !inside;
+        t = th.t + 1e-5f * (1 + th.t);
+    }
+    return inside;
+}
+
 bool intersectMesh(const Mesh& m, const Ray& ray, double tMin, double tMax, MeshHit& hit) {
     TriHit th;
     const float hi = std::isinf(tMax) ? INFINITY : float(tMax);

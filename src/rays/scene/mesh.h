@@ -20,6 +20,9 @@ struct Mesh {
     std::vector<float> tangents;         ///< xyz per position vertex (from uvs; empty without)
     TriangleBvh bvh;                     ///< over positions/indices, object space
     Bounds bounds;                       ///< object-space bounds
+    /// POV-Ray's inside_vector (unit, object space): a mesh with one has an inside (insideMesh).
+    Vec3 insideVector;
+    bool hasInside = false;
 
     size_t triangleCount() const { return indices.size() / 3; }
     bool hasNormals() const { return !normalIndices.empty(); }
@@ -48,5 +51,11 @@ struct MeshHit {
 bool intersectMesh(const Mesh& m, const Ray& ray, double tMin, double tMax, MeshHit& hit);
 /// Any hit with t in (tMin, tMax).
 bool occludesMesh(const Mesh& m, const Ray& ray, double tMin, double tMax);
+
+/// True when the object-space point p is inside a mesh with an inside_vector: an odd number of its
+/// triangles cross the ray from p along that vector (POV-Ray 3.7 reference, "Mesh": "a ray is
+/// shot in the direction of the inside vector ... the number of intersections counted"). A ray
+/// through an edge counts one crossing. False for meshes without one.
+bool insideMesh(const Mesh& m, Vec3 p);
 
 }  // namespace rays
