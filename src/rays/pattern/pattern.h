@@ -34,6 +34,7 @@ enum class PatternKind : uint8_t {
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
     DensityFile,  ///< density_file df3: a DF3 grid over the unit cube (pattern/density_file.h)
     ImagePattern,  ///< image_pattern: the grey of PigmentTable::images[node.image] (ImageMap::value)
+    Tiling,    ///< tiling N: one of 27 bevelled tilings of the x-z plane (pattern/tiling.h)
 };
 
 /// True for checker, hexagon, brick, square, triangular and cubic (a list of 2 to 6 colours, no
@@ -60,6 +61,7 @@ struct PatternParams {
     const fn::Program* function = nullptr;  ///< Function: the program (kept alive by the PigmentTable)
     const DensityGrid* grid = nullptr;      ///< DensityFile: the grid (kept alive by the PigmentTable)
     int interpolate = 0;                    ///< DensityFile: 0 nearest, 1 trilinear, 2 tricubic
+    int tiling = 1;                         ///< Tiling: the tiling's number (1 to 27)
 };
 
 /// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rays/pattern/default_maps.h"
+#include "rays/pattern/tiling.h"
 #include "rays/pov/normal_compile.h"
 #include "rays/pov/grammar.h"
 #include "rays/pov/specs.h"
@@ -59,6 +60,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::quilted: out = PatternKind::Quilted; return true;
         case Kw::slope: out = PatternKind::Slope; return true;
         case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
+        case Kw::tiling: out = PatternKind::Tiling; return true;
         default: return false;
     }
 }
@@ -250,7 +252,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
     PatternKind kind;
     // slope reads the surface normal: as a normal pattern it is not rendered (noted below).
-    const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope);
+    // tiling N: the Penrose tilings (25 to 27) are not drawn (noted below).
+    const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope) &&
+                       !(kind == PatternKind::Tiling && !pattern::tilingDrawn(int(num(0))));
     if (known) {
         s.pattern = true;
         s.unrendered = false;
@@ -279,6 +283,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         }
         // The number of arms is cut to an integer (measured: spiral1 1.5 and spiral2 1.5 are 1's).
         if (kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2) s.node.params.arms = std::trunc(toFloat(e.args[0]));
+        if (kind == PatternKind::Tiling) s.node.params.tiling = int(num(0));
         if (kind == PatternKind::Slope) s.node.params.slope = readSlope(e.args[0]);
         if (kind == PatternKind::PigmentPattern) s.node.params.source = nested(e.args[0].item(), depth);
         if (kind == PatternKind::Function) {
@@ -324,7 +329,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     if (isPatternType(k) || k == Kw::image_map) {
         s.unrendered = true;
         s.pattern = false;
-        notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)), e.loc,
+        const std::string number = k == Kw::tiling ? " " + std::to_string(int(num(0))) : "";
+        notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)) + number, e.loc,
                     s.normal ? "(drawn smooth)" : s.density ? "(density 0: no media there)" : "(drawn in its mean colour)");
         return;
     }
