@@ -122,6 +122,64 @@ std::unique_ptr<PolygonTiling> build(int n) {
             for (const Point2 c : {Point2{0, 0}, Point2{1, 0}, Point2{2, 2}, Point2{3, 2}}) t->rectangle(1, c, {c.x + 1, c.z + 2});
             for (const Point2 c : {Point2{2, 0}, Point2{2, 1}, Point2{0, 2}, Point2{0, 3}}) t->rectangle(0, c, {c.x + 2, c.z + 1});
             break;
+        case 19:  // hexagons (2) among triangles (upward 0, downward 1): 3.3.3.3.6, hexagons about (−1, 0)
+                  // with two vertices on the x-axis, √7 apart (the unit triangles of the period computed
+                  // from the hexagons)
+            t = std::make_unique<PolygonTiling>(Point2{2.5, -kH}, Point2{2, kS3}, 3);
+            t->regular(2, {3.5, 0.866025403784439}, 6, 60);
+            t->regular(0, {2.5, 0.288675134594812}, 3, 90);
+            t->regular(0, {1.5, 0.288675134594812}, 3, 90);
+            t->regular(1, {2, 0.577350269189625}, 3, 30);
+            t->regular(0, {2, 1.15470053837925}, 3, 90);
+            t->regular(1, {2.5, 1.44337567297406}, 3, 30);
+            t->regular(0, {0.5, 0.288675134594813}, 3, 90);
+            t->regular(1, {1, 0.577350269189626}, 3, 30);
+            t->regular(1, {2.5, -0.288675134594813}, 3, 30);
+            break;
+        case 20:  // tiling 19 mirrored in the x-axis (hexagons about (0.5, −√3/2))
+            t = std::make_unique<PolygonTiling>(Point2{2.5, kH}, Point2{0.5, 3 * kH}, 3);
+            t->regular(2, {1, 1.73205080756888}, 6, 60);
+            t->regular(0, {2.5, 2.02072594216369}, 3, 90);
+            t->regular(0, {0.5, 0.288675134594813}, 3, 90);
+            t->regular(1, {1, 0.577350269189626}, 3, 30);
+            t->regular(1, {2, 2.3094010767585}, 3, 30);
+            t->regular(0, {2, 2.88675134594813}, 3, 90);
+            t->regular(1, {2.5, 3.17542648054294}, 3, 30);
+            t->regular(0, {2, 1.15470053837925}, 3, 90);
+            t->regular(1, {2.5, 1.44337567297406}, 3, 30);
+            break;
+        case 21:  // squares and triangles (3.3.4.3.4), period 1 + √3: squares about (±h, ±h), h = (1 + √3)/4,
+                  // turned ±15° (4 where x·z > 0, 5 elsewhere), triangles of four types 0 to 3
+            t = std::make_unique<PolygonTiling>(Point2{1 + kS3, 0}, Point2{0, 1 + kS3}, 6);
+            t->regular(4, {0.683012701892219, 0.683012701892219}, 4, 15);
+            t->regular(4, {2.04903810567666, 2.04903810567666}, 4, 15);
+            t->regular(5, {0.683012701892219, 2.04903810567666}, 4, 75);
+            t->regular(5, {2.04903810567666, 0.683012701892219}, 4, 75);
+            t->regular(2, {1.07735026918963, 1.36602540378444}, 3, 60);
+            t->regular(3, {1.36602540378444, 0.288675134594813}, 3, 90);
+            t->regular(0, {1.65470053837925, 1.36602540378444}, 3, 0);
+            t->regular(1, {0, 1.07735026918963}, 3, 30);
+            t->regular(3, {0, 1.65470053837925}, 3, 90);
+            t->regular(0, {0.288675134594813, 0}, 3, 1.42108547152e-14);
+            t->regular(2, {2.44337567297406, 0}, 3, 60);
+            t->regular(1, {1.36602540378444, 2.44337567297406}, 3, 30);
+            break;
+        case 23: case 24: {  // dodecagons, hexagons and squares (4.6.12): dodecagons about (0, −(1 + √3)/2),
+                             // 3 + √3 apart, each with a hexagon above and below and squares between
+                             // dodecagons; 23: hexagons 0, squares 1, dodecagons 2; 24: hexagons 0, the
+                             // squares towards 0°, 60° and 120° from a dodecagon 1, 2, 3, dodecagons 4
+            const double l = 3 + kS3, cz = -(1 + kS3) / 2, r = (2 + kS3) / 2 + 0.5;
+            const bool five = n == 24;
+            t = std::make_unique<PolygonTiling>(Point2{l, 0}, Point2{l / 2, l * kH}, five ? 5 : 3);
+            t->regular(five ? 4 : 2, {0, cz}, 12, 15);
+            t->regular(0, {0, cz + 1 + kS3}, 6, 0);
+            t->regular(0, {0, cz - 1 - kS3}, 6, 0);
+            for (int k = 0; k < 3; ++k) {
+                const double a = k * std::numbers::pi / 3;
+                t->regular(five ? 1 + k : 1, {r * std::cos(a), cz + r * std::sin(a)}, 4, 60.0 * k + 45);
+            }
+            break;
+        }
         default: return nullptr;
     }
     t->finish();

@@ -10,8 +10,10 @@
 
 namespace rays::pattern {
 
-/// True for the tiling numbers drawn here (the periodic ones); false for the others (the Penrose
-/// tilings 25 to 27).
+/// True for the tiling numbers drawn here: 1 to 12, 15 to 21, 23 and 24. Not drawn: 13 and 14
+/// (tiles whose bevel lines do not follow the distance to their edges), 22 (3.12.12, whose
+/// dodecagons' bevel near their triangles is not the distance to their edges either) and the
+/// Penrose tilings 25 to 27.
 bool tilingDrawn(int number);
 
 /// The value of `tiling number` at p (y is ignored), in [0, 1]; 0 for a tiling not drawn.
