@@ -8,6 +8,7 @@
 #include "rays/math/vec3.h"
 #include "rays/pattern/density_file.h"
 #include "rays/pattern/noise.h"
+#include "rays/pattern/pavement.h"
 #include "rays/pattern/quilted.h"
 #include "rays/pattern/slope.h"
 
@@ -35,6 +36,7 @@ enum class PatternKind : uint8_t {
     DensityFile,  ///< density_file df3: a DF3 grid over the unit cube (pattern/density_file.h)
     ImagePattern,  ///< image_pattern: the grey of PigmentTable::images[node.image] (ImageMap::value)
     Tiling,    ///< tiling N: one of 27 bevelled tilings of the x-z plane (pattern/tiling.h)
+    Pavement,  ///< pavement: the x-z plane paved with one polyform (pattern/pavement.h)
 };
 
 /// True for checker, hexagon, brick, square, triangular and cubic (a list of 2 to 6 colours, no
@@ -62,6 +64,7 @@ struct PatternParams {
     const DensityGrid* grid = nullptr;      ///< DensityFile: the grid (kept alive by the PigmentTable)
     int interpolate = 0;                    ///< DensityFile: 0 nearest, 1 trilinear, 2 tricubic
     int tiling = 1;                         ///< Tiling: the tiling's number (1 to 27)
+    Pavement pavement;                      ///< Pavement: its tile and corners
 };
 
 /// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type

@@ -29,6 +29,8 @@ public:
     /// Sets the bevel width to the smallest tile's inradius (its vertices' mean's distance to its
     /// edges: the tiles are regular polygons, rectangles and rhombi).
     void finish();
+    /// Sets the bevel width.
+    void finish(double bevel) { bevel_ = bevel; }
 
     /// The value at (x, z), in [0, 1].
     double value(double x, double z) const;

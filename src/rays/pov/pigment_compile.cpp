@@ -61,6 +61,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::slope: out = PatternKind::Slope; return true;
         case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
         case Kw::tiling: out = PatternKind::Tiling; return true;
+        case Kw::pavement: out = PatternKind::Pavement; return true;
         default: return false;
     }
 }
@@ -119,6 +120,7 @@ struct PigmentCompiler::State {
     const char* what = "pigment";  ///< for notes: "pigment pattern X" or "texture pattern X"
     bool normal = false;           ///< reading a normal: its specialised patterns are accepted
     bool density = false;          ///< reading a media's density (unrendered patterns give 0)
+    const Entry* pavement = nullptr;  ///< the pavement keyword (its modifiers are checked once all are read)
 };
 
 PigmentCompiler::PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes, pattern::NormalTable* normals)
@@ -132,10 +134,24 @@ int PigmentCompiler::compileNormal(const Item& normal) {
     return normals_->compile(normal);
 }
 
+// A pavement whose tile or corners Rays does not draw: noted, the pigment left flat.
+void PigmentCompiler::checkPavement(State& s) {
+    if (!s.pattern || s.node.kind != PatternKind::Pavement || !s.pavement) return;
+    const pattern::Pavement& m = s.node.params.pavement;
+    if (pattern::pavementDrawn(m)) return;
+    s.pattern = false;
+    s.unrendered = true;
+    notes_.note(std::string(s.what) + " pattern pavement number_of_sides " + std::to_string(m.sides) +
+                    " number_of_tiles " + std::to_string(m.tiles) + " exterior " + std::to_string(m.exterior) +
+                    " form " + std::to_string(m.form),
+                s.pavement->loc, s.density ? "(density 0: no media there)" : "(drawn in its mean colour)");
+}
+
 int PigmentCompiler::compile(const Item& pigment) {
     if (const auto it = done_.find(&pigment); it != done_.end()) return it->second;
     State s;
     read(pigment, s, 0);
+    checkPavement(s);
     const int n = s.pattern && !s.unrendered ? emit(s) : -1;
     done_.emplace(&pigment, n);
     return n;
@@ -144,6 +160,7 @@ int PigmentCompiler::compile(const Item& pigment) {
 int PigmentCompiler::compileFunction(const Item& item) {
     State s;
     read(item, s, 0);
+    checkPavement(s);
     return s.unrendered ? -1 : emit(s);
 }
 
@@ -155,6 +172,7 @@ int PigmentCompiler::compileDensity(const Item& density) {
     s.density = true;
     s.node.color = pattern::Rgbft{Vec3(1.0), 0, 0};
     read(density, s, 0);
+    checkPavement(s);
     if (s.unrendered) {  // a pattern Rays does not render (noted): no media there rather than a guess
         s.pattern = false;
         s.node.color = pattern::Rgbft{};
@@ -166,6 +184,7 @@ int PigmentCompiler::compileDensity(const Item& density) {
 int PigmentCompiler::nested(const Item& pigment, int depth) {
     State s;
     read(pigment, s, depth + 1);
+    checkPavement(s);
     if (s.unrendered) s.pattern = false;
     return emit(s);
 }
@@ -284,6 +303,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         // The number of arms is cut to an integer (measured: spiral1 1.5 and spiral2 1.5 are 1's).
         if (kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2) s.node.params.arms = std::trunc(toFloat(e.args[0]));
         if (kind == PatternKind::Tiling) s.node.params.tiling = int(num(0));
+        s.pavement = kind == PatternKind::Pavement ? &e : nullptr;
         if (kind == PatternKind::Slope) s.node.params.slope = readSlope(e.args[0]);
         if (kind == PatternKind::PigmentPattern) s.node.params.source = nested(e.args[0].item(), depth);
         if (kind == PatternKind::Function) {
@@ -362,11 +382,17 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::control0: pp.quilt.control0 = num(0); break;
         case Kw::control1: pp.quilt.control1 = num(0); break;
         case Kw::exponent: pp.exponent = int(std::clamp(num(0), 2.0, 33.0)); break;
+        case Kw::number_of_sides: pp.pavement.sides = int(num(0)); break;
+        case Kw::number_of_tiles: pp.pavement.tiles = int(num(0)); break;
+        case Kw::pattern: pp.pavement.pattern = int(num(0)); break;
+        case Kw::form: pp.pavement.form = int(num(0)); break;
         case Kw::exterior:
+            pp.pavement.exterior = int(num(0));
             pp.exterior = int(num(0));
             pp.exteriorFactor = e.args.size() > 1 ? num(1) : 1;
             break;
         case Kw::interior:
+            pp.pavement.interior = int(num(0));
             pp.interior = int(num(0));
             pp.interiorFactor = e.args.size() > 1 ? num(1) : 1;
             break;
@@ -536,6 +562,7 @@ int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Pla
         if (k == Kw::texture || k == Kw::texture_map || k == Kw::pigment || k == Kw::normal || k == Kw::finish) continue;
         readEntry(e, s, 0);
     }
+    checkPavement(s);
     if (!s.pattern || s.unrendered || entries.empty()) return -1;
     std::vector<MapEntry> list;
     for (size_t i = 0; i < entries.size(); ++i)

@@ -72,6 +72,7 @@ private:
     void readColorMap(const Item& map, State& s, int depth);
     void readPigmentMap(const Item& map, State& s, int depth);
     int emit(State& s);
+    void checkPavement(State& s);
     void place(const State& s, pattern::PigmentNode& node);
     int nested(const Item& pigment, int depth);
     int placed(const Placed& p);
