@@ -80,9 +80,11 @@ const std::vector<MeasuredPavement> kPavements = {
     {"number_of_sides 4 number_of_tiles 1 form 2", {{{5.972, 2.04, 5.948}, 0.944000}, {{2.494, -1.62, -2.217}, 0.566000}, {{-2.532, 1.6, -5.157}, 0.686000}, {{-1.195, -0.68, 4.159}, 0.682000}, {{5.497, -3.0, 4.168}, 0.664000}, {{-3.483, -0.18, 4.923}, 0.846000}}},
     {"number_of_sides 4 number_of_tiles 2 interior 2", {{{5.764, -2.56, -1.231}, 0.528000}, {{1.553, -1.38, 3.342}, 0.106000}, {{-4.954, 2.78, -2.009}, 0.982000}, {{3.096, -1.52, -4.584}, 0.808000}, {{-4.787, 1.78, -5.281}, 0.574000}, {{-3.868, -0.32, 0.712}, 0.736000}}},
     {"number_of_sides 6 number_of_tiles 1 exterior 2", {{{-3.712, -2.21, 2.783}, 0.000000}, {{1.725, -0.48, -4.602}, 0.795898}, {{-3.446, 2.83, -2.762}, 0.000000}, {{3.641, 2.31, -2.35}, 0.147319}, {{-3.471, 2.13, -1.269}, 0.000000}, {{1.702, 2.94, -4.796}, 0.799084}}},
+    {"number_of_sides 3 number_of_tiles 3 pattern 1", {{{-0.571, 2.55, 0.717}, 0.483761}, {{-0.412, 0.52, 0.094}, 0.674374}, {{-3.784, 0.78, 0.143}, 0.504633}, {{3.516, -1.18, -4.871}, 0.015181}, {{-4.912, 1.16, 3.716}, 0.127398}, {{-5.497, 2.79, 5.786}, 0.512646}}},
+    {"number_of_sides 4 number_of_tiles 3 pattern 1 form 1", {{{1.847, -2.06, 1.387}, 0.226000}, {{-5.82, -2.64, 0.341}, 0.640000}, {{-3.718, -2.82, -3.097}, 0.806000}, {{-0.433, 2.05, -0.714}, 0.428000}, {{0.229, -0.0, 1.684}, 0.542000}, {{1.949, -1.33, -0.512}, 0.024000}}},
 };
 
-TEST(PovTiling, PavementsOfOneOrTwoCellsMatchPovRay) {
+TEST(PovTiling, PavementsOfOneToThreeCellsMatchPovRay) {
     for (const MeasuredPavement& m : kPavements) {
         const std::string sdl = std::string("sphere { 0, 1 pigment { pavement ") + m.modifiers +
                                 " color_map { [0 rgb 0] [1 rgb 1] } } }";
@@ -94,7 +96,8 @@ TEST(PovTiling, PavementsOfOneOrTwoCellsMatchPovRay) {
 }
 
 TEST(PovTiling, OtherPavementsAreNoted) {
-    for (const char* mods : {"number_of_sides 4 number_of_tiles 3", "number_of_sides 3 exterior 1",
+    for (const char* mods : {"number_of_sides 4 number_of_tiles 3 pattern 2", "number_of_sides 6 number_of_tiles 2",
+                             "number_of_sides 3 exterior 1", "number_of_sides 3 number_of_tiles 3 interior 2",
                              "number_of_sides 6 number_of_tiles 1 form 1", "number_of_sides 3 number_of_tiles 2 form 2"}) {
         const test::PovLoaded b = test::loadPov(std::string("sphere { 0, 1 pigment { pavement ") + mods + " } }");
         ASSERT_EQ(b.warnings.size(), 1u) << mods;

@@ -16,6 +16,7 @@ struct Pavings {
     PolygonTiling triangle{{1, 0}, {0.5, kTriangleHeight}, 1}, rhombus{{1, 0}, {0.5, kTriangleHeight}, 1};
     PolygonTiling square{{1, 0}, {0, 1}, 1}, domino{{1, 0}, {0, 2}, 1};
     PolygonTiling hexagon{{1.5, kTriangleHeight}, {0, kSqrt3}, 1};
+    PolygonTiling trapezoid{{3, 0}, {0, 2 * kTriangleHeight}, 1}, bar{{3, 0}, {0, 1}, 1};
     Pavings() {
         // Triangles in rows √3/2 deep, bases on z = 0 from integer x (as tiling 3's).
         triangle.polygon(0, {{0, 0}, {1, 0}, {0.5, kTriangleHeight}});
@@ -30,6 +31,16 @@ struct Pavings {
         domino.finish(0.5);
         hexagon.regular(0, {1, 0}, 6, 0);  // two vertices on the x-axis, one about (1, 0)
         hexagon.finish(kTriangleBevel);
+        // Three triangles: trapezoids of bases 2 and 1, in rows √3/2 deep, pointing up and down in
+        // turn along a row, the next row turned the other way.
+        const double h = kTriangleHeight;
+        trapezoid.polygon(0, {{0, 0}, {2, 0}, {1.5, h}, {0.5, h}});
+        trapezoid.polygon(0, {{2, 0}, {3, 0}, {3.5, h}, {1.5, h}});
+        trapezoid.polygon(0, {{0.5, h}, {1.5, h}, {2, 2 * h}, {0, 2 * h}});
+        trapezoid.polygon(0, {{1.5, h}, {3.5, h}, {3, 2 * h}, {2, 2 * h}});
+        trapezoid.finish(kTriangleBevel);
+        bar.rectangle(0, {0, 0}, {3, 1});  // three squares, pattern 1: 3×1 bars along x, in columns
+        bar.finish(0.5);
     }
 };
 
@@ -42,8 +53,8 @@ const PolygonTiling* tiling(const Pavement& m) {
     if (!pavementDrawn(m)) return nullptr;
     const Pavings& p = pavings();
     switch (m.sides) {
-        case 3: return m.tiles == 1 ? &p.triangle : &p.rhombus;
-        case 4: return m.tiles == 1 ? &p.square : &p.domino;
+        case 3: return m.tiles == 1 ? &p.triangle : m.tiles == 2 ? &p.rhombus : &p.trapezoid;
+        case 4: return m.tiles == 1 ? &p.square : m.tiles == 2 ? &p.domino : &p.bar;
         default: return &p.hexagon;
     }
 }
@@ -51,12 +62,16 @@ const PolygonTiling* tiling(const Pavement& m) {
 }  // namespace
 
 bool pavementDrawn(const Pavement& m) {
-    // Measured: interior changes nothing for these tiles (they have no concave corner), nor does
-    // form for squares and single triangles, nor exterior for hexagons.
+    // Measured: interior changes nothing for these tiles but the trapezoids, nor does form for
+    // squares and single triangles, nor exterior for hexagons.
     const bool sharpForm = m.form == 0 || m.form == 3;
     switch (m.sides) {
-        case 3: return (m.tiles == 1 || m.tiles == 2) && m.exterior == 0 && (m.tiles == 1 || sharpForm);
-        case 4: return (m.tiles == 1 || m.tiles == 2) && m.exterior == 0;
+        case 3:
+            if (m.tiles == 3) return m.pattern == 1 && m.exterior == 0 && m.interior == 0 && sharpForm;
+            return (m.tiles == 1 || m.tiles == 2) && m.exterior == 0 && (m.tiles == 1 || sharpForm);
+        case 4:
+            if (m.tiles == 3) return m.pattern == 1 && m.exterior == 0;
+            return (m.tiles == 1 || m.tiles == 2) && m.exterior == 0;
         case 6: return m.tiles == 1 && sharpForm;
         default: return false;
     }

@@ -15,9 +15,10 @@ struct Pavement {
     int exterior = 0, interior = 0, form = 0;
 };
 
-/// True for the pavements drawn here: single tiles and pairs of triangles or squares (one pattern
-/// each), with the corners whose shape makes a difference there left sharp (exterior 0 for
-/// triangles and squares, form 0 or 3 for hexagons and triangle pairs).
+/// True for the pavements drawn here: single tiles, pairs of triangles or squares (one pattern
+/// each), three triangles (trapezoids) and three squares in a row (pattern 1), with the corners
+/// whose shape makes a difference there left sharp (exterior 0 for triangles and squares, form 0
+/// or 3 for hexagons and several triangles, interior 0 for trapezoids).
 bool pavementDrawn(const Pavement& m);
 
 /// The value of the pavement at p (y is ignored), in [0, 1]; 0 for a pavement not drawn.
