@@ -79,7 +79,7 @@ TEST(FuzzPovHarness, LimitsAreLoweredToKeepInputsShort) {
 }
 
 TEST(FuzzPovHarness, StrictModeOnOddSizesOnly) {
-    const std::string text = "sphere { 0,1 pigment { pavement } }";  // pavement is not rendered yet
+    const std::string text = "sphere { 0,1 pigment { tiling 26} }";  // the Penrose tilings are not rendered yet
     ASSERT_EQ(text.size() % 2, 1u);
     EXPECT_NO_THROW(rays::fuzz::parseFuzzPov(text + " "));
     EXPECT_THROW(rays::fuzz::parseFuzzPov(text), rays::Error);

@@ -146,10 +146,10 @@ TEST(PovIsosurface, NotANumberAndTooLowGradientsStillEnd) {
 }
 
 TEST(PovIsosurface, UnrenderedPatternFunctionsAreNotedAndLeftOut) {
-    // Rendered patterns are evaluated (tests/pov_pattern_function_test.cpp); pavement is not.
+    // Rendered patterns are evaluated (tests/pov_pattern_function_test.cpp); Penrose tiling 26 is not.
     std::vector<std::string> warnings;
     const Scene s = build(
-        "#declare P = function { pattern { pavement } }\n"
+        "#declare P = function { pattern { tiling 26 } }\n"
         "isosurface { function { P(x, y, z) - 0.5 } }\n"
         "sphere { 0, 1 }",
         &warnings);

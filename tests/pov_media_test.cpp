@@ -120,11 +120,11 @@ TEST(PovMedia, CheapDensitiesComeFirst) {
 // A density of a pattern Rays does not render is 0, and says so.
 TEST(PovMedia, UnrenderedDensityPatternsAreZero) {
     const test::PovLoaded l = test::loadPov(
-        slab("media { emission 1 density { pavement color_map { [0 rgb 1] [1 rgb 1] } } }"),
+        slab("media { emission 1 density { tiling 26 color_map { [0 rgb 1] [1 rgb 1] } } }"),
         "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n");
     expectColor(seen(l.scene, kEye), Vec3(0.0), 1e-12);
     ASSERT_FALSE(l.warnings.empty());
-    EXPECT_NE(l.warnings[0].find("density pattern pavement (density 0: no media there)"), std::string::npos) << l.warnings[0];
+    EXPECT_NE(l.warnings[0].find("density pattern tiling 26 (density 0: no media there)"), std::string::npos) << l.warnings[0];
 }
 
 // The media move with the object: a density translated with it.

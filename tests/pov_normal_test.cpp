@@ -126,9 +126,9 @@ TEST(PovNormal, IdentifiersBumpSizeAndPlacesOfTheNormal) {
 
 TEST(PovNormal, UnrenderedNormalsAreNotedAndDrawnSmooth) {
     const Loaded l = load("light_source { <1, 0, -1>*1000 color 1 parallel point_at 0 }\n"
-                          "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { pavement 0.5 } }\n");
+                          "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { tiling 26 } }\n");
     ASSERT_EQ(l.warnings.size(), 1u);
-    EXPECT_EQ(l.warnings[0], "scene.pov:4:76: warning: not rendered yet: normal pattern pavement (drawn smooth)");
+    EXPECT_EQ(l.warnings[0], "scene.pov:4:76: warning: not rendered yet: normal pattern tiling 26 (drawn smooth)");
     EXPECT_NEAR(seen(l.scene, 0.35, 0.2).x, std::sqrt(0.5), 1e-9);
 }
 

@@ -112,7 +112,7 @@ TEST(PovPatternFunction, CalledWhileParsingToPlaceObjects) {
 
 TEST(PovPatternFunction, UnrenderedPatternsStillGiveZeroWithAWarning) {
     const test::PovLoaded l = test::loadPov(
-        "#declare S = function { pattern { pavement } }\n"
+        "#declare S = function { pattern { tiling 26 } }\n"
         "#declare V = S(0.3, 0.2, 0.1);\n");
     ASSERT_EQ(l.warnings.size(), 1u);
     EXPECT_NE(l.warnings[0].find("called while parsing (they give 0)"), std::string::npos) << l.warnings[0];

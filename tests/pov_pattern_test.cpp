@@ -73,7 +73,7 @@ TEST(PovPattern, FunctionPatternsRunTheUserFunction) {
     expectValues("function { 1 } phase 0.0001", {{{0, 0, 0}, 0.00009}});
     expectValues("function { 2 } phase 0.0001", {{{0, 0, 0}, 0.0001}});
     // A pattern function of a pattern Rays does not render gives 0: a function calling one is noted.
-    const Built b = build("#declare P = function { pattern { pavement } }\n"
+    const Built b = build("#declare P = function { pattern { tiling 26 } }\n"
                           "sphere { 0, 1 pigment { function { P(x, y, z) } } }");
     EXPECT_EQ(b.scene.povSurfaces.at(0).pigment, -1);
     ASSERT_EQ(b.warnings.size(), 1u);
@@ -596,10 +596,10 @@ TEST(PovPattern, RenderedPatternsAreNotNotedUnrenderedOnesAre) {
     const Probe checker = pigment("checker rgb 1, rgb 0");
     EXPECT_TRUE(checker.b.warnings.empty());
     EXPECT_EQ(checker.b.scene.objects[0].material.color, Vec3(0.5));  // the mean stays the flat colour
-    const Probe pavement = pigment("pavement");
+    const Probe pavement = pigment("tiling 26");
     EXPECT_EQ(pavement.surface().pigment, -1);
     ASSERT_EQ(pavement.b.warnings.size(), 1u);
-    EXPECT_NE(pavement.b.warnings[0].find("pigment pattern pavement (drawn in its mean colour)"), std::string::npos);
+    EXPECT_NE(pavement.b.warnings[0].find("pigment pattern tiling 26 (drawn in its mean colour)"), std::string::npos);
 }
 
 TEST(PovPattern, NoisePatternsStayInRangeAndRepeat) {

@@ -257,12 +257,12 @@ TEST(PovNotes, UnrenderedFeaturesWarnOnceEachOrFailWithStrict) {
     const std::string text =
         "#declare Unused = isosurface { function { x } }\n"  // declared, never used: no note
         "julia_fractal { <0, 0, 0, 0> exp }\njulia_fractal { <0, 0, 1, 0> exp }\n"  // quaternion exp
-        "sphere { 0, 1 pigment { pavement color_map { [0 rgb 0] [1 rgb 1] } } }\n";
+        "sphere { 0, 1 pigment { tiling 26 color_map { [0 rgb 0] [1 rgb 1] } } }\n";
     const Built b = build(text);
     ASSERT_EQ(b.error, "");
     ASSERT_EQ(b.warnings.size(), 2u);
     EXPECT_EQ(b.warnings[0], "scene.pov:2:1: warning: not rendered yet: julia_fractal (left out)");
-    EXPECT_EQ(b.warnings[1], "scene.pov:4:25: warning: not rendered yet: pigment pattern pavement (drawn in its mean colour)");
+    EXPECT_EQ(b.warnings[1], "scene.pov:4:25: warning: not rendered yet: pigment pattern tiling 26 (drawn in its mean colour)");
     ASSERT_EQ(b.scene.objects.size(), 1u);
     EXPECT_TRUE(near(b.scene.objects[0].material.color, {0.5, 0.5, 0.5}));
     EXPECT_EQ(build(text, true).error, "scene.pov:2:1: error: not rendered yet: julia_fractal (--strict)");

@@ -16,6 +16,7 @@
 #include "rays/pattern/magnet.h"
 #include "rays/pattern/ripples.h"
 #include "rays/pattern/tiles.h"
+#include "rays/pattern/tiling.h"
 
 namespace rays::pattern {
 namespace {
@@ -267,6 +268,8 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 
         case PatternKind::Spiral2: return spiral2(params.arms, p);
         case PatternKind::Quilted: return quiltedValue(params.quilt, p);
         case PatternKind::Slope: return slopeValue(params.slope, p, N);
+        case PatternKind::Tiling: return tilingValue(params.tiling, p);
+        case PatternKind::Pavement: return pavementValue(params.pavement, p);
         case PatternKind::DensityFile: return params.grid ? params.grid->at(p, params.interpolate) : 0;
         case PatternKind::Function: {
             // Wrapped above 1 like gradient (measured: 1.2 gives 0.2 under triangle_wave 0.4).

@@ -9,6 +9,7 @@
 #include "rays/pattern/density_file.h"
 #include "rays/pattern/noise.h"
 #include "rays/pattern/object_pattern.h"
+#include "rays/pattern/pavement.h"
 #include "rays/pattern/quilted.h"
 #include "rays/pattern/slope.h"
 
@@ -36,6 +37,8 @@ enum class PatternKind : uint8_t {
     DensityFile,  ///< density_file df3: a DF3 grid over the unit cube (pattern/density_file.h)
     ImagePattern,  ///< image_pattern: the grey of PigmentTable::images[node.image] (ImageMap::value)
     Object,  ///< object: a list of two, outside and inside an object (pattern/object_pattern.h)
+    Tiling,    ///< tiling N: one of 27 bevelled tilings of the x-z plane (pattern/tiling.h)
+    Pavement,  ///< pavement: the x-z plane paved with one polyform (pattern/pavement.h)
 };
 
 /// True for checker, hexagon, brick, square, triangular, cubic and object (a list of 2 to 6
@@ -65,6 +68,8 @@ struct PatternParams {
     const DensityGrid* grid = nullptr;      ///< DensityFile: the grid (kept alive by the PigmentTable)
     int interpolate = 0;                    ///< DensityFile: 0 nearest, 1 trilinear, 2 tricubic
     const PatternObject* object = nullptr;  ///< Object: the inside test (kept alive by the PigmentTable)
+    int tiling = 1;                         ///< Tiling: the tiling's number (1 to 27)
+    Pavement pavement;                      ///< Pavement: its tile and corners
 };
 
 /// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type

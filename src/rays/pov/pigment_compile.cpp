@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rays/pattern/default_maps.h"
+#include "rays/pattern/tiling.h"
 #include "rays/pov/normal_compile.h"
 #include "rays/pov/grammar.h"
 #include "rays/pov/specs.h"
@@ -59,6 +60,8 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::quilted: out = PatternKind::Quilted; return true;
         case Kw::slope: out = PatternKind::Slope; return true;
         case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
+        case Kw::tiling: out = PatternKind::Tiling; return true;
+        case Kw::pavement: out = PatternKind::Pavement; return true;
         default: return false;
     }
 }
@@ -119,6 +122,7 @@ struct PigmentCompiler::State {
     const char* what = "pigment";  ///< for notes: "pigment pattern X" or "texture pattern X"
     bool normal = false;           ///< reading a normal: its specialised patterns are accepted
     bool density = false;          ///< reading a media's density (unrendered patterns give 0)
+    const Entry* pavement = nullptr;  ///< the pavement keyword (its modifiers are checked once all are read)
 };
 
 PigmentCompiler::PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes, pattern::NormalTable* normals)
@@ -137,10 +141,24 @@ int PigmentCompiler::compileNormal(std::shared_ptr<const Item> made) {
     return compileNormal(*made_.back());
 }
 
+// A pavement whose tile or corners Rays does not draw: noted, the pigment left flat.
+void PigmentCompiler::checkPavement(State& s) {
+    if (!s.pattern || s.node.kind != PatternKind::Pavement || !s.pavement) return;
+    const pattern::Pavement& m = s.node.params.pavement;
+    if (pattern::pavementDrawn(m)) return;
+    s.pattern = false;
+    s.unrendered = true;
+    notes_.note(std::string(s.what) + " pattern pavement number_of_sides " + std::to_string(m.sides) +
+                    " number_of_tiles " + std::to_string(m.tiles) + " exterior " + std::to_string(m.exterior) +
+                    " form " + std::to_string(m.form),
+                s.pavement->loc, s.density ? "(density 0: no media there)" : "(drawn in its mean colour)");
+}
+
 int PigmentCompiler::compile(const Item& pigment) {
     if (const auto it = done_.find(&pigment); it != done_.end()) return it->second;
     State s;
     read(pigment, s, 0);
+    checkPavement(s);
     const int n = s.pattern && !s.unrendered ? emit(s) : -1;
     done_.emplace(&pigment, n);
     return n;
@@ -149,6 +167,7 @@ int PigmentCompiler::compile(const Item& pigment) {
 int PigmentCompiler::compileFunction(const Item& item) {
     State s;
     read(item, s, 0);
+    checkPavement(s);
     return s.unrendered ? -1 : emit(s);
 }
 
@@ -160,6 +179,7 @@ int PigmentCompiler::compileDensity(const Item& density) {
     s.density = true;
     s.node.color = pattern::Rgbft{Vec3(1.0), 0, 0};
     read(density, s, 0);
+    checkPavement(s);
     if (s.unrendered) {  // a pattern Rays does not render (noted): no media there rather than a guess
         s.pattern = false;
         s.node.color = pattern::Rgbft{};
@@ -171,6 +191,7 @@ int PigmentCompiler::compileDensity(const Item& density) {
 int PigmentCompiler::nested(const Item& pigment, int depth) {
     State s;
     read(pigment, s, depth + 1);
+    checkPavement(s);
     if (s.unrendered) s.pattern = false;
     return emit(s);
 }
@@ -257,7 +278,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
     PatternKind kind;
     // slope reads the surface normal: as a normal pattern it is not rendered (noted below).
-    const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope);
+    // tiling N: the Penrose tilings (25 to 27) are not drawn (noted below).
+    const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope) &&
+                       !(kind == PatternKind::Tiling && !pattern::tilingDrawn(int(num(0))));
     if (known) {
         s.pattern = true;
         s.unrendered = false;
@@ -286,6 +309,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         }
         // The number of arms is cut to an integer (measured: spiral1 1.5 and spiral2 1.5 are 1's).
         if (kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2) s.node.params.arms = std::trunc(toFloat(e.args[0]));
+        if (kind == PatternKind::Tiling) s.node.params.tiling = int(num(0));
+        s.pavement = kind == PatternKind::Pavement ? &e : nullptr;
         if (kind == PatternKind::Slope) s.node.params.slope = readSlope(e.args[0]);
         if (kind == PatternKind::PigmentPattern) s.node.params.source = nested(e.args[0].item(), depth);
         if (kind == PatternKind::Function) {
@@ -336,7 +361,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     if (isPatternType(k) || k == Kw::image_map) {
         s.unrendered = true;
         s.pattern = false;
-        notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)), e.loc,
+        const std::string number = k == Kw::tiling ? " " + std::to_string(int(num(0))) : "";
+        notes_.note(std::string(s.what) + " pattern " + std::string(sdl::keywordName(k)) + number, e.loc,
                     s.normal ? "(drawn smooth)" : s.density ? "(density 0: no media there)" : "(drawn in its mean colour)");
         return;
     }
@@ -368,11 +394,17 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::control0: pp.quilt.control0 = num(0); break;
         case Kw::control1: pp.quilt.control1 = num(0); break;
         case Kw::exponent: pp.exponent = int(std::clamp(num(0), 2.0, 33.0)); break;
+        case Kw::number_of_sides: pp.pavement.sides = int(num(0)); break;
+        case Kw::number_of_tiles: pp.pavement.tiles = int(num(0)); break;
+        case Kw::pattern: pp.pavement.pattern = int(num(0)); break;
+        case Kw::form: pp.pavement.form = int(num(0)); break;
         case Kw::exterior:
+            pp.pavement.exterior = int(num(0));
             pp.exterior = int(num(0));
             pp.exteriorFactor = e.args.size() > 1 ? num(1) : 1;
             break;
         case Kw::interior:
+            pp.pavement.interior = int(num(0));
             pp.interior = int(num(0));
             pp.interiorFactor = e.args.size() > 1 ? num(1) : 1;
             break;
@@ -579,6 +611,7 @@ int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Pla
         if (k == Kw::texture || k == Kw::texture_map || k == Kw::pigment || k == Kw::normal || k == Kw::finish) continue;
         readEntry(e, s, 0);
     }
+    checkPavement(s);
     if (!s.pattern || s.unrendered || entries.empty()) return -1;
     std::vector<MapEntry> list;
     for (size_t i = 0; i < entries.size(); ++i)

@@ -81,6 +81,7 @@ private:
     /// `object { OBJECT A, B }`: the pattern and its list (colours, pigments or densities).
     void readObjectPattern(const Entry& e, State& s, int depth);
     int emit(State& s);
+    void checkPavement(State& s);
     void place(const State& s, pattern::PigmentNode& node);
     int nested(const Item& pigment, int depth);
     int placed(const Placed& p);
