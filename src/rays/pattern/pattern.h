@@ -34,6 +34,7 @@ enum class PatternKind : uint8_t {
     ImageMap,  ///< an image_map: PigmentTable::images[node.image]
     DensityFile,  ///< density_file df3: a DF3 grid over the unit cube (pattern/density_file.h)
     ImagePattern,  ///< image_pattern: the grey of PigmentTable::images[node.image] (ImageMap::value)
+    MaterialMap,   ///< material_map: the texel's index in PigmentTable::images[node.image] picks the entry
 };
 
 /// True for checker, hexagon, brick, square, triangular and cubic (a list of 2 to 6 colours, no
