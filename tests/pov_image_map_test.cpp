@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "rays/io/image_io.h"
 #include "support/pov_scene.h"
 #include "support/process.h"
+#include "support/tiny_images.h"
 
 namespace rays {
 namespace {
@@ -248,6 +250,72 @@ TEST(PovHeightField, FunctionSmoothWaterLevelAndCsgInside) {
     const Scene c = test::buildPov(
         "intersection { height_field { function 3, 3 { 0.5 } } sphere { <0.5, 0.5, 0.5>, 0.3 } }");
     EXPECT_NEAR(5 - test::shootPov(c, {0.5, 5, 0.5}, {0, -1, 0}).t, 0.5, 1e-9);
+}
+
+TEST(PovImageMap, MaterialMapPicksATextureByPaletteIndex) {
+    test::TempDir dir;
+    // A 9 × 1 palette image of indices 0 1 2 6 7 8 9 10 11 under three textures: index modulo 3
+    // (measured with POV-Ray 3.7 on a 16 × 1 image of indices 0..15: red green blue from index 6
+    // on; indices 3, 4, 5 gave blue, green, blue, index 3 unexplained and not reproduced).
+    const std::string path = (dir.path() / "mm.png").string();
+    test::Palette pal(16, {0, 0, 0});
+    for (int i = 0; i < 16; ++i) pal[size_t(i)] = {uint8_t(16 * i), uint8_t(16 * i), uint8_t(16 * i)};
+    test::writePalettePng(path, 9, 1, {0, 1, 2, 6, 7, 8, 9, 10, 11}, pal, 4);
+    const Scene s = test::loadPov("plane { -z, 0 texture { material_map { png \"" + path +
+                                  "\" texture { pigment { rgb <1,0,0> } } texture { pigment { rgb <0,1,0> } }"
+                                  " texture { pigment { rgb <0,0,1> } } } } }")
+                        .scene;
+    const Vec3 want[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int i = 0; i < 9; ++i) {
+        const Vec3 c = pigmentAt(s, {(i + 0.5) / 9, 0.5, 0}).rgb;
+        EXPECT_NEAR(length(c - want[i % 3]), 0, 1e-9) << i;
+    }
+    // The map repeats over the plane as an image_map does.
+    EXPECT_NEAR(length(pigmentAt(s, {1 + 1.5 / 9, 0.5, 0}).rgb - want[1]), 0, 1e-9);
+}
+
+TEST(PovImageMap, GifTexelsAreTheirPaletteColours) {
+    test::TempDir dir;
+    const std::string path = (dir.path() / "t.gif").string();
+    test::writeGif(path, 2, 2, {0, 1, 2, 1}, {{0, 0, 0}, {255, 255, 255}, {255, 0, 0}});
+    const Scene s = withMap(path, "", "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n");
+    EXPECT_NEAR(length(pigmentAt(s, {0.25, 0.75, 0}).rgb - Vec3{0, 0, 0}), 0, 1e-6);
+    EXPECT_NEAR(length(pigmentAt(s, {0.75, 0.75, 0}).rgb - Vec3{1, 1, 1}), 0, 1e-6);
+    EXPECT_NEAR(length(pigmentAt(s, {0.25, 0.25, 0}).rgb - Vec3{1, 0, 0}), 0, 1e-6);
+}
+
+TEST(PovHeightField, PotFilesHoldSixteenBitHeightsInTwoHalves) {
+    test::TempDir dir;
+    // A 2 × 2 field: the left half holds the high bytes, the right half the low bytes.
+    const std::string path = (dir.path() / "f.pot").string();
+    test::Palette pal(256);
+    for (int i = 0; i < 256; ++i) pal[size_t(i)] = {uint8_t(i), uint8_t(i), uint8_t(i)};
+    test::writeGif(path, 4, 2, {128, 128, 0, 0, 128, 128, 0, 0}, pal);
+    const Scene s = test::buildPov("height_field { pot \"" + path + "\" }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_NEAR(5 - test::shootPov(s, {0.3, 5, 0.6}, {0, -1, 0}).t, 32768 / 65536.0, 1e-9);
+    const std::string path2 = (dir.path() / "g.pot").string();
+    test::writeGif(path2, 4, 2, {1, 1, 2, 2, 1, 1, 2, 2}, pal);  // high byte 1, low byte 2
+    const Scene s2 = test::buildPov("height_field { pot \"" + path2 + "\" }");
+    EXPECT_NEAR(5 - test::shootPov(s2, {0.3, 5, 0.6}, {0, -1, 0}).t, 258 / 65536.0, 1e-9);
+}
+
+TEST(PovHeightField, MtmandPotHeightsMatchPovRaysTrace) {
+    const std::string pot = "/usr/share/povray-3.7/include/mtmand.pot";
+    if (!std::filesystem::exists(pot)) GTEST_SKIP() << pot << " is not installed";
+    const Scene s = test::buildPov("height_field { pot \"" + pot + "\" }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    // POV-Ray 3.7's trace() straight down onto grid points (column i / 159, row j / 119) of the
+    // 160 × 120 field, its heights × 65535 printed with #debug.
+    struct Point {
+        int i, j;
+        double y;
+    };
+    for (const Point& p : {Point{1, 1, 22983.649}, Point{158, 118, 255.996}, Point{100, 30, 64675.013},
+                           Point{2, 117, 28481.565}, Point{157, 3, 46871.285}, Point{120, 90, 31674.517},
+                           Point{70, 20, 53806.179}, Point{10, 5, 27745.577}})
+        EXPECT_NEAR((5 - test::shootPov(s, {p.i / 159.0, 5, p.j / 119.0}, {0, -1, 0}).t) * 65535, p.y, 2e-3)
+            << p.i << " " << p.j;
 }
 
 }  // namespace

@@ -10,8 +10,11 @@
 #include <string>
 
 #include "rays/accel/bvh.h"
+#include "rays/io/image_io.h"
 #include "rays/pov/load_pov.h"
 #include "support/pov_scene.h"
+#include "support/process.h"
+#include "support/tiny_images.h"
 #include "rays/render/renderer.h"
 #include "rays/render/tracer.h"
 
@@ -263,6 +266,92 @@ TEST(PovNormal, ABlockWithoutAPatternModifiesTheNormalBelow) {
     EXPECT_NEAR(seen(two.scene, 0.35, 0.2).x, 0.5284, 4e-3);
     // A block with its own pattern replaces the normal below.
     EXPECT_NEAR(brightness("gradient x 2"), 0.5010, kMeasured);
+}
+
+// A 5 × 5 black image with one white texel (2, 2) (top row first).
+std::string dotImage(const test::TempDir& dir) {
+    Image8 img(5, 5, 1);
+    img.pixels[12] = 255;
+    const std::string path = (dir.path() / "dot.png").string();
+    writeImage(path, img);
+    return path;
+}
+
+// The normal of the plane's bump_map at (x, y) for the surface normal n0 (the plane through the origin).
+Vec3 bumpNormal(const std::string& bumpMap, double x, double y, Vec3 n0 = {0, 0, -1}) {
+    const Loaded l = load("plane { -z, 0 pigment { rgb 1 } normal { bump_map { " + bumpMap + " } } }");
+    const PovSurface& s = l.scene.povSurfaces.at(size_t(l.scene.objects.at(0).material.pov));
+    EXPECT_GE(s.normal, 0);
+    EXPECT_TRUE(l.warnings.empty());
+    if (s.normal < 0) return n0;
+    n0 = normalize(n0);
+    const double z = -(n0.x * x + n0.y * y) / n0.z;
+    return l.scene.normals.atRoot(l.scene.pigments, s.normal, {x, y, z}, n0);
+}
+
+void expectNormal(Vec3 n, Vec3 want, double tol = 1e-4) {
+    EXPECT_NEAR(n.x, want.x, tol);
+    EXPECT_NEAR(n.y, want.y, tol);
+    EXPECT_NEAR(n.z, want.z, tol);
+}
+
+// Normals measured with POV-Ray 3.7 on a plane facing −z lit in turn by three parallel lights
+// (16-bit output, 10 × 10 pixels over the unit square; texel (2, 2) is white).
+TEST(PovNormal, BumpMapTiltsByThreeTapsOneTexelApart) {
+    test::TempDir dir;
+    const std::string png = "png \"" + dotImage(dir) + "\" ";
+    // The white texel itself, and the texels up-left and up-right of it (it is one row down, one
+    // column across from them); the texels beside and above it stay flat.
+    expectNormal(bumpNormal(png + "bump_size 0.5", 0.55, 0.45), {0, -0.44721, -0.89442});
+    expectNormal(bumpNormal(png + "bump_size 0.5", 0.35, 0.65), {-0.23570, 0.23570, -0.94281});
+    expectNormal(bumpNormal(png + "bump_size 0.5", 0.75, 0.65), {0.23570, 0.23570, -0.94281});
+    expectNormal(bumpNormal(png + "bump_size 0.5", 0.35, 0.45), {0, 0, -1});
+    expectNormal(bumpNormal(png + "bump_size 0.5", 0.55, 0.65), {0, 0, -1});
+    // bump_size 1 (tilt 1) and its default, 0.5.
+    expectNormal(bumpNormal(png + "bump_size 1", 0.55, 0.45), {0, -0.70711, -0.70711});
+    expectNormal(bumpNormal(png, 0.55, 0.45), {0, -0.44721, -0.89442});
+    // interpolate 2: the three heights interpolated bilinearly (POV-Ray's pixel (3, 3), (1, 1), (1, 2)).
+    expectNormal(bumpNormal(png + "bump_size 0.5 interpolate 2", 0.35, 0.65), {-0.138, 0.108, -0.984}, 1.5e-3);
+    expectNormal(bumpNormal(png + "bump_size 0.5 interpolate 2", 0.15, 0.85), {-0.016, 0.016, -1.000}, 1.5e-3);
+    expectNormal(bumpNormal(png + "bump_size 0.5 interpolate 2", 0.35, 0.45), {0, -0.093, -0.996}, 1.5e-3);
+}
+
+TEST(PovNormal, BumpMapTiltsInTheTangentPlaneAlongTheTexturesY) {
+    test::TempDir dir;
+    const std::string bump = "png \"" + dotImage(dir) + "\" bump_size 0.5";
+    // Planes tilted about y, x and both (POV-Ray's normals at the same pixels as above).
+    expectNormal(bumpNormal(bump, 0.55, 0.45, {0.3, 0, -1}), {0.257, -0.447, -0.857}, 1e-3);
+    expectNormal(bumpNormal(bump, 0.35, 0.65, {0.3, 0, -1}), {0.045, 0.236, -0.971}, 1e-3);
+    expectNormal(bumpNormal(bump, 0.55, 0.45, {0, 0.3, -1}), {0, -0.171, -0.985}, 1e-3);
+    expectNormal(bumpNormal(bump, 0.55, 0.45, {0.3, 0.3, -1}), {0.28250, -0.18279, -0.94168}, 1e-4);
+    expectNormal(bumpNormal(bump, 0.35, 0.65, {0.3, 0.3, -1}), {0.01592, 0.48692, -0.87330}, 1e-4);
+    expectNormal(bumpNormal(bump, 0.75, 0.65, {0.3, 0.3, -1}), {0.46743, 0.48692, -0.73785}, 1e-4);
+    expectNormal(bumpNormal(bump, 0.35, 0.65, {0.6, -0.4, -1}), {0.29605, -0.08295, -0.95157}, 1e-4);
+}
+
+TEST(PovNormal, BumpMapHeightsAreGreyBytesOrPaletteIndices) {
+    test::TempDir dir;
+    // A red texel reads as 0.297 (tilt 0.297), grey 128 as 128/255 (no gamma), a palette texel with
+    // use_index as its index itself: 5 tilts by atan 5 (all at bump_size 1, POV-Ray's centre normals).
+    Image8 red(5, 5, 3);
+    red.pixels[12 * 3] = 255;
+    writeImage((dir.path() / "red.png").string(), red);
+    Image8 grey(5, 5, 1);
+    grey.pixels[12] = 128;
+    writeImage((dir.path() / "g128.png").string(), grey);
+    std::vector<uint8_t> idx(25, 0);
+    idx[12] = 5;
+    test::Palette pal(16, {0, 0, 0});
+    pal[5] = {255, 255, 255};
+    test::writePalettePng((dir.path() / "pal5.png").string(), 5, 5, idx, pal, 4);
+    const auto file = [&](const char* name) { return "png \"" + (dir.path() / name).string() + "\" bump_size 1 "; };
+    expectNormal(bumpNormal(file("red.png"), 0.55, 0.45), {0, -0.28471, -0.95862});
+    expectNormal(bumpNormal(file("g128.png"), 0.55, 0.45), {0, -0.44860, -0.89372});
+    // interpolate 4: the three heights by image_map's normalised distance.
+    expectNormal(bumpNormal(file("g128.png") + "interpolate 4", 0.55, 0.45), {0, -0.31524, -0.94900});
+    expectNormal(bumpNormal(file("g128.png") + "interpolate 4", 0.35, 0.65), {-0.16253, 0.12640, -0.97858});
+    expectNormal(bumpNormal(file("pal5.png") + "use_index", 0.55, 0.45), {0, -0.98058, -0.19612});
+    expectNormal(bumpNormal(file("pal5.png"), 0.55, 0.45), {0, -0.70711, -0.70711});
 }
 
 }  // namespace

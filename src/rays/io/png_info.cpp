@@ -52,9 +52,11 @@ PngInfo readPngInfo(const std::string& path) {
     return pngInfoOf(bytes.data(), bytes.size());
 }
 
-bool readPngSamples(const std::string& path, PngSamples& out) {
+bool readPngSamples(const std::string& path, PngSamples& out, bool packedPalettes) {
     const PngInfo info = readPngInfo(path);
-    if (!info.png || (info.bitDepth != 8 && info.bitDepth != 16)) return false;
+    if (!info.png) return false;
+    const bool packed = packedPalettes && info.colorType == 3 && info.bitDepth < 8;
+    if (!packed && info.bitDepth != 8 && info.bitDepth != 16) return false;
     if (info.colorType != 0 && info.colorType != 3 && info.colorType != 4) return false;
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) return false;
@@ -72,6 +74,21 @@ bool readPngSamples(const std::string& path, PngSamples& out) {
     std::vector<uint8_t> raw(size);
     if (spng_decode_image(ctx.get(), raw.data(), size, SPNG_FMT_RAW, 0) != 0) return false;
     const size_t n = size_t(ihdr.width) * ihdr.height;
+    if (packed) {  // 1, 2 or 4 bits an index, the leftmost pixel in the high bits, rows byte-aligned
+        const size_t depth = ihdr.bit_depth, rowBytes = (size_t(ihdr.width) * depth + 7) / 8;
+        if (raw.size() < rowBytes * ihdr.height) return false;
+        out.width = int(ihdr.width);
+        out.height = int(ihdr.height);
+        out.maxValue = 255;
+        out.samples.resize(n);
+        for (size_t y = 0; y < ihdr.height; ++y)
+            for (size_t x = 0; x < ihdr.width; ++x) {
+                const size_t bit = x * depth;
+                const uint8_t b = raw[y * rowBytes + bit / 8];
+                out.samples[y * ihdr.width + x] = uint16_t((b >> (8 - depth - bit % 8)) & ((1u << depth) - 1));
+            }
+        return true;
+    }
     const size_t bytes = ihdr.bit_depth / 8, perPixel = bytes * (ihdr.color_type == 4 ? 2 : 1);
     if (raw.size() < n * perPixel) return false;
     out.width = int(ihdr.width);

@@ -33,7 +33,8 @@ struct PngSamples {
 };
 
 /// The samples of a PNG file of colour type grey, grey + alpha or palette with 8- or 16-bit
-/// samples; false for other files (colour images, 1–4 bit samples, not a PNG, unreadable).
-bool readPngSamples(const std::string& path, PngSamples& out);
+/// samples, and with packedPalettes palette images of 1, 2 or 4 bits too (maxValue 255); false for
+/// other files (colour images, 1–4 bit samples, not a PNG, unreadable).
+bool readPngSamples(const std::string& path, PngSamples& out, bool packedPalettes = false);
 
 }  // namespace rays

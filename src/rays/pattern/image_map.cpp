@@ -161,7 +161,22 @@ double ImageMap::texelValue(int x, int y) const {
 double ImageMap::value(Vec3 p) const {
     double u = 0, v = 0;
     if (!image || image->width <= 0 || image->height <= 0 || !coordinates(p, u, v)) return 0;
-    const Taps t = taps(u, v);
+    return valueAt(u, v);
+}
+
+int ImageMap::materialIndex(Vec3 p) const {
+    double u = 0, v = 0;
+    if (!image || image->width <= 0 || image->height <= 0 || !coordinates(p, u, v)) return 0;
+    const Image8& img = *image;
+    const int x = std::clamp(int(u * img.width), 0, img.width - 1), y = std::clamp(int((1 - v) * img.height), 0, img.height - 1);
+    const uint8_t* px = img.pixels.data() + (size_t(y) * size_t(img.width) + size_t(x)) * size_t(img.channels);
+    if (img.channels < 3) return px[0];
+    return int(std::lround(0.297 * px[0] + 0.589 * px[1] + 0.114 * px[2]));
+}
+
+double ImageMap::valueAt(double u, double v) const {
+    if (!image || image->width <= 0 || image->height <= 0) return 0;
+    const Taps t = taps(u - std::floor(u), v - std::floor(v));
     double out = 0;
     for (int i = 0; i < t.count; ++i) out += texelValue(t.x[i], t.y[i]) * t.w[i];
     return out;

@@ -57,6 +57,12 @@ struct ImageMap {
     /// without an alpha channel); placed and interpolated as the colour; 0 outside a `once` image.
     /// POV-Ray re-quantises grey images (80 reads as 79/255): not reproduced.
     double value(Vec3 p) const;
+    /// material_map's index at p: the nearest texel's palette index (an image of indices) or its
+    /// grey as a byte, 0 outside a `once` image.
+    int materialIndex(Vec3 p) const;
+    /// image_pattern's value at texture coordinates (u, v), interpolated as value() (u, v outside
+    /// [0, 1) wrap around the image).
+    double valueAt(double u, double v) const;
     /// Texture coordinates (u, v) ∈ [0, 1)² (v = 0 at the bottom row) of p for the map type;
     /// false where `once` leaves p outside the image.
     bool coordinates(Vec3 p, double& u, double& v) const;

@@ -11,6 +11,7 @@
 // own tilt, measured (pattern/quilted.h).
 #include "rays/pattern/normal.h"
 
+#include "rays/pattern/bump_map.h"
 #include "rays/pattern/ripples.h"
 
 #include <algorithm>
@@ -100,7 +101,7 @@ double specialHeight(NormalKind kind, const PigmentNode& pn, Vec3 q) {
     }
 }
 
-bool isSpecial(NormalKind k) { return k >= NormalKind::Bumps; }
+bool isSpecial(NormalKind k) { return k >= NormalKind::Bumps && k != NormalKind::BumpMap; }
 
 }  // namespace
 
@@ -122,7 +123,10 @@ Vec3 NormalTable::perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 norm
     if (len == 0) return normal;
     np = np / len;
     Vec3 out;
-    if (node.kind == NormalKind::Pattern || isSpecial(node.kind)) {
+    if (node.kind == NormalKind::BumpMap) {
+        const PigmentNode& pn = patterns.nodes[size_t(node.pattern)];
+        out = bumpMapNormal(patterns.images[size_t(pn.image)], patternPoint(patterns, pn, p), np, node.amount);
+    } else if (node.kind == NormalKind::Pattern || isSpecial(node.kind)) {
         // The gradient in pattern space from four samples `accuracy` apart in pattern space.
         Vec3 g;
         const double delta = node.accuracy > 0 ? node.accuracy : 0.02;

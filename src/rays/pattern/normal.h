@@ -18,6 +18,7 @@ enum class NormalKind : uint8_t {
     Average,  ///< average: the weighted mean of the map's normals
     Bumps, Dents, Ripples, Waves, Wrinkles,  ///< POV-Ray's specialised normals (look-alikes)
     Quilted,  ///< quilted's own tilt (pattern/quilted.h, measured)
+    BumpMap,  ///< bump_map: an image's heights (the pattern node is its ImagePattern), bumpMapTilt
 };
 
 /// One slope_map entry: at pattern value `value` the height and its slope (height per value).

@@ -39,6 +39,7 @@ enum class PatternKind : uint8_t {
     Object,  ///< object: a list of two, outside and inside an object (pattern/object_pattern.h)
     Tiling,    ///< tiling N: one of 27 bevelled tilings of the x-z plane (pattern/tiling.h)
     Pavement,  ///< pavement: the x-z plane paved with one polyform (pattern/pavement.h)
+    MaterialMap,   ///< material_map: the texel's index in PigmentTable::images[node.image] picks the entry
 };
 
 /// True for checker, hexagon, brick, square, triangular, cubic and object (a list of 2 to 6

@@ -18,6 +18,7 @@ double PigmentTable::rawValue(const PigmentNode& node, Vec3 q, Vec3 N) const {
         if (node.params.turbulence.on()) q = turbulent(q, node.params.turbulence);
         return node.image >= 0 ? images[size_t(node.image)].value(q) : 0;
     }
+    if (node.kind == PatternKind::MaterialMap) return node.image >= 0 ? images[size_t(node.image)].materialIndex(q) : 0;
     if (node.kind != PatternKind::PigmentPattern) return patternValue(node.kind, node.params, q, N);
     if (node.params.source < 0) return 0;
     if (node.params.turbulence.on()) q = turbulent(q, node.params.turbulence);
@@ -29,6 +30,10 @@ MapPlace PigmentTable::place(int n, Vec3 p, Vec3 N) const {
     const PigmentNode& node = nodes[size_t(n)];
     if (node.mapCount == 0) return {};
     p = inNodeSpace(node, p);
+    if (node.kind == PatternKind::MaterialMap) {
+        const int i = materialEntry(node, p);
+        return {i, i, 0};
+    }
     if (isBlockPattern(node.kind)) {
         const int i = std::min(blockIndex(node.kind, node.params, p), node.mapCount - 1);
         return {i, i, 0};
@@ -47,6 +52,7 @@ Rgbft PigmentTable::evaluate(int n, Vec3 p, Vec3 N) const {
     // pigment's transformations move its map's pigments too).
     auto entry = [&](int i) { return map[i].pigment >= 0 ? evaluate(map[i].pigment, p, N) : map[i].color; };
     if (node.mapCount == 0) return node.color;
+    if (node.kind == PatternKind::MaterialMap) return entry(materialEntry(node, p));
     if (isBlockPattern(node.kind)) {
         const int i = blockIndex(node.kind, node.params, p);
         return entry(i < node.mapCount ? i : node.mapCount - 1);
@@ -91,6 +97,11 @@ double PigmentTable::value(int n, Vec3 p, Vec3 N) const {
     p = inNodeSpace(node, p);
     if (isBlockPattern(node.kind)) return blockIndex(node.kind, node.params, p);
     return applyWave(node.wave, rawValue(node, p, N));
+}
+
+int PigmentTable::materialEntry(const PigmentNode& node, Vec3 q) const {
+    // POV-Ray 3.7 reference, "Material Maps": the index modulo the number of textures.
+    return node.image >= 0 && node.mapCount > 0 ? images[size_t(node.image)].materialIndex(q) % node.mapCount : 0;
 }
 
 bool PigmentTable::mayLetLightThrough(int n) const {

@@ -77,6 +77,8 @@ struct PigmentTable {
     }
 
 private:
+    /// material_map's entry at q (its pattern space): the texel's index modulo the entries.
+    int materialEntry(const PigmentNode& node, Vec3 q) const;
     /// p (in the space enclosing node) moved into the node's pattern space: warps or transformation.
     Vec3 inNodeSpace(const PigmentNode& node, Vec3 p) const;
 };

@@ -324,6 +324,7 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
                            const Appearance* base) {
     const Entry* patternAt = nullptr;
     const Item* tiles = nullptr;  // tiles { texture {A} tile2 texture {B} }: POV-Ray's old checker of textures
+    const Item* materialMap = nullptr;  // material_map { png "file" texture {A} texture {B} ... }
     for (const Entry& e : t.entries) {
         if (e.positional()) {
             for (const Value& v : e.args)
@@ -334,6 +335,10 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
         if (e.key != kMapEntry && e.kw() == Kw::tiles && !e.args.empty() && e.args[0].type == VType::Item) {
             patternAt = &e;
             tiles = &e.args[0].item();
+        }
+        if (e.key != kMapEntry && e.kw() == Kw::material_map && !e.args.empty() && e.args[0].type == VType::Item) {
+            patternAt = &e;
+            materialMap = &e.args[0].item();
         }
     }
     if (!patternAt) return false;
@@ -350,25 +355,28 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
         values.push_back(value);
         looks.push_back(look);
     };
+    // Textures written in a row arrive as one layered item (grammar.cpp); in a pattern's list
+    // they are its entries.
+    auto addTextures = [&](const Item& row) {
+        const bool isRow = row.entries.size() > 1 && std::all_of(row.entries.begin(), row.entries.end(), [](const Entry& r) {
+            return r.positional() && r.args.size() == 1 && r.args[0].type == VType::Item &&
+                   r.args[0].item().kind == Kw::texture;
+        });
+        if (!isRow) addTexture(row, 0);
+        else
+            for (const Entry& r : row.entries) addTexture(r.args[0].item(), 0);
+    };
     for (const Entry& e : t.entries) {
         if (e.positional() || e.key == kMapEntry) continue;
         // object { OBJECT texture { A }, texture { B } }: its list is inside its braces.
         if (e.kw() == Kw::object && !e.args.empty() && e.args[0].type == VType::Item)
             for (const Entry& le : e.args[0].item().entries)
                 if (!le.positional() && le.kw() == Kw::texture && !le.args.empty() && le.args[0].type == VType::Item)
-                    addTexture(le.args[0].item(), 0);
-        if (e.kw() == Kw::texture) {
-            // Textures written in a row arrive as one layered item (grammar.cpp); in a pattern's
-            // list they are its entries.
-            const Item& row = e.args[0].item();
-            const bool isRow = row.entries.size() > 1 && std::all_of(row.entries.begin(), row.entries.end(), [](const Entry& r) {
-                return r.positional() && r.args.size() == 1 && r.args[0].type == VType::Item &&
-                       r.args[0].item().kind == Kw::texture;
-            });
-            if (!isRow) addTexture(row, 0);
-            else
-                for (const Entry& r : row.entries) addTexture(r.args[0].item(), 0);
-        }
+                    addTextures(le.args[0].item());
+        if (e.kw() == Kw::texture) addTextures(e.args[0].item());
+        if (e.kw() == Kw::material_map && materialMap)
+            for (const Entry& me : materialMap->entries)
+                if (!me.positional() && me.key != kMapEntry && me.kw() == Kw::texture) addTextures(me.args[0].item());
         if (e.kw() == Kw::tiles && tiles) {
             // The textures before tile2 make the first tile (layered when several), those after
             // the second; the block's transformations move them with the checker.
@@ -394,7 +402,9 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
                     // An average's entries may leave their weight out: 1 (as in pigment maps).
                     addTexture(me.args[1].item(), me.args[0].type == VType::Undefined ? 1 : toFloat(me.args[0]));
     }
-    const int node = tiles ? pigments.tilesTexture(t, *tiles, entries) : pigments.patternedTexture(t, entries, values);
+    const int node = tiles         ? pigments.tilesTexture(t, *tiles, entries)
+                     : materialMap ? pigments.materialMapTexture(t, *materialMap, entries)
+                                   : pigments.patternedTexture(t, entries, values);
     if (node < 0) return false;
     // The texture's transformations move its textures with the pattern.
     for (const Entry& e : t.entries)

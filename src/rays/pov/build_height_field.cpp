@@ -42,6 +42,26 @@ void imageHeights(const ImageFile& f, int& nx, int& nz, std::vector<double>& hei
     }
 }
 
+// Heights of a Fractint continuous-potential file (`pot "file"`; POV-Ray 3.7 reference, "Height
+// Field": a GIF twice as wide as the field, its palette indices the 16-bit heights' high bytes in
+// the left half and their low bytes in the right half). Measured with POV-Ray 3.7 (trace() down onto
+// mtmand.pot's grid points): the height is (256·high + low) / 65536. False for a file without
+// a palette or of odd width.
+bool potHeights(const ImageFile& f, ImageFiles& files, int& nx, int& nz, std::vector<double>& heights) {
+    const std::shared_ptr<const Image8> indices = files.paletteIndices(f);
+    if (!indices || indices->width < 4 || indices->width % 2 != 0) return false;
+    const Image8& img = *indices;
+    nx = img.width / 2;
+    nz = img.height;
+    heights.resize(size_t(nx) * size_t(nz));
+    for (int j = 0; j < nz; ++j) {
+        const uint8_t* row = img.row(j);
+        for (int i = 0; i < nx; ++i)
+            heights[size_t(nz - 1 - j) * size_t(nx) + size_t(i)] = (256.0 * row[i] + row[i + nx]) / 65536.0;
+    }
+    return true;
+}
+
 // Heights of `function W, H { f }`: f(x, y, 0) at x = ix/(W−1), y = iz/(H−1), clamped to [0, 1];
 // of a pigment function, its colour's gray (0.297 r + 0.589 g + 0.114 b: measured with POV-Ray
 // 3.7, pure red gives 0.297).
@@ -95,6 +115,12 @@ bool buildHeightField(const std::vector<const Entry*>& entries, const std::strin
     }
     for (const Entry* e : entries) {
         const Kw k = e->kw();
+        if (k == Kw::pot) {
+            if (!potHeights(files.load(*e), files, nx, nz, heights))
+                throw Error(notes.where(e->loc) + ": error: the pot file is not a palette image of even width");
+            source = true;
+            continue;
+        }
         if (ImageFiles::isImageType(k) && !ImageFiles::isReadableType(k)) {
             notes.note("height_field from a " + std::string(sdl::keywordName(k)) + " file", e->loc, "(left out)");
             return false;

@@ -20,6 +20,7 @@ struct ImageFile {
     PngInfo png;
     Kw type = Kw::png;  ///< the keyword naming the file type
     std::string path;   ///< where it was found
+    std::shared_ptr<const Image8> gifIndices;  ///< a GIF's palette indices (one channel)
 };
 
 class ImageFiles {
@@ -39,11 +40,15 @@ public:
     /// POV-Ray 3.7's default gamma of an image_map file: PNG by its sRGB or gAMA chunk (sRGB
     /// without), PPM and PGM as the working space (linear), other formats sRGB.
     static pattern::FileGamma defaultGamma(const ImageFile& f);
+    /// The palette indices of a palette image (a PNG with a PLTE, a GIF) as a one-channel image,
+    /// top row first, read once; nullptr for a file without a palette.
+    std::shared_ptr<const Image8> paletteIndices(const ImageFile& f);
 
 private:
     NotRendered& notes_;
     std::function<std::string(const std::string&)> find_;
     std::map<std::string, ImageFile> files_;  ///< by path found
+    std::map<std::string, std::shared_ptr<const Image8>> indices_;  ///< paletteIndices by path
 };
 
 }  // namespace rays::pov

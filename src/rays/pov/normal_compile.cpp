@@ -77,6 +77,7 @@ int NormalCompiler::compile(const Item& normal) {
         node.amount = s.bumpSizeSet ? s.bumpSize : s.amount;
         node.accuracy = s.accuracy;
         node.kind = s.kind;
+        if (s.kind == NormalKind::BumpMap) node.amount = s.amount;  // bump_map's own bump_size
         if (s.kind == NormalKind::Pattern && s.block && !s.list.empty()) node.kind = NormalKind::Block;
         if (s.kind == NormalKind::Pattern && !s.block && s.mapSet && !s.map.empty()) node.kind = NormalKind::Map;
         const std::vector<pattern::NormalEntry>& entries = node.kind == NormalKind::Block ? s.list : s.map;
@@ -169,7 +170,16 @@ void NormalCompiler::read(const Item& normal, State& s, int depth) {
                 }
                 break;
             }
-            case Kw::bump_map: notes_.note("normal bump_map", e.loc, "(drawn smooth)"); break;
+            case Kw::bump_map: {  // the image's heights (PigmentCompiler reads the image itself)
+                s.pattern = true;
+                s.kind = NormalKind::BumpMap;
+                s.block = false;
+                s.list.clear();
+                s.amount = 0.5;  // bump_size's default (measured: a bump_map without it tilts half as much as with bump_size 1)
+                for (const Entry& be : e.args[0].item().entries)
+                    if (!be.positional() && be.kw() == Kw::bump_size && !be.args.empty()) s.amount = toFloat(be.args[0]);
+                break;
+            }
             default: break;
         }
     }

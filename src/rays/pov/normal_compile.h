@@ -14,8 +14,8 @@ class NormalCompiler {
 public:
     NormalCompiler(pattern::NormalTable& table, PigmentCompiler& patterns, NotRendered& notes)
         : table_(table), patterns_(patterns), notes_(notes) {}
-    /// The node of a normal with a rendered pattern, or -1 (the surface stays smooth; patterns
-    /// Rays does not render and bump_map are noted).
+    /// The node of a normal with a rendered pattern or a bump_map, or -1 (the surface stays
+    /// smooth; patterns Rays does not render are noted).
     int compile(const Item& normal);
 
 private:

@@ -358,6 +358,10 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         readObjectPattern(e, s, depth);
         return;
     }
+    if (k == Kw::bump_map && s.normal) {  // the heights of a normal's bump_map (NormalKind::BumpMap)
+        readImageMap(e.args[0].item(), s, true, true);
+        return;
+    }
     if (isPatternType(k) || k == Kw::image_map) {
         s.unrendered = true;
         s.pattern = false;
@@ -527,10 +531,11 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
 // image_map { TYPE "file" [gamma G] [map_type M] [once] [interpolate N] [filter|transmit all|N, A] }
 // (POV-Ray 3.7 reference, "Image Map", "Bitmap Modifiers"). The node has no map: the image gives
 // the colour. As image_pattern { ... [use_alpha] } (asPattern) the image's grey is the pattern's value.
-void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern) {
+void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern, bool bump) {
     pattern::ImageMap m;
     const ImageFile* file = nullptr;
     bool gammaSet = false;
+    bool useIndex = false;  ///< bump_map's use_index
     for (const Entry& e : map.entries) {
         if (e.positional()) {  // `image_map { "file.png" }`: the file without its type (png)
             for (const Value& v : e.args)
@@ -559,6 +564,8 @@ void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern) {
             case Kw::map_type: m.mapType = int(num(0)); break;
             case Kw::once: m.once = true; break;
             case Kw::use_alpha: m.useAlpha = true; break;
+            case Kw::use_index: useIndex = true; break;
+            case Kw::use_color: case Kw::use_colour: useIndex = false; break;
             case Kw::interpolate: m.interpolate = int(num(0)); break;
             case Kw::gamma: {
                 const double g = num(0);
@@ -593,6 +600,14 @@ void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern) {
     m.setPatternGamma(gammaSet && m.fileGamma.kind == pattern::FileGamma::Kind::Power ? m.fileGamma.gamma : 1.0);
     if (!gammaSet) m.fileGamma = ImageFiles::defaultGamma(*file);
     m.setWorkingGamma(1.0);  // until the scene's assumed_gamma is known (PigmentTable::setWorkingGamma)
+    // use_index: a palette image's index itself is the height (measured with POV-Ray 3.7: a bump_map
+    // texel of palette index 5 with bump_size 1 tilts the normal by atan 5, of index 6 by atan 6).
+    if (bump && useIndex) {
+        if (auto indices = images_.paletteIndices(*file)) {
+            m.image = std::move(indices);
+            for (int i = 0; i < 256; ++i) m.patternDecode[size_t(i)] = float(i);
+        }
+    }
     s.pattern = true;
     s.unrendered = false;
     s.node.kind = asPattern ? PatternKind::ImagePattern : PatternKind::ImageMap;
@@ -631,6 +646,31 @@ int PigmentCompiler::tilesTexture(const Item& texture, const Item& tiles, const 
     s.node.kind = PatternKind::Checker;
     s.pattern = true;
     for (const Placed& p : entries) s.list.push_back(MapEntry{0, {}, placed(p)});
+    return emit(s);
+}
+
+int PigmentCompiler::materialMapTexture(const Item& texture, const Item& map, const std::vector<Placed>& entries) {
+    if (entries.empty()) return -1;
+    State s;
+    s.what = "texture";
+    readImageMap(map, s);
+    if (!s.pattern || s.unrendered) return -1;
+    pattern::ImageMap& image = table_.images[size_t(s.node.image)];
+    // A palette image's indices choose; other images their grey (materialIndex).
+    for (const Entry& e : map.entries) {
+        const ImageFile* file = nullptr;
+        if (e.positional() && !e.args.empty() && e.args[0].type == VType::String) file = &images_.load(e.args[0].str(), Kw::png, e.loc);
+        else if (!e.positional() && e.key != kMapEntry && ImageFiles::isImageType(e.kw())) file = &images_.load(e);
+        if (file)
+            if (auto indices = images_.paletteIndices(*file)) image.image = std::move(indices);
+    }
+    s.node.kind = PatternKind::MaterialMap;
+    for (const Item* block : {&map, &texture})
+        for (const Entry& e : block->entries)
+            if (!e.positional() && e.key != kMapEntry && isTransformEntry(e)) readEntry(e, s, 0);
+    s.map.clear();
+    for (const Placed& p : entries) s.map.push_back(MapEntry{0, {}, placed(p)});
+    s.mapSet = true;
     return emit(s);
 }
 

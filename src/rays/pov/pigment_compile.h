@@ -64,6 +64,10 @@ public:
     /// `texture { tiles { texture {A} tile2 texture {B} } }`: a checker of the two (the tiles
     /// block's transformations, then the texture's, move it); -1 when not two entries.
     int tilesTexture(const Item& texture, const Item& tiles, const std::vector<Placed>& entries);
+    /// `texture { material_map { TYPE "file" ... texture {A} texture {B} ... } }`: the image's
+    /// palette index (or grey byte) modulo the number of textures picks one (POV-Ray 3.7
+    /// reference, "Material Maps"); the map's, then the texture's transformations move the image.
+    int materialMapTexture(const Item& texture, const Item& map, const std::vector<Placed>& entries);
     /// The pattern of a normal item (its pattern type, modifiers, transformations, warps and wave;
     /// a base normal identifier first) as a node whose map is unused; bumps, dents, ripples, waves
     /// and wrinkles give a node of kind Bozo carrying their modifiers. -1 when the normal has no
@@ -75,7 +79,7 @@ private:
     void read(const Item& pigment, State& s, int depth);
     void readEntry(const Entry& e, State& s, int depth);
     void readWarp(const Item& warp, State& s);
-    void readImageMap(const Item& map, State& s, bool asPattern = false);
+    void readImageMap(const Item& map, State& s, bool asPattern = false, bool bump = false);
     void readColorMap(const Item& map, State& s, int depth);
     void readPigmentMap(const Item& map, State& s, int depth);
     /// `object { OBJECT A, B }`: the pattern and its list (colours, pigments or densities).
