@@ -76,10 +76,8 @@ void setNormal(const Entry& e, Appearance& a, NotRendered& notes, PigmentCompile
         auto merged = std::make_shared<Item>(*a.normalSource);
         merged->entries.insert(merged->entries.end(), block.entries.begin(), block.entries.end());
         source = std::move(merged);
-        a.normalNode = pigments->compileNormal(source);
-    } else {
-        a.normalNode = pigments->compileNormal(*source);
     }
+    a.normalNode = pigments->compileNormal(source);
     a.normalSource = std::move(source);
     a.normalToObject = Transform{};
 }

@@ -157,8 +157,7 @@ void PigmentCompiler::checkPavement(State& s) {
 int PigmentCompiler::compile(const Item& pigment) {
     if (const auto it = done_.find(&pigment); it != done_.end()) return it->second;
     State s;
-    read(pigment, s, 0);
-    checkPavement(s);
+    readWhole(pigment, s, 0);
     const int n = s.pattern && !s.unrendered ? emit(s) : -1;
     done_.emplace(&pigment, n);
     return n;
@@ -166,8 +165,7 @@ int PigmentCompiler::compile(const Item& pigment) {
 
 int PigmentCompiler::compileFunction(const Item& item) {
     State s;
-    read(item, s, 0);
-    checkPavement(s);
+    readWhole(item, s, 0);
     return s.unrendered ? -1 : emit(s);
 }
 
@@ -178,8 +176,7 @@ int PigmentCompiler::compileDensity(const Item& density) {
     s.what = "density";
     s.density = true;
     s.node.color = pattern::Rgbft{Vec3(1.0), 0, 0};
-    read(density, s, 0);
-    checkPavement(s);
+    readWhole(density, s, 0);
     if (s.unrendered) {  // a pattern Rays does not render (noted): no media there rather than a guess
         s.pattern = false;
         s.node.color = pattern::Rgbft{};
@@ -190,8 +187,7 @@ int PigmentCompiler::compileDensity(const Item& density) {
 // A pigment inside a map or list: always a node (a flat colour becomes a Solid node).
 int PigmentCompiler::nested(const Item& pigment, int depth) {
     State s;
-    read(pigment, s, depth + 1);
-    checkPavement(s);
+    readWhole(pigment, s, depth + 1);
     if (s.unrendered) s.pattern = false;
     return emit(s);
 }
@@ -238,6 +234,11 @@ void PigmentCompiler::readPigmentMap(const Item& map, State& s, int depth) {
 void PigmentCompiler::read(const Item& p, State& s, int depth) {
     if (depth > kMaxDepth) return;
     for (const Entry& e : p.entries) readEntry(e, s, depth);
+}
+
+void PigmentCompiler::readWhole(const Item& p, State& s, int depth) {
+    read(p, s, depth);
+    checkPavement(s);
 }
 
 void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
@@ -531,7 +532,7 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
 // image_map { TYPE "file" [gamma G] [map_type M] [once] [interpolate N] [filter|transmit all|N, A] }
 // (POV-Ray 3.7 reference, "Image Map", "Bitmap Modifiers"). The node has no map: the image gives
 // the colour. As image_pattern { ... [use_alpha] } (asPattern) the image's grey is the pattern's value.
-void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern, bool bump) {
+const ImageFile* PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern, bool bump) {
     pattern::ImageMap m;
     const ImageFile* file = nullptr;
     bool gammaSet = false;
@@ -549,7 +550,7 @@ void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern, bo
             s.pattern = false;
             notes_.note(std::string(s.what) + " image_map of a " + std::string(sdl::keywordName(k)) + " file", e.loc,
                         "(drawn in its mean colour)");
-            return;
+            return nullptr;
         }
         if (ImageFiles::isImageType(k)) {
             file = &images_.load(e);
@@ -560,7 +561,7 @@ void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern, bo
                 s.unrendered = true;
                 s.pattern = false;
                 notes_.note(std::string(s.what) + " image_map of a function", e.loc, "(drawn in its mean colour)");
-                return;
+                return nullptr;
             case Kw::map_type: m.mapType = int(num(0)); break;
             case Kw::once: m.once = true; break;
             case Kw::use_alpha: m.useAlpha = true; break;
@@ -614,6 +615,7 @@ void PigmentCompiler::readImageMap(const Item& map, State& s, bool asPattern, bo
     s.node.image = int(table_.images.size());
     s.list.clear();
     table_.images.push_back(std::move(m));
+    return file;
 }
 
 int PigmentCompiler::patternedTexture(const Item& texture, const std::vector<Placed>& entries,
@@ -653,17 +655,10 @@ int PigmentCompiler::materialMapTexture(const Item& texture, const Item& map, co
     if (entries.empty()) return -1;
     State s;
     s.what = "texture";
-    readImageMap(map, s);
-    if (!s.pattern || s.unrendered) return -1;
-    pattern::ImageMap& image = table_.images[size_t(s.node.image)];
+    const ImageFile* file = readImageMap(map, s);
+    if (!file || !s.pattern || s.unrendered) return -1;
     // A palette image's indices choose; other images their grey (materialIndex).
-    for (const Entry& e : map.entries) {
-        const ImageFile* file = nullptr;
-        if (e.positional() && !e.args.empty() && e.args[0].type == VType::String) file = &images_.load(e.args[0].str(), Kw::png, e.loc);
-        else if (!e.positional() && e.key != kMapEntry && ImageFiles::isImageType(e.kw())) file = &images_.load(e);
-        if (file)
-            if (auto indices = images_.paletteIndices(*file)) image.image = std::move(indices);
-    }
+    if (auto indices = images_.paletteIndices(*file)) table_.images[size_t(s.node.image)].image = std::move(indices);
     s.node.kind = PatternKind::MaterialMap;
     for (const Item* block : {&map, &texture})
         for (const Entry& e : block->entries)

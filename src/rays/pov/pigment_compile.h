@@ -77,9 +77,12 @@ public:
 private:
     struct State;
     void read(const Item& pigment, State& s, int depth);
+    /// read, then checks what can only be judged once every modifier is read (pavement's).
+    void readWhole(const Item& pigment, State& s, int depth);
     void readEntry(const Entry& e, State& s, int depth);
     void readWarp(const Item& warp, State& s);
-    void readImageMap(const Item& map, State& s, bool asPattern = false, bool bump = false);
+    /// The image file read (null when the map is not rendered: noted).
+    const ImageFile* readImageMap(const Item& map, State& s, bool asPattern = false, bool bump = false);
     void readColorMap(const Item& map, State& s, int depth);
     void readPigmentMap(const Item& map, State& s, int depth);
     /// `object { OBJECT A, B }`: the pattern and its list (colours, pigments or densities).
