@@ -175,27 +175,7 @@ void write16(const std::string& path, int w, int h, const std::vector<uint16_t>&
             raw.push_back(uint8_t(v[size_t(y * w + x)] & 255));
         }
     }
-    uLongf size = compressBound(uLong(raw.size()));
-    std::vector<uint8_t> z(size);
-    ASSERT_EQ(compress(z.data(), &size, raw.data(), uLong(raw.size())), Z_OK);
-    z.resize(size);
-    std::vector<uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    auto chunk = [&](const char* type, const std::vector<uint8_t>& body) {
-        const uint32_t n = uint32_t(body.size());
-        for (int s = 24; s >= 0; s -= 8) out.push_back(uint8_t(n >> s));
-        std::vector<uint8_t> tb(type, type + 4);
-        tb.insert(tb.end(), body.begin(), body.end());
-        out.insert(out.end(), tb.begin(), tb.end());
-        const uint32_t crc = uint32_t(crc32(0, tb.data(), uInt(tb.size())));
-        for (int s = 24; s >= 0; s -= 8) out.push_back(uint8_t(crc >> s));
-    };
-    chunk("IHDR", {0, 0, 0, uint8_t(w), 0, 0, 0, uint8_t(h), 16, 0, 0, 0, 0});
-    chunk("IDAT", z);
-    chunk("IEND", {});
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    ASSERT_NE(f, nullptr);
-    std::fwrite(out.data(), 1, out.size(), f);
-    std::fclose(f);
+    test::writeBytes(path, test::pngBytes(w, h, 16, 0, raw));
 }
 
 TEST(PovHeightField, TrianglesSplitAsPovRayAndNormalsFaceUp) {

@@ -21,19 +21,10 @@ inline void writeBytes(const std::string& path, const std::vector<uint8_t>& byte
 
 using Palette = std::vector<std::array<uint8_t, 3>>;
 
-inline void writePalettePng(const std::string& path, int w, int h, const std::vector<uint8_t>& indices,
-                            const Palette& palette, int bitDepth = 8) {
-    std::vector<uint8_t> raw;
-    const int rowBytes = (w * bitDepth + 7) / 8;
-    for (int y = 0; y < h; ++y) {
-        raw.push_back(0);
-        std::vector<uint8_t> row(size_t(rowBytes), 0);
-        for (int x = 0; x < w; ++x) {
-            const int bit = x * bitDepth;
-            row[size_t(bit / 8)] |= uint8_t(indices[size_t(y * w + x)] << (8 - bitDepth - bit % 8));
-        }
-        raw.insert(raw.end(), row.begin(), row.end());
-    }
+// A PNG of filter-0 rows `raw` (each row's filter byte first) with the given IHDR bit depth and
+// colour type, and a PLTE chunk when `plte` is not empty.
+inline std::vector<uint8_t> pngBytes(int w, int h, int bitDepth, int colorType, const std::vector<uint8_t>& raw,
+                                     const std::vector<uint8_t>& plte = {}) {
     uLongf size = compressBound(uLong(raw.size()));
     std::vector<uint8_t> z(size);
     compress(z.data(), &size, raw.data(), uLong(raw.size()));
@@ -49,13 +40,29 @@ inline void writePalettePng(const std::string& path, int w, int h, const std::ve
         for (int s = 24; s >= 0; s -= 8) out.push_back(uint8_t(crc >> s));
     };
     chunk("IHDR", {uint8_t(w >> 24), uint8_t(w >> 16), uint8_t(w >> 8), uint8_t(w), uint8_t(h >> 24), uint8_t(h >> 16),
-                   uint8_t(h >> 8), uint8_t(h), uint8_t(bitDepth), 3, 0, 0, 0});
-    std::vector<uint8_t> plte;
-    for (const auto& c : palette) plte.insert(plte.end(), c.begin(), c.end());
-    chunk("PLTE", plte);
+                   uint8_t(h >> 8), uint8_t(h), uint8_t(bitDepth), uint8_t(colorType), 0, 0, 0});
+    if (!plte.empty()) chunk("PLTE", plte);
     chunk("IDAT", z);
     chunk("IEND", {});
-    writeBytes(path, out);
+    return out;
+}
+
+inline void writePalettePng(const std::string& path, int w, int h, const std::vector<uint8_t>& indices,
+                            const Palette& palette, int bitDepth = 8) {
+    std::vector<uint8_t> raw;
+    const int rowBytes = (w * bitDepth + 7) / 8;
+    for (int y = 0; y < h; ++y) {
+        raw.push_back(0);
+        std::vector<uint8_t> row(size_t(rowBytes), 0);
+        for (int x = 0; x < w; ++x) {
+            const int bit = x * bitDepth;
+            row[size_t(bit / 8)] |= uint8_t(indices[size_t(y * w + x)] << (8 - bitDepth - bit % 8));
+        }
+        raw.insert(raw.end(), row.begin(), row.end());
+    }
+    std::vector<uint8_t> plte;
+    for (const auto& c : palette) plte.insert(plte.end(), c.begin(), c.end());
+    writeBytes(path, pngBytes(w, h, bitDepth, 3, raw, plte));
 }
 
 inline void writeGif(const std::string& path, int w, int h, const std::vector<uint8_t>& indices, Palette palette) {
