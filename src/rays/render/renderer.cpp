@@ -126,6 +126,13 @@ int lensStride(int count) {
     return 1;
 }
 
+// The pixel strata's stride under adaptive focal blur: coprime to count and unlike the lens's.
+int pixelStrideFor(int count, int lensStride) {
+    for (int p : {5, 7, 11, 13, 17, 19, 23, 29, 31})
+        if (p != lensStride && std::gcd(p, count) == 1) return p;
+    return 1;
+}
+
 }  // namespace
 
 int resolveThreads(int requested) {
@@ -243,12 +250,17 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
     const double radius = filterRadius(s.filter);
     const int stride = lensStride(count);
     const Camera& cam = view.camera;
-    Vec3 sum;
+    // POV-Ray's adaptive focal blur (Camera::blurZ2): pixel strata are visited in a spread order
+    // too, so that the samples taken before the stop cover the pixel.
+    const bool adaptive = view.aperture > 0 && cam.blurZ2 > 0;
+    const int pixelStride = adaptive ? pixelStrideFor(count, stride) : 1;
+    const int minSamples = std::min(count, std::max(1, cam.blurMinSamples));
+    Vec3 sum, mean, m2;
     double weightSum = 0;
     for (int n = 0; n < count; ++n) {
         ctx.rng = SampleRng(uint32_t(i), uint32_t(j), uint32_t(n), s.seed);
         double a, b;
-        samplePoint(mode, n, count, ctx.rng, a, b);
+        samplePoint(mode, int((int64_t(n) * pixelStride) % count), count, ctx.rng, a, b);
         // Map [0,1)² onto the filter support around the pixel centre.
         const double dx = (2 * a - 1) * radius, dy = (2 * b - 1) * radius;
         const double w = filterWeight(s.filter, dx, dy);
@@ -268,8 +280,17 @@ Vec3 renderPixel(const Tracer& tracer, const ViewSetup& view, const RenderSettin
         }
         if (n == 0 && info) *info = PathInfo{};
         weightSum += w;
-        if (CameraRays::missed(ray)) continue;  // outside the projection: black (as POV-Ray)
-        sum += w * tracer.tracePrimary(ray, ctx, nullptr, n == 0 ? info : nullptr);
+        const Vec3 c = CameraRays::missed(ray) ? Vec3{}  // outside the projection: black (as POV-Ray)
+                                               : tracer.tracePrimary(ray, ctx, nullptr, n == 0 ? info : nullptr);
+        sum += w * c;
+        if (adaptive) {
+            // Welford's running mean and sum of squared deviations, per channel.
+            const Vec3 d = c - mean;
+            mean += d / double(n + 1);
+            m2 += d * (c - mean);
+            const double limit = cam.blurVariance * double(n + 1) * double(n) / cam.blurZ2;  // z²·s²/(n+1) ≤ variance
+            if (n + 1 >= minSamples && n > 0 && m2.x <= limit && m2.y <= limit && m2.z <= limit) break;
+        }
     }
     return weightSum > 0 ? sum / weightSum : Vec3{};
 }

@@ -31,6 +31,12 @@ struct Camera {
     double aperture = 0;      ///< lens radius (world units); 0 = pinhole
     Vec3 focalPoint{0, 0, 0}; ///< in perfect focus; the focal distance is measured along the view direction
     int blurSamples = 0;      ///< samples per pixel when aperture > 0 (0: renderer default)
+    /// POV-Ray's adaptive focal blur (blur_samples MIN, MAX with confidence and variance): after
+    /// blurMinSamples samples a pixel stops once z²·s²/n ≤ blurVariance in every channel (s² the
+    /// samples' variance, z the normal quantile of the confidence). blurZ2 = 0: every sample is taken.
+    int blurMinSamples = 0;
+    double blurZ2 = 0;
+    double blurVariance = 0;
     Projection projection = Projection::Perspective;
     double angleH = 0, angleV = 0;  ///< viewing angles (radians) of the angle-based projections
     std::shared_ptr<const MeshCamera> mesh;  ///< Projection::Mesh: the faces rays start from
