@@ -32,6 +32,9 @@ struct PigmentNode {
 struct PigmentRoot {
     Transform worldToTexture;
     int node = -1;
+    /// POV-Ray's uv_mapping: the pattern is looked up at the surface's (u, v, 0) (when the surface
+    /// has texture coordinates) moved by worldToTexture, instead of at the world point.
+    bool uv = false;
 };
 
 struct PigmentTable {
@@ -53,9 +56,10 @@ struct PigmentTable {
     /// the viewer at the surface point, for the slope pattern (zero off surfaces).
     Rgbft evaluate(int n, Vec3 p, Vec3 N = {}) const;
     /// The colour of root r at the world point p.
-    Rgbft atRoot(int r, Vec3 world, Vec3 N = {}) const {
+    /// uv: the surface's (u, v, 0), when it has texture coordinates (for uv-mapped roots).
+    Rgbft atRoot(int r, Vec3 world, Vec3 N = {}, const Vec3* uv = nullptr) const {
         const PigmentRoot& root = roots[size_t(r)];
-        return evaluate(root.node, root.worldToTexture.point(world), N);
+        return evaluate(root.node, root.worldToTexture.point(root.uv && uv ? *uv : world), N);
     }
     /// The value of node n's pattern at p (p in the space enclosing the node), as a pattern
     /// function gives it: after the node's transformations, warps, turbulence and wave, its map
@@ -71,9 +75,9 @@ struct PigmentTable {
     /// for a block pattern the entry of its list (lo == hi). For nodes with a pattern and a map.
     MapPlace place(int n, Vec3 p, Vec3 N = {}) const;
     /// place() of root r's node at the world point.
-    MapPlace placeAtRoot(int r, Vec3 world, Vec3 N = {}) const {
+    MapPlace placeAtRoot(int r, Vec3 world, Vec3 N = {}, const Vec3* uv = nullptr) const {
         const PigmentRoot& root = roots[size_t(r)];
-        return place(root.node, root.worldToTexture.point(world), N);
+        return place(root.node, root.worldToTexture.point(root.uv && uv ? *uv : world), N);
     }
 
 private:

@@ -55,6 +55,7 @@ void setPigment(const Item& p, Appearance& a, NotRendered& notes, PigmentCompile
     applyPigment(p, a.pigment, notes, pigments == nullptr);
     a.pigmentNode = pigments ? pigments->compile(p) : -1;
     a.pigmentToObject = Transform{};
+    a.pigmentUV = hasEntry(p, Kw::uv_mapping);
 }
 
 // The look's normal becomes the normal item of entry e (compiled when the compiler makes normals).
@@ -251,6 +252,30 @@ void moveLook(Appearance& a, const Entry& transformation) {
     moveLook(a, t);
 }
 
+void placeLook(Appearance& a, const Transform& outer) {
+    if (!a.pigmentUV) a.pigmentToObject = outer * a.pigmentToObject;
+    a.normalToObject = outer * a.normalToObject;
+    if (!a.patternUV) a.patternToObject = outer * a.patternToObject;
+    for (Appearance& l : a.layers) placeLook(l, outer);
+    for (Appearance& c : a.choices) placeLook(c, outer);
+    for (Appearance& i : a.inside) placeLook(i, outer);
+    for (MediaLook& m : a.interior.media) moveMedia(m, outer);
+}
+
+void placeLook(Appearance& a, const Entry& transformation) {
+    Transform t;
+    applyTransform(transformation, t);
+    placeLook(a, t);
+}
+
+void mapLookByUV(Appearance& a) {
+    a.pigmentUV = a.pigmentNode >= 0;
+    a.patternUV = a.patternNode >= 0;
+    for (Appearance& l : a.layers) mapLookByUV(l);
+    for (Appearance& c : a.choices) mapLookByUV(c);
+    for (Appearance& i : a.inside) mapLookByUV(i);
+}
+
 namespace {
 
 // The look as one plain texture (a layered or patterned look: the mix of its parts).
@@ -308,6 +333,7 @@ void applyLayer(const Item& layer, Appearance& a, NotRendered& notes, PigmentCom
         a.pigmentNode = pigments->layered({below.pigmentNode, below.pigment, below.pigmentToObject},
                                           {top.pigmentNode, top.pigment, top.pigmentToObject});
         a.pigmentToObject = Transform{};
+        a.pigmentUV = false;  // the mix is placed by the point (uv-mapped layers keep their uv in a.layers)
     }
     a.parts = partsOf(layers);
     if (a.parts <= kMaxParts) a.layers = std::move(layers);
@@ -418,8 +444,10 @@ bool applyPatternedTexture(const Item& t, Appearance& a, NotRendered& notes, Pig
     a.pigment = mean.mean();
     a.pigmentNode = node;
     a.pigmentToObject = Transform{};
+    a.pigmentUV = false;
     a.patternNode = node;
     a.patternToObject = Transform{};
+    a.patternUV = false;
     a.parts = partsOf(looks);
     if (a.parts <= kMaxParts) a.choices = std::move(looks);
     else notes.note("texture pattern", patternAt->loc, "(more than 4096 textures in one: the textures' pigments follow the pattern, lit with one finish)");
@@ -440,7 +468,10 @@ void onTop(Appearance& a, F&& change) {
 void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompiler* pigments,
                   const Appearance* layerBase) {
     a.set = true;
-    if (pigments && applyPatternedTexture(t, a, notes, *pigments, layerBase)) return;
+    if (pigments && applyPatternedTexture(t, a, notes, *pigments, layerBase)) {
+        if (hasEntry(t, Kw::uv_mapping)) mapLookByUV(a);
+        return;
+    }
     bool layered = false;  // a texture item applied already: the next is a layer over it
     for (const Entry& e : t.entries) {
         if (e.positional()) {
@@ -477,6 +508,7 @@ void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompi
                 break;
         }
     }
+    if (hasEntry(t, Kw::uv_mapping)) mapLookByUV(a);
 }
 
 bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallback, NotRendered& notes,

@@ -29,6 +29,9 @@ struct Appearance {
     /// Texture space → the space the look was given in: the transformations written after the
     /// pigment (in the texture, then on the object); SceneBuilder completes it to world space.
     Transform pigmentToObject;
+    /// POV-Ray's uv_mapping (reference, "UV Mapping"): the pigment is looked up at the surface's
+    /// (u, v, 0) moved by pigmentToObject, which the object's transformations then leave alone.
+    bool pigmentUV = false;
     int normalNode = -1;  ///< the normal's node in the scene's NormalTable; -1: the surface's own normal
     Transform normalToObject;  ///< like pigmentToObject, for the normal
     /// The normal block normalNode was compiled from: a later `normal { }` without a pattern of
@@ -46,6 +49,7 @@ struct Appearance {
     std::vector<Appearance> choices;
     int patternNode = -1;       ///< the pattern (a node of the PigmentTable) choosing among choices
     Transform patternToObject;  ///< like pigmentToObject, for the pattern
+    bool patternUV = false;     ///< like pigmentUV, for the pattern
     int parts = 1;              ///< plain looks in the tree of layers and choices (bounded)
     /// interior_texture: the look of the surface's inner side (one look), or none.
     std::vector<Appearance> inside;
@@ -56,6 +60,12 @@ struct Appearance {
 void moveLook(Appearance& a, const Transform& outer);
 /// moveLook by a transformation entry (translate, rotate, scale, matrix, transform).
 void moveLook(Appearance& a, const Entry& transformation);
+/// The look placed by an object's transformation `outer`: moveLook, except that uv-mapped
+/// pigments and patterns stay where they are (in the surface's uv space).
+void placeLook(Appearance& a, const Transform& outer);
+void placeLook(Appearance& a, const Entry& transformation);
+/// uv_mapping on a texture or an object: every pigment and pattern of the look is uv-mapped.
+void mapLookByUV(Appearance& a);
 
 /// Applies an object modifier entry that concerns appearance (texture, pigment, normal, finish,
 /// interior, material); false when the entry is something else. `fallback` is what an unset

@@ -11,7 +11,7 @@ using sdl::VType;
 
 int SceneBuilder::pigmentRoot(const Appearance& look) {
     if (look.pigmentNode < 0 || look.pigmentToObject.determinant() == 0) return -1;
-    scene_.pigments.roots.push_back(pattern::PigmentRoot{look.pigmentToObject.inverse(), look.pigmentNode});
+    scene_.pigments.roots.push_back(pattern::PigmentRoot{look.pigmentToObject.inverse(), look.pigmentNode, look.pigmentUV});
     return int(scene_.pigments.roots.size()) - 1;
 }
 
@@ -45,7 +45,7 @@ int SceneBuilder::textureNode(const Appearance& look, const PovSurface& object, 
     if (!look.choices.empty() && depth < 64 && look.patternNode >= 0 && look.patternToObject.determinant() != 0) {
         std::vector<int> kids;
         for (const Appearance& c : look.choices) kids.push_back(textureNode(c, object, depth + 1));
-        scene_.pigments.roots.push_back(pattern::PigmentRoot{look.patternToObject.inverse(), look.patternNode});
+        scene_.pigments.roots.push_back(pattern::PigmentRoot{look.patternToObject.inverse(), look.patternNode, look.patternUV});
         node.pattern = int(scene_.pigments.roots.size()) - 1;
         node.begin = int(tx.children.size());
         node.count = int(kids.size());

@@ -204,7 +204,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     std::vector<Clip> clips;
     const Entry* bounds = nullptr;
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
-         doubleIlluminate = false, hollow = false;
+         doubleIlluminate = false, hollow = false, uvMapping = false;
     const Entry* font = nullptr;  // text: its ttf or internal entry
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
@@ -215,11 +215,19 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         if (e.key == kMapEntry) continue;
         if (isTransformEntry(e)) {
             applyTransform(e, local);
-            if (look.set || look.interiorSet) moveLook(look, e);  // transformations after the texture (or interior) move it
+            if (look.set || look.interiorSet) placeLook(look, e);  // transformations after the texture (or interior) move it
             continue;
         }
-        if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) continue;
+        if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) {
+            if (uvMapping && look.set) mapLookByUV(look);  // the object's uv_mapping: all of its texture
+            continue;
+        }
         const Kw k = e.kw();
+        if (k == Kw::uv_mapping) {
+            uvMapping = true;
+            if (look.set) mapLookByUV(look);
+            continue;
+        }
         if (collectBlobEntry(kind, e)) continue;
         if (kind == Kw::height_field &&
             (ImageFiles::isImageType(k) || k == Kw::function || k == Kw::smooth || k == Kw::water_level)) {
@@ -280,7 +288,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     // would vanish without a word.
     if (!toWorld.isUsable())
         throw Error(notes_.where(item.loc) + ": error: the object's transformation overflows or is singular");
-    if (look.set || look.interiorSet) moveLook(look, parent);  // texture space → world
+    if (look.set || look.interiorSet) placeLook(look, parent);  // texture space → world
     if (!look.set && look.interiorSet) {  // an interior alone: the texture it would have had, with it
         const InteriorLook interior = look.interior;
         look = inherited ? *inherited : fallback_;
@@ -596,7 +604,7 @@ bool SceneBuilder::oneListedTexture(const Item& m, const Transform& toWorld, App
     }
     out = fallback_;
     applyTexture(*textures[0], out, notes_, &pigments_, &fallback_);
-    moveLook(out, toWorld);
+    placeLook(out, toWorld);
     return true;
 }
 

@@ -34,7 +34,7 @@ BlobComponent SceneBuilder::blobComponent(const Item& item, const Transform& toW
         }
         if (isTransformEntry(e)) {
             applyTransform(e, c.toBlob);
-            if (own.set) moveLook(own, e);  // transformations after the texture move it (all its layers)
+            if (own.set) placeLook(own, e);  // transformations after the texture move it (all its layers)
             continue;
         }
         if (applyAppearanceEntry(e, own, fallback_, notes_, &pigments_)) continue;
@@ -53,7 +53,7 @@ BlobComponent SceneBuilder::blobComponent(const Item& item, const Transform& toW
     if (!strengthSet) c.strength = toFloat(*v[n]);
     if (c.toBlob.determinant() == 0)
         throw Error(notes_.where(item.loc) + ": error: the blob component's transformation is singular");
-    if (own.set) moveLook(own, toWorld * c.toBlob);  // texture space → world
+    if (own.set) placeLook(own, toWorld * c.toBlob);  // texture space → world
     return c;
 }
 

@@ -13,9 +13,10 @@ struct PovPigmentSample {
 };
 
 /// The pattern colour of surface s at world point P, N the (perturbed) normal facing the viewer
-/// there (for the slope pattern); s.pigment must be ≥ 0.
-inline PovPigmentSample povPigmentAt(const Scene& scene, const PovSurface& s, Vec3 P, Vec3 N) {
-    const pattern::Rgbft c = scene.pigments.atRoot(s.pigment, P, N);
+/// there (for the slope pattern); s.pigment must be ≥ 0. uv: the surface's (u, v, 0) when it has
+/// texture coordinates (uv-mapped pigments are looked up there).
+inline PovPigmentSample povPigmentAt(const Scene& scene, const PovSurface& s, Vec3 P, Vec3 N, const Vec3* uv = nullptr) {
+    const pattern::Rgbft c = scene.pigments.atRoot(s.pigment, P, N, uv);
     return {c.rgb, std::clamp(c.filter, 0.0, 1.0), c.transmit};
 }
 

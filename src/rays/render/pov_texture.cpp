@@ -14,7 +14,7 @@ struct Choices {
     int count = 0;
 };
 
-void collect(const Scene& scene, int n, Vec3 P, Vec3 N, double weight, Choices& c, int depth) {
+void collect(const Scene& scene, int n, Vec3 P, Vec3 N, const Vec3* uv, double weight, Choices& c, int depth) {
     const PovTextures& tx = scene.povTextures;
     const PovTextureNode& node = tx.nodes[size_t(n)];
     if (node.pattern < 0) {
@@ -33,33 +33,34 @@ void collect(const Scene& scene, int n, Vec3 P, Vec3 N, double weight, Choices& 
         if (total == 0) return;
         for (int i = 0; i < m; ++i)
             if (const double w = pigments.entries[size_t(pn.mapBegin + i)].value; w != 0)
-                collect(scene, child(i), P, N, weight * w / total, c, depth + 1);
+                collect(scene, child(i), P, N, uv, weight * w / total, c, depth + 1);
         return;
     }
-    const pattern::MapPlace at = pigments.placeAtRoot(node.pattern, P, N);
-    if (at.lo == at.hi || at.t <= 0) return collect(scene, child(at.lo), P, N, weight, c, depth + 1);
-    if (at.t >= 1) return collect(scene, child(at.hi), P, N, weight, c, depth + 1);
-    collect(scene, child(at.lo), P, N, weight * (1 - at.t), c, depth + 1);
-    collect(scene, child(at.hi), P, N, weight * at.t, c, depth + 1);
+    const pattern::MapPlace at = pigments.placeAtRoot(node.pattern, P, N, uv);
+    if (at.lo == at.hi || at.t <= 0) return collect(scene, child(at.lo), P, N, uv, weight, c, depth + 1);
+    if (at.t >= 1) return collect(scene, child(at.hi), P, N, uv, weight, c, depth + 1);
+    collect(scene, child(at.lo), P, N, uv, weight * (1 - at.t), c, depth + 1);
+    collect(scene, child(at.hi), P, N, uv, weight * at.t, c, depth + 1);
 }
 
 }  // namespace
 
-int povTextureChoices(const Scene& scene, int node, Vec3 P, Vec3 N, PovTextureChoice (&out)[kMaxTextureChoices]) {
+int povTextureChoices(const Scene& scene, int node, Vec3 P, Vec3 N, PovTextureChoice (&out)[kMaxTextureChoices],
+                      const Vec3* uv) {
     Choices c{out};
-    collect(scene, node, P, N, 1.0, c, 0);
+    collect(scene, node, P, N, uv, 1.0, c, 0);
     return c.count;
 }
 
-Vec3 povTextureTint(const Scene& scene, int node, Vec3 P, Vec3 N) {
+Vec3 povTextureTint(const Scene& scene, int node, Vec3 P, Vec3 N, const Vec3* uv) {
     PovTextureChoice choices[kMaxTextureChoices];
-    const int n = povTextureChoices(scene, node, P, N, choices);
+    const int n = povTextureChoices(scene, node, P, N, choices, uv);
     Vec3 tint;
     for (int i = 0; i < n; ++i) {
         Vec3 through(1.0);
         for (int k = 0; k < choices[i].count && through != Vec3{}; ++k) {
             const PovLayer& l = scene.povTextures.layers[size_t(choices[i].begin + k)];
-            const PovPigmentSample c = povLayerPigment(scene, l, P, N);
+            const PovPigmentSample c = povLayerPigment(scene, l, P, N, uv);
             through *= povFilterTint(c.color, c.filter, c.transmit);
         }
         tint += choices[i].weight * through;

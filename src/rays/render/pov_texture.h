@@ -27,18 +27,20 @@ constexpr int kMaxTextureChoices = 8;
 /// for layers, the pattern's map entry or block entry, two between map entries (linearly: the
 /// manual blends the whole textures' colours), all of an average by the map's weights. Returns
 /// how many were written to out.
-int povTextureChoices(const Scene& scene, int node, Vec3 P, Vec3 N, PovTextureChoice (&out)[kMaxTextureChoices]);
+/// uv: the surface's (u, v, 0) when it has texture coordinates (for uv-mapped patterns).
+int povTextureChoices(const Scene& scene, int node, Vec3 P, Vec3 N, PovTextureChoice (&out)[kMaxTextureChoices],
+                      const Vec3* uv = nullptr);
 
 /// A layer's pigment at world point P, N the layer's normal facing the viewer (its pattern, or its
 /// flat colour).
-inline PovPigmentSample povLayerPigment(const Scene& scene, const PovLayer& l, Vec3 P, Vec3 N) {
-    if (l.surface.pigment >= 0) return povPigmentAt(scene, l.surface, P, N);
+inline PovPigmentSample povLayerPigment(const Scene& scene, const PovLayer& l, Vec3 P, Vec3 N, const Vec3* uv = nullptr) {
+    if (l.surface.pigment >= 0) return povPigmentAt(scene, l.surface, P, N, uv);
     return {l.color, l.filter, l.surface.transmit};
 }
 
 /// What texture node `node` lets through at P, per channel: the product over each run's layers of
 /// filter·C + transmit, the runs blended by their weights (measured: a shadow through a layered
 /// pane is tinted by both layers).
-Vec3 povTextureTint(const Scene& scene, int node, Vec3 P, Vec3 N);
+Vec3 povTextureTint(const Scene& scene, int node, Vec3 P, Vec3 N, const Vec3* uv = nullptr);
 
 }  // namespace rays

@@ -270,6 +270,9 @@ private:
         const Material* material = nullptr;
         const PovSurface* surface = nullptr;
         Vec3 P, N, C;
+        Vec3 uv;             ///< the surface's (u, v, 0) when hasUV (uv-mapped patterns)
+        bool hasUV = false;
+        const Vec3* uvPoint() const { return hasUV ? &uv : nullptr; }
         double filter = 0, transmit = 0;  ///< the pigment's at P
         bool entering = true;
         int interior = -1;
