@@ -236,15 +236,22 @@ void applyInterior(const Item& i, InteriorLook& in, NotRendered& notes, PigmentC
     }
 }
 
-void moveLook(Appearance& a, const Transform& outer) {
-    a.pigmentToObject = outer * a.pigmentToObject;
+namespace {
+
+// moveLook (keepUV false) and placeLook (true: uv-mapped pigments and patterns stay in uv space).
+void moveParts(Appearance& a, const Transform& outer, bool keepUV) {
+    if (!(keepUV && a.pigmentUV)) a.pigmentToObject = outer * a.pigmentToObject;
     a.normalToObject = outer * a.normalToObject;
-    a.patternToObject = outer * a.patternToObject;
-    for (Appearance& l : a.layers) moveLook(l, outer);
-    for (Appearance& c : a.choices) moveLook(c, outer);
-    for (Appearance& i : a.inside) moveLook(i, outer);
+    if (!(keepUV && a.patternUV)) a.patternToObject = outer * a.patternToObject;
+    for (Appearance& l : a.layers) moveParts(l, outer, keepUV);
+    for (Appearance& c : a.choices) moveParts(c, outer, keepUV);
+    for (Appearance& i : a.inside) moveParts(i, outer, keepUV);
     for (MediaLook& m : a.interior.media) moveMedia(m, outer);
 }
+
+}  // namespace
+
+void moveLook(Appearance& a, const Transform& outer) { moveParts(a, outer, false); }
 
 void moveLook(Appearance& a, const Entry& transformation) {
     Transform t;
@@ -252,15 +259,7 @@ void moveLook(Appearance& a, const Entry& transformation) {
     moveLook(a, t);
 }
 
-void placeLook(Appearance& a, const Transform& outer) {
-    if (!a.pigmentUV) a.pigmentToObject = outer * a.pigmentToObject;
-    a.normalToObject = outer * a.normalToObject;
-    if (!a.patternUV) a.patternToObject = outer * a.patternToObject;
-    for (Appearance& l : a.layers) placeLook(l, outer);
-    for (Appearance& c : a.choices) placeLook(c, outer);
-    for (Appearance& i : a.inside) placeLook(i, outer);
-    for (MediaLook& m : a.interior.media) moveMedia(m, outer);
-}
+void placeLook(Appearance& a, const Transform& outer) { moveParts(a, outer, true); }
 
 void placeLook(Appearance& a, const Entry& transformation) {
     Transform t;
