@@ -86,30 +86,6 @@ double gradientValue(Vec3 p, Vec3 dir) {
 double granite(Vec3 p) { return std::min(1.0, 1.2 * turbulenceScalar(p * 4.0, 6, 0.5, 2)); }
 double wrinkles(Vec3 p) { return std::clamp(0.096 + turbulenceScalar(p, 10, 0.5, 2), 0.0, 1.0); }
 
-// crackle: the distance to the second nearest feature point minus the nearest (one point per
-// unit cube, placed by noise), dark along the Voronoi cells' edges.
-double crackle(Vec3 p) {
-    const double cx = std::floor(p.x), cy = std::floor(p.y), cz = std::floor(p.z);
-    double d1 = 1e300, d2 = 1e300;
-    for (int i = -1; i <= 1; ++i)
-        for (int j = -1; j <= 1; ++j)
-            for (int k = -1; k <= 1; ++k) {
-                const double x = cx + i, y = cy + j, z = cz + k;
-                const Vec3 f{x + noise(Vec3{x, y, z} * 1.0 + Vec3{0.31, 0.47, 0.13}),
-                             y + noise(Vec3{x, y, z} + Vec3{17.71, 0.29, 0.83}),
-                             z + noise(Vec3{x, y, z} + Vec3{0.61, 23.37, 0.59})};
-                const Vec3 d = f - p;
-                const double dist = std::sqrt(dot(d, d));
-                if (dist < d1) {
-                    d2 = d1;
-                    d1 = dist;
-                } else if (dist < d2) {
-                    d2 = dist;
-                }
-            }
-    return std::clamp(0.8 * (d2 - d1), 0.0, 1.0);  // POV-Ray's spread: 0.18 ± 0.14 (measured)
-}
-
 // cells (POV-Ray 3.7 reference, "Cells"): one value per unit cube, uniform in [0, 1) (measured with
 // POV-Ray's pattern functions: constant within a cube, mean 0.50, spread 0.29 over 400 cubes). The
 // values come from a hash of the cube's integer coordinates (splitmix64's finaliser), not POV-Ray's
@@ -256,7 +232,7 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 
         case PatternKind::Granite: return granite(p);
         case PatternKind::Wood: return std::sqrt(p.x * p.x + p.y * p.y);
         case PatternKind::Wrinkles: return wrinkles(p);
-        case PatternKind::Crackle: return crackle(p);
+        case PatternKind::Crackle: return crackleValue(p, params.crackle);
         case PatternKind::Ripples: return ripplesValue(p);
         case PatternKind::Waves: return wavesValue(p);
         case PatternKind::Dents: return dentsValue(p);

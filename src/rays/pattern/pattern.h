@@ -6,6 +6,7 @@
 
 #include "rays/fn/program.h"
 #include "rays/math/vec3.h"
+#include "rays/pattern/crackle.h"
 #include "rays/pattern/density_file.h"
 #include "rays/pattern/noise.h"
 #include "rays/pattern/object_pattern.h"
@@ -71,6 +72,7 @@ struct PatternParams {
     const PatternObject* object = nullptr;  ///< Object: the inside test (kept alive by the PigmentTable)
     int tiling = 1;                         ///< Tiling: the tiling's number (1 to 27)
     Pavement pavement;                      ///< Pavement: its tile and corners
+    Crackle crackle;                        ///< Crackle: form, metric, offset, solid
 };
 
 /// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type

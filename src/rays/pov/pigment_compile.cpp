@@ -402,7 +402,13 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::number_of_sides: pp.pavement.sides = int(num(0)); break;
         case Kw::number_of_tiles: pp.pavement.tiles = int(num(0)); break;
         case Kw::pattern: pp.pavement.pattern = int(num(0)); break;
-        case Kw::form: pp.pavement.form = int(num(0)); break;
+        case Kw::form:  // pavement's form number, crackle's form vector
+            pp.pavement.form = int(num(0));
+            pp.crackle.form = toVec3(e.args[0]);
+            break;
+        case Kw::metric: pp.crackle.metric = num(0); break;
+        case Kw::offset: pp.crackle.offset = num(0); break;
+        case Kw::solid: pp.crackle.solid = true; break;
         case Kw::exterior:
             pp.pavement.exterior = int(num(0));
             pp.exterior = int(num(0));
