@@ -442,14 +442,11 @@ TEST(PovPattern, WarpsApplyInFileOrderWithTheTransformations) {
     expectValues("gradient x warp { repeat 2*x offset <0, 0.25, 0> flip x }", {{{2.5, 0.1, 0}, 0.5}, {{3.2, 0, 0}, 0.8}});
     expectValues("gradient x scale 0.5 warp { repeat x } scale 3",
                  {{{0.5, 0, 0}, 0.333333}, {{2.9, 0, 0}, 0.933333}, {{3.5, 0, 0}, 0.333333}, {{4, 0, 0}, 0.666667}});
-    // A turbulence warp moves the point; unknown warps are noted.
+    // A turbulence warp moves the point.
     const Probe turb = pigment(std::string("gradient x warp { turbulence <0.3, 0, 0> }") + kGrey);
     int moved = 0;
     for (int i = 0; i < 20; ++i) moved += std::fabs(turb.at({0.5, 0.37 * i, 0.11 * i}).rgb.x - 0.5) > 1e-3;
     EXPECT_GT(moved, 15);
-    const Probe torus = pigment("gradient x warp { toroidal }");
-    ASSERT_EQ(torus.b.warnings.size(), 1u);
-    EXPECT_NE(torus.b.warnings[0].find("warp toroidal"), std::string::npos);
 }
 
 // The x, y, z of the point a warp hands its pattern, through `function { 0.5 + 0.01·v }`; values
@@ -475,6 +472,31 @@ TEST(PovPattern, MappingWarpsMatchPovRay) {
     expectWarped("cylindrical orientation -x", {-0.7, 0.25, 0.6}, {-0.92195, -0.25, 0.38722});
     expectWarped("spherical", {2, -1, 0.5}, {0.03899, 0.35624, 2.29129});
     expectWarped("spherical dist_exp 1", {1.3, 0.5, -0.4}, {1.38029, 0.88706, 1.44914});
+}
+
+TEST(PovPattern, ToroidalAndCubicWarpsMatchPovRay) {
+    // Printed by POV-Ray 3.7 (function { 0.5 + 0.01·v } as above).
+    expectWarped("toroidal", {2, 1, 0}, {0, 0.625, 1.41421});
+    expectWarped("toroidal", {1.5, 0.5, 1.5}, {0.125, 0.56676, 1.22775});
+    expectWarped("toroidal", {-2, 0.3, 0}, {0.5, 0.54639, 1.04403});
+    expectWarped("toroidal", {0.5, 0, 0}, {0, 0, 0.5});  // half a turn round the tube wraps to 0
+    expectWarped("toroidal major_radius 2", {-2, 0.3, 0}, {0.5, 0.75, 0.3});
+    expectWarped("toroidal major_radius 2", {1.5, 0.5, 1.5}, {0.125, 0.71211, 0.51451});
+    expectWarped("toroidal dist_exp 1", {1.5, 0.5, 1.5}, {0.15347, 0.69583, 1.22775});
+    expectWarped("toroidal orientation y", {2, 1, 0}, {0, -1.41421, 0.625});
+    // Each face of the cube, then edges and corners (the first face of +x, +z, +y, -x, -y, -z).
+    expectWarped("cubic", {2, 1, 0}, {0.625, 0.58333, 2});
+    expectWarped("cubic", {1, 2, 3}, {0.41667, 0.61111, 3});
+    expectWarped("cubic", {-2, 0, 1}, {0.1875, 0.5, 2});
+    expectWarped("cubic", {1, 0, -2}, {0.8125, 0.5, 2});
+    expectWarped("cubic", {0, 2, 1}, {0.375, 0.75, 2});
+    expectWarped("cubic", {0.2, -0.7, 0.4}, {0.41071, 0.26190, 0.7});
+    expectWarped("cubic", {1, 1, 0}, {0.625, 0.66667, 1});
+    expectWarped("cubic", {-1, 1, 0}, {0.25, 0.83333, 1});
+    expectWarped("cubic", {0, 1, 1}, {0.375, 0.66667, 1});
+    expectWarped("cubic", {0, 1, -1}, {0.375, 1, 1});
+    expectWarped("cubic", {0, -1, -1}, {0.375, 0, 1});
+    expectWarped("cubic", {-1, -1, -1}, {0, 0.33333, 1});
 }
 
 TEST(PovPattern, BlackHoleWarpMatchesPovRay) {

@@ -462,8 +462,8 @@ void PigmentCompiler::readObjectPattern(const Entry& e, State& s, int depth) {
     }
 }
 
-// warp { turbulence ... }, warp { repeat ... } and the mapping warps planar, cylindrical and
-// spherical (with orientation and dist_exp); the other warps are noted and left out.
+// warp { turbulence ... }, warp { repeat ... }, black_hole and the mapping warps planar,
+// cylindrical, spherical, toroidal (with orientation, dist_exp, major_radius) and cubic.
 void PigmentCompiler::readWarp(const Item& warp, State& s) {
     pattern::WarpStep step;
     bool known = false;
@@ -521,10 +521,9 @@ void PigmentCompiler::readWarp(const Item& warp, State& s) {
             case Kw::falloff: step.hole.falloff = num(0); break;
             case Kw::strength: step.hole.strength = num(0); break;
             case Kw::inverse: step.hole.inverse = true; break;
-            case Kw::toroidal: case Kw::cubic:
-                notes_.note(std::string("warp ") + std::string(sdl::keywordName(e.kw())), e.loc,
-                            "(the pattern is drawn without it)");
-                return;
+            case Kw::toroidal: mapping(pattern::MappingKind::Toroidal); break;
+            case Kw::cubic: mapping(pattern::MappingKind::Cubic); break;
+            case Kw::major_radius: step.mapping.majorRadius = num(0); break;
             default: break;
         }
     }
