@@ -12,7 +12,15 @@ namespace {
 
 void pushVec(std::vector<float>& out, Vec3 v) { out.insert(out.end(), {float(v.x), float(v.y), float(v.z)}); }
 
-std::unique_ptr<Mesh> fromTriangles(const Item& m) {
+// The index of texture item t in ft (added when new).
+int32_t textureIndex(FaceTextures& ft, const Item* t) {
+    const auto at = std::find(ft.textures.begin(), ft.textures.end(), t);
+    if (at != ft.textures.end()) return int32_t(at - ft.textures.begin());
+    ft.textures.push_back(t);
+    return int32_t(ft.textures.size() - 1);
+}
+
+std::unique_ptr<Mesh> fromTriangles(const Item& m, FaceTextures& ft) {
     auto mesh = std::make_unique<Mesh>();
     bool anySmooth = false, anyUV = false;
     for (const Entry& e : m.entries)
@@ -32,6 +40,8 @@ std::unique_ptr<Mesh> fromTriangles(const Item& m) {
         const Vec3 g = cross(v[1] - v[0], v[2] - v[0]);
         if (length(g) == 0) continue;
         const uint32_t base = uint32_t(mesh->positions.size() / 3);
+        const Entry* texture = findEntry(t, Kw::texture);
+        ft.face.push_back(texture ? textureIndex(ft, &texture->args[0].item()) : -1);
         for (int k = 0; k < 3; ++k) {
             pushVec(mesh->positions, v[k]);
             mesh->indices.push_back(base + uint32_t(k));
@@ -68,6 +78,63 @@ std::vector<const Value*> section(const Item& m, Kw k) {
     std::vector<const Value*> v = positionals(e->args[0].item());
     if (!v.empty()) v.erase(v.begin());
     return v;
+}
+
+// Whether a texture item is textures written one after another (grammar.cpp's readTextureLayers:
+// two or more bare entries, each a texture), which a texture_list holds as separate textures.
+bool writtenInARow(const Item& t) {
+    if (t.entries.size() < 2) return false;
+    for (const Entry& e : t.entries)
+        if (!e.positional() || e.args.size() != 1 || e.args[0].type != VType::Item || e.args[0].item().kind != Kw::texture)
+            return false;
+    return true;
+}
+
+// mesh2's texture_list: its texture items in order.
+std::vector<const Item*> textureList(const Item& m) {
+    std::vector<const Item*> out;
+    const Entry* list = findEntry(m, Kw::texture_list);
+    if (!list) return out;
+    auto add = [&](const Item& t) {
+        if (!writtenInARow(t)) return out.push_back(&t);
+        for (const Entry& e : t.entries) out.push_back(&e.args[0].item());
+    };
+    for (const Entry& e : list->args[0].item().entries) {
+        if (e.key == kMapEntry) continue;
+        if (!e.positional() && e.kw() == Kw::texture) add(e.args[0].item());
+        if (e.positional())
+            for (const Value& v : e.args)
+                if (v.type == VType::Item && v.item().kind == Kw::texture) add(v.item());
+    }
+    return out;
+}
+
+// face_indices' texture indices: after each face's vector, none, one, or three (one per vertex;
+// each face then takes its first). False, with the reason, for an index out of the list.
+bool faceTextureIndices(const Item& m, FaceTextures& ft, std::string& problem) {
+    ft.textures = textureList(m);
+    const Entry* faces = findEntry(m, Kw::face_indices);
+    if (!faces) return true;
+    const std::vector<const Value*> v = section(m, Kw::face_indices);
+    int after = 0;  // numbers seen after the current face's vector
+    for (const Value* x : v) {
+        if (x->type == VType::Vector) {
+            ft.face.push_back(-1);
+            after = 0;
+            continue;
+        }
+        if (ft.face.empty()) continue;
+        if (++after == 3) ft.perVertex = &faces->args[0].item();
+        if (after > 1) continue;
+        const double i = x->c[0];
+        if (!(i >= 0 && i < double(ft.textures.size()))) {
+            problem = "mesh2 texture index " + std::to_string(long(i)) + " is out of range (" +
+                      std::to_string(ft.textures.size()) + " textures in texture_list)";
+            return false;
+        }
+        ft.face.back() = int32_t(i);
+    }
+    return true;
 }
 
 std::unique_ptr<Mesh> fromMesh2(const Item& m, std::string& problem) {
@@ -118,9 +185,12 @@ std::unique_ptr<Mesh> fromMesh2(const Item& m, std::string& problem) {
 
 }  // namespace
 
-std::unique_ptr<Mesh> meshFromItem(const Item& m, std::string& problem) {
+std::unique_ptr<Mesh> meshFromItem(const Item& m, std::string& problem, FaceTextures* textures) {
     problem.clear();
-    std::unique_ptr<Mesh> mesh = m.kind == Kw::mesh2 ? fromMesh2(m, problem) : fromTriangles(m);
+    FaceTextures ft;
+    std::unique_ptr<Mesh> mesh = m.kind == Kw::mesh2 ? fromMesh2(m, problem) : fromTriangles(m, ft);
+    if (mesh && m.kind == Kw::mesh2 && !faceTextureIndices(m, ft, problem)) return nullptr;
+    if (textures) *textures = std::move(ft);
     // inside_vector (POV-Ray 3.7 reference, "Mesh"): the direction inside tests count crossings along.
     if (const Entry* v = findEntry(m, Kw::inside_vector); mesh && v && !v->args.empty()) {
         const Vec3 d = toVec3(v->args[0]);

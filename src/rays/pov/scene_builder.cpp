@@ -551,61 +551,53 @@ void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a
 
 void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appearance& look, bool inverse) {
     std::string problem;
-    std::unique_ptr<Mesh> mesh = meshFromItem(m, problem);
+    FaceTextures named;
+    std::unique_ptr<Mesh> mesh = meshFromItem(m, problem, &named);
     if (!mesh) throw Error(notes_.where(m.loc) + ": error: " + problem);
     if (mesh->triangleCount() == 0) return;
     countObjects(mesh->triangleCount(), m.loc);
-    Appearance listed;  // a texture list of one texture that every face names draws the mesh
-    const bool useList = oneListedTexture(m, toWorld, listed);
     try {
         mesh->finalize();
     } catch (const Error& err) {
         throw Error(notes_.where(m.loc) + ": error: " + err.what());
     }
+    if (named.perVertex)
+        notes_.note("mesh2 textures per vertex", named.perVertex->loc, "(each face drawn in its first vertex's texture)");
     Object o;
     o.type = ShapeType::Mesh;
     o.mesh = mesh.get();
     o.line = int(m.loc.line);
     o.col = int(m.loc.col);
-    o.material = material(useList ? listed : look);
+    o.material = material(look);
+    // A texture that every face names is the mesh's (the mesh_camera demos bake a uv-mapped
+    // texture so); else each named texture is a part of the mesh, found by the hit's triangle.
+    const bool one = !named.face.empty() && named.face[0] >= 0 &&
+                     std::all_of(named.face.begin(), named.face.end(), [&](int32_t t) { return t == named.face[0]; });
+    if (one) o.material = material(faceLook(*named.textures[size_t(named.face[0])], toWorld));
     prepareObject(o, toWorld);
+    const bool any = std::any_of(named.face.begin(), named.face.end(), [](int32_t t) { return t >= 0; });
+    if (any && !one) {
+        auto data = std::make_unique<ShapeData>();
+        for (const Item* t : named.textures) {
+            Object part = o;
+            part.material = material(faceLook(*t, toWorld));
+            data->parts.push_back(part);
+        }
+        data->faceParts = std::move(named.face);
+        o.data = data.get();
+        for (Object& part : data->parts) part.data = data.get();
+        scene_.shapeData.push_back(std::move(data));
+    }
     scene_.meshes.push_back(std::move(mesh));
     emit(o, inverse);
 }
 
-// mesh2's texture_list (POV-Ray 3.7 reference, "Mesh2"): face_indices name a texture of the list
-// after each face (one, or three interpolated over the face). Rays draws a list of one texture
-// that every face names (the mesh_camera demos bake a uv-mapped texture so) as the mesh's texture;
-// other lists are noted and the mesh's own texture is used.
-bool SceneBuilder::oneListedTexture(const Item& m, const Transform& toWorld, Appearance& out) {
-    const Entry* list = nullptr;
-    for (const Entry& e : m.entries)
-        if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::texture_list) list = &e;
-    if (!list) return false;
-    std::vector<const Item*> textures;
-    for (const Entry& e : list->args[0].item().entries) {
-        if (e.key == kMapEntry) continue;
-        if (!e.positional() && e.kw() == Kw::texture) textures.push_back(&e.args[0].item());
-        if (e.positional())
-            for (const Value& v : e.args)
-                if (v.type == VType::Item && v.item().kind == Kw::texture) textures.push_back(&v.item());
-    }
-    bool everyFace = false;
-    if (const Entry* faces = findEntry(m, Kw::face_indices); faces && textures.size() == 1) {
-        const std::vector<const Value*> v = positionals(faces->args[0].item());
-        everyFace = v.size() > 1;
-        for (size_t i = 1; i < v.size() && everyFace; ++i)  // after the count: each vector, then its index
-            if (v[i]->type == VType::Vector)
-                everyFace = i + 1 < v.size() && v[i + 1]->type != VType::Vector;
-    }
-    if (!everyFace) {
-        notes_.note("mesh2 texture_list", list->loc, "(the mesh's own texture is used)");
-        return false;
-    }
-    out = fallback_;
-    applyTexture(*textures[0], out, notes_, &pigments_, &fallback_);
+// The look of a texture a mesh's face names: the default texture under it, moved with the mesh.
+Appearance SceneBuilder::faceLook(const Item& texture, const Transform& toWorld) {
+    Appearance out = fallback_;
+    applyTexture(texture, out, notes_, &pigments_, &fallback_);
     placeLook(out, toWorld);
-    return true;
+    return out;
 }
 
 // ---- global settings -------------------------------------------------------------------------

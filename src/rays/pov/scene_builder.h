@@ -67,9 +67,8 @@ private:
     void addIsosurface(const std::vector<const Entry*>& entries, const sdl::Loc& at, const Transform& toWorld,
                        const Appearance& look, bool open, bool inverse);
     void addMesh(const Item& mesh, const Transform& toWorld, const Appearance& look, bool inverse);
-    /// True, with its look (texture space → world) in out, when a mesh2's texture_list holds one
-    /// texture that every face names; otherwise false (a texture_list is noted).
-    bool oneListedTexture(const Item& mesh, const Transform& toWorld, Appearance& out);
+    /// The look (texture space → world) of a texture that a mesh's triangle names.
+    Appearance faceLook(const Item& texture, const Transform& toWorld);
     void addText(const Entry* font, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,
                  const Appearance& look, bool inverse);
     /// CSG trees (scene/csg.h): the children of a node, the objects of a clipped_by block, the

@@ -223,6 +223,10 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
         case ShapeType::Mesh: {
             MeshHit mh;
             if (!intersectMesh(*o.mesh, r, tMin, tMax, mh)) return false;
+            if (o.data && mh.triangle < o.data->faceParts.size()) {  // the face's own texture
+                const int32_t part = o.data->faceParts[mh.triangle];
+                h.part = part >= 0 ? &o.data->parts[size_t(part)] : nullptr;
+            }
             h.t = mh.t;
             h.normal = mh.normal;
             h.geomNormal = mh.geomNormal;

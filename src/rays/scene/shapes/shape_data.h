@@ -1,6 +1,7 @@
 // Parameters of a shape that do not fit in Object's fixed fields (polygon edges, polynomial
 // coefficients), owned by the Scene; Object::data points at them.
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -26,7 +27,8 @@ struct ShapeData {
     bool conic = false;          ///< Prism only: conic_sweep (the outline scaled by the height)
     Bounds bounds;               ///< object-space bounds (empty: unbounded)
     std::vector<BoxNode> tree;   ///< Blob only: its components' box tree (root first)
-    std::vector<Object> parts;   ///< Blob only: copies of the object with a component's texture (ShapeHit::part)
+    std::vector<Object> parts;   ///< Blob, Mesh: copies of the object with a component's or a face's texture (ShapeHit::part)
+    std::vector<int32_t> faceParts;  ///< Mesh only: each triangle's texture, an index in parts (−1: the mesh's own)
     std::shared_ptr<const fn::Program> function;  ///< Isosurface only: its function (rays/fn)
 };
 
