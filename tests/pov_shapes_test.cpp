@@ -335,6 +335,86 @@ TEST(PovShapesPoly, QuadricInsideBoxesHoldTheirInsideTightly) {
     }
 }
 
+TEST(PovShapesQuadric, BoxWithinAClipBoxHoldsTheInsidePointsAndNoMore) {
+    // Quadrics without cross terms, unbounded or not, within clip boxes (some sides infinite):
+    // every inside point of the clip box lies in the box (sampled), and the box is the one worked
+    // out by hand (the extremes lie on edges of the inside, which sampling does not reach).
+    struct Case {
+        const char* quadric;
+        Bounds clip, want;
+    };
+    const double inf = kInfinity, r10 = std::sqrt(10.0), r15 = std::sqrt(15.0), r2 = std::sqrt(2.0);
+    // The ellipsoid's case: each axis's quadratic ≤ 4 less the other two at their least over the
+    // clip box (2x² + x: −1/8 at x = −1/4; y² − y: −1/4 at y = 1/2; 3z² + z/2: −1/48 at z = −1/12).
+    const double x6 = (-1 + std::sqrt(1 + 8 * (4 + 0.25 + 1.0 / 48))) / 4;
+    const double y6 = (1 - std::sqrt(1 + 4 * (4 + 0.125 + 1.0 / 48))) / 2;
+    const double zq = std::sqrt(0.25 + 12 * (4 + 0.125 + 0.25)), z6lo = (-0.5 - zq) / 6, z6hi = (-0.5 + zq) / 6;
+    const Case cases[] = {
+        // hyperboloid of one sheet: x² + z² ≤ 1 + y², |y| ≤ 3
+        {"quadric { <1, -1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }", {{-inf, -2, -inf}, {inf, 3, inf}}, {{-r10, -2, -r10}, {r10, 3, r10}}},
+        // two sheets: x² + z² ≤ y² − 1, y ≤ 4
+        {"quadric { <1, -1, 1>, <0, 0, 0>, <0, 0, 0>, 1 }", {{-inf, 1.5, -inf}, {inf, 4, inf}}, {{-r15, 1.5, -r15}, {r15, 4, r15}}},
+        // paraboloid: x² + z² ≤ y ≤ 2
+        {"quadric { <1, 0, 1>, <0, 0, 0>, <0, -1, 0>, 0 }", {{-inf, -1, -inf}, {inf, 2, inf}}, {{-r2, 0, -r2}, {r2, 2, r2}}},
+        // cone: x² + z² ≤ y², |y| ≤ 2.5
+        {"quadric { <1, -1, 1>, <0, 0, 0>, <0, 0, 0>, 0 }", {{-5, -1, -inf}, {0.5, 2.5, inf}}, {{-2.5, -1, -2.5}, {0.5, 2.5, 2.5}}},
+        // |x| ≥ 1
+        {"quadric { <-1, 0, 0>, <0, 0, 0>, <0, 0, 0>, 1 }", {{0.5, -1, -1}, {3, 1, 1}}, {{1, -1, -1}, {3, 1, 1}}},
+        // an ellipsoid cut by x ≥ −0.5 and y ≤ 0.5
+        {"quadric { <2, 1, 3>, <0, 0, 0>, <1, -1, 0.5>, -4 }", {{-0.5, -inf, -inf}, {inf, 0.5, inf}}, {{-0.5, y6, z6lo}, {x6, 0.5, z6hi}}}};
+    for (const Case& c : cases) {
+        const Scene scene = build(c.quadric);
+        const ShapeData& d = *scene.objects[0].data;
+        Bounds box;
+        ASSERT_TRUE(quadricBoxWithin(d, c.clip, box)) << c.quadric;
+        ASSERT_FALSE(box.empty()) << c.quadric;
+        uint64_t state = 7;
+        auto next = [&] {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            return double(state >> 11) * 0x1.0p-53;
+        };
+        for (int i = 0; i < 100000; ++i) {
+            Vec3 p;
+            for (int a = 0; a < 3; ++a) {  // within the clip box, infinite sides cut at ±6
+                const double lo = std::max(c.clip.lo[a], -6.0), hi = std::min(c.clip.hi[a], 6.0);
+                p[a] = lo + (hi - lo) * next();
+            }
+            if (evalPolySurface(d, p) > 0) continue;
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_GE(p[a], box.lo[a]) << c.quadric;
+                EXPECT_LE(p[a], box.hi[a]) << c.quadric;
+            }
+        }
+        for (int a = 0; a < 3; ++a) {
+            if (std::isfinite(c.want.lo[a])) EXPECT_NEAR(box.lo[a], c.want.lo[a], 1e-4) << c.quadric << " axis " << a;
+            else EXPECT_TRUE(std::isinf(box.lo[a])) << c.quadric << " axis " << a;
+            if (std::isfinite(c.want.hi[a])) EXPECT_NEAR(box.hi[a], c.want.hi[a], 1e-4) << c.quadric << " axis " << a;
+            else EXPECT_TRUE(std::isinf(box.hi[a])) << c.quadric << " axis " << a;
+        }
+    }
+    // No inside point in the clip box: an empty box. Cross terms: not handled.
+    Bounds box;
+    const Scene ball = build("quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }");
+    ASSERT_TRUE(quadricBoxWithin(*ball.objects[0].data, Bounds{{2, -1, -1}, {3, 1, 1}}, box));
+    EXPECT_TRUE(box.empty());
+    const Scene slanted = build("quadric { <1, 1, 1>, <1, 0, 0>, <0, 0, 0>, -1 }");
+    EXPECT_FALSE(quadricBoxWithin(*slanted.objects[0].data, Bounds{Vec3(-1), Vec3(1)}, box));
+}
+
+TEST(PovShapesCsg, AHyperboloidBetweenTwoPlanesIsBounded) {
+    // chess2.pov's pawn neck: the intersection's box is the hyperboloid's part between the planes
+    // (x² + z² ≤ 0.25·(1 + (y − 5)²) for y in [2.5, 5.5]), so the BVH can skip it.
+    const Scene s = build("intersection { plane { y, 5.5 } quadric { <1, -1, 1>, <0, 0, 0>, <0, 0, 0>, -1 "
+                          "translate 5*y scale <0.5, 1, 0.5> } plane { -y, -2.5 } }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Bounds b = s.objects[0].csg->bounds;
+    const double r = 0.5 * std::sqrt(1 + 2.5 * 2.5);
+    EXPECT_NEAR(b.lo.y, 2.5, 1e-5);
+    EXPECT_NEAR(b.hi.y, 5.5, 1e-5);
+    EXPECT_NEAR(b.hi.x, r, 1e-4);
+    EXPECT_NEAR(b.lo.z, -r, 1e-4);
+}
+
 TEST(PovShapesCsg, TorusAndPolyCutByABox) {
     const Scene s = build("difference { torus { 2, 0.5 } box { <0, -1, -3>, <3, 1, 3> } }");
     ASSERT_EQ(s.objects.size(), 1u);
@@ -378,6 +458,28 @@ TEST(PovShapesSuperellipsoid, HitsNormalsAndInside) {
     // In CSG: a sphere cut out of it.
     const Scene cut = build("difference { superellipsoid { <1, 1> } sphere { <0, 0, -1>, 0.5 } }");
     EXPECT_NEAR(shoot(cut, {0, 0, -5}, {0, 0, 1}).t, 4.5, 1e-9);
+}
+
+TEST(PovShapesSuperellipsoid, HitsLieOnTheSurfaceForWholeAndFractionalPowers) {
+    // Whole exponents 2/e, 2/n, e/n are taken by repeated squaring, others through exp2 and log2:
+    // both put the hit on f = 1 as std::pow computes f.
+    for (const Vec3 en : {Vec3{0.05, 0.05, 0}, Vec3{0.5, 0.25, 0}, Vec3{0.3, 0.7, 0}, Vec3{1, 2.5, 0}, Vec3{0.1, 1, 0}}) {
+        const Scene s = build("superellipsoid { <" + std::to_string(en.x) + ", " + std::to_string(en.y) + "> }");
+        const double e = en.x, n = en.y;
+        int hits = 0;
+        for (int i = 0; i < 50; ++i) {
+            const Vec3 from{-3 + 0.11 * i, 0.4 - 0.013 * i, -5};
+            const Vec3 dir = normalize(Vec3{0.05 * (25 - i) / 25.0, 0.02, 1} - Vec3{from.x * 0.15, 0, 0});
+            const Hit h = shoot(s, from, dir);
+            if (!h.valid()) continue;
+            ++hits;
+            const Vec3 p = from + h.t * dir;
+            const double f = std::pow(std::pow(std::fabs(p.x), 2 / e) + std::pow(std::fabs(p.y), 2 / e), e / n) +
+                             std::pow(std::fabs(p.z), 2 / n);
+            EXPECT_NEAR(f, 1, 1e-7) << e << " " << n << " ray " << i;
+        }
+        EXPECT_GT(hits, 5) << e << " " << n;
+    }
 }
 
 TEST(PovShapesSuperellipsoid, PixelsMatchPovRay) {

@@ -115,6 +115,17 @@ Bounds leafWorldBox(const Object& o) {
     return allSpace();
 }
 
+// World bounds of a quadric leaf's inside within the world box `clip` (poly.h, quadricBoxWithin),
+// all space for other leaves.
+Bounds quadricWithin(const Object& o, const Bounds& clip) {
+    if (o.type != ShapeType::Poly || !o.data) return allSpace();
+    const Bounds local = o.transformed ? mapBox(o.toObject, clip) : clip;
+    Bounds q;
+    if (!quadricBoxWithin(*o.data, local, q)) return allSpace();
+    if (q.empty()) return q;
+    return o.transformed ? mapBox(o.toObject.inverse(), q) : q;
+}
+
 Bounds leafBounds(const Object& o, bool inverse) {
     if (o.type == ShapeType::Plane) return planeBounds(o, inverse);
     if (inverse || o.type == ShapeType::Disc) return allSpace();  // a disc's inside is its plane's half-space
@@ -134,6 +145,12 @@ Bounds nodeBounds(const Csg& c, int n) {
             if (node.firstChild < 0) break;
             b = allSpace();
             for (int s = node.firstChild; s >= 0; s = c.nodes[size_t(s)].nextSibling) b = meet(b, nodeBounds(c, s));
+            // A quadric's inside can be unbounded (a hyperboloid) and yet bounded within the box of
+            // the other children (two planes): met with its part within the box.
+            for (int s = node.firstChild; s >= 0 && !b.empty(); s = c.nodes[size_t(s)].nextSibling) {
+                const CsgNode& sn = c.nodes[size_t(s)];
+                if (sn.op == CsgOp::Leaf && !sn.inverse) b = meet(b, quadricWithin(c.leaves[size_t(sn.leaf)], b));
+            }
             break;
         case CsgOp::Difference:
             if (node.firstChild >= 0) b = nodeBounds(c, node.firstChild);

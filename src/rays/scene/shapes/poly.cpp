@@ -244,4 +244,73 @@ bool quadricInsideBox(const ShapeData& d, Bounds& box) {
     return true;
 }
 
+namespace {
+
+// The least of a·t² + b·t over [lo, hi] (ends may be infinite; −∞ when unbounded below).
+double leastOver(double a, double b, double lo, double hi) {
+    auto f = [&](double t) { return std::isinf(t) ? (a > 0 || (a == 0 && b * t > 0) ? kInfinity : -kInfinity) : a * t * t + b * t; };
+    double least = std::min(f(lo), f(hi));
+    if (a > 0) {
+        const double v = -b / (2 * a);
+        if (v > lo && v < hi) least = std::min(least, f(v));
+    }
+    return least;
+}
+
+// The hull of {t in [lo, hi] : a·t² + b·t + k ≤ 0}; lo > hi when empty.
+void hullWhereNegative(double a, double b, double k, double& lo, double& hi) {
+    if (a == 0) {
+        if (b == 0) {
+            if (k > 0) lo = kInfinity, hi = -kInfinity;
+            return;
+        }
+        const double root = -k / b;
+        if (b > 0) hi = std::min(hi, root);
+        else lo = std::max(lo, root);
+        return;
+    }
+    const double disc = b * b - 4 * a * k;
+    if (disc < 0) {  // the quadratic keeps a's sign
+        if (a > 0) lo = kInfinity, hi = -kInfinity;
+        return;
+    }
+    const double sq = std::sqrt(disc), r1 = std::min((-b - sq) / (2 * a), (-b + sq) / (2 * a)),
+                 r2 = std::max((-b - sq) / (2 * a), (-b + sq) / (2 * a));
+    if (a > 0) {  // between the roots
+        lo = std::max(lo, r1);
+        hi = std::min(hi, r2);
+        return;
+    }
+    // Outside the roots: the hull of [lo, r1] and [r2, hi] where they are not empty.
+    const bool below = lo <= r1, above = hi >= r2;
+    if (!below && !above) lo = kInfinity, hi = -kInfinity;
+    else if (!below) lo = std::max(lo, r2);
+    else if (!above) hi = std::min(hi, r1);
+}
+
+}  // namespace
+
+bool quadricBoxWithin(const ShapeData& d, const Bounds& clip, Bounds& box) {
+    if (d.order != 2 || d.values.size() < 10) return false;
+    const double* v = d.values.data();
+    if (v[1] != 0 || v[2] != 0 || v[5] != 0) return false;
+    const double a[3] = {v[0], v[4], v[7]}, b[3] = {v[3], v[6], v[8]}, c = v[9];
+    double least[3];
+    for (int i = 0; i < 3; ++i) least[i] = leastOver(a[i], b[i], clip.lo[i], clip.hi[i]);
+    box = clip;
+    for (int i = 0; i < 3; ++i) {
+        const double rest = c + least[(i + 1) % 3] + least[(i + 2) % 3];
+        if (std::isinf(rest) && rest < 0) continue;  // the other axes reach any depth: no limit here
+        if (!(rest < kInfinity)) return box = Bounds{}, true;
+        hullWhereNegative(a[i], b[i], rest, box.lo[i], box.hi[i]);
+        if (!(box.lo[i] <= box.hi[i])) return box = Bounds{}, true;
+        // A margin of a millionth of the ends' size for the rounding of the roots.
+        const double pad = 1e-6 * (1 + (std::isfinite(box.lo[i]) ? std::fabs(box.lo[i]) : 0) +
+                                   (std::isfinite(box.hi[i]) ? std::fabs(box.hi[i]) : 0));
+        box.lo[i] = std::max(clip.lo[i], box.lo[i] - pad);
+        box.hi[i] = std::min(clip.hi[i], box.hi[i] + pad);
+    }
+    return true;
+}
+
 }  // namespace rays

@@ -23,6 +23,12 @@ bool insidePolySurface(const Object& o, Vec3 q);
 /// the quadric is an ellipsoid or an elliptic cylinder along some axes (the variables that appear
 /// in no term are free: those sides are infinite): false for other quadrics and higher orders.
 bool quadricInsideBox(const ShapeData& d, Bounds& box);
+/// The object-space box of {q in clip : p(q) ≤ 0} for a quadric without cross terms (xy, xz, yz):
+/// p is then a sum of one quadratic per axis, so the points of the clip box inside the quadric
+/// reach coordinate t on axis i exactly when fᵢ(t) + c plus the least of the other axes' terms
+/// over the clip box is ≤ 0; the box holds, per axis, the hull of those t. An empty box when no
+/// point of the clip box is inside; false for other quadrics and higher orders.
+bool quadricBoxWithin(const ShapeData& d, const Bounds& clip, Bounds& box);
 /// For a quadric that quadricInsideBox accepts (a convex inside): narrows [lo, hi] to the ray's
 /// stretch within its closed inside (object-space ray); lo ≥ hi when the ray misses it.
 void quadricInsideInterval(const ShapeData& d, const Ray& r, double& lo, double& hi);

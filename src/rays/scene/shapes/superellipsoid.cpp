@@ -16,13 +16,34 @@ namespace {
 
 constexpr int kSamples = 12;  // per piece of the ray
 
-// f(p) − 1 for f = (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n), its powers as exp2 of scaled log2
-// (a zero coordinate: log2 0 = −∞ and exp2 −∞ = 0, as the powers with positive exponents give).
-double superF(double e, double n, Vec3 p) {
-    const double u = 2 / e, v = 2 / n;
-    const double a = std::exp2(u * std::log2(std::fabs(p.x))) + std::exp2(u * std::log2(std::fabs(p.y)));
-    return std::exp2((e / n) * std::log2(a)) + std::exp2(v * std::log2(std::fabs(p.z))) - 1;
-}
+// |x|^k for the exponents 2/e, 2/n and e/n: by repeated squaring when k is a whole number up to
+// 64 (2/e for e = 1, 0.5, 0.25, 0.1, 0.05, ...: the common roundnesses), else as exp2 of the scaled
+// log2 (a zero coordinate: log2 0 = −∞ and exp2 −∞ = 0, as the powers with positive exponents give).
+struct Power {
+    double k = 1;
+    int whole = -1;  ///< k when it is a whole number in [0, 64], else −1
+    explicit Power(double exponent) : k(exponent) {
+        const double r = std::nearbyint(exponent);
+        if (r >= 0 && r <= 64 && std::fabs(exponent - r) <= 1e-12 * r) whole = int(r);
+    }
+    double operator()(double x) const {
+        x = std::fabs(x);
+        if (whole < 0) return std::exp2(k * std::log2(x));
+        double out = 1, base = x;
+        for (int m = whole; m > 0; m >>= 1, base *= base)
+            if (m & 1) out *= base;
+        return out;
+    }
+};
+
+// The superellipsoid's three powers.
+struct SuperPowers {
+    Power u, v, ratio;  ///< 2/e, 2/n, e/n
+    SuperPowers(double e, double n) : u(2 / e), v(2 / n), ratio(e / n) {}
+};
+
+// f(p) − 1 for f = (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n).
+double superF(const SuperPowers& w, Vec3 p) { return w.ratio(w.u(p.x) + w.u(p.y)) + w.v(p.z) - 1; }
 
 // Slab test against the box [-w, w]³: the ray's t range inside it.
 bool clipToBox(const Ray& r, double w, double& t0, double& t1) {
@@ -43,8 +64,8 @@ bool clipToBox(const Ray& r, double w, double& t0, double& t1) {
 // The crossing of f − 1 = 0 between lo and hi (values flo and fhi of opposite signs), narrowed by
 // regula falsi (math/regula_falsi.h; f is smooth within a piece) on 1 − f, whose sign is positive
 // inside as the samples count it (f − 1 < 0).
-double refineCrossing(double e, double n, const Ray& r, double lo, double flo, double hi, double fhi) {
-    auto inward = [&](double t) { return -superF(e, n, r.at(t)); };
+double refineCrossing(const SuperPowers& w, const Ray& r, double lo, double flo, double hi, double fhi) {
+    auto inward = [&](double t) { return -superF(w, r.at(t)); };
     illinoisBracket(inward, lo, -flo, hi, -fhi, [](double a, double b) { return b - a > 1e-13 * (1 + std::fabs(a)); }, 100);
     return 0.5 * (lo + hi);
 }
@@ -53,6 +74,7 @@ double refineCrossing(double e, double n, const Ray& r, double lo, double flo, d
 
 bool hitSuperellipsoid(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     const double e = o.r0, n = o.r1;
+    const SuperPowers w(e, n);
     double t0 = tMin, t1 = tMax;
     if (!clipToBox(r, 1 + 1e-9, t0, t1)) return false;
     // Cut points: the coordinate planes and the planes x = ±y.
@@ -66,15 +88,15 @@ bool hitSuperellipsoid(const Object& o, const Ray& r, double tMin, double tMax, 
     cuts[m++] = t1;
     for (int i = 2; i < m - 1; ++i)  // insertion sort of the inner cuts
         for (int j = i; j > 1 && cuts[j] < cuts[j - 1]; --j) std::swap(cuts[j], cuts[j - 1]);
-    double a = t0, fa = superF(e, n, r.at(t0));
+    double a = t0, fa = superF(w, r.at(t0));
     for (int i = 1; i < m; ++i) {
         const double end = std::clamp(cuts[i], t0, t1);
         if (end <= a) continue;
         for (int s = 1; s <= kSamples; ++s) {
             const double b = s == kSamples ? end : a + (end - a) / (kSamples - s + 1);
-            const double fb = superF(e, n, r.at(b));
+            const double fb = superF(w, r.at(b));
             if ((fa < 0) != (fb < 0)) {
-                h.t = refineCrossing(e, n, r, a, fa, b, fb);
+                h.t = refineCrossing(w, r, a, fa, b, fb);
                 if (!(h.t > tMin && h.t < tMax)) return false;
                 // The gradient of f (outward).
                 const Vec3 p = r.at(h.t);
@@ -94,6 +116,6 @@ bool hitSuperellipsoid(const Object& o, const Ray& r, double tMin, double tMax, 
     return false;
 }
 
-bool insideSuperellipsoid(const Object& o, Vec3 p) { return superF(o.r0, o.r1, p) < 0; }
+bool insideSuperellipsoid(const Object& o, Vec3 p) { return superF(SuperPowers(o.r0, o.r1), p) < 0; }
 
 }  // namespace rays
