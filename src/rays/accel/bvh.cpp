@@ -33,6 +33,7 @@ void take(Hit& best, uint32_t id, const ShapeHit& sh) {
     best.v = sh.v;
     best.dpdu = sh.dpdu;
     best.part = sh.part;
+    best.blend = sh.blend;
 }
 
 // The object BVH's entry for o: its world box and, for spheres intersected in world space, the
@@ -66,6 +67,7 @@ void takeTriangleHit(Hit& best, const Object& o, uint32_t id, Vec3 flatNormal, d
     best.object = int(id);
     best.hasUV = false;
     best.part = nullptr;
+    best.blend.part[0] = nullptr;
     if (o.smooth) {
         triangleNormals(o, u, v, best.geomNormal, best.normal);
     } else {
@@ -233,6 +235,7 @@ private:
         best_.object = int(id);
         best_.hasUV = false;
         best_.part = nullptr;
+        best_.blend.part[0] = nullptr;
         sphere_ = nullptr;
         triangle_ = nullptr;
     }
@@ -286,6 +289,7 @@ Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, do
             best.object = int(id);
             best.hasUV = false;
             best.part = nullptr;
+            best.blend.part[0] = nullptr;
             best.geomNormal = triNormal_[th.prim];
             best.normal = o.smooth ? normalize((1 - th.u - th.v) * o.n0 + th.u * o.n1 + th.v * o.n2) : best.geomNormal;
             if (dot(best.normal, best.geomNormal) < 0) best.normal = -best.normal;

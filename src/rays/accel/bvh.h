@@ -24,6 +24,7 @@ struct Hit {
     double u = 0, v = 0;  ///< the uv at the hit
     Vec3 dpdu;            ///< and the object-space tangent dP/du
     const Object* part = nullptr;  ///< CSG objects: the leaf hit (material, texture space)
+    CornerBlend blend;             ///< a mesh face textured per vertex: its corners' textures and weights
     bool valid() const { return object >= 0; }
 };
 

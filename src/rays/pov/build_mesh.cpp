@@ -109,31 +109,38 @@ std::vector<const Item*> textureList(const Item& m) {
     return out;
 }
 
-// face_indices' texture indices: after each face's vector, none, one, or three (one per vertex;
-// each face then takes its first). False, with the reason, for an index out of the list.
+// face_indices' texture indices: after each face's vector, none, one, or three (one per corner:
+// corners). False, with the reason, for an index out of the list.
 bool faceTextureIndices(const Item& m, FaceTextures& ft, std::string& problem) {
     ft.textures = textureList(m);
-    const Entry* faces = findEntry(m, Kw::face_indices);
-    if (!faces) return true;
+    if (!findEntry(m, Kw::face_indices)) return true;
     const std::vector<const Value*> v = section(m, Kw::face_indices);
     int after = 0;  // numbers seen after the current face's vector
+    std::vector<int32_t> named;  // 3 per face
     for (const Value* x : v) {
         if (x->type == VType::Vector) {
             ft.face.push_back(-1);
+            named.insert(named.end(), {-1, -1, -1});
             after = 0;
             continue;
         }
-        if (ft.face.empty()) continue;
-        if (++after == 3) ft.perVertex = &faces->args[0].item();
-        if (after > 1) continue;
+        if (ft.face.empty() || after == 3) continue;
         const double i = x->c[0];
         if (!(i >= 0 && i < double(ft.textures.size()))) {
             problem = "mesh2 texture index " + std::to_string(long(i)) + " is out of range (" +
                       std::to_string(ft.textures.size()) + " textures in texture_list)";
             return false;
         }
-        ft.face.back() = int32_t(i);
+        named[named.size() - 3 + size_t(after)] = int32_t(i);
+        if (after++ == 0) ft.face.back() = int32_t(i);
     }
+    // Faces with three indices blend them; faces with one (or two: the first) keep their face's.
+    bool anyCorners = false;
+    for (size_t f = 0; f < ft.face.size(); ++f) {
+        if (named[3 * f + 2] >= 0) anyCorners = true;
+        else named[3 * f] = named[3 * f + 1] = -1;
+    }
+    if (anyCorners) ft.corners = std::move(named);
     return true;
 }
 

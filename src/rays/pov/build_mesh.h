@@ -14,7 +14,7 @@ namespace rays::pov {
 struct FaceTextures {
     std::vector<const Item*> textures;  ///< the texture items named (each once)
     std::vector<int32_t> face;          ///< per triangle of the Mesh: its index in textures, −1 none (the mesh's)
-    const Item* perVertex = nullptr;    ///< a mesh2 face_indices with three textures for a face, if any
+    std::vector<int32_t> corners;       ///< when a face names three (one per corner): 3 per triangle, −1 for the others
 };
 
 /// The triangles of a mesh item (triangle and smooth_triangle entries, with uv_vectors), or of a

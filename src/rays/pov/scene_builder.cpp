@@ -561,8 +561,6 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     } catch (const Error& err) {
         throw Error(notes_.where(m.loc) + ": error: " + err.what());
     }
-    if (named.perVertex)
-        notes_.note("mesh2 textures per vertex", named.perVertex->loc, "(each face drawn in its first vertex's texture)");
     Object o;
     o.type = ShapeType::Mesh;
     o.mesh = mesh.get();
@@ -576,7 +574,7 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
     if (one) o.material = material(faceLook(*named.textures[size_t(named.face[0])], toWorld));
     prepareObject(o, toWorld);
     const bool any = std::any_of(named.face.begin(), named.face.end(), [](int32_t t) { return t >= 0; });
-    if (any && !one) {
+    if (any && (!one || !named.corners.empty())) {
         auto data = std::make_unique<ShapeData>();
         for (const Item* t : named.textures) {
             Object part = o;
@@ -584,6 +582,7 @@ void SceneBuilder::addMesh(const Item& m, const Transform& toWorld, const Appear
             data->parts.push_back(part);
         }
         data->faceParts = std::move(named.face);
+        data->cornerParts = std::move(named.corners);
         o.data = data.get();
         for (Object& part : data->parts) part.data = data.get();
         scene_.shapeData.push_back(std::move(data));

@@ -284,6 +284,9 @@ private:
     PovPoint povPointOf(const Ray& ray, const Hit& hit, const Object& o, const PovRay& r, Vec3 segmentFade) const;
     /// Colour of the surface hit: local light, reflection and transmission. segmentFade: how much
     /// the interior fades this ray up to the hit (1 when it does not).
+    /// A mesh face textured per vertex: shadePov with each corner's texture, blended (hit.blend).
+    Vec3 shadePovCorners(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
+                         PathInfo* info) const;
     Vec3 shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                   PathInfo* info) const;
     /// What the reflected and transmitted rays from a point bring (total internal reflection

@@ -96,6 +96,8 @@ bool intersectMesh(const Mesh& m, const Ray& ray, double tMin, double tMax, Mesh
     const Vec3 p0 = vec(m.positions, vi[0]), p1 = vec(m.positions, vi[1]), p2 = vec(m.positions, vi[2]);
     const double b1 = th.u, b2 = th.v, b0 = 1 - b1 - b2;
     hit.triangle = f;
+    hit.b1 = b1;
+    hit.b2 = b2;
     hit.t = th.t;
     hit.geomNormal = normalize(cross(p1 - p0, p2 - p0));
     hit.normal = hit.geomNormal;

@@ -44,6 +44,7 @@ struct MeshHit {
     Vec3 geomNormal;   ///< unit, from the winding (a, b, c)
     Vec3 normal;       ///< interpolated vertex normal (or geomNormal), same side as geomNormal
     double u = 0, v = 0;  ///< texture coordinates (0 without uvs)
+    double b1 = 0, b2 = 0;  ///< barycentric weights of the triangle's second and third corners
     Vec3 dpdu;         ///< tangent along u (zero without uvs)
 };
 

@@ -62,6 +62,14 @@ Bounds worldBounds(const Object& o);
 /// geometric normal (they differ only for smooth triangles and meshes; both on the same side),
 /// and for meshes with texture coordinates the uv and the object-space tangent dP/du; for CSG
 /// objects the leaf hit (its material and texture space).
+/// A mesh face textured per vertex (mesh2, three texture indices after a face): its corners'
+/// textures (parts of the mesh object) and the hit's barycentric weights of the corners.
+struct CornerBlend {
+    const Object* part[3] = {nullptr, nullptr, nullptr};
+    double weight[3] = {0, 0, 0};
+    bool on() const { return part[0] != nullptr; }
+};
+
 struct ShapeHit {
     double t = kInfinity;
     Vec3 normal;
@@ -70,6 +78,7 @@ struct ShapeHit {
     double u = 0, v = 0;
     Vec3 dpdu;
     const Object* part = nullptr;
+    CornerBlend blend;  ///< set on a face textured per vertex
 };
 
 /// Möller–Trumbore test of a Triangle object in the ray's space: t in (tMin, tMax) and the

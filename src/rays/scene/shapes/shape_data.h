@@ -29,6 +29,7 @@ struct ShapeData {
     std::vector<BoxNode> tree;   ///< Blob only: its components' box tree (root first)
     std::vector<Object> parts;   ///< Blob, Mesh: copies of the object with a component's or a face's texture (ShapeHit::part)
     std::vector<int32_t> faceParts;  ///< Mesh only: each triangle's texture, an index in parts (−1: the mesh's own)
+    std::vector<int32_t> cornerParts;  ///< Mesh only: 3 per triangle, its corners' textures in parts (−1: none)
     std::shared_ptr<const fn::Program> function;  ///< Isosurface only: its function (rays/fn)
 };
 
