@@ -67,7 +67,7 @@ void takeTriangleHit(Hit& best, const Object& o, uint32_t id, Vec3 flatNormal, d
     best.object = int(id);
     best.hasUV = false;
     best.part = nullptr;
-    best.blend.part[0] = nullptr;
+    best.blend.face = CornerBlend::kNone;
     if (o.smooth) {
         triangleNormals(o, u, v, best.geomNormal, best.normal);
     } else {
@@ -235,7 +235,7 @@ private:
         best_.object = int(id);
         best_.hasUV = false;
         best_.part = nullptr;
-        best_.blend.part[0] = nullptr;
+        best_.blend.face = CornerBlend::kNone;
         sphere_ = nullptr;
         triangle_ = nullptr;
     }
@@ -289,7 +289,7 @@ Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, do
             best.object = int(id);
             best.hasUV = false;
             best.part = nullptr;
-            best.blend.part[0] = nullptr;
+            best.blend.face = CornerBlend::kNone;
             best.geomNormal = triNormal_[th.prim];
             best.normal = o.smooth ? normalize((1 - th.u - th.v) * o.n0 + th.u * o.n1 + th.v * o.n2) : best.geomNormal;
             if (dot(best.normal, best.geomNormal) < 0) best.normal = -best.normal;

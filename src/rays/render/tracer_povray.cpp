@@ -13,6 +13,7 @@
 #include "rays/render/pov_rainbow.h"
 #include "rays/render/pov_texture.h"
 #include "rays/render/texturing.h"
+#include "rays/scene/shapes/shape_data.h"
 #include "rays/util/stack_room.h"
 #include "rays/render/tracer.h"
 
@@ -135,14 +136,17 @@ Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object
 // strengths: each pixel is their barycentric blend).
 Vec3 Tracer::shadePovCorners(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                              PathInfo* info) const {
+    const ShapeData& data = *shadedObject(scene_.objects, hit).data;  // the face's part: a copy of the mesh
+    const int32_t* corners = &data.cornerParts[3 * size_t(hit.blend.face)];
+    const double weights[3] = {1.0 - hit.blend.b1 - hit.blend.b2, hit.blend.b1, hit.blend.b2};
     Vec3 color;
     bool first = true;
     for (int k = 0; k < 3; ++k) {
-        const double w = hit.blend.weight[k];
+        const double w = weights[k];
         if (!(w > 0)) continue;
         Hit corner = hit;
-        corner.part = hit.blend.part[k];
-        corner.blend.part[0] = nullptr;
+        corner.part = &data.parts[size_t(corners[k])];
+        corner.blend.face = CornerBlend::kNone;
         PovRay part = r;
         part.weight = r.weight * w;
         color += w * shadePov(ray, corner, part, segmentFade, ctx, first ? info : nullptr);

@@ -216,7 +216,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
     bool found = false;
     h.hasUV = false;  // h may be reused across objects
     h.part = nullptr;
-    h.blend.part[0] = nullptr;
+    h.blend.face = CornerBlend::kNone;
     switch (o.type) {
         case ShapeType::Sphere: found = hitSphere(o, r, tMin, tMax, h); break;
         case ShapeType::Plane: found = hitPlane(o, r, tMin, tMax, h); break;
@@ -227,13 +227,8 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
             if (o.data && mh.triangle < o.data->faceParts.size()) {  // the face's own texture
                 const int32_t part = o.data->faceParts[mh.triangle];
                 h.part = part >= 0 ? &o.data->parts[size_t(part)] : nullptr;
-                if (3 * size_t(mh.triangle) < o.data->cornerParts.size()) {  // or one per corner
-                    const int32_t* c = &o.data->cornerParts[3 * size_t(mh.triangle)];
-                    if (c[0] >= 0) {
-                        for (int k = 0; k < 3; ++k) h.blend.part[k] = &o.data->parts[size_t(c[k])];
-                        h.blend.weight[0] = 1 - mh.b1 - mh.b2, h.blend.weight[1] = mh.b1, h.blend.weight[2] = mh.b2;
-                    }
-                }
+                if (3 * size_t(mh.triangle) < o.data->cornerParts.size() && o.data->cornerParts[3 * size_t(mh.triangle)] >= 0)
+                    h.blend = CornerBlend{mh.triangle, float(mh.b1), float(mh.b2)};  // or one per corner
             }
             h.t = mh.t;
             h.normal = mh.normal;

@@ -1,5 +1,6 @@
 // A scene object: one analytic shape in object space, an optional affine transform, a material.
 #pragma once
+#include <cstdint>
 #include <string_view>
 
 #include "rays/error.h"
@@ -62,12 +63,14 @@ Bounds worldBounds(const Object& o);
 /// geometric normal (they differ only for smooth triangles and meshes; both on the same side),
 /// and for meshes with texture coordinates the uv and the object-space tangent dP/du; for CSG
 /// objects the leaf hit (its material and texture space).
-/// A mesh face textured per vertex (mesh2, three texture indices after a face): its corners'
-/// textures (parts of the mesh object) and the hit's barycentric weights of the corners.
+/// A hit on a mesh face textured per vertex (mesh2, three texture indices after a face): the
+/// face (its corners' textures are ShapeData::cornerParts of the hit part's data) and the
+/// barycentric weights of its second and third corners. Small: it rides in every hit.
 struct CornerBlend {
-    const Object* part[3] = {nullptr, nullptr, nullptr};
-    double weight[3] = {0, 0, 0};
-    bool on() const { return part[0] != nullptr; }
+    static constexpr uint32_t kNone = 0xFFFFFFFFu;
+    uint32_t face = kNone;
+    float b1 = 0, b2 = 0;
+    bool on() const { return face != kNone; }
 };
 
 struct ShapeHit {
