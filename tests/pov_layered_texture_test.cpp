@@ -14,6 +14,7 @@
 #include "rays/accel/bvh.h"
 #include "rays/error.h"
 #include "rays/render/tracer.h"
+#include "rays/scene/shapes/shape_data.h"
 #include "support/pov_scene.h"
 
 namespace rays {
@@ -288,6 +289,13 @@ TEST(PovMeshTextureList, EachFaceTakesTheTextureItNames) {
     expectColor(seen(s, -0.5, 0.5), {0, 0, 0.25});
     expectColor(seen(s, 0.5, -0.5), {0, 0.5, 0});
     expectColor(seen(s, 1.5, 0.5), {1, 0, 0});
+    // Triangles that each name the same declared texture share one part.
+    const Scene shared = load(kFaceTextures + "mesh { triangle { <-1,-1,0>, <1,-1,0>, <-1,1,0> texture { TG } }\n"
+                                              "  triangle { <1,-1,0>, <1,1,0>, <-1,1,0> texture { TG } }\n"
+                                              "  triangle { <1,1,0>, <2,1,0>, <1,2,0> } texture { TR } }\n");
+    ASSERT_EQ(shared.objects.size(), 1u);
+    ASSERT_NE(shared.objects[0].data, nullptr);
+    EXPECT_EQ(shared.objects[0].data->parts.size(), 1u);
 }
 
 TEST(PovMeshTextureList, TexturesPerVertexBlendAndIndicesAreChecked) {

@@ -1,7 +1,6 @@
 // The mapping warps planar, cylindrical, spherical, toroidal and cubic (POV-Ray 3.7 reference,
 // "Mapping using warps"): they wrap the x-y plane of a pattern onto a plane, a cylinder, a sphere,
-// a torus or a cube. Each
-// computes map coordinates c of the point and hands out M(o)·c, o the warp's orientation (default
+// a torus or a cube. Each computes map coordinates c of the point and hands out M(o)·c, o the warp's orientation (default
 // z) or the planar warp's normal. All measured with POV-Ray 3.7's pattern functions
 // (`function { pattern { function { x } warp { ... } } }` at scattered points):
 //   planar <n>, d:   c = (x, y, d)                         (default n = z, d = 0)
@@ -15,7 +14,8 @@
 // −x, +z, +x, −z side by side in u (quarters centred at 1/8, 3/8, 5/8, 7/8, half width 1/8) and the
 // middle third in v (v = 1/2 + y/6a), +y above and −y below the +z face; a point on an edge or
 // corner takes the first face of +x, +z, +y, −x, −y, −z that it lies on (all measured; cubeMap in
-// mapping_warp.cpp has each face's formula). The cubic warp has no orientation in POV-Ray's grammar. M(o), o normalised, is the measured orientation matrix
+// mapping_warp.cpp has each face's formula); it has no orientation in POV-Ray's grammar.
+// M(o), o normalised, is the measured orientation matrix
 //   [[oy + oz, 0, ox], [0, ox + oz, −oy], [−ox, oy, oz]]
 // (the identity for z; for y it takes (c0, c1, c2) to (c0, −c2, c1), for x to (c2, c1, −c0); it is
 // not a rotation for other directions, as POV-Ray's results show).

@@ -1,6 +1,7 @@
 #include "rays/pov/build_mesh.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "rays/pov/grammar.h"
 
@@ -12,16 +13,21 @@ namespace {
 
 void pushVec(std::vector<float>& out, Vec3 v) { out.insert(out.end(), {float(v.x), float(v.y), float(v.z)}); }
 
-// The index of texture item t in ft (added when new).
-int32_t textureIndex(FaceTextures& ft, const Item* t) {
-    const auto at = std::find(ft.textures.begin(), ft.textures.end(), t);
-    if (at != ft.textures.end()) return int32_t(at - ft.textures.begin());
-    ft.textures.push_back(t);
-    return int32_t(ft.textures.size() - 1);
+// The index of texture item t in ft (added when new). `texture { T }` counts as T, so that the
+// triangles of a mesh that each name one declared texture (as converters write them) share one.
+int32_t textureIndex(FaceTextures& ft, std::unordered_map<const Item*, int32_t>& seen, const Item* t) {
+    const Item* key = t;
+    if (t->entries.size() == 1 && t->entries[0].positional() && t->entries[0].args.size() == 1 &&
+        t->entries[0].args[0].type == VType::Item && t->entries[0].args[0].item().kind == Kw::texture)
+        key = &t->entries[0].args[0].item();
+    const auto [at, added] = seen.emplace(key, int32_t(ft.textures.size()));
+    if (added) ft.textures.push_back(t);
+    return at->second;
 }
 
 std::unique_ptr<Mesh> fromTriangles(const Item& m, FaceTextures& ft) {
     auto mesh = std::make_unique<Mesh>();
+    std::unordered_map<const Item*, int32_t> seen;
     bool anySmooth = false, anyUV = false;
     for (const Entry& e : m.entries)
         if (!e.positional() && e.key != kMapEntry && e.kw() == Kw::smooth_triangle) anySmooth = true;
@@ -41,7 +47,7 @@ std::unique_ptr<Mesh> fromTriangles(const Item& m, FaceTextures& ft) {
         if (length(g) == 0) continue;
         const uint32_t base = uint32_t(mesh->positions.size() / 3);
         const Entry* texture = findEntry(t, Kw::texture);
-        ft.face.push_back(texture ? textureIndex(ft, &texture->args[0].item()) : -1);
+        ft.face.push_back(texture ? textureIndex(ft, seen, &texture->args[0].item()) : -1);
         for (int k = 0; k < 3; ++k) {
             pushVec(mesh->positions, v[k]);
             mesh->indices.push_back(base + uint32_t(k));

@@ -248,7 +248,11 @@ namespace {
 
 // The least of a·t² + b·t over [lo, hi] (ends may be infinite; −∞ when unbounded below).
 double leastOver(double a, double b, double lo, double hi) {
-    auto f = [&](double t) { return std::isinf(t) ? (a > 0 || (a == 0 && b * t > 0) ? kInfinity : -kInfinity) : a * t * t + b * t; };
+    if (a == 0 && b == 0) return 0;
+    auto f = [&](double t) {
+        if (!std::isinf(t)) return a * t * t + b * t;
+        return a > 0 || (a == 0 && b * t > 0) ? kInfinity : -kInfinity;
+    };
     double least = std::min(f(lo), f(hi));
     if (a > 0) {
         const double v = -b / (2 * a);
@@ -300,7 +304,7 @@ bool quadricBoxWithin(const ShapeData& d, const Bounds& clip, Bounds& box) {
     box = clip;
     for (int i = 0; i < 3; ++i) {
         const double rest = c + least[(i + 1) % 3] + least[(i + 2) % 3];
-        if (std::isinf(rest) && rest < 0) continue;  // the other axes reach any depth: no limit here
+        if (std::isnan(rest) || (std::isinf(rest) && rest < 0)) continue;  // the other axes reach any depth: no limit
         if (!(rest < kInfinity)) return box = Bounds{}, true;
         hullWhereNegative(a[i], b[i], rest, box.lo[i], box.hi[i]);
         if (!(box.lo[i] <= box.hi[i])) return box = Bounds{}, true;
