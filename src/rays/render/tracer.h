@@ -118,6 +118,7 @@ public:
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
           povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()),
           povMedia_(povPath_ && povHasMedia()), povMediaHolders_(povMedia_ ? povMediaHolders() : std::vector<PovMediaHolder>{}),
+          povCameraInside_(povPath_ ? povCameraInside() : std::vector<PovRay::Inside>{}),
           primaryReach_(primaryReach(scene, settings)) {}
 
     /// Buffers for the scene's point lights and, when eye is given, for primary rays from it.
@@ -377,6 +378,12 @@ private:
     /// A camera ray starting inside an object with media travels in its interior (the last such
     /// object in the scene's order holding the origin).
     void povStartInside(Vec3 origin, PovRay& r) const;
+    /// The objects whose inside holds the camera's location (POV-Ray scenes): camera rays start in them.
+    std::vector<PovRay::Inside> povCameraInside() const;
+    /// The index ratio the fresnel reflection at pt uses: the refraction's, except where the ray
+    /// leaves an object while inside another (a glass in a sky sphere, or the camera inside a
+    /// plane's half-space): there POV-Ray reflects nothing by fresnel (measured), as for ratio 1.
+    static double povFresnelEta(const PovPoint& pt, const PovRay& r, double eta);
     /// Methods 1 and 2: adds [a, b] in `steps` equal steps sampled in their middles.
     void povMediaMidpoints(const PovMediaSet& set, const Ray& ray, double a, double b, int steps, TraceContext& ctx,
                            PovMediaSum& sum) const;
@@ -410,6 +417,7 @@ private:
     bool povHides_;        ///< and some are hidden from camera or reflection rays
     bool povMedia_;        ///< and some interiors or the atmosphere hold media
     std::vector<PovMediaHolder> povMediaHolders_;
+    std::vector<PovRay::Inside> povCameraInside_;  ///< povCameraInside(), found once
     const IrradianceCache* radCache_ = nullptr;
     double primaryReach_;  ///< POV-Ray camera rays meet nothing farther (primaryReach)
 };

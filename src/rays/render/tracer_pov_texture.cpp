@@ -76,7 +76,7 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
         if (i == 0 && (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0))
             applyMaps(scene_, o, pt.P, SurfaceUV{hit.hasUV, hit.u, hit.v, hit.dpdu}, a.C, a.N);
         a.opacity = povOpacity(a.C, a.filter, a.transmit, scene_.pov.version);
-        a.R = povReflectivity(l.surface, a.C, std::max(0.0, -dot(a.N, ray.dir)), eta);
+        a.R = povReflectivity(l.surface, a.C, std::max(0.0, -dot(a.N, ray.dir)), povFresnelEta(pt, r, eta));
         a.through = through;
         color += (a.opacity * through) * povAmbientTerm(l.surface.finish, a.C, pt.P, Nraw, r, ctx, gathered);
         Vec3 tint = povFilterTint(a.C, a.filter, a.transmit);

@@ -79,12 +79,33 @@ Hit Tracer::povFirstHit(const Ray& ray, bool reflected) const {
     return hit;
 }
 
+std::vector<Tracer::PovRay::Inside> Tracer::povCameraInside() const {
+    std::vector<PovRay::Inside> out;
+    const int i = settings_.cameraIndex;
+    if (i < 0 || size_t(i) >= scene_.cameras.size()) return out;
+    const Vec3 eye = scene_.cameras[size_t(i)].location;
+    for (size_t k = 0; k < scene_.objects.size() && out.size() < size_t(PovRay::kMaxInside); ++k) {
+        const Object& o = scene_.objects[k];
+        const bool inside = o.type == ShapeType::Csg ? insideCsg(*o.csg, 0, eye) : insideShape(o, eye) == 1;
+        if (inside) out.push_back(PovRay::Inside{int(k), o.type == ShapeType::Csg ? -1 : o.material.pov});
+    }
+    return out;
+}
+
+double Tracer::povFresnelEta(const PovPoint& pt, const PovRay& r, double eta) {
+    if (pt.entering) return eta;
+    for (int i = 0; i < r.insideCount; ++i)
+        if (r.inside[i].object != pt.object) return 1.0;
+    return eta;
+}
+
 Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const {
     ctx.radLocal.clear();  // a camera sample reuses only its own radiosity records (and the cache's)
     PovRay r;
     r.primary = true;
     r.reach = primaryReach_;
     if (!povMediaHolders_.empty()) povStartInside(ray.origin, r);  // the camera inside a media holder
+    for (const PovRay::Inside& in : povCameraInside_) r.enter(in.object, in.surface);
     return tracePov(ray, r, ctx, info);
 }
 
@@ -201,7 +222,7 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
     const PovSurface& s = *pt.surface;
     const double ior = s.interior.ior;
     const double eta = pt.entering ? 1.0 / ior : ior;
-    const Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), eta);
+    const Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), povFresnelEta(pt, r, eta));
     Vec3 T = povFilterTint(pt.C, pt.filter, pt.transmit);
     if (s.finish.conserveEnergy) T *= Vec3(1.0) - R;
     PovRay reflected = povReflectedRay(pt, r);
