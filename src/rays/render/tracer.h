@@ -283,11 +283,11 @@ private:
     /// The point hit on o as every POV-Ray shading path starts it: object, material, surface, P,
     /// side, the ray's interior and the fade up to the hit (N, C, filter and transmit not yet set).
     PovPoint povPointOf(const Ray& ray, const Hit& hit, const Object& o, const PovRay& r, Vec3 segmentFade) const;
-    /// Colour of the surface hit: local light, reflection and transmission. segmentFade: how much
-    /// the interior fades this ray up to the hit (1 when it does not).
     /// A mesh face textured per vertex: shadePov with each corner's texture, blended (hit.blend).
     Vec3 shadePovCorners(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                          PathInfo* info) const;
+    /// Colour of the surface hit: local light, reflection and transmission. segmentFade: how much
+    /// the interior fades this ray up to the hit (1 when it does not).
     Vec3 shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                   PathInfo* info) const;
     /// What the reflected and transmitted rays from a point bring (total internal reflection

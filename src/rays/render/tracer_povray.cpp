@@ -157,7 +157,13 @@ Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object
 // strengths: each pixel is their barycentric blend).
 Vec3 Tracer::shadePovCorners(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                              PathInfo* info) const {
-    const ShapeData& data = *shadedObject(scene_.objects, hit).data;  // the face's part: a copy of the mesh
+    const Object& face = shadedObject(scene_.objects, hit);  // the face's part: a copy of the mesh
+    if (!face.data || 3 * size_t(hit.blend.face) >= face.data->cornerParts.size()) {  // not expected: shade plainly
+        Hit plain = hit;
+        plain.blend.face = CornerBlend::kNone;
+        return shadePov(ray, plain, r, segmentFade, ctx, info);
+    }
+    const ShapeData& data = *face.data;
     const int32_t* corners = &data.cornerParts[3 * size_t(hit.blend.face)];
     const double weights[3] = {1.0 - hit.blend.b1 - hit.blend.b2, hit.blend.b1, hit.blend.b2};
     Vec3 color;
