@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "rays/pattern/cell_hash.h"
 #include "rays/pattern/crackle.h"
 #include "support/pov_scene.h"
 
@@ -76,9 +75,7 @@ double bruteForce(Vec3 p, const pattern::Crackle& c) {
     for (int64_t k = z0 - 4; k <= z0 + 4; ++k)
         for (int64_t j = y0 - 4; j <= y0 + 4; ++j)
             for (int64_t i = x0 - 4; i <= x0 + 4; ++i) {
-                const Vec3 s{double(i) + pattern::cellUniform(i, j, k, 1), double(j) + pattern::cellUniform(i, j, k, 2),
-                             double(k) + pattern::cellUniform(i, j, k, 3)};
-                const Vec3 e = s - p;
+                const Vec3 e = pattern::crackleSeed(i, j, k) - p;
                 const double m = c.metric;
                 d.push_back(std::pow(std::pow(std::fabs(e.x), m) + std::pow(std::fabs(e.y), m) + std::pow(std::fabs(e.z), m) +
                                          std::pow(std::fabs(c.offset), m),
@@ -93,6 +90,26 @@ TEST(PovCrackle, NearestSeedsAreExact) {
                                       {{-0.2, 0, 0.9}, 2, 0, false}, {{0, 0, 0.5}, 4, 0.3, false}, {{0.4, 0.4, -0.4}, 3, 0, false}};
     for (const pattern::Crackle& c : forms)
         for (const Vec3& p : randomPoints(300)) EXPECT_NEAR(pattern::crackleValue(p, c), bruteForce(p, c), 1e-12) << p.x << " " << p.y;
+}
+
+TEST(PovCrackle, EachCubesSeedLiesUniformlyInIt) {
+    double sum[3] = {}, sum2[3] = {};
+    const int n = 20000;
+    for (int c = 0; c < n; ++c) {
+        const int64_t i = c % 37 - 18, j = c / 37 % 29 - 14, k = c / (37 * 29) - 9;
+        const Vec3 s = pattern::crackleSeed(i, j, k);
+        const Vec3 f = s - Vec3{double(i), double(j), double(k)};
+        for (int a = 0; a < 3; ++a) {
+            ASSERT_GT(f[a], 0);
+            ASSERT_LT(f[a], 1);
+            sum[a] += f[a];
+            sum2[a] += f[a] * f[a];
+        }
+    }
+    for (int a = 0; a < 3; ++a) {  // uniform: mean 1/2, variance 1/12
+        EXPECT_NEAR(sum[a] / n, 0.5, 0.01);
+        EXPECT_NEAR(sum2[a] / n - (sum[a] / n) * (sum[a] / n), 1.0 / 12, 0.003);
+    }
 }
 
 TEST(PovCrackle, SolidCellsHoldOneValue) {

@@ -7,8 +7,8 @@
 
 namespace rays::pattern {
 
-/// Uniform in [0, 1) for the cell (i, j, k); `salt` draws independent numbers for one cell.
-inline double cellUniform(int64_t i, int64_t j, int64_t k, uint64_t salt = 0) {
+/// 64 random bits for the cell (i, j, k); `salt` draws independent ones for one cell.
+inline uint64_t cellHash(int64_t i, int64_t j, int64_t k, uint64_t salt = 0) {
     auto mix = [](uint64_t z) {
         z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
         z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
@@ -16,7 +16,12 @@ inline double cellUniform(int64_t i, int64_t j, int64_t k, uint64_t salt = 0) {
     };
     uint64_t h = 0x9e3779b97f4a7c15ull ^ salt;
     for (const int64_t c : {i, j, k}) h = mix(h ^ uint64_t(c));
-    return double(h >> 11) * 0x1.0p-53;
+    return h;
+}
+
+/// Uniform in [0, 1) for the cell (i, j, k); `salt` draws independent numbers for one cell.
+inline double cellUniform(int64_t i, int64_t j, int64_t k, uint64_t salt = 0) {
+    return double(cellHash(i, j, k, salt) >> 11) * 0x1.0p-53;
 }
 
 }  // namespace rays::pattern

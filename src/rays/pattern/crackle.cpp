@@ -1,6 +1,8 @@
 #include "rays/pattern/crackle.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 
 #include "rays/pattern/cell_hash.h"
@@ -14,60 +16,114 @@ namespace {
 // cells (0.122 over 4,000 points; Rays' noise has 0.101).
 constexpr double kSolidSpread = 1.2;
 
-// The seed of the unit cube (i, j, k): uniform in the cube.
-Vec3 seedOf(int64_t i, int64_t j, int64_t k) {
-    return {double(i) + cellUniform(i, j, k, 1), double(j) + cellUniform(i, j, k, 2), double(k) + cellUniform(i, j, k, 3)};
-}
-
-double distanceOf(Vec3 d, const Crackle& c) {
+// A key that orders distances as the metric does: Σ|dᵢ|^m + |offset|^m, the distance being its
+// m-th root (distanceOf), so that the search takes no root per seed. kSquares: metric 2.
+template <bool kSquares>
+inline double keyOf(Vec3 d, const Crackle& c) {
+    if (kSquares) return d.x * d.x + d.y * d.y + d.z * d.z + c.offset * c.offset;
     const double m = c.metric;
-    if (m == 2) return std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z + c.offset * c.offset);
     if (m == 1) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z) + std::fabs(c.offset);
-    return std::pow(std::pow(std::fabs(d.x), m) + std::pow(std::fabs(d.y), m) + std::pow(std::fabs(d.z), m) +
-                        std::pow(std::fabs(c.offset), m),
-                    1 / m);
+    return std::pow(std::fabs(d.x), m) + std::pow(std::fabs(d.y), m) + std::pow(std::fabs(d.z), m) +
+           std::pow(std::fabs(c.offset), m);
 }
 
-// The three nearest seeds' distances (ascending) among the cubes within `reach` cubes of p's, and
-// the nearest seed.
+double distanceOf(double key, const Crackle& c) {
+    if (c.metric == 2) return std::sqrt(key);
+    if (c.metric == 1) return key;
+    return std::pow(key, 1 / c.metric);
+}
+
+// The three nearest seeds' keys (ascending: keyOf) among the cubes within `reach` cubes of p's,
+// and the nearest seed. Only the first `needed` keys are kept exact: a cube whose nearest point is
+// already as far as the needed-th seed found is skipped (that gap bounds its seed's distance). The
+// 3×3×3 cubes are visited from the middle out, so that the bound soon prunes.
 struct Nearest {
     double d[3] = {INFINITY, INFINITY, INFINITY};
     Vec3 seed;
 };
 
-Nearest nearestSeeds(Vec3 p, const Crackle& c, int reach) {
-    const int64_t cx = int64_t(std::floor(p.x)), cy = int64_t(std::floor(p.y)), cz = int64_t(std::floor(p.z));
+struct Offset {
+    int8_t i, j, k;
+};
+
+// The cubes round the middle one, nearest first: the middle, 6 faces, 12 edges, 8 corners.
+constexpr std::array<Offset, 27> middleOut() {
+    std::array<Offset, 27> out{};
+    int n = 0;
+    for (int ring = 0; ring <= 3; ++ring)
+        for (int k = -1; k <= 1; ++k)
+            for (int j = -1; j <= 1; ++j)
+                for (int i = -1; i <= 1; ++i)
+                    if ((i != 0) + (j != 0) + (k != 0) == ring) out[size_t(n++)] = Offset{int8_t(i), int8_t(j), int8_t(k)};
+    return out;
+}
+constexpr std::array<Offset, 27> kMiddleOut = middleOut();
+
+inline void consider(Nearest& n, Vec3 s, double d) {
+    if (d >= n.d[2]) return;
+    if (d < n.d[0]) {
+        n.d[2] = n.d[1], n.d[1] = n.d[0], n.d[0] = d;
+        n.seed = s;
+    } else if (d < n.d[1]) {
+        n.d[2] = n.d[1], n.d[1] = d;
+    } else {
+        n.d[2] = d;
+    }
+}
+
+// The cube (i, j, k): skipped when its gap's key reaches the needed-th key, else its seed considered.
+template <bool kSquares>
+inline void visit(Nearest& n, Vec3 p, Vec3 f, int64_t i, int64_t j, int64_t k, const Crackle& c, int needed) {
+    // f: p's place in its own cube; the gap to cube (i, j, k) along each axis from it.
+    const Vec3 o{double(i), double(j), double(k)};
+    Vec3 g;
+    for (int a = 0; a < 3; ++a) g[a] = o[a] > 0 ? o[a] - f[a] : (o[a] < 0 ? f[a] - o[a] - 1 : 0.0);
+    if (keyOf<kSquares>(g, c) >= n.d[needed - 1]) return;
+    const Vec3 s = crackleSeed(int64_t(std::floor(p.x)) + i, int64_t(std::floor(p.y)) + j, int64_t(std::floor(p.z)) + k);
+    consider(n, s, keyOf<kSquares>(s - p, c));
+}
+
+template <bool kSquares>
+Nearest nearestSeeds(Vec3 p, const Crackle& c, int needed, int reach) {
+    const Vec3 f{p.x - std::floor(p.x), p.y - std::floor(p.y), p.z - std::floor(p.z)};
     Nearest n;
+    if (reach == 1) {
+        for (const Offset& o : kMiddleOut) visit<kSquares>(n, p, f, o.i, o.j, o.k, c, needed);
+        return n;
+    }
     for (int k = -reach; k <= reach; ++k)
         for (int j = -reach; j <= reach; ++j)
-            for (int i = -reach; i <= reach; ++i) {
-                const Vec3 s = seedOf(cx + i, cy + j, cz + k);
-                const double d = distanceOf(s - p, c);
-                if (d >= n.d[2]) continue;
-                if (d < n.d[0]) {
-                    n.d[2] = n.d[1], n.d[1] = n.d[0], n.d[0] = d;
-                    n.seed = s;
-                } else if (d < n.d[1]) {
-                    n.d[2] = n.d[1], n.d[1] = d;
-                } else {
-                    n.d[2] = d;
-                }
-            }
+            for (int i = -reach; i <= reach; ++i) visit<kSquares>(n, p, f, i, j, k, c, needed);
+    return n;
+}
+
+template <bool kSquares>
+Nearest nearest(Vec3 p, const Crackle& c, int needed) {
+    Nearest n = nearestSeeds<kSquares>(p, c, needed, 1);
+    if (!(distanceOf(n.d[needed - 1], c) < 1)) n = nearestSeeds<kSquares>(p, c, needed, 2);
     return n;
 }
 
 }  // namespace
+
+Vec3 crackleSeed(int64_t i, int64_t j, int64_t k) {
+    // One hash of the cube (cell_hash.h), its 63 high bits cut into three 21-bit fractions.
+    const uint64_t h = cellHash(i, j, k, 1);
+    constexpr double kUnit = 1.0 / double(1 << 21);
+    return {double(i) + double((h >> 43) & 0x1FFFFF) * kUnit + 0.5 * kUnit,
+            double(j) + double((h >> 22) & 0x1FFFFF) * kUnit + 0.5 * kUnit,
+            double(k) + double((h >> 1) & 0x1FFFFF) * kUnit + 0.5 * kUnit};
+}
 
 double crackleValue(Vec3 p, const Crackle& c) {
     // Every distance (any metric: it is at least the largest coordinate difference) is at least 1
     // to a seed beyond the 3×3×3 cubes round p, so the distances the form uses are exact once the
     // farthest of them is below 1; else the 5×5×5 cubes make them exact up to 2.
     const int needed = c.solid ? 1 : (c.form.z != 0 ? 3 : c.form.y != 0 ? 2 : 1);
-    Nearest n = nearestSeeds(p, c, 1);
-    if (!(n.d[needed - 1] < 1)) n = nearestSeeds(p, c, 2);
+    const Nearest n = c.metric == 2 ? nearest<true>(p, c, needed) : nearest<false>(p, c, needed);
     if (c.solid) return std::clamp(0.5 + kSolidSpread * (noise(n.seed) - 0.5), 0.0, 1.0);
     double v = 0;
-    for (int i = 0; i < needed; ++i) v += c.form[i] * n.d[i];
+    for (int i = 0; i < needed; ++i) v += c.form[i] * distanceOf(n.d[i], c);
     return std::clamp(v, 0.0, 1.0);
 }
 

@@ -10,6 +10,8 @@
 // Rays places its seeds so, from a hash of the cube (cell_hash.h): the look is POV-Ray's, the cells
 // are not at the same places.
 #pragma once
+#include <cstdint>
+
 #include "rays/math/vec3.h"
 
 namespace rays::pattern {
@@ -22,6 +24,8 @@ struct Crackle {
     bool solid = false;
 };
 
+/// The seed of the unit cube (i, j, k): a point uniform in the cube, from one hash of it.
+Vec3 crackleSeed(int64_t i, int64_t j, int64_t k);
 /// The pattern's value at p.
 double crackleValue(Vec3 p, const Crackle& c);
 
