@@ -72,28 +72,35 @@ inline void consider(Nearest& n, Vec3 s, double d) {
 }
 
 // The cube (i, j, k): skipped when its gap's key reaches the needed-th key, else its seed considered.
+// p's own cube (its lowest corner) and p's place in it.
+struct Around {
+    Vec3 p, f;
+    int64_t base[3];
+};
+
+// The cube (i, j, k) from p's: skipped when its gap's key reaches the needed-th key, else its seed considered.
 template <bool kSquares>
-inline void visit(Nearest& n, Vec3 p, Vec3 f, int64_t i, int64_t j, int64_t k, const Crackle& c, int needed) {
-    // f: p's place in its own cube; the gap to cube (i, j, k) along each axis from it.
+inline void visit(Nearest& n, const Around& at, int64_t i, int64_t j, int64_t k, const Crackle& c, int needed) {
     const Vec3 o{double(i), double(j), double(k)};
-    Vec3 g;
-    for (int a = 0; a < 3; ++a) g[a] = o[a] > 0 ? o[a] - f[a] : (o[a] < 0 ? f[a] - o[a] - 1 : 0.0);
+    Vec3 g;  // the gap to the cube along each axis
+    for (int a = 0; a < 3; ++a) g[a] = o[a] > 0 ? o[a] - at.f[a] : (o[a] < 0 ? at.f[a] - o[a] - 1 : 0.0);
     if (keyOf<kSquares>(g, c) >= n.d[needed - 1]) return;
-    const Vec3 s = crackleSeed(int64_t(std::floor(p.x)) + i, int64_t(std::floor(p.y)) + j, int64_t(std::floor(p.z)) + k);
-    consider(n, s, keyOf<kSquares>(s - p, c));
+    const Vec3 s = crackleSeed(at.base[0] + i, at.base[1] + j, at.base[2] + k);
+    consider(n, s, keyOf<kSquares>(s - at.p, c));
 }
 
 template <bool kSquares>
 Nearest nearestSeeds(Vec3 p, const Crackle& c, int needed, int reach) {
-    const Vec3 f{p.x - std::floor(p.x), p.y - std::floor(p.y), p.z - std::floor(p.z)};
+    const Vec3 lo{std::floor(p.x), std::floor(p.y), std::floor(p.z)};
+    const Around at{p, p - lo, {int64_t(lo.x), int64_t(lo.y), int64_t(lo.z)}};
     Nearest n;
     if (reach == 1) {
-        for (const Offset& o : kMiddleOut) visit<kSquares>(n, p, f, o.i, o.j, o.k, c, needed);
+        for (const Offset& o : kMiddleOut) visit<kSquares>(n, at, o.i, o.j, o.k, c, needed);
         return n;
     }
     for (int k = -reach; k <= reach; ++k)
         for (int j = -reach; j <= reach; ++j)
-            for (int i = -reach; i <= reach; ++i) visit<kSquares>(n, p, f, i, j, k, c, needed);
+            for (int i = -reach; i <= reach; ++i) visit<kSquares>(n, at, i, j, k, c, needed);
     return n;
 }
 
