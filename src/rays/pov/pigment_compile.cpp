@@ -155,11 +155,13 @@ void PigmentCompiler::checkPavement(State& s) {
 }
 
 int PigmentCompiler::compile(const Item& pigment) {
-    if (const auto it = done_.find(&pigment); it != done_.end()) return it->second;
+    if (const int* done = done_.find(pigment)) return *done;
     State s;
     readWhole(pigment, s, 0);
     const int n = s.pattern && !s.unrendered ? emit(s) : -1;
-    done_.emplace(&pigment, n);
+    // A flat colour is read again each time (cheap); keeping it would keep every object's own
+    // `pigment { rgb ... }` alive to the end of the build.
+    if (n >= 0) done_.put(pigment, n);
     return n;
 }
 
@@ -430,15 +432,18 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
 // its braces after the object; without them it is blue outside, green inside (measured).
 void PigmentCompiler::readObjectPattern(const Entry& e, State& s, int depth) {
     const Item& item = e.args[0].item();
-    auto it = objects_.find(&item);
-    if (it == objects_.end()) {
+    std::shared_ptr<const pattern::PatternObject> object;
+    if (const auto* done = objects_.find(item)) {
+        object = *done;
+    } else {
         const BuiltPatternObject built = buildObject_(item);
         if (built.object && !built.complete)
             notes_.note(std::string(s.what) + " pattern object of shapes Rays does not render", e.loc,
                         "(the object without them)");
-        it = objects_.emplace(&item, built.object).first;
+        object = built.object;
+        objects_.put(item, object);
     }
-    if (!it->second) {
+    if (!object) {
         s.unrendered = true;
         s.pattern = false;
         notes_.note(std::string(s.what) + " pattern object", e.loc, "(no object Rays renders: drawn in its mean colour)");
@@ -448,8 +453,8 @@ void PigmentCompiler::readObjectPattern(const Entry& e, State& s, int depth) {
     s.unrendered = false;
     s.node.kind = PatternKind::Object;
     s.list.clear();
-    table_.objects.push_back(it->second);
-    s.node.params.object = it->second.get();
+    table_.objects.push_back(object);
+    s.node.params.object = object.get();
     for (const Entry& le : item.entries) {
         if (!isObjectPatternListEntry(le)) continue;
         if (le.positional()) {

@@ -11,6 +11,7 @@
 #include "rays/pattern/pigment.h"
 #include "rays/pov/density_files.h"
 #include "rays/pov/image_files.h"
+#include "rays/pov/item_cache.h"
 #include "rays/pov/item_values.h"
 #include "rays/pov/not_rendered.h"
 #include "rays/pov/pattern_object.h"
@@ -95,14 +96,14 @@ private:
 
     pattern::PigmentTable& table_;
     NotRendered& notes_;
-    std::unordered_map<const Item*, int> done_;  ///< pigment items compiled (-1: flat)
+    ItemCache<int> done_;  ///< pigment items compiled to a pattern node
     std::vector<std::shared_ptr<const Item>> made_;  ///< items made while building (compileNormal)
     pattern::NormalTable* normalTable_ = nullptr;
     std::unique_ptr<NormalCompiler> normals_;  ///< made on the first normal
     ImageFiles images_{notes_};
     DensityFiles densityFiles_{notes_};
     PatternObjectBuilder buildObject_;
-    std::unordered_map<const Item*, std::shared_ptr<const pattern::PatternObject>> objects_;  ///< built per item
+    ItemCache<std::shared_ptr<const pattern::PatternObject>> objects_;  ///< built per item
 };
 
 }  // namespace rays::pov

@@ -75,7 +75,9 @@ void PovHost::topLevel(sdl::Interpreter& in, const sdl::ItemRef& item) {
         for (const sdl::Entry& e : item->entries)
             if (e.key == uint16_t(Kw::assumed_gamma) && !e.args.empty()) in.setAssumedGamma(e.args[0].c[0]);
     }
-    out_.items.push_back(ParsedScene::Top{item, defaults_, defaults_ ? defaults_->size() : 0, in.compatibilityVersion()});
+    ParsedScene::Top top{item, defaults_, defaults_ ? defaults_->size() : 0, in.compatibilityVersion()};
+    if (out_.sink) out_.sink(top);
+    else out_.items.push_back(std::move(top));
 }
 
 // Each #default adds to the defaults in force (POV-Ray 3.7 reference, "Default Directive"): the

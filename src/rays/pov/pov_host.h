@@ -1,6 +1,6 @@
 // The host the scene language reads POV-Ray scenes for: it reads every item with the grammar
-// (grammar.h, specs.h) and collects the scene's top-level items, each with the default texture
-// in force where it appeared (#default), for the builder (scene_builder.h).
+// (grammar.h, specs.h) and hands the scene's top-level items, each with the default texture in
+// force where it appeared (#default), to the builder (scene_builder.h) as they are read.
 #pragma once
 #include <functional>
 #include <memory>
@@ -15,7 +15,9 @@
 
 namespace rays::pov {
 
-/// What a POV-Ray scene file holds once parsed: its top-level items in order.
+/// What a POV-Ray scene file holds: its top-level items in order. With a sink, each item goes to
+/// it as soon as it is read (the builder makes it at once, as POV-Ray does, and an item no
+/// identifier holds is freed before the next is read); without one they are collected in `items`.
 struct ParsedScene {
     struct Top {
         sdl::ItemRef item;
@@ -26,6 +28,7 @@ struct ParsedScene {
         double version = 3.7;  ///< #version in force
     };
     std::vector<Top> items;
+    std::function<void(const Top&)> sink;
 };
 
 class PovHost : public sdl::ItemHost {

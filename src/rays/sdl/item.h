@@ -24,7 +24,9 @@ struct Entry {
     bool positional() const { return key == kPositional; }
 };
 
-struct Item {
+/// Made through std::make_shared (ItemRef) by the host's grammar; weak_from_this() lets a cache
+/// keyed by an item's address keep it alive (pov/item_cache.h).
+struct Item : std::enable_shared_from_this<Item> {
     Kw kind = Kw::object;  ///< the keyword that opened it (sphere, union, texture, pigment, ...)
     Loc loc;
     std::vector<Entry> entries;
