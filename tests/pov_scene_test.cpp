@@ -145,6 +145,45 @@ TEST(PovObjects, DefaultTextureBecomesTheDefaultTexture) {
     EXPECT_DOUBLE_EQ(b.scene.povSurfaces[size_t(b.scene.objects[1].material.pov)].interior.ior, 1.5);
 }
 
+TEST(PovObjects, TexturesTakeTheDefaultInForceWhereTheyAreWritten) {
+    // Measured with POV-Ray 3.7 (ambient-only spheres, ambient_light 1): A shows ambient 0.4, B 0.2,
+    // the sphere written last 0.3; C, with no texture, takes the default where it is placed.
+    const Built b = build("#default { finish { ambient 0.4 } }\n"
+                          "#declare A = sphere { 0, 1 pigment { rgb 1 } }\n"
+                          "#default { finish { ambient 0.2 } }\n"
+                          "#declare B = sphere { 0, 1 pigment { rgb 1 } }\n"
+                          "#declare C = sphere { 0, 1 }\n"
+                          "#default { finish { ambient 0.3 } }\n"
+                          "object { A } object { B } object { C } sphere { 0, 1 pigment { rgb 1 } }\n"
+                          "object { A } object { B }");
+    ASSERT_EQ(b.error, "");
+    ASSERT_EQ(b.scene.objects.size(), 6u);
+    auto ambient = [&](size_t i) { return b.scene.povSurfaces[size_t(b.scene.objects[i].material.pov)].finish.ambient.x; };
+    EXPECT_DOUBLE_EQ(ambient(0), 0.4);
+    EXPECT_DOUBLE_EQ(ambient(1), 0.2);
+    EXPECT_DOUBLE_EQ(ambient(2), 0.3);
+    EXPECT_DOUBLE_EQ(ambient(3), 0.3);
+    EXPECT_DOUBLE_EQ(ambient(4), 0.4);  // the earlier defaults, made once, found again
+    EXPECT_DOUBLE_EQ(ambient(5), 0.2);
+}
+
+TEST(PovObjects, AUnionDeclaredBeforeADefaultKeepsItsTexturedPartsAsWritten) {
+    // interior/iortest.pov: a glass #default after the declaration reaches the union's bare
+    // sphere, not the orange one's texture (POV-Ray draws it lit, not black).
+    const Built b = build("#declare H = union { sphere { 0, 1 } sphere { 3*x, 1 texture { pigment { rgb <1, 0.5, 0> } } } }\n"
+                          "#default { texture { pigment { rgbf <1, 1, 1, 0.7> } finish { ambient 0 diffuse 0 } } }\n"
+                          "object { H }");
+    ASSERT_EQ(b.error, "");
+    ASSERT_EQ(b.scene.objects.size(), 2u);
+    const Material& glass = b.scene.objects[0].material;
+    const Material& orange = b.scene.objects[1].material;
+    EXPECT_DOUBLE_EQ(glass.filter, 0.7);
+    EXPECT_DOUBLE_EQ(b.scene.povSurfaces[size_t(glass.pov)].finish.diffuse, 0);
+    EXPECT_TRUE(near(orange.color, {1, 0.5, 0}));
+    EXPECT_DOUBLE_EQ(b.scene.povSurfaces[size_t(orange.pov)].finish.ambient.x, 0.1);
+    EXPECT_DOUBLE_EQ(b.scene.povSurfaces[size_t(orange.pov)].finish.diffuse, 0.6);
+}
+
 TEST(PovObjects, FinishAndInteriorReachTheSurface) {
     const Built b = build(
         "sphere { 0, 1 pigment { rgbft <1, 0.5, 0.25, 0.1, 0.2> }\n"

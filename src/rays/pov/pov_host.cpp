@@ -64,7 +64,10 @@ sdl::ItemRef PovHost::readItem(sdl::Interpreter& in) {
     const BlockSpec* spec = itemSpec(in.kw());
     if (!spec) in.errorHere("expected a scene item, found " + in.describe());
     sdl::ItemRef item = readBlock(in, *spec);
-    if (item->kind == Kw::texture && in.peekRawKw(Kw::texture)) return readTextureLayers(in, *spec, std::move(item));
+    if (item->kind == Kw::texture && in.peekRawKw(Kw::texture)) item = readTextureLayers(in, *spec, std::move(item));
+    // Parts of a texture the item leaves unset come from the #default in force here, not where the
+    // item is used (builder's defaultLookAt). The item was just made and is not shared yet.
+    const_cast<sdl::Item&>(*item).hostMark = uint32_t(defaults_ ? defaults_->size() : 0);
     return item;
 }
 

@@ -60,11 +60,13 @@ bool isMeshKind(Kw k) { return k == Kw::mesh || k == Kw::mesh2; }
 // An object's entries with `object { Base ... }` copies unrolled: the base's entries come first,
 // then the copy's (POV-Ray applies a copy's modifiers after the base's own). `mesh { M ... }`
 // with M a declared mesh or mesh2 is such a copy too (measured: POV-Ray 3.7 draws M with the
-// modifiers; the mesh_camera demos write their camera meshes so).
-Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
+// modifiers; the mesh_camera demos write their camera meshes so). `marks`, when given, gets the
+// hostMark of the item each entry was written in.
+Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth, std::vector<uint32_t>* marks) {
     const bool meshCopy = isMeshKind(item.kind);
     if ((item.kind != Kw::object && !meshCopy) || depth > kMaxObjectDepth) {
         for (const Entry& e : item.entries) out.push_back(&e);
+        if (marks) marks->resize(out.size(), item.hostMark);
         return item.kind;
     }
     Kw kind = item.kind;
@@ -75,11 +77,12 @@ Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth) {
                           (meshCopy ? e.positional() && isMeshKind(e.args[0].item().kind)
                                     : (e.positional() || isObjectKind(e.kw())) && isObjectKind(e.args[0].item().kind));
         if (!baseDone && base) {
-            kind = unrollObject(e.args[0].item(), out, depth + 1);
+            kind = unrollObject(e.args[0].item(), out, depth + 1, marks);
             baseDone = true;
             continue;
         }
         out.push_back(&e);
+        if (marks) marks->push_back(item.hostMark);
     }
     return kind;
 }
@@ -115,24 +118,55 @@ void SceneBuilder::updateDefaults(const ParsedScene::Top& top) {
         defaultsSeen_ = top.defaults;
         defaultsApplied_ = 0;
         defaultsLook_ = Appearance{};
+        earlierDefaults_.clear();
     }
-    // `#default { texture {...} }` makes that texture the default one; `#default { pigment {...} }`,
-    // `finish` and `normal` change the part of it they name (measured: a default texture of rgbf
-    // glass shows as glass, not as the black default pigment).
-    for (; defaultsApplied_ < top.defaultsCount; ++defaultsApplied_) {
-        const Entry& e = (*top.defaults)[defaultsApplied_];
+    applyDefaults(defaultsLook_, defaultsApplied_, top.defaultsCount);
+    defaultsApplied_ = top.defaultsCount;
+    fallback_ = defaultsLook_;
+    fallback_.set = false;
+}
+
+// `#default { texture {...} }` makes that texture the default one; `#default { pigment {...} }`,
+// `finish` and `normal` change the part of it they name (measured: a default texture of rgbf
+// glass shows as glass, not as the black default pigment).
+void SceneBuilder::applyDefaults(Appearance& look, size_t from, size_t to) {
+    for (size_t i = from; i < to; ++i) {
+        const Entry& e = (*defaultsSeen_)[i];
         if (!e.positional() && e.kw() == Kw::texture && !e.args.empty() && e.args[0].type == VType::Item) {
-            defaultsLook_ = Appearance{};
-            applyTexture(e.args[0].item(), defaultsLook_, notes_, &pigments_);
+            look = Appearance{};
+            applyTexture(e.args[0].item(), look, notes_, &pigments_);
             continue;
         }
         Item added;
         added.kind = Kw::texture;
         added.entries.push_back(e);
-        applyTexture(added, defaultsLook_, notes_, &pigments_);
+        applyTexture(added, look, notes_, &pigments_);
     }
-    fallback_ = defaultsLook_;
-    fallback_.set = false;
+}
+
+// The default texture of an item read when `mark` #default entries were in force. POV-Ray gives
+// a texture the default in force where it is written (POV-Ray 3.7 reference, "The #default
+// Directive"; measured: an orange sphere's `texture { pigment { Orange } }` declared before
+// `#default { texture { finish { ambient 0 diffuse 0 } } }` and drawn after it keeps the finish
+// before, as interior/iortest.pov shows); an object with no texture at all takes the one in force
+// where it is placed in the scene (fallback_). Earlier defaults are made once each, from the
+// nearest one made before.
+const Appearance& SceneBuilder::defaultLookAt(uint32_t mark) {
+    if (!defaultsSeen_ || mark >= defaultsApplied_) return fallback_;
+    auto at = earlierDefaults_.find(mark);
+    if (at != earlierDefaults_.end()) return at->second;
+    Appearance look;
+    size_t from = 0;
+    auto below = earlierDefaults_.lower_bound(mark);
+    if (below != earlierDefaults_.begin()) {
+        --below;
+        look = below->second;
+        from = below->first;
+    }
+    look.set = true;
+    applyDefaults(look, from, mark);
+    look.set = false;
+    return earlierDefaults_.emplace(mark, std::move(look)).first->second;
 }
 
 // ---- objects ---------------------------------------------------------------------------------
@@ -189,7 +223,8 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     if (depth > kMaxObjectDepth) throw Error(notes_.where(item.loc) + ": error: objects nested deeper than 1000 levels");
     countObjects(1, item.loc);  // a union of copies of a union of copies ... doubles at every level
     std::vector<const Entry*> entries;
-    const Kw kind = unrollObject(item, entries, 0);
+    std::vector<uint32_t> marks;  // each entry's item's #default count (defaultLookAt)
+    const Kw kind = unrollObject(item, entries, 0, &marks);
     if (kind == Kw::light_source) {
         Item copy;
         copy.kind = Kw::light_source;
@@ -206,8 +241,8 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
          doubleIlluminate = false, hollow = false, uvMapping = false;
     const Entry* font = nullptr;  // text: its ttf or internal entry
-    for (const Entry* ep : entries) {
-        const Entry& e = *ep;
+    for (size_t i = 0; i < entries.size(); ++i) {
+        const Entry& e = *entries[i];
         if (e.positional()) {
             for (const Value& v : e.args) args.push_back(&v);
             continue;
@@ -218,7 +253,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             if (look.set || look.interiorSet) placeLook(look, e);  // transformations after the texture (or interior) move it
             continue;
         }
-        if (applyAppearanceEntry(e, look, fallback_, notes_, &pigments_)) {
+        if (applyAppearanceEntry(e, look, defaultLookAt(marks[i]), notes_, &pigments_)) {
             if (uvMapping && look.set) mapLookByUV(look);  // the object's uv_mapping: all of its texture
             continue;
         }

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -44,6 +45,9 @@ public:
 
 private:
     void updateDefaults(const ParsedScene::Top& top);
+    /// Applies entries [from, to) of the #default list to look.
+    void applyDefaults(Appearance& look, size_t from, size_t to);
+    const Appearance& defaultLookAt(uint32_t mark);
     void addCamera(const Item& camera);
     int cameraNormal(const Entry& normal);  ///< the root of a camera `normal { }` (-1: none)
     /// Sets the window or angles of a non-perspective camera from the camera block's vectors.
@@ -136,6 +140,7 @@ private:
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries
     Appearance defaultsLook_;
+    std::map<uint32_t, Appearance> earlierDefaults_;  ///< defaultLookAt's looks, by #default count
     std::function<std::string(const std::string&)> findFile_;
     FontCache ownFonts_;
     FontCache* fonts_ = &ownFonts_;

@@ -19,6 +19,7 @@ bool isObjectKind(sdl::Kw k);
 
 /// An object item's entries with its copies unrolled (`object { Base ... }`, `mesh { M ... }`):
 /// the base's entries first, then the copy's; returns the kind of what it draws.
-sdl::Kw unrollObject(const sdl::Item& item, std::vector<const sdl::Entry*>& out, int depth);
+sdl::Kw unrollObject(const sdl::Item& item, std::vector<const sdl::Entry*>& out, int depth,
+                     std::vector<uint32_t>* marks = nullptr);
 
 }  // namespace rays::pov

@@ -31,6 +31,9 @@ struct Item : std::enable_shared_from_this<Item> {
     Loc loc;
     std::vector<Entry> entries;
     uint32_t depth = 1;  ///< levels of items in it, itself included (the host sets it when read)
+    /// What the host noted when it read the item (POV-Ray scenes: how many #default entries were
+    /// in force then); the language only copies it.
+    uint32_t hostMark = 0;
     uint64_t size = 1;   ///< items in it, itself included, a shared item once per use (the host sets it)
 };
 
