@@ -167,6 +167,23 @@ TEST(PovObjects, TexturesTakeTheDefaultInForceWhereTheyAreWritten) {
     EXPECT_DOUBLE_EQ(ambient(5), 0.2);
 }
 
+TEST(PovObjects, EarlierDefaultsAskedForInAnyOrderAreTheOnesInForceThen) {
+    // 200 #defaults, a sphere declared under each, placed last first: the builder keeps every
+    // 64th default on its way (defaultLookAt); each sphere still gets its own.
+    const Built b = build("#declare A = array[200];\n"
+                          "#for (I, 0, 199) #default { finish { ambient I / 200 } } #declare A[I] = sphere { 0, 1 pigment { rgb 1 } } #end\n"
+                          "#for (I, 199, 0, -1) object { A[I] } #end\n"
+                          "object { A[100] } object { A[63] } object { A[64] } object { A[65] }");
+    ASSERT_EQ(b.error, "");
+    ASSERT_EQ(b.scene.objects.size(), 204u);
+    auto ambient = [&](size_t i) { return b.scene.povSurfaces[size_t(b.scene.objects[i].material.pov)].finish.ambient.x; };
+    for (size_t k = 0; k < 200; ++k) EXPECT_DOUBLE_EQ(ambient(k), double(199 - k) / 200) << k;
+    EXPECT_DOUBLE_EQ(ambient(200), 0.5);
+    EXPECT_DOUBLE_EQ(ambient(201), 63.0 / 200);
+    EXPECT_DOUBLE_EQ(ambient(202), 64.0 / 200);
+    EXPECT_DOUBLE_EQ(ambient(203), 65.0 / 200);
+}
+
 TEST(PovObjects, AUnionDeclaredBeforeADefaultKeepsItsTexturedPartsAsWritten) {
     // interior/iortest.pov: a glass #default after the declaration reaches the union's bare
     // sphere, not the orange one's texture (POV-Ray draws it lit, not black).

@@ -42,7 +42,7 @@ Scene parsePovText(std::string_view text, const std::string& shownName, const st
     }
     // Each top-level item is built as soon as it is read: its tree is freed before the next one is
     // read unless an identifier holds it, and the memory is reused (20,000 spheres from a loop
-    // parse 1.5x faster than when all trees were kept to the end, most of it the page faults of
+    // parse 1.4x faster than when all trees were kept to the end, most of it the page faults of
     // fresh memory).
     NotRendered notes([&in](const sdl::Loc& at) { return in.where(at); }, d.warning, options.language.strict);
     SceneBuilder builder(notes, limits.sceneObjects);

@@ -150,8 +150,10 @@ void SceneBuilder::applyDefaults(Appearance& look, size_t from, size_t to) {
 // `#default { texture { finish { ambient 0 diffuse 0 } } }` and drawn after it keeps the finish
 // before, as interior/iortest.pov shows); an object with no texture at all takes the one in force
 // where it is placed in the scene (fallback_). Earlier defaults are made once each, from the
-// nearest one made before.
+// nearest one made before; every 64th is kept on the way, so that marks asked for in any order
+// cost at most 64 steps each beyond the first.
 const Appearance& SceneBuilder::defaultLookAt(uint32_t mark) {
+    constexpr uint32_t kEvery = 64;
     if (!defaultsSeen_ || mark >= defaultsApplied_) return fallback_;
     auto at = earlierDefaults_.find(mark);
     if (at != earlierDefaults_.end()) return at->second;
@@ -163,9 +165,13 @@ const Appearance& SceneBuilder::defaultLookAt(uint32_t mark) {
         look = below->second;
         from = below->first;
     }
-    look.set = true;
-    applyDefaults(look, from, mark);
-    look.set = false;
+    while (from < mark) {
+        const size_t to = std::min<size_t>(mark, (from / kEvery + 1) * kEvery);
+        applyDefaults(look, from, to);
+        look.set = false;
+        from = to;
+        if (from < mark) earlierDefaults_.emplace(uint32_t(from), look);
+    }
     return earlierDefaults_.emplace(mark, std::move(look)).first->second;
 }
 
