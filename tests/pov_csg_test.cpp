@@ -211,6 +211,60 @@ TEST(PovCsgHits, RandomTreesAgreeWithDenseInsideSteps) {
     EXPECT_GT(checked, 300);
 }
 
+// CSG trees of many leaves and wide nodes (a union of 300 spheres subtracted from a box, a merge
+// of 200 spheres cut by a sphere, a box less 150 cylinders) use box trees over their leaves and
+// over the wide nodes' children (csg_box_tree.h); the same trees without them test every leaf
+// and child one by one, as small trees do: both must find the same hits, normals and insides.
+TEST(PovCsgHits, WideTreesAgreeWithTheirLeavesTestedOneByOne) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-1, 1);
+    auto spheres = [&](int n, double spread) {
+        std::string t;
+        for (int i = 0; i < n; ++i)
+            t += "sphere { <" + std::to_string(spread * U(rng)) + ", " + std::to_string(spread * U(rng)) + ", " +
+                 std::to_string(spread * U(rng)) + ">, " + std::to_string(0.55 + 0.25 * U(rng)) + " }\n";
+        return t;
+    };
+    std::string cylinders;
+    for (int i = 0; i < 150; ++i)
+        cylinders += "cylinder { <" + std::to_string(5 * U(rng)) + ", -6, " + std::to_string(5 * U(rng)) + ">, <" +
+                     std::to_string(5 * U(rng)) + ", 6, " + std::to_string(5 * U(rng)) + ">, 0.2 }\n";
+    const std::string scenes[] = {
+        "difference { box { -5, 5 } union { " + spheres(300, 6) + "} }",
+        "intersection { sphere { 0, 5 } merge { " + spheres(200, 5) + "} }",
+        "difference { box { -5, 5 } " + cylinders + "}",
+    };
+    int hits = 0;
+    for (const std::string& text : scenes) {
+        const Scene s = build(text);
+        ASSERT_EQ(s.objects.size(), 1u);
+        const Csg& wide = *s.objects[0].csg;
+        ASSERT_GT(wide.leaves.size(), size_t(kCsgCachedLeaves));
+        ASSERT_FALSE(wide.leafTree.empty());
+        ASSERT_FALSE(wide.childTrees.empty());
+        Csg plain = wide;
+        plain.leafTree = CsgBoxTree{};
+        plain.childTree.clear();
+        plain.childTrees.clear();
+        for (int i = 0; i < 400; ++i) {
+            const Vec3 q{6 * U(rng), 6 * U(rng), 6 * U(rng)};
+            EXPECT_EQ(insideCsg(wide, 0, q), insideCsg(plain, 0, q)) << i;
+            const Vec3 from = 12.0 * normalize(Vec3{U(rng), U(rng), U(rng)});
+            const Ray ray{from, normalize(Vec3{4 * U(rng), 4 * U(rng), 4 * U(rng)} - from)};
+            ShapeHit a, b;
+            const bool ha = intersectCsg(wide, ray, 1e-9, kInfinity, &a);
+            const bool hb = intersectCsg(plain, ray, 1e-9, kInfinity, &b);
+            ASSERT_EQ(ha, hb) << i;
+            EXPECT_EQ(intersectCsg(wide, ray, 1e-9, kInfinity, nullptr), ha) << i;
+            if (!ha) continue;
+            ++hits;
+            EXPECT_NEAR(a.t, b.t, 1e-9) << i;
+            EXPECT_TRUE(near(a.normal, b.normal)) << i;
+        }
+    }
+    EXPECT_GT(hits, 600);
+}
+
 // A disc's inside is its plane's half-space away from the normal, unbounded by the radius
 // (reference 3.4.5.2.2): desk.pov's paperweight, a sphere cut by a disc. The heights are POV-Ray
 // 3.7's trace() from y = 50 straight down at x = 0 ... 8 (z = 0.01).

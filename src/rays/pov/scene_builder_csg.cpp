@@ -21,12 +21,16 @@ void SceneBuilder::addCsgChildren(Kw kind, bool inverse, const std::vector<const
                                                 : CsgOp::Union;
     const int node = csg_->add(csgParent_, op, inverse);
     const int outer = csgParent_;
+    // Room for a leaf per child at once (a leaf is a whole Object: growing one at a time copied
+    // them again and again), growing at least twofold so that nested operations stay linear.
+    if (csg_->leaves.capacity() < csg_->leaves.size() + children.size())
+        csg_->leaves.reserve(std::max(csg_->leaves.size() + children.size(), 2 * csg_->leaves.capacity()));
     bool empty = false;
     for (size_t i = 0; i < children.size(); ++i) {
         csgParent_ = node;
-        const int before = csg_->childCount(node);
+        const size_t before = csg_->nodes.size();  // what the child adds goes under node
         addObject(*children[i], toWorld, own, depth + 1);
-        const bool lost = csg_->childCount(node) == before;
+        const bool lost = csg_->nodes.size() == before;
         empty = empty || (lost && (op == CsgOp::Intersection || (op == CsgOp::Difference && i == 0)));
     }
     csgParent_ = outer;

@@ -132,19 +132,20 @@ Bounds leafBounds(const Object& o, bool inverse) {
     return leafWorldBox(o);
 }
 
-Bounds nodeBounds(const Csg& c, int n) {
+// Node n's bounds from its children's, nb (a child is added after its parent: its index is larger).
+Bounds nodeBounds(const Csg& c, int n, const std::vector<Bounds>& nb) {
     const CsgNode& node = c.nodes[size_t(n)];
     if (node.op == CsgOp::Leaf) return leafBounds(c.leaves[size_t(node.leaf)], node.inverse);
     if (node.inverse) return allSpace();
     Bounds b;
     switch (node.op) {
         case CsgOp::Union: case CsgOp::Merge:
-            for (int s = node.firstChild; s >= 0; s = c.nodes[size_t(s)].nextSibling) b.extend(nodeBounds(c, s));
+            for (int s = node.firstChild; s >= 0; s = c.nodes[size_t(s)].nextSibling) b.extend(nb[size_t(s)]);
             break;
         case CsgOp::Intersection: case CsgOp::Clip:
             if (node.firstChild < 0) break;
             b = allSpace();
-            for (int s = node.firstChild; s >= 0; s = c.nodes[size_t(s)].nextSibling) b = meet(b, nodeBounds(c, s));
+            for (int s = node.firstChild; s >= 0; s = c.nodes[size_t(s)].nextSibling) b = meet(b, nb[size_t(s)]);
             // A quadric's inside can be unbounded (a hyperboloid) and yet bounded within the box of
             // the other children (two planes): met with its part within the box.
             for (int s = node.firstChild; s >= 0 && !b.empty(); s = c.nodes[size_t(s)].nextSibling) {
@@ -153,11 +154,19 @@ Bounds nodeBounds(const Csg& c, int n) {
             }
             break;
         case CsgOp::Difference:
-            if (node.firstChild >= 0) b = nodeBounds(c, node.firstChild);
+            if (node.firstChild >= 0) b = nb[size_t(node.firstChild)];
             break;
         case CsgOp::Leaf: case CsgOp::Empty: break;
     }
     return b;
+}
+
+// Every node's bounds, children first: a union of n children below a difference costs O(n), not
+// O(n) for each of its leaves.
+std::vector<Bounds> allNodeBounds(const Csg& c) {
+    std::vector<Bounds> nb(c.nodes.size());
+    for (size_t n = c.nodes.size(); n-- > 0;) nb[n] = nodeBounds(c, int(n), nb);
+    return nb;
 }
 
 // Whether leaf k's surface can be part of the tree's surface at all: not a clipping object, not
@@ -184,20 +193,27 @@ bool onSurface(const Csg& c, int k, Vec3 q, bool& flip) {
                 if (s != child && !test(s)) return false;
             return true;
         };
+        const int wide = c.childTree.empty() ? -1 : c.childTree[size_t(p)];
+        // With a box tree over the children: whether a child other than `child` and `skip` holds q.
+        auto anyOther = [&](int skip) {
+            return c.childTrees[size_t(wide)].anyHolding(
+                q, [&](int s) { return s != child && s != skip && insideCsg(c, s, q); });
+        };
         switch (node.op) {
             case CsgOp::Union: case CsgOp::Leaf: break;
             case CsgOp::Merge:
-                if (!siblings([&](int s) { return !insideCsg(c, s, q); })) return false;
+                if (wide >= 0 ? anyOther(-1) : !siblings([&](int s) { return !insideCsg(c, s, q); })) return false;
                 break;
             case CsgOp::Intersection: case CsgOp::Clip:
                 if (!siblings([&](int s) { return insideCsg(c, s, q); })) return false;
                 break;
             case CsgOp::Difference:
                 if (child == node.firstChild) {
-                    if (!siblings([&](int s) { return !insideCsg(c, s, q); })) return false;
+                    if (wide >= 0 ? anyOther(-1) : !siblings([&](int s) { return !insideCsg(c, s, q); })) return false;
                 } else {
                     const int first = node.firstChild;
-                    if (!siblings([&](int s) { return s == first ? insideCsg(c, s, q) : !insideCsg(c, s, q); }))
+                    if (wide >= 0 ? !insideCsg(c, first, q) || anyOther(first)
+                                  : !siblings([&](int s) { return s == first ? insideCsg(c, s, q) : !insideCsg(c, s, q); }))
                         return false;
                     flip = !flip;  // a subtracted surface faces into the subtracted object
                 }
@@ -280,8 +296,43 @@ void insideInterval(const Object& o, bool inverse, const Ray& worldRay, double& 
 
 }  // namespace
 
+// The box trees of wide nodes (over their children's bounds) and, for a tree of many leaves, over
+// the leaves' windows (csg_box_tree.h). Triangles and meshes are sought over the whole ray
+// (intersectCsg): they are visited always.
+void Csg::buildBoxTrees(const std::vector<Bounds>& nb) {
+    childTree.assign(nodes.size(), -1);
+    childTrees.clear();
+    for (size_t n = 0; n < nodes.size(); ++n) {
+        const CsgNode& node = nodes[n];
+        if (node.op != CsgOp::Union && node.op != CsgOp::Merge && node.op != CsgOp::Difference) continue;
+        if (childCount(int(n)) < kCsgWideNode) continue;
+        std::vector<Bounds> boxes;
+        std::vector<int32_t> ids;
+        for (int s = node.firstChild; s >= 0; s = nodes[size_t(s)].nextSibling) {
+            boxes.push_back(nb[size_t(s)]);
+            ids.push_back(s);
+        }
+        childTree[n] = int32_t(childTrees.size());
+        childTrees.push_back(CsgBoxTree::build(boxes, ids));
+    }
+    leafTree = CsgBoxTree{};
+    if (leaves.size() <= size_t(kCsgCachedLeaves)) return;
+    std::vector<Bounds> boxes;
+    std::vector<int32_t> ids;
+    for (size_t k = 0; k < leaves.size(); ++k) {
+        if (!hasSurface[k]) continue;
+        const bool whole = leaves[k].type == ShapeType::Mesh || leaves[k].type == ShapeType::Triangle;
+        Bounds b = leafWindow[k];
+        if (whole && !b.empty()) b = Bounds{Vec3(-kInfinity), Vec3(kInfinity)};
+        boxes.push_back(b);
+        ids.push_back(int32_t(k));
+    }
+    leafTree = CsgBoxTree::build(boxes, ids);
+}
+
 void Csg::finish() {
-    bounds = nodes.empty() ? Bounds{} : nodeBounds(*this, 0);
+    const std::vector<Bounds> nb = allNodeBounds(*this);
+    bounds = nodes.empty() ? Bounds{} : nb[0];
     hasSurface.resize(leaves.size());
     leafWindow.resize(leaves.size());
     for (size_t k = 0; k < leaves.size(); ++k) {
@@ -292,7 +343,7 @@ void Csg::finish() {
         // first child): the leaf's box met with all of them.
         int child = leafNode[k];
         Bounds b = leafWorldBox(leaves[k]);
-        for (int p = nodes[size_t(child)].parent; p >= 0; p = nodes[size_t(p)].parent) b = meet(b, nodeBounds(*this, p));
+        for (int p = nodes[size_t(child)].parent; p >= 0; p = nodes[size_t(p)].parent) b = meet(b, nb[size_t(p)]);
         if (!b.empty()) {  // room for the rounding of the slab test
             Vec3 pad;
             for (int a = 0; a < 3; ++a)
@@ -302,6 +353,7 @@ void Csg::finish() {
         }
         leafWindow[k] = b;
     }
+    buildBoxTrees(nb);
     // The convex constraints of each leaf with a surface.
     clipStart.assign(1, 0);
     clipList.clear();
@@ -371,10 +423,15 @@ int insideShape(const Object& o, Vec3 q) {
 
 bool insideCsg(const Csg& c, int n, Vec3 q) {
     const CsgNode& node = c.nodes[size_t(n)];
+    const int wide = c.childTree.empty() ? -1 : c.childTree[size_t(n)];
     bool in = false;
     switch (node.op) {
         case CsgOp::Leaf: in = insideShape(c.leaves[size_t(node.leaf)], q) > 0; break;
         case CsgOp::Union: case CsgOp::Merge:
+            if (wide >= 0) {
+                in = c.childTrees[size_t(wide)].anyHolding(q, [&](int s) { return insideCsg(c, s, q); });
+                break;
+            }
             for (int s = node.firstChild; s >= 0 && !in; s = c.nodes[size_t(s)].nextSibling) in = insideCsg(c, s, q);
             break;
         case CsgOp::Intersection: case CsgOp::Clip:
@@ -383,6 +440,11 @@ bool insideCsg(const Csg& c, int n, Vec3 q) {
             break;
         case CsgOp::Difference:
             in = node.firstChild >= 0 && insideCsg(c, node.firstChild, q);
+            if (in && wide >= 0) {
+                const int first = node.firstChild;
+                in = !c.childTrees[size_t(wide)].anyHolding(q, [&](int s) { return s != first && insideCsg(c, s, q); });
+                break;
+            }
             for (int s = node.firstChild >= 0 ? c.nodes[size_t(node.firstChild)].nextSibling : -1; s >= 0 && in;
                  s = c.nodes[size_t(s)].nextSibling)
                 in = !insideCsg(c, s, q);
@@ -446,9 +508,45 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
         if (leaf.type == ShapeType::Mesh || leaf.type == ShapeType::Triangle) lo = from, hi = to;
         return intersect(leaf, ray, lo, hi, h);
     };
+    ShapeHit sh;
+    if (n > kCsgCachedLeaves && !c.leafTree.empty()) {
+        // Many leaves: the nearest leaf hit after the last one taken comes from the box tree over
+        // the leaves' windows (a tie with a taken hit is lost, as for the leaves beyond the cache).
+        // Leaf i's nearest hit in (from, to): its window is found afresh (no cache on this path).
+        auto hitWide = [&](int i, double from, double to, ShapeHit& h) {
+            double lo = tMin, hi = tMax;
+            clipToWindow(i, lo, hi);
+            lo = std::max(lo, from), hi = std::min(hi, to);
+            if (!(lo < hi)) return false;
+            const Object& leaf = c.leaves[size_t(i)];
+            if (leaf.type == ShapeType::Mesh || leaf.type == ShapeType::Triangle) lo = from, hi = to;
+            return intersect(leaf, ray, lo, hi, h);
+        };
+        double tLast = tMin;
+        for (;;) {
+            int best = -1;
+            double bestT = tMax;
+            c.leafTree.alongRay(ray, invDir, tLast, bestT, [&](int i, double& hi) {
+                if (hitWide(i, tLast, hi, sh)) best = i, hi = sh.t;
+            });
+            if (best < 0) return false;
+            bool flip = false;
+            if (onSurface(c, best, ray.at(bestT), flip)) {
+                if (!hit) return true;
+                const Object& leaf = c.leaves[size_t(best)];
+                if (!hitWide(best, tLast, tMax, *hit)) return false;
+                if (flip) {
+                    hit->normal = -hit->normal;
+                    hit->geomNormal = -hit->geomNormal;
+                }
+                if (!hit->part) hit->part = &leaf;
+                return true;
+            }
+            tLast = bestT;
+        }
+    }
     double nextT[kCsgCachedLeaves];  // leaf i's nearest hit after from[i] (infinite: none)
     double from[kCsgCachedLeaves];
-    ShapeHit sh;
     for (int i = 0; i < cached; ++i) {
         winLo[i] = tMin, winHi[i] = tMax;
         if (c.hasSurface[size_t(i)]) clipToWindow(i, winLo[i], winHi[i]);

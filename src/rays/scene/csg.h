@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rays/scene/csg_box_tree.h"
 #include "rays/scene/object.h"
 
 namespace rays {
@@ -58,6 +59,13 @@ struct Csg {
     /// ray within all of them (Roth, "Ray casting for modeling solids", 1982: a ray's intervals in
     /// the solids of an intersection are intersected).
     std::vector<int32_t> clipStart, clipList;
+    /// Trees with more than kCsgCachedLeaves leaves: a box tree over the leaves' windows, which
+    /// the walk asks for the nearest leaf hit (csg_box_tree.h).
+    CsgBoxTree leafTree;
+    /// Per node: its children's box tree in childTrees (union, merge and difference nodes with at
+    /// least kCsgWideNode children), or -1. Inside tests ask it which children may hold a point.
+    std::vector<int32_t> childTree;
+    std::vector<CsgBoxTree> childTrees;
     Bounds bounds;                ///< world bounds; components may be infinite (planes)
 
     /// Appends a node under parent (-1: the root) and returns its index.
@@ -73,6 +81,7 @@ struct Csg {
     /// children's boxes intersected, difference → the first child's, union and merge → their
     /// union, axis-aligned planes → half-spaces, anything inverted → all space).
     void finish();
+    void buildBoxTrees(const std::vector<Bounds>& nb);  ///< part of finish()
     /// True when the bounds hold no point (the object can never be seen).
     bool boundsEmpty() const;
 };
@@ -80,6 +89,8 @@ struct Csg {
 /// Leaves whose next hits the walk keeps on the stack; the hits of further leaves are recomputed
 /// at every step of the walk (correct, slower).
 constexpr int kCsgCachedLeaves = 128;
+/// Nodes with this many children or more get a box tree over them (Csg::childTree).
+constexpr int kCsgWideNode = 8;
 
 /// Whether world point q is strictly inside solid primitive o: 1 or 0; -1 when o has no inside
 /// (triangles, meshes). A plane's inside is the side its normal points away from; open cones
