@@ -223,6 +223,15 @@ TEST(PovFog, ReflectedRaysGoThroughFogToo) {
     expectColor(seen(l.scene, kCx, kCy), {0.20905, 0.40605, 0.79697});
 }
 
+TEST(PovFog, FillsHollowObjectsOnly) {
+    // A clear box across the view from z = −2 to −1: the fog is left out inside it unless it is
+    // hollow (POV-Ray 3.7's 16-bit pixels; screen.inc's screen plane is hollow for this).
+    const std::string fog = kWallAmbient + "fog { distance 2 color rgb <.2,.4,.8> }\n";
+    const std::string box = "box { <-5,-5,-2>, <5,5,-1> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } ";
+    expectColor(seen(load(fog + box + "hollow }").scene, kCx, kCy), {0.26694, 0.44463, 0.77769});
+    expectColor(seen(load(fog + box + "}").scene, kCx, kCy), {0.31037, 0.47358, 0.76321});
+}
+
 TEST(PovFog, GroundFogThinsAboveItsOffset) {
     // Horizontal rays at height −.125: the density is 1/(1 + ((h − offset)/alt)²) there.
     struct Level {

@@ -351,6 +351,8 @@ private:
     /// The media the stretch of ray r travels in: those of the interiors it is inside, and the
     /// atmosphere's outside objects and inside hollow ones.
     PovMediaSet povMediaOf(const PovRay& r) const;
+    /// True when the ray runs outside objects or inside hollow ones only: where fog and rainbows are.
+    bool povInAtmosphere(const PovRay& r) const;
     /// `behind` (what the ray sees at t) seen through the media of the stretch [0, t] (a miss: as
     /// far as kPovMediaMissDistance): dimmed, plus the light the media emit and scatter towards
     /// the viewer (method 3: equal steps refined where neighbouring samples differ).

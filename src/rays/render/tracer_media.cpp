@@ -61,6 +61,22 @@ void Tracer::povStartInside(Vec3 origin, PovRay& r) const {
     }
 }
 
+// Fog fills the space outside objects and inside hollow ones (measured with POV-Ray 3.7: a clear
+// sphere round part of a fogged view keeps the fog inside it with `hollow on` only; screen.inc's
+// screen plane in front of the camera is hollow for this reason).
+bool Tracer::povInAtmosphere(const PovRay& r) const {
+    if (r.interior < 0) return true;
+    if (!povSurfaceOf(scene_.objects[size_t(r.interior)].material).hollow) return false;
+    for (int i = 0; i < r.insideCount; ++i) {
+        const int surface = r.inside[i].surface;
+        const PovSurface& s = surface >= 0 && size_t(surface) < scene_.povSurfaces.size()
+                                  ? scene_.povSurfaces[size_t(surface)]
+                                  : povSurfaceOf(scene_.objects[size_t(r.inside[i].object)].material);
+        if (!s.hollow) return false;
+    }
+    return true;
+}
+
 PovMediaSet Tracer::povMediaOf(const PovRay& r) const {
     PovMediaSet set;
     bool hollow = true;

@@ -128,9 +128,9 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
     // Radiosity's gathering rays pass media by (radiosity's `media` is off by default; Rays does
     // not read it).
     if (povMedia_ && !r.gathering) seen = povMediaAlong(ray, hit.t, r, seen, ctx);
-    // Fog fills the space outside objects (measured: on every ray, reflected ones included), and
-    // rainbows lie in it as fogs do.
-    if ((scene_.pov.fogs.empty() && scene_.pov.rainbows.empty()) || r.interior >= 0) return seen;
+    // Fog fills the space outside objects and inside hollow ones (measured: on every ray,
+    // reflected ones included), and rainbows lie in it as fogs do.
+    if ((scene_.pov.fogs.empty() && scene_.pov.rainbows.empty()) || !povInAtmosphere(r)) return seen;
     const Vec3 bowed =
         scene_.pov.rainbows.empty() ? seen : povRainbows(scene_.pov.rainbows, seen, ray, hit.t, ctx.rng.next());
     return scene_.pov.fogs.empty() ? bowed : povFog(scene_.pov.fogs, bowed, ray, hit.t);

@@ -79,7 +79,7 @@ IrradianceRecord Tracer::povGatherRecord(Vec3 P, Vec3 N, const PovRay& r, TraceC
         ++ctx.stats.secondaryRays;
         const Hit hit = povFirstHit(ray, r.reflected);
         Vec3 seen = hit.valid() ? shadePov(ray, hit, child, Vec3(1.0), ctx, nullptr) : povSky(scene_, d);
-        if (!scene_.pov.fogs.empty() && child.interior < 0) seen = povFog(scene_.pov.fogs, seen, ray, hit.t);
+        if (!scene_.pov.fogs.empty() && povInAtmosphere(child)) seen = povFog(scene_.pov.fogs, seen, ray, hit.t);
         if (hit.valid()) inverseDistances += 1.0 / std::max(hit.t, kMinHitT);
         sum += seen;
     }
