@@ -413,6 +413,22 @@ TEST(PovIrid, FilmInterferenceTintsTheLightByThicknessAndAngle) {
     EXPECT_GT(hi - lo, 0.5);
 }
 
+TEST(PovIrid, TintsTheReflectionAsALightAlongTheReflectedRay) {
+    // A black mirror (reflection 0.5, irid 0.65, thickness 0.8) facing a white background, its
+    // normal turned 0°, 30° and 60° from the view (POV-Ray 3.7's 16-bit pixels, the camera turned
+    // instead): 0.5·(1 + 0.65·cos(2π·0.8·2(N·V)/λ)).
+    struct Case {
+        int angle;
+        Vec3 want;
+    } cases[] = {{0, {0.42768, 0.78778, 0.33750}}, {30, {0.82231, 0.33402, 0.74614}}, {60, {0.70263, 0.18445, 0.33750}}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.angle);
+        const Loaded l = load("background { rgb 1 }\nplane { -z, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0 "
+                              "reflection 0.5 irid { 0.65 thickness 0.8 } } rotate x*" + std::to_string(-c.angle) + " }\n");
+        expectColor(seen(l.scene, 0, 0), c.want, 2e-4);
+    }
+}
+
 TEST(PovRainbow, ColoursByTheAngleToItsDirectionMixedAsAFog) {
     // The ray along +z sits 30° from the direction: index (30 − (30 − 10))/20 = 0.5 of the map
     // (measured with povray 3.7: the index as the manual says, the fog's mixing).

@@ -353,6 +353,8 @@ private:
     PovMediaSet povMediaOf(const PovRay& r) const;
     /// True when the ray runs outside objects or inside hollow ones only: where fog and rainbows are.
     bool povInAtmosphere(const PovRay& r) const;
+    /// The iridescence tint of a reflection off N of a ray along dir (1 without irid).
+    Vec3 povReflectionIrid(const PovFinish& f, Vec3 N, Vec3 dir, Vec3 P) const;
     /// `behind` (what the ray sees at t) seen through the media of the stretch [0, t] (a miss: as
     /// far as kPovMediaMissDistance): dimmed, plus the light the media emit and scatter towards
     /// the viewer (method 3: equal steps refined where neighbouring samples differ).

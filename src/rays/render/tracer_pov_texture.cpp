@@ -81,6 +81,7 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
         color += (a.opacity * through) * povAmbientTerm(l.surface.finish, a.C, pt.P, Nraw, r, ctx, gathered);
         Vec3 tint = povFilterTint(a.C, a.filter, a.transmit);
         if (l.surface.finish.conserveEnergy) tint *= Vec3(1.0) - a.R;
+        a.R *= povReflectionIrid(l.surface.finish, a.N, ray.dir, pt.P);
         through *= tint;
     }
     if (n == 0) return color;

@@ -228,9 +228,10 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
     const PovSurface& s = *pt.surface;
     const double ior = s.interior.ior;
     const double eta = pt.entering ? 1.0 / ior : ior;
-    const Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), povFresnelEta(pt, r, eta));
+    Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), povFresnelEta(pt, r, eta));
     Vec3 T = povFilterTint(pt.C, pt.filter, pt.transmit);
     if (s.finish.conserveEnergy) T *= Vec3(1.0) - R;
+    R *= povReflectionIrid(s.finish, pt.N, ray.dir, pt.P);
     PovRay reflected = povReflectedRay(pt, r);
     auto trace = [&](Vec3 dir, const PovRay& child) {
         ++ctx.stats.secondaryRays;
@@ -247,6 +248,14 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
         color += R * povReflectionExponent(seen, s.finish.reflectionExponent);
     }
     return color;
+}
+
+// Iridescence tints the reflection too, as if the light came along the reflected ray (measured with
+// POV-Ray 3.7: a black mirror of reflection 0.5 and irid 0.65, thickness 0.8 facing a white
+// background, seen head-on and at 30° and 60°).
+Vec3 Tracer::povReflectionIrid(const PovFinish& f, Vec3 N, Vec3 dir, Vec3 P) const {
+    if (f.irid == 0) return Vec3(1.0);
+    return povIridTint(f, scene_.pov.iridWavelength, N, normalize(reflect(dir, N)), -dir, P);
 }
 
 // A reflected ray stays on this side of the surface, a transmitted one crosses it. Only
