@@ -12,8 +12,8 @@ namespace rays::pov {
 using sdl::VType;
 
 // ---- camera ----------------------------------------------------------------------------------
-// POV-Ray 3.7 reference, "Placing the Camera": items apply in order; angle sets the direction's
-// length from the right vector's; look_at turns direction, right and up (right = sky × direction,
+// POV-Ray 3.7 reference, "Placing the Camera": items apply in order, but angle sets the direction's
+// length from the final right vector's, after them; look_at turns direction, right and up (right = sky × direction,
 // keeping the handedness of the vectors before it); transformations move the location and turn
 // the vectors after every other item, wherever they stand (measured with povray 3.7: `rotate`,
 // `translate` or a shearing `matrix` before `location` or `look_at` give the same image as after).
@@ -106,10 +106,6 @@ void SceneBuilder::addCamera(const Item& cam) {
             case Kw::angle: {
                 angleSet = true;
                 for (size_t i = 0; i < 2; ++i) angles[i] = i < e.args.size() ? toFloat(e.args[i]) : -1;
-                if (c.projection != Projection::Perspective || e.args.empty()) break;
-                const double a = angles[0];
-                if (a > 0 && a < 180 && length(dir) > 0)
-                    dir = normalize(dir) * (0.5 * length(right) / std::tan(a * std::numbers::pi / 360.0));
                 break;
             }
             case Kw::look_at: {
@@ -148,6 +144,11 @@ void SceneBuilder::addCamera(const Item& cam) {
             default: break;
         }
     }
+    // The angle sets the direction's length from the final right vector, wherever it is written
+    // (measured with POV-Ray 3.7: `angle 35` before or after `right x*4/3`, before or after
+    // `direction z*5`, or with `right x*2 up y*1.5`, gives the same image).
+    if (angleSet && c.projection == Projection::Perspective && angles[0] > 0 && angles[0] < 180 && length(dir) > 0)
+        dir = normalize(dir) * (0.5 * length(right) / std::tan(angles[0] * std::numbers::pi / 360.0));
     if (lastTransform) {
         loc = moved.point(loc);
         lookAt = moved.point(lookAt);
