@@ -475,6 +475,8 @@ void clipToBox(const Bounds& b, const Ray& r, Vec3 invDir, double& tMin, double&
 
 bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeHit* hit) {
     const int n = int(c.leaves.size());
+    // A tree with a box tree over its leaves keeps no cache: the walk asks the box tree instead.
+    const bool walkTree = n > kCsgCachedLeaves && !c.leafTree.empty();
     const int cached = std::min(n, kCsgCachedLeaves);
     const Vec3 invDir{1 / ray.dir.x, 1 / ray.dir.y, 1 / ray.dir.z};
     // Leaf i's hits are sought only where the ray is within its window and the convex leaves it
@@ -496,10 +498,8 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
         if (c.hasSurface[size_t(i)]) clipToWindow(i, lo, hi);
         else hi = lo;
     };
-    // Leaf i's nearest hit in (from, to) and its window.
-    auto hitLeaf = [&](int i, double from, double to, ShapeHit& h) {
-        double lo, hi;
-        window(i, lo, hi);
+    // Leaf i's nearest hit in (from, to) within its window (lo, hi).
+    auto solve = [&](int i, double lo, double hi, double from, double to, ShapeHit& h) {
         lo = std::max(lo, from), hi = std::min(hi, to);
         if (!(lo < hi)) return false;
         // Meshes keep the whole interval: their float traversal may miss a hit on a sliver of it
@@ -508,20 +508,33 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
         if (leaf.type == ShapeType::Mesh || leaf.type == ShapeType::Triangle) lo = from, hi = to;
         return intersect(leaf, ray, lo, hi, h);
     };
+    auto hitLeaf = [&](int i, double from, double to, ShapeHit& h) {
+        double lo, hi;
+        window(i, lo, hi);
+        return solve(i, lo, hi, from, to, h);
+    };
+    // The same with the window found afresh (the walk over the box tree keeps no cache).
+    auto hitWide = [&](int i, double from, double to, ShapeHit& h) {
+        double lo = tMin, hi = tMax;
+        clipToWindow(i, lo, hi);
+        return solve(i, lo, hi, from, to, h);
+    };
+    // The hit on leaf best at the nearest hit after `from`, found on the tree's surface: the same
+    // test again, for the normals, flipped for subtracted or inverted parts.
+    auto take = [&](int best, double from, bool flip) {
+        const Object& leaf = c.leaves[size_t(best)];
+        if (!(walkTree ? hitWide(best, from, tMax, *hit) : hitLeaf(best, from, tMax, *hit))) return false;
+        if (flip) {
+            hit->normal = -hit->normal;
+            hit->geomNormal = -hit->geomNormal;
+        }
+        if (!hit->part) hit->part = &leaf;  // a blob's component texture stays
+        return true;
+    };
     ShapeHit sh;
-    if (n > kCsgCachedLeaves && !c.leafTree.empty()) {
+    if (walkTree) {
         // Many leaves: the nearest leaf hit after the last one taken comes from the box tree over
         // the leaves' windows (a tie with a taken hit is lost, as for the leaves beyond the cache).
-        // Leaf i's nearest hit in (from, to): its window is found afresh (no cache on this path).
-        auto hitWide = [&](int i, double from, double to, ShapeHit& h) {
-            double lo = tMin, hi = tMax;
-            clipToWindow(i, lo, hi);
-            lo = std::max(lo, from), hi = std::min(hi, to);
-            if (!(lo < hi)) return false;
-            const Object& leaf = c.leaves[size_t(i)];
-            if (leaf.type == ShapeType::Mesh || leaf.type == ShapeType::Triangle) lo = from, hi = to;
-            return intersect(leaf, ray, lo, hi, h);
-        };
         double tLast = tMin;
         for (;;) {
             int best = -1;
@@ -531,17 +544,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
             });
             if (best < 0) return false;
             bool flip = false;
-            if (onSurface(c, best, ray.at(bestT), flip)) {
-                if (!hit) return true;
-                const Object& leaf = c.leaves[size_t(best)];
-                if (!hitWide(best, tLast, tMax, *hit)) return false;
-                if (flip) {
-                    hit->normal = -hit->normal;
-                    hit->geomNormal = -hit->geomNormal;
-                }
-                if (!hit->part) hit->part = &leaf;
-                return true;
-            }
+            if (onSurface(c, best, ray.at(bestT), flip)) return !hit || take(best, tLast, flip);
             tLast = bestT;
         }
     }
@@ -565,18 +568,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
         if (best < 0) return false;
         if (best < cached) bestFrom = from[best];
         bool flip = false;
-        if (onSurface(c, best, ray.at(bestT), flip)) {
-            if (!hit) return true;
-            // The same test again, for the normals: the nearest hit after bestFrom is bestT.
-            const Object& leaf = c.leaves[size_t(best)];
-            if (!hitLeaf(best, bestFrom, tMax, *hit)) return false;
-            if (flip) {
-                hit->normal = -hit->normal;
-                hit->geomNormal = -hit->geomNormal;
-            }
-            if (!hit->part) hit->part = &leaf;  // a blob's component texture stays
-            return true;
-        }
+        if (onSurface(c, best, ray.at(bestT), flip)) return !hit || take(best, bestFrom, flip);  // bestT: the nearest after bestFrom
         tLast = bestT;
         if (best < cached) {
             from[best] = bestT;
