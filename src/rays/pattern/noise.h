@@ -16,13 +16,28 @@ struct Turbulence {
     bool on() const { return amount.x != 0 || amount.y != 0 || amount.z != 0; }
 };
 
-/// Solid noise in [0, 1] (noise_generator 2 range).
+/// Solid noise in about [0, 1] (noise_generator 2's range): the value of `bozo`.
 double noise(Vec3 p);
+/// The noise before its range is corrected, 2·noise − 0.5 (about −0.3 to 1.4): measured with
+/// POV-Ray 3.7, its turbulence and its granite and wrinkles sums are made of this value of the
+/// same noise that bozo shows (docs/povray-patterns.md, "Noise sums").
+inline double rawNoise(Vec3 p) { return 2 * noise(p) - 0.5; }
+/// rawNoise clamped to [0, 1] (noise_generator 1's value).
+inline double clampedNoise(Vec3 p) {
+    const double r = rawNoise(p);
+    return r < 0 ? 0 : (r > 1 ? 1 : r);
+}
+/// The noise as bozo shows it under noise_generator 1 (measured with POV-Ray 3.7 at 8,000 random
+/// points: clamp(2.0414·noise − 0.5524, 0, 1) to 2e-6), 2 (noise) or 3 (a noise of its own in
+/// POV-Ray, 0.492 ± 0.146; here Rays' noise widened to that spread).
+double noiseOfGenerator(Vec3 p, int generator);
 /// Vector noise, each component in about [−1, 1].
 Vec3 vectorNoise(Vec3 p);
 /// Σ omega^i · vectorNoise(p · lambda^i) over the octaves: the displacement direction of turbulence.
 Vec3 turbulenceVector(Vec3 p, const Turbulence& t);
-/// Σ omega^i · |2·noise(p · lambda^i) − 1|: the scalar turbulence of marble, agate and granite-like sums.
+/// POV-Ray's scalar turbulence, clampedNoise(p) + Σ_{i≥1} omega^i · rawNoise(p · lambda^i) (measured
+/// with POV-Ray 3.7's marble at turbulence 0.001, to 1.5e-7: only the first octave is clamped):
+/// what marble, agate and fog add. Mean about 1 and spread 0.3 for the default octaves.
 double turbulenceScalar(Vec3 p, int octaves, double omega, double lambda);
 /// Σ omega^i · noise(p · lambda^i) over the octaves (each term in [0, 1]): the scalar turbulence fog
 /// reads (measured with POV-Ray 3.7: its mean grows as Σ omega^i / 2, about 1 for the defaults).

@@ -73,6 +73,8 @@ struct PatternParams {
     int tiling = 1;                         ///< Tiling: the tiling's number (1 to 27)
     Pavement pavement;                      ///< Pavement: its tile and corners
     Crackle crackle;                        ///< Crackle: form, metric, offset, solid
+    /// noise_generator: 1, 2 or 3; 0 until the scene's global setting (default 2) is filled in.
+    int noiseGenerator = 0;
 };
 
 /// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type

@@ -37,7 +37,7 @@ void evalPigmentColor(const void* data, const double* in, double* out) {
 
 fn::HostFunction compilePatternFunction(const Item& item, bool pigment, NotRendered& notes,
                                         const std::function<std::string(const std::string&)>& findFile,
-                                        const PatternObjectBuilder& buildObject) {
+                                        const PatternObjectBuilder& buildObject, int noiseGenerator) {
     auto compiled = std::make_shared<CompiledPattern>();
     {
         PigmentCompiler compiler(compiled->table, notes);
@@ -47,6 +47,8 @@ fn::HostFunction compilePatternFunction(const Item& item, bool pigment, NotRende
         compiled->node = compiler.compileFunction(item);
     }
     if (compiled->node < 0) return {};
+    for (pattern::PigmentNode& n : compiled->table.nodes)
+        if (n.params.noiseGenerator == 0) n.params.noiseGenerator = noiseGenerator;
     fn::HostFunction h;
     h.fn = pigment ? evalPigmentColor : evalPatternValue;
     h.data = compiled.get();

@@ -18,9 +18,10 @@ namespace rays::pov {
 /// list index) or of a pigment item (pigment = true: red, green, blue, filter, transmit). It owns
 /// its compiled pattern (HostFunction::keep). fn == nullptr when the item names a pattern Rays
 /// does not render (noted on `notes`). Image files are found with `findFile`; object patterns'
-/// objects are built by `buildObject`.
+/// objects are built by `buildObject`. Its patterns without a noise_generator of their own use
+/// `noiseGenerator` (the scene's global setting as read so far).
 fn::HostFunction compilePatternFunction(const Item& item, bool pigment, NotRendered& notes,
                                         const std::function<std::string(const std::string&)>& findFile,
-                                        const PatternObjectBuilder& buildObject);
+                                        const PatternObjectBuilder& buildObject, int noiseGenerator = 2);
 
 }  // namespace rays::pov

@@ -398,6 +398,7 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         case Kw::brick_size: pp.brickSize = toVec3(e.args[0]); break;
         case Kw::mortar: pp.mortar = num(0); break;
         case Kw::agate_turb: pp.agateTurb = num(0); break;
+        case Kw::noise_generator: pp.noiseGenerator = std::clamp(int(num(0)), 1, 3); break;
         case Kw::control0: pp.quilt.control0 = num(0); break;
         case Kw::control1: pp.quilt.control1 = num(0); break;
         case Kw::exponent: pp.exponent = int(std::clamp(num(0), 2.0, 33.0)); break;

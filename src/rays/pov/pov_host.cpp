@@ -55,7 +55,7 @@ fn::HostFunction PovHost::patternFunction(const sdl::Item& item, bool pigment) {
     const PatternObjectBuilder buildObject = [this, where](const sdl::Item& pattern) {
         return buildPatternObject(pattern, where, findFile_, &fonts_);
     };
-    return compilePatternFunction(item, pigment, quiet, findFile_, buildObject);
+    return compilePatternFunction(item, pigment, quiet, findFile_, buildObject, noiseGenerator_);
 }
 
 bool PovHost::startsItem(Kw k) const { return itemSpec(k) != nullptr; }
@@ -76,7 +76,12 @@ void PovHost::topLevel(sdl::Interpreter& in, const sdl::ItemRef& item) {
     if (item->kind == Kw::global_settings) {
         // srgb colours read later in the file need the working gamma.
         for (const sdl::Entry& e : item->entries)
+        {
             if (e.key == uint16_t(Kw::assumed_gamma) && !e.args.empty()) in.setAssumedGamma(e.args[0].c[0]);
+            // Pattern functions compiled after this use the scene's noise generator.
+            if (e.key == uint16_t(Kw::noise_generator) && !e.args.empty())
+                noiseGenerator_ = std::clamp(int(e.args[0].c[0]), 1, 3);
+        }
     }
     ParsedScene::Top top{item, defaults_, defaults_ ? defaults_->size() : 0, in.compatibilityVersion()};
     if (out_.sink) out_.sink(top);

@@ -65,6 +65,7 @@ private:
     };
     std::unordered_map<const sdl::Item*, InsideProbe> insides_;
     std::function<std::string(const std::string&)> findFile_;
+    int noiseGenerator_ = 2;  ///< global_settings' noise_generator as read so far
     std::function<std::string(const sdl::Loc&)> where_;
     FontCache fonts_;
 };

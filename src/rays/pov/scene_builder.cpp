@@ -655,6 +655,9 @@ void SceneBuilder::globalSettings(const Item& g) {
             case Kw::max_trace_level: scene_.pov.maxTraceLevel = clampedInt(toFloat(e.args[0]), 1, 256); break;
             case Kw::adc_bailout: scene_.pov.adcBailout = toFloat(e.args[0]); break;
             case Kw::irid_wavelength: scene_.pov.iridWavelength = toColor(e.args[0]).rgb; break;
+            case Kw::noise_generator:
+                scene_.pov.noiseGenerator = std::clamp(int(toFloat(e.args[0])), 1, 3);
+                break;
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
             case Kw::photons: notes_.note("photons", e.loc); break;
             case Kw::subsurface: notes_.note("subsurface", e.loc); break;
@@ -681,6 +684,9 @@ Scene SceneBuilder::finish(const std::string& fileName) {
     // writes older scenes' colours as they are (0) (measured with POV-Ray 3.7.0.10).
     if (!gammaSet_) scene_.pov.assumedGamma = version_ >= 3.7 ? 1.0 : 0.0;
     scene_.pigments.setWorkingGamma(scene_.pov.assumedGamma);
+    // Patterns without their own noise_generator take the scene's, wherever global_settings is.
+    for (pattern::PigmentNode& n : scene_.pigments.nodes)
+        if (n.params.noiseGenerator == 0) n.params.noiseGenerator = scene_.pov.noiseGenerator;
     scene_.pov.version = version_;
     if (scene_.cameras.empty()) {
         Camera c;  // POV-Ray's default camera: at the origin looking along +z, right 1.33x, up y

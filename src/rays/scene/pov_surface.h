@@ -116,6 +116,7 @@ struct PovGlobals {
     /// irid_wavelength: the film's wavelengths per channel. The default is POV-Ray 3.7's as
     /// measured (<0.70, 0.52, 0.48>; the manual still gives 3.6's <0.25, 0.18, 0.14>).
     Vec3 iridWavelength{0.70, 0.52, 0.48};
+    int noiseGenerator = 2;    ///< global_settings' noise_generator (patterns without their own)
     std::vector<PovFog> fogs;  ///< applied together to every ray outside objects
     /// Atmospheric media (top-level `media` blocks): outside objects and inside hollow ones.
     std::vector<PovMedia> media;
