@@ -909,5 +909,21 @@ TEST(PovPattern, TurbulentWoodMovesItsRingsAsPovRaysDoes) {
     }
 }
 
+// spotted and bumps as pigments are bozo's noise on the grey ramp, not on bozo's built-in map
+// (POV-Ray 3.7's pigment functions: 0.449 grey where bozo gives green).
+TEST(PovPattern, SpottedAndBumpsWithoutAMapAreGrey) {
+    const Probe grey = pigment(std::string("bozo") + kGrey);
+    for (const char* body : {"spotted", "bumps"}) {
+        const Probe pr = pigment(body);
+        for (int i = 0; i < 20; ++i) {
+            const Vec3 p{0.37 * i, 0.21 * i, 0.3};
+            const pattern::Rgbft c = pr.at(p);
+            EXPECT_NEAR(c.rgb.x, grey.at(p).rgb.x, 1e-12) << body;
+            EXPECT_EQ(c.rgb.x, c.rgb.y) << body;
+            EXPECT_EQ(c.rgb.y, c.rgb.z) << body;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace rays

@@ -123,6 +123,7 @@ struct PigmentCompiler::State {
     bool normal = false;           ///< reading a normal: its specialised patterns are accepted
     bool density = false;          ///< reading a media's density (unrendered patterns give 0)
     const Entry* pavement = nullptr;  ///< the pavement keyword (its modifiers are checked once all are read)
+    bool greyDefault = false;  ///< spotted and bumps: bozo's noise with the grey ramp, not bozo's map
 };
 
 PigmentCompiler::PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes, pattern::NormalTable* normals)
@@ -289,6 +290,8 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
         s.unrendered = false;
         s.node.kind = kind;
         s.list.clear();
+        // Measured with POV-Ray 3.7's pigment functions: spotted and bumps without a map are grey.
+        s.greyDefault = k == Kw::spotted || k == Kw::bumps;
         if (kind == PatternKind::Gradient) {
             const Vec3 d = toVec3(e.args[0]);
             s.node.params.vector = length(d) > 0 ? normalize(d) : Vec3{0, 0, 0};
@@ -759,7 +762,8 @@ int PigmentCompiler::emit(State& s) {
         } else if (s.mapSet && !s.map.empty()) {
             entries = s.map;
         } else {
-            entries = pattern::defaultMap(node.kind);
+            // (gradient has no built-in map: the grey ramp)
+            entries = pattern::defaultMap(s.greyDefault ? PatternKind::Gradient : node.kind);
         }
         node.mapBegin = int(table_.entries.size());
         node.mapCount = int(entries.size());
