@@ -325,5 +325,45 @@ TEST(PovMeshTextureList, TexturesPerVertexBlendAndIndicesAreChecked) {
     }
 }
 
+// A pigment block with no base of its own modifies the pigment the texture has (measured with
+// POV-Ray 3.7: `texture { T pigment { scale 0.25 } }` draws T's checker four times smaller; of a
+// layered T only the top layer's pigment changes). Each scene is compared, ray by ray over a
+// grid, with the same texture written out in full.
+TEST(PovLayeredTexture, APigmentWithoutABaseModifiesTheTexturesPigment) {
+    const std::string checker = "pigment { checker rgb <1,0,0> rgb <0,0,1> } finish { ambient 1 diffuse 0 }";
+    const std::string ramp = "gradient x color_map { [0 rgbt <0,1,0,1>] [1 rgbt <0,1,0,0.3>] }";
+    const std::string top = "pigment { " + ramp + " } finish { ambient 1 diffuse 0 }";
+    const std::string topScaled = "pigment { " + ramp + " scale 0.25 } finish { ambient 1 diffuse 0 }";
+    const std::string checkerScaled =
+        "pigment { checker rgb <1,0,0> rgb <0,0,1> scale 0.25 } finish { ambient 1 diffuse 0 }";
+    struct Case {
+        std::string scene, same;
+    };
+    const Case cases[] = {
+        {"#declare T = texture { " + checker + " }\nplane { -z, -0.5 texture { T pigment { scale 0.25 } } }",
+         "plane { -z, -0.5 texture { " + checkerScaled + " } }"},
+        {"#declare T = texture { " + checker + " } texture { " + top +
+             " }\nplane { -z, -0.5 texture { T pigment { scale 0.25 } } }",
+         "plane { -z, -0.5 texture { " + checker + " } texture { " + topScaled + " } }"},
+        // The texture's own transformations come before the block's modifiers.
+        {"#declare T = texture { " + checker + " rotate 30*z }\nplane { -z, -0.5 texture { T pigment { scale <0.25, 0.5, 1> } } }",
+         "plane { -z, -0.5 texture { pigment { checker rgb <1,0,0> rgb <0,0,1> rotate 30*z scale <0.25, 0.5, 1> } "
+         "finish { ambient 1 diffuse 0 } } }"},
+        {"#declare T = texture { " + checker + " }\nplane { -z, -0.5 texture { T pigment { rgb <0,1,0> } } }",
+         "plane { -z, -0.5 texture { pigment { rgb <0,1,0> } finish { ambient 1 diffuse 0 } } }"}};
+    for (const Case& c : cases) {
+        const Scene a = load(c.scene), b = load(c.same);
+        const Bvh ba(a.objects), bb(b.objects);
+        const RenderSettings rs;
+        TraceContext ca, cb;
+        for (int i = 0; i < 64; ++i) {
+            const Ray ray{{-1.9 + 0.061 * i, 1.3 - 0.043 * i, -3}, {0, 0, 1}};
+            const Vec3 got = Tracer(a, ba, rs).tracePrimary(ray, ca);
+            const Vec3 want = Tracer(b, bb, rs).tracePrimary(ray, cb);
+            expectColor(got, want, 1e-9);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace rays

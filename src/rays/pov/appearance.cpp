@@ -51,11 +51,44 @@ bool mapAverage(const Item& map, Rgbft& out) {
 namespace {
 
 // The look's pigment becomes p: its flat (mean) colour, and its compiled pattern when there is one.
-void setPigment(const Item& p, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
-    applyPigment(p, a.pigment, notes, pigments == nullptr);
-    a.pigmentNode = pigments ? pigments->compile(p) : -1;
+// A block with no colour, pigment, map-less pattern or other base of its own (`pigment { scale 0.25 }`,
+// `pigment { octaves 3 rotate 90*z }`) modifies the pigment the look has (measured with POV-Ray
+// 3.7: `texture { T pigment { scale 0.25 } }` scales T's checker; of a layered T, its top layer's).
+bool modifiesPigment(const Item& block) {
+    return std::none_of(block.entries.begin(), block.entries.end(), [](const Entry& x) {
+        return x.positional() ? !x.args.empty() : isPatternKeyword(x.kw());
+    });
+}
+
+// `matrix <...>` standing for t (POV-Ray's row-vector order, as applyTransform reads it).
+Entry matrixEntry(const Transform& t, const sdl::Loc& loc) {
+    Entry m;
+    m.key = uint16_t(Kw::matrix);
+    m.loc = loc;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) m.args.push_back(Value::number(t.m[r][c]));
+    for (int r = 0; r < 3; ++r) m.args.push_back(Value::number(t.m[r][3]));
+    return m;
+}
+
+void setPigment(const Entry& e, Appearance& a, NotRendered& notes, PigmentCompiler* pigments) {
+    const Item& block = e.args[0].item();
+    std::shared_ptr<const Item> source = e.args[0].itemRef();
+    bool made = false;
+    if (a.pigmentSource && modifiesPigment(block)) {
+        // The texture's transformations since (`texture { T scale 2 pigment { ... } }`, a layer
+        // `texture { T_Grnt7 scale <2, 3, 2> }`) come before the block's modifiers.
+        auto merged = std::make_shared<Item>(*a.pigmentSource);
+        if (!a.pigmentToObject.isIdentity()) merged->entries.push_back(matrixEntry(a.pigmentToObject, e.loc));
+        merged->entries.insert(merged->entries.end(), block.entries.begin(), block.entries.end());
+        source = std::move(merged);
+        made = true;
+    }
+    applyPigment(*source, a.pigment, notes, pigments == nullptr);
+    a.pigmentNode = !pigments ? -1 : made ? pigments->compile(source) : pigments->compile(*source);
+    a.pigmentSource = std::move(source);
     a.pigmentToObject = Transform{};
-    a.pigmentUV = hasEntry(p, Kw::uv_mapping);
+    a.pigmentUV = hasEntry(*a.pigmentSource, Kw::uv_mapping);
 }
 
 // The look's normal becomes the normal item of entry e (compiled when the compiler makes normals).
@@ -489,7 +522,7 @@ void applyTexture(const Item& t, Appearance& a, NotRendered& notes, PigmentCompi
         }
         switch (e.kw()) {
             case Kw::pigment:
-                onTop(a, [&](Appearance& l) { setPigment(e.args[0].item(), l, notes, pigments); });
+                onTop(a, [&](Appearance& l) { setPigment(e, l, notes, pigments); });
                 break;
             case Kw::finish: onTop(a, [&](Appearance& l) { applyFinish(e.args[0].item(), l.finish, notes); }); break;
             case Kw::normal: onTop(a, [&](Appearance& l) { setNormal(e, l, notes, pigments); }); break;
@@ -541,7 +574,7 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
         case Kw::texture:  // over what is set (textures written in a row arrive as one layered texture)
             applyTexture(e.args[0].item(), a, notes, pigments, &fallback);
             break;
-        case Kw::pigment: onTop(a, [&](Appearance& l) { setPigment(e.args[0].item(), l, notes, pigments); }); break;
+        case Kw::pigment: onTop(a, [&](Appearance& l) { setPigment(e, l, notes, pigments); }); break;
         case Kw::finish: onTop(a, [&](Appearance& l) { applyFinish(e.args[0].item(), l.finish, notes); }); break;
         case Kw::normal: onTop(a, [&](Appearance& l) { setNormal(e, l, notes, pigments); }); break;
         case Kw::material:

@@ -38,6 +38,9 @@ struct Appearance {
     /// its own modifies it (POV-Ray 3.7 reference, "Default Directive": a texture starts as a
     /// copy of the default one).
     std::shared_ptr<const Item> normalSource;
+    /// The pigment block pigmentNode was compiled from: a later `pigment { }` without a pattern or
+    /// colour of its own modifies it, as normalSource.
+    std::shared_ptr<const Item> pigmentSource;
     PovFinish finish;
     InteriorLook interior;
     bool interiorSet = false;

@@ -137,6 +137,11 @@ int PigmentCompiler::compileNormal(const Item& normal) {
     return normals_->compile(normal);
 }
 
+int PigmentCompiler::compile(std::shared_ptr<const Item> made) {
+    made_.push_back(std::move(made));
+    return compile(*made_.back());
+}
+
 int PigmentCompiler::compileNormal(std::shared_ptr<const Item> made) {
     made_.push_back(std::move(made));
     return compileNormal(*made_.back());

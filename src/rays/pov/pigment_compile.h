@@ -35,6 +35,8 @@ public:
     /// The node of a pigment with a rendered pattern, or -1 for a flat colour (a pigment with no
     /// pattern, or with only patterns Rays does not render: those are noted).
     int compile(const Item& pigment);
+    /// compile of an item made while building, kept alive as long as the compiler.
+    int compile(std::shared_ptr<const Item> made);
     /// The node of a density item (its pattern, colour or density map, modifiers; density
     /// identifiers as bases): always a node, a Solid node of density 1 when it has no pattern, and
     /// of density 0 when the pattern is not rendered (noted).
