@@ -925,5 +925,33 @@ TEST(PovPattern, SpottedAndBumpsWithoutAMapAreGrey) {
     }
 }
 
+// waves is ten rings of different frequencies, each with a height ∝ 1/frequency (measured with
+// POV-Ray 3.7 along the line y = 0.3, z = 0.2 from x = 1000, 16,384 samples 0.05 apart: ten
+// sinusoids between frequency 0.17 and 0.99, the strongest the slowest; ripples is one period 1).
+// The same line's spectrum here: the strongest component below 0.5, little power about 1.
+TEST(PovPattern, WavesAreRingsOfManyFrequencies) {
+    const Probe waves = pigment(std::string("waves") + kGrey);
+    const int n = 8192;
+    std::vector<double> v(n);
+    double mean = 0;
+    for (int k = 0; k < n; ++k) mean += v[size_t(k)] = waves.at({1000 + 0.05 * k, 0.3, 0.2}).rgb.x;
+    mean /= n;
+    double best = 0, bestF = 0, nearOne = 0, total = 0;
+    for (double f = 0.05; f < 1.3; f += 0.0025) {
+        double re = 0, im = 0;
+        for (int k = 0; k < n; ++k) {
+            const double a = 2 * std::numbers::pi * f * 0.05 * k;
+            re += (v[size_t(k)] - mean) * std::cos(a);
+            im -= (v[size_t(k)] - mean) * std::sin(a);
+        }
+        const double power = re * re + im * im;
+        total += power;
+        if (f > 0.95 && f < 1.05) nearOne += power;
+        if (power > best) best = power, bestF = f;
+    }
+    EXPECT_LT(bestF, 0.5);
+    EXPECT_LT(nearOne, 0.3 * total);
+}
+
 }  // namespace
 }  // namespace rays

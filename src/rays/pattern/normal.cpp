@@ -31,7 +31,7 @@ constexpr Vec3 kPyramid[4] = {{kT, kT, kT}, {kT, -kT, -kT}, {-kT, kT, -kT}, {-kT
 // The specialised normals' heights are scaled so that their tilt at amount 1 spreads as POV-Ray's
 // (measured over a plane, tests/pov_normal_test.cpp, SpecialisedNormalsTiltAboutAsMuchAsPovRays).
 constexpr double kBumpsScale = 6.9, kDentsScale = 6.7, kRipplesScale = 18.8, kWavesScale = 34.5,
-                 kWrinklesScale = 1.15;
+                 kWrinklesScale = 1.55;
 
 Vec3 patternPoint(const PigmentTable& patterns, const PigmentNode& pn, Vec3 p) {
     if (pn.warpCount > 0) {
@@ -71,13 +71,15 @@ double slopeHeight(const SlopeEntry* s, int count, double v) {
 // frequencies, as in var_refl.pov, stay calm).
 Vec3 wavesGradient(Vec3 q, const Wave& w, bool ripples) {
     Vec3 g;
-    for (const Vec3& centre : kWaveCentres) {
-        const Vec3 r = q - centre;
+    for (int i = 0; i < 10; ++i) {
+        const Vec3 r = q - kWaveCentres[i];
         const double d = length(r);
         if (d == 0) continue;
-        const double phase = kTwoPi * (d * w.frequency + w.phase);
-        // ripples: the slope of sine rings; waves: of rounder crests (c·|c|, c the cosine).
-        const double slope = ripples ? std::cos(phase) : -2 * std::sin(phase) * std::fabs(std::cos(phase));
+        // ripples: the slope of sine rings of period 1; waves: of cosine rings of each centre's own
+        // frequency, their heights ∝ 1/frequency, so every centre tilts alike (wavesValue).
+        const double f = ripples ? 1.0 : kWaveFrequencies[i];
+        const double phase = kTwoPi * (d * w.frequency * f + w.phase);
+        const double slope = ripples ? std::cos(phase) : -std::sin(phase);
         g += (slope / d) * r;
     }
     return g / 10.0;

@@ -21,11 +21,9 @@ double ripplesValue(Vec3 p) {
 
 double wavesValue(Vec3 p) {
     double sum = 0;
-    for (const Vec3& c : kWaveCentres) {
-        const double k = std::cos(kRingTurn * length(p - c));
-        sum += k * std::fabs(k);
-    }
-    return 0.476 + 0.107 * sum;
+    for (int i = 0; i < 10; ++i)
+        sum += std::cos(kRingTurn * kWaveFrequencies[i] * length(p - kWaveCentres[i])) / kWaveFrequencies[i];
+    return 0.5 + 0.02 * sum;
 }
 
 double dentsValue(Vec3 p) {
