@@ -347,6 +347,14 @@ TEST(PovPattern, BlockPatternsMatchPovRay) {
     EXPECT_EQ(brick.at({7.6, 4, 3}).rgb, Vec3(0));
     EXPECT_EQ(brick.at({2, 4, 4.2}).rgb, Vec3(1));   // and not along z
     EXPECT_EQ(brick.at({1, 2.7, 1}).rgb, Vec3(1));   // y mortar at 2.5..3
+    // The mortar's faces move a hair as POV-Ray's do (its pattern function: 1e-10 below x = 7.5,
+    // y = 2.5 or z = 1.75 is mortar, 1.2e-10 below is brick), so a box face on them is mortar.
+    for (const Vec3 d : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) {
+        const Vec3 edge = d.x ? Vec3{7.5, 1, 1} : d.y ? Vec3{1, 2.5, 1} : Vec3{1, 1, 1.75};
+        EXPECT_EQ(brick.at(edge).rgb, Vec3(1));
+        EXPECT_EQ(brick.at(edge - 1e-10 * d).rgb, Vec3(1));
+        EXPECT_EQ(brick.at(edge - 1.2e-10 * d).rgb, Vec3(0));
+    }
 }
 
 // The list index a block pattern picks at p: entry i is rgb i/10.

@@ -65,6 +65,11 @@ int hexagonIndex(Vec3 p) {
 // ones half a width along z; mortar fills the last `mortar` of each brick's length, height and
 // width. Index 0 is the mortar, 1 the brick.
 int brickIndex(Vec3 p, Vec3 size, double mortar) {
+    // POV-Ray moves the point by a hair as checker does (measured with its pattern function at
+    // the mortar's faces: 1e−10 below x = 7.5 is mortar, 1.2e−10 below is brick; the same in y and
+    // z), so that faces lying on a mortar plane, as the sides of a box, take one colour.
+    constexpr double kShift = 1.1e-10;
+    p = {p.x + kShift, p.y + kShift, p.z + kShift};
     const double course = std::floor(p.y / size.y);
     const bool odd = std::fmod(std::fabs(course), 2.0) == 1.0;
     const double x = wrap(p.x + (odd ? size.x / 2 : 0), size.x);
