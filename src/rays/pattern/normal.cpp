@@ -30,7 +30,7 @@ constexpr Vec3 kPyramid[4] = {{kT, kT, kT}, {kT, -kT, -kT}, {-kT, kT, -kT}, {-kT
 
 // The specialised normals' heights are scaled so that their tilt at amount 1 spreads as POV-Ray's
 // (measured over a plane, tests/pov_normal_test.cpp, SpecialisedNormalsTiltAboutAsMuchAsPovRays).
-constexpr double kBumpsScale = 6.9, kDentsScale = 6.7, kRipplesScale = 18.8, kWavesScale = 34.5,
+constexpr double kBumpsScale = 6.9, kDentsScale = 6.7, kRipplesScale = 18.8, kWavesScale = 20.7,
                  kWrinklesScale = 1.55;
 
 Vec3 patternPoint(const PigmentTable& patterns, const PigmentNode& pn, Vec3 p) {
