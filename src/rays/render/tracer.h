@@ -210,6 +210,9 @@ private:
         int level = 1;
         double weight = 1;
         int interior = -1;
+        /// The Material::pov of the (leaf) surface the ray entered that interior by (−1: the
+        /// object's own): each child of a CSG keeps its own interior.
+        int interiorSurface = -1;
         bool fades = false;
         Vec3 faded{1, 1, 1};
         bool primary = false;
@@ -344,6 +347,8 @@ private:
     /// filter·C + transmit, interiors with fading fade over the length inside (from the ray's start
     /// for one it began in, none for one it does not leave); an opaque surface (or too many) blocks.
     Vec3 povTransmittance(const Ray& shadow, double tMax) const;
+    /// The surface whose interior ray r travels in (r.interior ≥ 0).
+    const PovSurface& povInteriorOf(const PovRay& r) const;
     const PovSurface& povSurfaceOf(const Material& m) const;
     // POV-Ray's media (tracer_media.cpp; docs/povray-lighting.md, "Media").
     /// True when some object's interior or the atmosphere holds media.

@@ -66,7 +66,7 @@ void Tracer::povStartInside(Vec3 origin, PovRay& r) const {
 // screen plane in front of the camera is hollow for this reason).
 bool Tracer::povInAtmosphere(const PovRay& r) const {
     if (r.interior < 0) return true;
-    if (!povSurfaceOf(scene_.objects[size_t(r.interior)].material).hollow) return false;
+    if (!povInteriorOf(r).hollow) return false;
     for (int i = 0; i < r.insideCount; ++i) {
         const int surface = r.inside[i].surface;
         const PovSurface& s = surface >= 0 && size_t(surface) < scene_.povSurfaces.size()

@@ -56,6 +56,12 @@ bool Tracer::povShadowsWalk() const {
     return false;
 }
 
+const PovSurface& Tracer::povInteriorOf(const PovRay& r) const {
+    const int s = r.interiorSurface;
+    if (s >= 0 && size_t(s) < scene_.povSurfaces.size()) return scene_.povSurfaces[size_t(s)];
+    return povSurfaceOf(scene_.objects[size_t(r.interior)].material);
+}
+
 const PovSurface& Tracer::povSurfaceOf(const Material& m) const {
     return m.pov >= 0 && size_t(m.pov) < scene_.povSurfaces.size() ? scene_.povSurfaces[size_t(m.pov)]
                                                                    : kDefaultSurface;
@@ -121,7 +127,7 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
     if (info) info->push(hit.object);
     Vec3 fade(1.0);
     if (r.fades && r.interior >= 0) {
-        const PovInterior& in = povSurfaceOf(scene_.objects[size_t(r.interior)].material).interior;
+        const PovInterior& in = povInteriorOf(r).interior;
         if (povFades(in)) fade = povFade(in, hit.t);
     }
     Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : povSky(scene_, ray.dir));
@@ -265,6 +271,7 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
     PovRay reflected{.level = r.level + 1,
                      .weight = r.weight,
                      .interior = pt.entering ? r.interior : pt.object,
+                     .interiorSurface = pt.entering ? r.interiorSurface : pt.material->pov,
                      .reflected = true,
                      .radLevel = r.radLevel,
                      .gathering = r.gathering};
@@ -288,6 +295,7 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
     PovRay through{.level = level,
                    .weight = r.weight * maxAbsComponent(T),
                    .interior = pt.entering ? pt.object : -1,
+                   .interiorSurface = pt.entering ? pt.material->pov : -1,
                    .fades = true,
                    .reflected = r.reflected,
                    .radLevel = r.radLevel,
@@ -523,14 +531,24 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             if (dot(shadow.dir, h.geomNormal) < 0) {
                 if (openCount < kMaxOpenInteriors) open[openCount++] = Entry{h.object, h.t};
             } else {
-                // Leaving: the length inside since the entry, or since the start.
-                double from = 0;
+                // Leaving: the length inside since the entry, or since the start when the start
+                // is inside the object. A surface left without the start being inside (an open
+                // object: a clipped cone over the floor it stands on) does not fade the light
+                // (measured with POV-Ray 3.7: a quadric cone clipped to a slab, fading, over a
+                // floor inside the cone's infinite surface but outside the slab).
+                double from = -1;
                 for (int i = 0; i < openCount; ++i)
                     if (open[i].object == h.object) {
                         from = open[i].t;
                         open[i] = open[--openCount];
                         break;
                     }
+                if (from < 0) {
+                    const Object& top = scene_.objects[size_t(h.object)];
+                    const bool startInside = top.type == ShapeType::Csg ? insideCsg(*top.csg, 0, shadow.origin)
+                                                                        : insideShape(top, shadow.origin) != 0;
+                    from = startInside ? 0 : h.t;
+                }
                 tint *= povFade(s.interior, h.t - from);
             }
         }

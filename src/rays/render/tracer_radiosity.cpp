@@ -62,6 +62,7 @@ IrradianceRecord Tracer::povGatherRecord(Vec3 P, Vec3 N, const PovRay& r, TraceC
     PovRay child{.level = r.level + 1,
                  .weight = r.weight,
                  .interior = r.interior,
+                 .interiorSurface = r.interiorSurface,
                  .reflected = r.reflected,
                  .radLevel = r.radLevel + 1,
                  .gathering = true};

@@ -1,0 +1,68 @@
+// Interiors of CSG children and of open objects along viewing and shadow rays, as POV-Ray 3.7
+// fades them (measured with povray 3.7.0.10 on advanced/wineglass.pov's parts: a merge of glass
+// parts with fade distances from 0.025 to 3.25, and a quadric cone clipped to a slab standing on
+// the floor).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rays/accel/bvh.h"
+#include "rays/render/tracer.h"
+#include "support/pov_scene.h"
+
+namespace rays {
+namespace {
+
+Scene load(const std::string& body) {
+    return test::loadPov(body, "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 10 }\n").scene;
+}
+
+Vec3 trace(const Scene& s, const Ray& ray) {
+    const Bvh bvh(s.objects);
+    const RenderSettings rs;
+    TraceContext ctx;
+    return Tracer(s, bvh, rs).tracePrimary(ray, ctx);
+}
+
+const std::string kClear = "texture { pigment { rgbf <1, 1, 1, 1> } finish { ambient 0 diffuse 0 } }";
+
+std::string sphere(double x, double fadeDistance) {
+    return "sphere { <" + std::to_string(x) + ", 0, 0>, 1 " + kClear + " interior { fade_distance " +
+           std::to_string(fadeDistance) + " fade_power 1 } }";
+}
+
+// A ray through one child of a CSG fades by that child's interior, not by another child's (the
+// wine glass lying on its side came out black: its rim's fade_distance 0.025 faded the bowl).
+TEST(PovCsgInterior, EachChildFadesByItsOwnInterior) {
+    const std::string background = "background { rgb 1 }\n";
+    const Ray through{{3, 0.2, -5}, {0, 0, 1}};  // through the sphere at x = 3 only
+    const Vec3 alone = trace(load(background + sphere(3, 2)), through);
+    EXPECT_LT(alone.x, 0.9);  // it fades
+    for (const char* csg : {"union", "merge"}) {
+        const Scene s = load(background + csg + " { " + sphere(-3, 0.01) + " " + sphere(3, 2) + " }");
+        const Vec3 got = trace(s, through);
+        EXPECT_NEAR(got.x, alone.x, 1e-9) << csg;
+        EXPECT_NEAR(got.z, alone.z, 1e-9) << csg;
+    }
+}
+
+// A shadow ray that leaves a fading surface it was not inside (a cone clipped to a slab, over the
+// floor its infinite surface encloses) is not faded (rays from inside a closed fading object still
+// fade from their start: PovShading.LightInsideAFadingInteriorIsDividedByTheViewingRaysFade).
+TEST(PovCsgInterior, ShadowRaysLeavingAnOpenObjectTheyWereNotInDoNotFade) {
+    const std::string light = "light_source { <0, 100, 0> rgb 1 }\n";
+    const std::string floor = "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n";
+    // Seen low from the side, below the cone's wall (which starts at y = 0.5).
+    const Ray low{{5, 0.1, 0.05}, Vec3{-4.95, -0.1, 0} / length(Vec3{-4.95, -0.1, 0})};
+    const Vec3 bare = trace(load(light + floor), low);
+    ASSERT_GT(bare.x, 0.5);
+    // The cone x² + z² = (y − 1)² between y = 0.5 and 1 (open), its infinite surface round the
+    // floor point; the shadow ray meets only its wall, leaving it.
+    const std::string cone = "quadric { <1, -1, 1>, <0, 0, 0>, <0, 2, 0>, -1 clipped_by { plane { y, 1 } "
+                             "plane { -y, -0.5 } } " + kClear + " interior { fade_distance 0.1 fade_power 1 } }\n";
+    const Vec3 underCone = trace(load(light + floor + cone), low);
+    EXPECT_NEAR(underCone.x, bare.x, 1e-9);
+}
+
+}  // namespace
+}  // namespace rays
