@@ -271,6 +271,24 @@ TEST(PovNormal, ABlockWithoutAPatternModifiesTheNormalBelow) {
     EXPECT_NEAR(brightness("gradient x 2"), 0.5010, kMeasured);
 }
 
+// A block with a pattern but no amount of its own keeps the amount of the normal it replaces
+// (povray 3.7: under `#default { normal { bump_size 1.5 } }`, `normal { gradient x }` gives the same
+// image as `normal { gradient x 1.5 }`, 196 of 255 against 212 without the default). An amount
+// written in the block wins.
+TEST(PovNormal, APatternWithoutAnAmountKeepsTheAmountBelow) {
+    const std::string light = "light_source { <1, 0, -1>*1000 color 1 parallel point_at 0 }\n";
+    const std::string plane = "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } ";
+    const auto brightness = [&](const std::string& defaults, const std::string& normal) {
+        const Loaded l = load(defaults + light + plane + "normal { " + normal + " } }\n");
+        return seen(l.scene, 0.35, 0.2).x;
+    };
+    const std::string bigger = "#default { normal { bump_size 1.5 } }\n";
+    EXPECT_NEAR(brightness(bigger, "gradient x"), brightness("", "gradient x 1.5"), 1e-12);
+    EXPECT_NEAR(brightness(bigger, "gradient x 0.5"), brightness("", "gradient x 0.5"), 1e-12);
+    EXPECT_NEAR(brightness("", "gradient x"), brightness("", "gradient x 0.5"), 1e-12);
+    EXPECT_GT(std::fabs(brightness("", "gradient x 1.5") - brightness("", "gradient x 0.5")), 0.01);
+}
+
 // A 5 × 5 black image with one white texel (2, 2) (top row first).
 std::string dotImage(const test::TempDir& dir) {
     Image8 img(5, 5, 1);

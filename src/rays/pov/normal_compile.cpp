@@ -41,6 +41,7 @@ struct NormalCompiler::State {
     bool block = false;       ///< checker, hexagon or brick
     bool pattern = false;     ///< a pattern type was given
     double amount = 0.5;      ///< the pattern's amount (POV-Ray's default 0.5)
+    bool amountSet = false;   ///< an amount was written after the pattern type
     double bumpSize = 0;      ///< bump_size, when set
     bool bumpSizeSet = false;
     double accuracy = 0.02;
@@ -98,6 +99,12 @@ int NormalCompiler::compile(const Item& normal) {
     return n;
 }
 
+NormalCompiler::Amount NormalCompiler::amountOf(const Item& normal) {
+    State s;
+    read(normal, s, 0);
+    return {s.bumpSizeSet ? s.bumpSize : s.amount, s.amountSet || s.bumpSizeSet};
+}
+
 int NormalCompiler::nested(const Item& normal, int depth) {
     if (depth > kMaxDepth) return -1;
     return compile(normal);
@@ -118,6 +125,7 @@ void NormalCompiler::read(const Item& normal, State& s, int depth) {
                                              nested(me.args[1].item(), depth + 1)});
                 } else if (v.isNumeric() && v.type != VType::Item && s.pattern) {
                     s.amount = toFloat(v);  // the amount after the pattern type
+                    s.amountSet = true;
                 }
             }
             continue;
@@ -130,11 +138,15 @@ void NormalCompiler::read(const Item& normal, State& s, int depth) {
             s.block = isBlock(k);
             s.list.clear();
             // bumps, dents, ripples, waves and wrinkles take their amount as an argument.
-            if (s.kind >= NormalKind::Bumps && !e.args.empty() && e.args[0].type == VType::Float)
+            if (s.kind >= NormalKind::Bumps && !e.args.empty() && e.args[0].type == VType::Float) {
                 s.amount = toFloat(e.args[0]);
+                s.amountSet = true;
+            }
             // spiral1 N, AMOUNT and spiral2 N, AMOUNT (measured: `spiral2 5, 1.0` tilts as `spiral2 5 1.0`).
-            if ((k == Kw::spiral1 || k == Kw::spiral2) && e.args.size() > 1 && e.args[1].isNumeric())
+            if ((k == Kw::spiral1 || k == Kw::spiral2) && e.args.size() > 1 && e.args[1].isNumeric()) {
                 s.amount = toFloat(e.args[1]);
+                s.amountSet = true;
+            }
             // object { OBJECT normal { A }, normal { B } }: its list is inside its braces.
             if (k == Kw::object && !e.args.empty() && e.args[0].type == VType::Item)
                 for (const Entry& le : e.args[0].item().entries)

@@ -17,6 +17,13 @@ public:
     /// The node of a normal with a rendered pattern or a bump_map, or -1 (the surface stays
     /// smooth; patterns Rays does not render are noted).
     int compile(const Item& normal);
+    /// A normal's amount (bump_size, or the amount after its pattern type; 0.5 when neither) and
+    /// whether it writes one.
+    struct Amount {
+        double value = 0.5;
+        bool given = false;
+    };
+    Amount amountOf(const Item& normal);
 
 private:
     struct State;

@@ -137,6 +137,13 @@ int PigmentCompiler::compileNormal(const Item& normal) {
     return normals_->compile(normal);
 }
 
+std::pair<double, bool> PigmentCompiler::normalAmount(const Item& normal) {
+    if (!normalTable_) return {0.5, false};
+    if (!normals_) normals_ = std::make_unique<NormalCompiler>(*normalTable_, *this, notes_);
+    const NormalCompiler::Amount a = normals_->amountOf(normal);
+    return {a.value, a.given};
+}
+
 int PigmentCompiler::compile(std::shared_ptr<const Item> made) {
     made_.push_back(std::move(made));
     return compile(*made_.back());

@@ -30,6 +30,9 @@ public:
     /// compileNormal of an item made while building (not the parsed scene's), kept alive as long
     /// as the compiler: compiled items are remembered by address.
     int compileNormal(std::shared_ptr<const Item> made);
+    /// A normal item's amount and whether it writes one (NormalCompiler::amountOf); {0.5, false}
+    /// when normals are not compiled.
+    std::pair<double, bool> normalAmount(const Item& normal);
     /// True when normals are compiled (a NormalTable was given).
     bool compilesNormals() const { return normalTable_ != nullptr; }
     /// The node of a pigment with a rendered pattern, or -1 for a flat colour (a pigment with no
