@@ -287,6 +287,17 @@ TEST(PovNormal, APatternWithoutAnAmountKeepsTheAmountBelow) {
     EXPECT_NEAR(brightness(bigger, "gradient x 0.5"), brightness("", "gradient x 0.5"), 1e-12);
     EXPECT_NEAR(brightness("", "gradient x"), brightness("", "gradient x 0.5"), 1e-12);
     EXPECT_GT(std::fabs(brightness("", "gradient x 1.5") - brightness("", "gradient x 0.5")), 0.01);
+    // A normal_map's entries without amounts keep it too (povray: 196 at x = 0.875, 212 without
+    // the default); the map's own bump_size does not scale them.
+    const auto at = [&](const std::string& defaults, const std::string& normal) {
+        const Loaded l = load(defaults + light + plane + "normal { " + normal + " } }\n");
+        return seen(l.scene, 0.875, 0.2).x;
+    };
+    const std::string map = "gradient x normal_map { [0.3 gradient y] [0.7 gradient x] }";
+    EXPECT_NEAR(at(bigger, map), at("", "gradient x 1.5"), 1e-12);
+    EXPECT_NEAR(at("", map), at("", "gradient x 0.5"), 1e-12);
+    EXPECT_NEAR(at("", "gradient x bump_size 1.5 normal_map { [0.3 gradient y] [0.7 gradient x] }"),
+                at("", "gradient x 0.5"), 1e-12);
 }
 
 // A 5 × 5 black image with one white texel (2, 2) (top row first).

@@ -110,23 +110,18 @@ void setNormal(const Entry& e, Appearance& a, NotRendered& notes, PigmentCompile
         auto merged = std::make_shared<Item>(*a.normalSource);
         merged->entries.insert(merged->entries.end(), block.entries.begin(), block.entries.end());
         source = std::move(merged);
-    } else if (ownBase && a.normalSource) {
-        // A new pattern without an amount of its own keeps the amount of the normal it replaces
-        // (measured with POV-Ray 3.7: under `#default { normal { bump_size 1.5 } }`, `normal {
-        // gradient x }` tilts as `gradient x 1.5`). A normal_map's entries keep it too in POV-Ray;
-        // not here yet (they are compiled once per item).
-        const auto [amount, given] = pigments->normalAmount(*a.normalSource);
-        if (given && !pigments->normalAmount(block).second) {
-            auto merged = std::make_shared<Item>(block);
-            Entry size;
-            size.key = uint16_t(Kw::bump_size);
-            size.loc = e.loc;
-            size.args.push_back(Value::number(amount));
-            merged->entries.insert(merged->entries.begin(), std::move(size));
-            source = std::move(merged);
-        }
     }
-    a.normalNode = pigments->compileNormal(source);
+    // A new pattern without an amount of its own, and the normals of its normal_map, keep the
+    // amount of the normal it replaces (measured with POV-Ray 3.7: under `#default { normal {
+    // bump_size 1.5 } }`, `normal { gradient x }` tilts as `gradient x 1.5`, and so do the entries
+    // of `normal { gradient x normal_map { [0.3 gradient y] [0.7 gradient x] } }`; the map's own
+    // amount does not scale its entries).
+    double inherited = 0.5;
+    if (ownBase && a.normalSource) {
+        const auto [amount, given] = pigments->normalAmount(*a.normalSource);
+        if (given) inherited = amount;
+    }
+    a.normalNode = pigments->compileNormal(source, inherited);
     a.normalSource = std::move(source);
     a.normalToObject = Transform{};
 }

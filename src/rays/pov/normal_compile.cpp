@@ -51,10 +51,32 @@ struct NormalCompiler::State {
     bool mapSet = false;
 };
 
-int NormalCompiler::compile(const Item& normal) {
-    if (const int* done = done_.find(normal)) return *done;
-    done_.put(normal, -1);  // a normal containing itself stays smooth there
+int NormalCompiler::compile(const Item& normal, double inherited) {
+    if (inherited != 0.5) {  // made once per item and inherited amount
+        if (const std::vector<std::pair<double, int>>* done = doneWith_.find(normal))
+            for (const auto& [amount, node] : *done)
+                if (amount == inherited) return node;
+    } else if (const int* done = done_.find(normal)) {
+        return *done;
+    }
+    const double outer = inherited_;
+    inherited_ = inherited;
+    const int n = build(normal);
+    inherited_ = outer;
+    if (inherited != 0.5) {
+        std::vector<std::pair<double, int>> list;
+        if (const auto* done = doneWith_.find(normal)) list = *done;
+        list.emplace_back(inherited, n);
+        doneWith_.put(normal, std::move(list));
+    }
+    return n;
+}
+
+int NormalCompiler::build(const Item& normal) {
+    const bool plain = inherited_ == 0.5;
+    if (plain) done_.put(normal, -1);  // a normal containing itself stays smooth there
     State s;
+    s.amount = inherited_;
     read(normal, s, 0);
     int n = -1;
     const int pat = s.pattern ? patterns_.normalPattern(normal) : -1;
@@ -95,7 +117,7 @@ int NormalCompiler::compile(const Item& normal) {
         table_.nodes.push_back(node);
         n = int(table_.nodes.size()) - 1;
     }
-    done_.put(normal, n);
+    if (plain) done_.put(normal, n);
     return n;
 }
 
@@ -107,7 +129,7 @@ NormalCompiler::Amount NormalCompiler::amountOf(const Item& normal) {
 
 int NormalCompiler::nested(const Item& normal, int depth) {
     if (depth > kMaxDepth) return -1;
-    return compile(normal);
+    return compile(normal, inherited_);
 }
 
 void NormalCompiler::read(const Item& normal, State& s, int depth) {

@@ -16,7 +16,9 @@ public:
         : table_(table), patterns_(patterns), notes_(notes) {}
     /// The node of a normal with a rendered pattern or a bump_map, or -1 (the surface stays
     /// smooth; patterns Rays does not render are noted).
-    int compile(const Item& normal);
+    /// `inherited`: the amount of a normal without one of its own, and of the normals nested in
+    /// it (POV-Ray's normals start as a copy of the default one; 0.5 without a default).
+    int compile(const Item& normal, double inherited = 0.5);
     /// A normal's amount (bump_size, or the amount after its pattern type; 0.5 when neither) and
     /// whether it writes one.
     struct Amount {
@@ -29,11 +31,14 @@ private:
     struct State;
     void read(const Item& normal, State& s, int depth);
     int nested(const Item& normal, int depth);
+    int build(const Item& normal);
 
     pattern::NormalTable& table_;
     PigmentCompiler& patterns_;
     NotRendered& notes_;
     ItemCache<int> done_;
+    ItemCache<std::vector<std::pair<double, int>>> doneWith_;  ///< compiled with another inherited amount
+    double inherited_ = 0.5;  ///< the inherited amount of the normal being compiled
 };
 
 }  // namespace rays::pov

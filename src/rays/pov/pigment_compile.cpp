@@ -131,10 +131,10 @@ PigmentCompiler::PigmentCompiler(pattern::PigmentTable& table, NotRendered& note
 
 PigmentCompiler::~PigmentCompiler() = default;
 
-int PigmentCompiler::compileNormal(const Item& normal) {
+int PigmentCompiler::compileNormal(const Item& normal, double inherited) {
     if (!normalTable_) return -1;
     if (!normals_) normals_ = std::make_unique<NormalCompiler>(*normalTable_, *this, notes_);
-    return normals_->compile(normal);
+    return normals_->compile(normal, inherited);
 }
 
 std::pair<double, bool> PigmentCompiler::normalAmount(const Item& normal) {
@@ -149,9 +149,9 @@ int PigmentCompiler::compile(std::shared_ptr<const Item> made) {
     return compile(*made_.back());
 }
 
-int PigmentCompiler::compileNormal(std::shared_ptr<const Item> made) {
+int PigmentCompiler::compileNormal(std::shared_ptr<const Item> made, double inherited) {
     made_.push_back(std::move(made));
-    return compileNormal(*made_.back());
+    return compileNormal(*made_.back(), inherited);
 }
 
 // A pavement whose tile or corners Rays does not draw: noted, the pigment left flat.

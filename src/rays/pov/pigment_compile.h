@@ -26,10 +26,10 @@ public:
     PigmentCompiler(pattern::PigmentTable& table, NotRendered& notes, pattern::NormalTable* normals = nullptr);
     ~PigmentCompiler();
     /// The node of a normal item in the NormalTable, or -1 (smooth; noted when not rendered).
-    int compileNormal(const Item& normal);
+    int compileNormal(const Item& normal, double inherited = 0.5);
     /// compileNormal of an item made while building (not the parsed scene's), kept alive as long
     /// as the compiler: compiled items are remembered by address.
-    int compileNormal(std::shared_ptr<const Item> made);
+    int compileNormal(std::shared_ptr<const Item> made, double inherited = 0.5);
     /// A normal item's amount and whether it writes one (NormalCompiler::amountOf); {0.5, false}
     /// when normals are not compiled.
     std::pair<double, bool> normalAmount(const Item& normal);
