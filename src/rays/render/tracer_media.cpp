@@ -79,14 +79,17 @@ bool Tracer::povInAtmosphere(const PovRay& r) const {
 
 PovMediaSet Tracer::povMediaOf(const PovRay& r) const {
     PovMediaSet set;
+    // An object's media fill it where the ray is in no object inside it that is not hollow
+    // (measured with POV-Ray 3.7, interior/media/hollow2.pov: a sphere inside a media-filled one
+    // keeps the media out unless it is `hollow`). The innermost object is the last entered.
     bool hollow = true;
-    for (int i = 0; i < r.insideCount; ++i) {
+    for (int i = r.insideCount - 1; i >= 0; --i) {
         const int surface = r.inside[i].surface;
         const PovSurface& s = surface >= 0 && size_t(surface) < scene_.povSurfaces.size()
                                   ? scene_.povSurfaces[size_t(surface)]
                                   : povSurfaceOf(scene_.objects[size_t(r.inside[i].object)].material);
         const PovInterior& in = s.interior;
-        if (in.mediaCount > 0) set.add(&scene_.povMedia[size_t(in.mediaFirst)], in.mediaCount);
+        if (hollow && in.mediaCount > 0) set.add(&scene_.povMedia[size_t(in.mediaFirst)], in.mediaCount);
         hollow = hollow && s.hollow;
     }
     // Atmospheric media fill the space outside objects and hollow objects only (the manual, "Hollow").
