@@ -59,16 +59,23 @@ int NormalCompiler::compile(const Item& normal, double inherited) {
     } else if (const int* done = done_.find(normal)) {
         return *done;
     }
+    // What it was made with is remembered before it is built (-1 meanwhile), so that a normal
+    // containing itself stays smooth there, as with the plain cache.
+    const auto remember = [&](int node) {
+        std::vector<std::pair<double, int>> list;
+        if (const auto* done = doneWith_.find(normal)) list = *done;
+        bool found = false;
+        for (auto& [amount, n] : list)
+            if (amount == inherited) n = node, found = true;
+        if (!found) list.emplace_back(inherited, node);
+        doneWith_.put(normal, std::move(list));
+    };
+    if (inherited != 0.5) remember(-1);
     const double outer = inherited_;
     inherited_ = inherited;
     const int n = build(normal);
     inherited_ = outer;
-    if (inherited != 0.5) {
-        std::vector<std::pair<double, int>> list;
-        if (const auto* done = doneWith_.find(normal)) list = *done;
-        list.emplace_back(inherited, n);
-        doneWith_.put(normal, std::move(list));
-    }
+    if (inherited != 0.5) remember(n);
     return n;
 }
 
