@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -41,6 +42,21 @@ Probe pigment(const std::string& body, const std::string& object = "sphere { 0, 
 }
 
 const char* kGrey = " color_map { [0 rgb 0] [1 rgb 1] }";
+
+// Mean and standard deviation of the probe's value (red) at n points given one by one by `point`.
+struct Spread {
+    double mean, sd;
+};
+Spread spreadOf(const Probe& pr, int n, const std::function<Vec3()>& point) {
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < n; ++i) {
+        const double v = pr.at(point()).rgb.x;
+        sum += v;
+        sum2 += v * v;
+    }
+    const double mean = sum / n;
+    return {mean, std::sqrt(sum2 / n - mean * mean)};
+}
 
 struct Sample {
     Vec3 p;
@@ -753,15 +769,7 @@ TEST(PovPattern, RipplesWavesAndDentsPigmentsSpreadAsPovRaysDo) {
             seed = seed * 1664525u + 1013904223u;
             return -5 + 10 * (seed >> 8) / double(1u << 24);
         };
-        double sum = 0, sum2 = 0;
-        const int n = 400;
-        for (int i = 0; i < n; ++i) {
-            const double x = next(), y = next(), z = next();
-            const double v = pr.at({x, y, z}).rgb.x;
-            sum += v;
-            sum2 += v * v;
-        }
-        const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+        const auto [mean, sd] = spreadOf(pr, 400, [&] { return Vec3{next(), next(), next()}; });
         EXPECT_NEAR(mean, st.mean, 0.04) << st.body;
         EXPECT_NEAR(sd, st.sd, 0.02) << st.body;
     }
@@ -815,19 +823,13 @@ TEST(PovPattern, NoisePatternsSpreadAsPovRaysDo) {
     };
     for (const Stat& st : stats) {
         const Probe pr = pigment(std::string(st.body) + kGrey);
-        double sum = 0, sum2 = 0;
-        const int n = 8000;
-        for (int i = 0; i < n; ++i) {
+        const auto [mean, sd] = spreadOf(pr, 8000, [&] {
             const double a = next(), b = next(), c = next();
-            const Vec3 p = st.where == Where::Cube          ? Vec3{a, b, c}
-                           : st.where == Where::AgatePlane  ? Vec3{a, b, 0.3}
-                           : st.where == Where::MarblePlane ? Vec3{0, b, c}
-                                                            : Vec3{0.3, 0.2, c};
-            const double v = pr.at(p).rgb.x;
-            sum += v;
-            sum2 += v * v;
-        }
-        const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+            return st.where == Where::Cube          ? Vec3{a, b, c}
+                   : st.where == Where::AgatePlane  ? Vec3{a, b, 0.3}
+                   : st.where == Where::MarblePlane ? Vec3{0, b, c}
+                                                    : Vec3{0.3, 0.2, c};
+        });
         EXPECT_NEAR(mean, st.mean, 0.04) << st.body;
         EXPECT_NEAR(sd, st.sd, 0.015) << st.body;
     }
@@ -852,15 +854,7 @@ TEST(PovPattern, NoiseGeneratorChangesBozosSpread) {
             seed = seed * 6364136223846793005ull + 1442695040888963407ull;
             return double(seed >> 11) * 0x1.0p-53 * 40 - 20;
         };
-        double sum = 0, sum2 = 0;
-        const int n = 8000;
-        for (int i = 0; i < n; ++i) {
-            const double a = next(), b = next(), z = next();
-            const double v = pr.at({a, b, z}).rgb.x;
-            sum += v;
-            sum2 += v * v;
-        }
-        const double mean = sum / n, sd = std::sqrt(sum2 / n - mean * mean);
+        const auto [mean, sd] = spreadOf(pr, 8000, [&] { return Vec3{next(), next(), next()}; });
         EXPECT_NEAR(mean, c.mean, 0.02) << c.scene;
         EXPECT_NEAR(sd, c.sd, 0.012) << c.scene;
     }
