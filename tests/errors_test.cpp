@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -34,11 +35,16 @@ using rays::test::TempDir;
 
 namespace {
 
+// A file of the row: its bytes, or a function making them when the row runs (large contents, so
+// that registering the tests, which every test process does, stays quick).
 struct File {
     std::string name;
     std::string bytes;
     bool directory = false;
+    std::function<std::string()> make;
     File(std::string n, std::string b, bool d = false) : name(std::move(n)), bytes(std::move(b)), directory(d) {}
+    File(std::string n, std::function<std::string()> m) : name(std::move(n)), make(std::move(m)) {}
+    std::string contents() const { return make ? make() : bytes; }
 };
 
 struct BadInput {
@@ -86,12 +92,14 @@ std::string pngDeclaring(int w, int h, size_t dataBytes) {
 
 // Four 2048×2048 textures (12 MiB of texels each) on four spheres.
 std::vector<File> fourTextures() {
-    const std::vector<uint8_t> png = rays::encodeImage("png", rays::Image8(2048, 2048, 3));
     std::vector<File> files;
     std::string body;
     for (int i = 0; i < 4; ++i) {
         const std::string name = "tex" + std::to_string(i) + ".png";
-        files.push_back({name, std::string(png.begin(), png.end())});
+        files.push_back({name, std::function<std::string()>([] {
+                             const std::vector<uint8_t> png = rays::encodeImage("png", rays::Image8(2048, 2048, 3));
+                             return std::string(png.begin(), png.end());
+                         })});
         body += "sphere { <" + std::to_string(i) + ",0,0>, 1 pigment { image_map { png \"" + name + "\" } } }\n";
     }
     files.push_back({"scene.pov", kCamera + body});
@@ -409,7 +417,7 @@ std::vector<BadInput> catalogue() {
                  "rays: error: a 16x12 render with these options needs about 0.0 MiB of image buffers and 48.0 MiB for the "
                  "scene, more than the memory limit of 40.0 MiB (RAYS_MEMORY_LIMIT)",
                  "out.png", "RAYS_MEMORY_LIMIT=40M"});
-    t.push_back({"obj-star-polygon-10^5", {{"scene.pov", kCamera + kLight}, {"model.obj", starPolygonObj(100000)}},
+    t.push_back({"obj-star-polygon-10^5", {{"scene.pov", kCamera + kLight}, {"model.obj", std::function<std::string()>([] { return starPolygonObj(100000); })}},
                  render({"--obj", "model.obj"}), 0, ""});
     std::string a, b;
     for (int i = 0; i < 40; ++i) a += "b\n", b += "c\n";
@@ -450,8 +458,9 @@ TEST_P(BadInputs, ExitStatusMessageAndFilesAsDocumented) {
             fs::create_directories(dir.path() / f.name);
             continue;
         }
-        std::ofstream(dir.path() / f.name, std::ios::binary) << f.bytes;
-        before[f.name] = f.bytes;
+        const std::string bytes = f.contents();
+        std::ofstream(dir.path() / f.name, std::ios::binary) << bytes;
+        before[f.name] = bytes;
     }
     const std::vector<std::string> inputs = entries(dir.path());
 
