@@ -182,6 +182,17 @@ TEST(PovPatternFunction, HeightFieldOfAPigmentFunctionTakesItsGray) {
     EXPECT_NEAR(5 - test::shootPov(s, {0.5, 5, 0.5}, {0, -1, 0}).t, 0.456482, 2e-5);
 }
 
+TEST(PovPatternFunction, HeightFieldFunctionsRunTheirYAgainstTheFieldsZ) {
+    // Measured with POV-Ray 3.7 (trace down onto the field at x 0.3): f = y stands 0.9 high at
+    // z = 0.1 and 0.1 high at z = 0.9, as does a gradient y pigment: h(x, z) = f(x, 1 − z, 0).
+    for (const char* f : {"y", "pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } }"}) {
+        const Scene s = test::buildPov(std::string("height_field { function 16, 16 { ") + f + " } }");
+        ASSERT_EQ(s.objects.size(), 1u) << f;
+        for (double z : {0.1, 0.3, 0.7, 0.9})
+            EXPECT_NEAR(5 - test::shootPov(s, {0.3, 5, z}, {0, -1, 0}).t, 1 - z, 1e-4) << f << " at z " << z;
+    }
+}
+
 TEST(PovPatternFunction, FunctionPatternsNestThroughPatternFunctions) {
     // Each level runs a function pattern on the same thread: a pigment's function calls a pattern
     // function whose pattern is a function calling another such pattern function.

@@ -85,7 +85,9 @@ void functionHeights(const Entry& e, const std::string& where, int& nx, int& nz,
         fn::Scratch scratch;
         scratch.fit(program);
         for (int ix = 0; ix < nx; ++ix) {
-            double args[fn::kMaxParams] = {double(ix) / (nx - 1), double(iz) / (nz - 1), 0};
+            // The function's y runs against the field's z: h(x, z) = f(x, 1 − z, 0) (measured with
+            // POV-Ray 3.7 by trace() on fields of f = y and of a gradient y pigment).
+            double args[fn::kMaxParams] = {double(ix) / (nx - 1), 1.0 - double(iz) / (nz - 1), 0};
             double v = 0;
             if (f.kind == sdl::FunctionValue::Kind::Pigment) {
                 double c[5] = {};
