@@ -46,6 +46,36 @@ TEST(PovCsgInterior, EachChildFadesByItsOwnInterior) {
     }
 }
 
+// Whether a ray goes into an interior or out of it is decided by the objects it is inside, not by
+// the side of the surface it meets (measured with POV-Ray 3.7: a flat glass height field of ior 1.2
+// under a mirroring scale, whose solid lies above its surface and whose open top the ray crosses
+// without a hit, seen from above at 76° from its normal: the ray is refracted into it and meets the
+// blue floor, where leaving the glass would reflect it totally, towards the red background).
+TEST(PovCsgInterior, OpenObjectsAreEnteredWhereTheRayIsNotInsideThem) {
+    const std::string field = "height_field { function 16, 16 { 0 } translate <-0.5, 0, -0.5> scale <12, -0.5, 12> "
+                              "pigment { rgbf 1 } finish { ambient 0 diffuse 0 } interior { ior 1.2 } }\n";
+    const Scene s = load("background { rgb <1, 0, 0> }\n"
+                         "plane { y, -1 pigment { rgb <0, 0, 1> } finish { ambient 1 diffuse 0 } }\n" + field);
+    const Vec3 dir = Vec3{0, -1, 4} / length(Vec3{0, -1, 4});
+    const Vec3 got = trace(s, Ray{{0, 1, -4}, dir});
+    EXPECT_NEAR(got.x, 0, 1e-9);
+    EXPECT_NEAR(got.z, 1, 1e-9);
+    // A closed glass met from inside at that angle still reflects totally.
+    const Scene closed = load("background { rgb <1, 0, 0> }\n"
+                              "box { <-6, -0.5, -6>, <6, 0.5, 6> pigment { rgbf 1 } finish { ambient 0 diffuse 0 } "
+                              "interior { ior 1.2 } }\n");
+    const Vec3 up = Vec3{0, 1, 4} / length(Vec3{0, 1, 4});
+    EXPECT_NEAR(trace(closed, Ray{{0, 0.25, -5}, up}).x, 1, 1e-9);  // the camera (at 0) is inside it too
+}
+
+// A ray that touches a surface exactly tangentially does not go into it (measured with POV-Ray 3.7:
+// interior/atten1.pov's orthographic rays along the rims of its fading spheres are not faded).
+TEST(PovCsgInterior, ATangentRayDoesNotGoIn) {
+    const Scene s = load("background { rgb 1 }\n" + sphere(0, 0.5));
+    const Vec3 got = trace(s, Ray{{0, 1, -5}, {0, 0, 1}});  // along the top of the sphere
+    EXPECT_NEAR(got.x, 1, 1e-9);
+}
+
 // A shadow ray that leaves a fading surface it was not inside (a cone clipped to a slab, over the
 // floor its infinite surface encloses) is not faded (rays from inside a closed fading object still
 // fade from their start: PovShading.LightInsideAFadingInteriorIsDividedByTheViewingRaysFade).

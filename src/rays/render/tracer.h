@@ -220,23 +220,28 @@ private:
         int radLevel = 0;        ///< radiosity bounces on the ray's way from the camera
         bool gathering = false;  ///< a radiosity gathering ray (or one of its children): no highlights
         double reach = kInfinity;  ///< objects farther along the ray are not met (a mesh camera's max_distance)
-        /// For media: the objects the ray is inside (entered and not left), innermost last, each
-        /// with the Material::pov of the (leaf) surface it entered by; nested ones beyond
-        /// kMaxInside are not kept.
+        /// The objects the ray is inside (entered and not left), innermost last, each with the
+        /// Material::pov of the (leaf) surface it entered by (−1: any of the object's surfaces, for
+        /// a CSG the camera starts in): for media, and for whether a hit enters or leaves an
+        /// interior (PovPoint::intoInterior). Nested ones beyond kMaxInside are not kept.
         struct Inside {
             int object = -1, surface = -1;
+            bool is(int o, int s) const { return object == o && (surface == s || surface < 0 || s < 0); }
         };
-        static constexpr int kMaxInside = 4;
+        static constexpr int kMaxInside = 8;
         Inside inside[kMaxInside]{};
         int insideCount = 0;
-        void enter(int object, int surface) {
+        bool isInside(int object, int surface) const {
             for (int i = 0; i < insideCount; ++i)
-                if (inside[i].object == object) return;
-            if (insideCount < kMaxInside) inside[insideCount++] = Inside{object, surface};
+                if (inside[i].is(object, surface)) return true;
+            return false;
         }
-        void leave(int object) {
-            for (int i = 0; i < insideCount; ++i)
-                if (inside[i].object == object) {
+        void enter(int object, int surface) {
+            if (!isInside(object, surface) && insideCount < kMaxInside) inside[insideCount++] = Inside{object, surface};
+        }
+        void leave(int object, int surface) {
+            for (int i = insideCount - 1; i >= 0; --i)
+                if (inside[i].is(object, surface)) {
                     for (int k = i + 1; k < insideCount; ++k) inside[k - 1] = inside[k];
                     --insideCount;
                     return;
@@ -278,7 +283,12 @@ private:
         bool hasUV = false;
         const Vec3* uvPoint() const { return hasUV ? &uv : nullptr; }
         double filter = 0, transmit = 0;  ///< the pigment's at P
-        bool entering = true;
+        bool entering = true;  ///< the ray meets the surface's outer side (the geometric normal's)
+        /// The ray goes into the object's interior here rather than out of it: decided, as POV-Ray
+        /// does, by whether the ray is already inside the object (PovRay::inside), not by the side
+        /// it meets (measured with POV-Ray 3.7: a glass height field under a mirroring scale, whose
+        /// open underside a ray crosses without a hit, is entered through its top surface).
+        bool intoInterior = true;
         int interior = -1;
         Vec3 viewFade{1, 1, 1};
         bool highlights = true;  ///< false for points seen by radiosity's gathering rays (measured)
@@ -387,6 +397,8 @@ private:
     /// A camera ray starting inside an object with media travels in its interior (the last such
     /// object in the scene's order holding the origin).
     void povStartInside(Vec3 origin, PovRay& r) const;
+    /// Whether p is inside o (a CSG's inside, or the shape's).
+    static bool povHolds(const Object& o, Vec3 p);
     /// The objects whose inside holds the camera's location (POV-Ray scenes): camera rays start in them.
     std::vector<PovRay::Inside> povCameraInside() const;
     /// The index ratio the fresnel reflection at pt uses: the refraction's, except where the ray

@@ -56,8 +56,7 @@ std::vector<Tracer::PovMediaHolder> Tracer::povMediaHolders() const {
 void Tracer::povStartInside(Vec3 origin, PovRay& r) const {
     for (const PovMediaHolder& h : povMediaHolders_) {
         const Object& o = scene_.objects[size_t(h.object)];
-        const bool inside = o.type == ShapeType::Csg ? insideCsg(*o.csg, 0, origin) : insideShape(o, origin) == 1;
-        if (inside) r.enter(h.object, h.surface);
+        if (povHolds(o, origin)) r.enter(h.object, h.surface);
     }
 }
 

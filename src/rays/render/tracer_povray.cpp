@@ -85,6 +85,10 @@ Hit Tracer::povFirstHit(const Ray& ray, bool reflected) const {
     return hit;
 }
 
+bool Tracer::povHolds(const Object& o, Vec3 p) {
+    return o.type == ShapeType::Csg ? insideCsg(*o.csg, 0, p) : insideShape(o, p) == 1;
+}
+
 std::vector<Tracer::PovRay::Inside> Tracer::povCameraInside() const {
     std::vector<PovRay::Inside> out;
     const int i = settings_.cameraIndex;
@@ -92,14 +96,13 @@ std::vector<Tracer::PovRay::Inside> Tracer::povCameraInside() const {
     const Vec3 eye = scene_.cameras[size_t(i)].location;
     for (size_t k = 0; k < scene_.objects.size() && out.size() < size_t(PovRay::kMaxInside); ++k) {
         const Object& o = scene_.objects[k];
-        const bool inside = o.type == ShapeType::Csg ? insideCsg(*o.csg, 0, eye) : insideShape(o, eye) == 1;
-        if (inside) out.push_back(PovRay::Inside{int(k), o.type == ShapeType::Csg ? -1 : o.material.pov});
+        if (povHolds(o, eye)) out.push_back(PovRay::Inside{int(k), o.type == ShapeType::Csg ? -1 : o.material.pov});
     }
     return out;
 }
 
 double Tracer::povFresnelEta(const PovPoint& pt, const PovRay& r, double eta) {
-    if (pt.entering) return eta;
+    if (pt.intoInterior) return eta;
     for (int i = 0; i < r.insideCount; ++i)
         if (r.inside[i].object != pt.object) return 1.0;
     return eta;
@@ -111,7 +114,10 @@ Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) 
     r.primary = true;
     r.reach = primaryReach_;
     if (!povMediaHolders_.empty()) povStartInside(ray.origin, r);  // the camera inside a media holder
-    for (const PovRay::Inside& in : povCameraInside_) r.enter(in.object, in.surface);
+    // Those holding the camera that hold this ray's start too (an orthographic camera's rays and
+    // a lens's start off the camera's location).
+    for (const PovRay::Inside& in : povCameraInside_)
+        if (povHolds(scene_.objects[size_t(in.object)], ray.origin)) r.enter(in.object, in.surface);
     return tracePov(ray, r, ctx, info);
 }
 
@@ -150,7 +156,11 @@ Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object
     pt.P = ray.at(hit.t);
     pt.hasUV = hit.hasUV;
     pt.uv = Vec3{hit.u, hit.v, 0};
-    pt.entering = dot(ray.dir, hit.geomNormal) < 0;
+    const double facing = dot(ray.dir, hit.geomNormal);
+    pt.entering = facing < 0;
+    // A ray touching the surface exactly tangentially (an orthographic camera's rays along a sphere's
+    // rim) does not go in: it would not meet the surface again on its way out.
+    pt.intoInterior = facing != 0 && !r.isInside(hit.object, o.material.pov);
     pt.interior = r.interior;
     pt.viewFade = r.faded * segmentFade;
     pt.highlights = !r.gathering;
@@ -233,7 +243,7 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
                           PathInfo* info) const {
     const PovSurface& s = *pt.surface;
     const double ior = s.interior.ior;
-    const double eta = pt.entering ? 1.0 / ior : ior;
+    const double eta = pt.intoInterior ? 1.0 / ior : ior;
     Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), povFresnelEta(pt, r, eta));
     Vec3 T = povFilterTint(pt.C, pt.filter, pt.transmit);
     if (s.finish.conserveEnergy) T *= Vec3(1.0) - R;
@@ -270,14 +280,14 @@ Vec3 Tracer::povReflectionIrid(const PovFinish& f, Vec3 N, Vec3 dir, Vec3 P) con
 Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) const {
     PovRay reflected{.level = r.level + 1,
                      .weight = r.weight,
-                     .interior = pt.entering ? r.interior : pt.object,
-                     .interiorSurface = pt.entering ? r.interiorSurface : pt.material->pov,
+                     .interior = pt.intoInterior ? r.interior : pt.object,
+                     .interiorSurface = pt.intoInterior ? r.interiorSurface : pt.material->pov,
                      .reflected = true,
                      .radLevel = r.radLevel,
                      .gathering = r.gathering};
     if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
     reflected.copyInside(r);
-    if (!pt.entering) reflected.enter(pt.object, pt.material->pov);  // reflected inside: still in it
+    if (!pt.intoInterior) reflected.enter(pt.object, pt.material->pov);  // reflected inside: still in it
     return reflected;
 }
 
@@ -285,7 +295,7 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
                             PathInfo* info, Vec3& color) const {
     if (!(maxAbsComponent(T) > 0)) return true;
     const double ior = pt.surface->interior.ior;
-    const double eta = pt.entering ? 1.0 / ior : ior;
+    const double eta = pt.intoInterior ? 1.0 / ior : ior;
     Vec3 dir = ray.dir;
     int level = r.level;  // passing straight through (ior 1) keeps the level (measured)
     if (ior != 1) {
@@ -294,15 +304,15 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
     }
     PovRay through{.level = level,
                    .weight = r.weight * maxAbsComponent(T),
-                   .interior = pt.entering ? pt.object : -1,
-                   .interiorSurface = pt.entering ? pt.material->pov : -1,
+                   .interior = pt.intoInterior ? pt.object : -1,
+                   .interiorSurface = pt.intoInterior ? pt.material->pov : -1,
                    .fades = true,
                    .reflected = r.reflected,
                    .radLevel = r.radLevel,
                    .gathering = r.gathering};
     through.copyInside(r);
-    if (pt.entering) through.enter(pt.object, pt.material->pov);
-    else through.leave(pt.object);
+    if (pt.intoInterior) through.enter(pt.object, pt.material->pov);
+    else through.leave(pt.object, pt.material->pov);
     if (through.weight >= scene_.pov.adcBailout) {
         ++ctx.stats.secondaryRays;
         color += T * tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, through, ctx, info);
