@@ -114,10 +114,13 @@ Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) 
     r.primary = true;
     r.reach = primaryReach_;
     if (!povMediaHolders_.empty()) povStartInside(ray.origin, r);  // the camera inside a media holder
-    // Those holding the camera that hold this ray's start too (an orthographic camera's rays and
-    // a lens's start off the camera's location).
-    for (const PovRay::Inside& in : povCameraInside_)
-        if (povHolds(scene_.objects[size_t(in.object)], ray.origin)) r.enter(in.object, in.surface);
+    // Those holding the camera that hold this ray's start too: tested only where the ray starts
+    // off the camera's location (an orthographic camera's rays, a lens's).
+    if (!povCameraInside_.empty()) {
+        const bool atEye = ray.origin == scene_.cameras[size_t(settings_.cameraIndex)].location;
+        for (const PovRay::Inside& in : povCameraInside_)
+            if (atEye || povHolds(scene_.objects[size_t(in.object)], ray.origin)) r.enter(in.object, in.surface);
+    }
     return tracePov(ray, r, ctx, info);
 }
 
