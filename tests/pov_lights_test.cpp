@@ -487,5 +487,30 @@ TEST(PovLights, ProjectedThroughShadowsOnlyBetweenThePointAndTheObject) {
     EXPECT_EQ(seen(load(projector + kFloor + light + copy + nearBox).scene, 0.15, 0).x, 0.0);
 }
 
+// A light_group's lights light only its objects; the scene's lights light them only with
+// global_lights (measured: a white sphere in a group with a red light, a blue scene light beside it,
+// is red without global_lights and magenta with it; a sphere outside the group is blue only).
+TEST(PovLightGroup, ItsLightsLightOnlyItsObjectsAndTheScenesOnlyWithGlobalLights) {
+    const std::string scene = "light_source { <0,0,-100>, rgb <0,0,1> }\n"
+                              "sphere { <2,0,0>, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n";
+    for (const char* texture : {"pigment { rgb 1 } finish { ambient 0 diffuse 1 }",
+                                "texture { pigment { rgb 1 } finish { ambient 0 diffuse 1 } }"
+                                " texture { pigment { rgbt 1 } finish { ambient 0 diffuse 1 } }"}) {
+        SCOPED_TRACE(texture);
+        for (const char* global : {"", "global_lights on"}) {
+            SCOPED_TRACE(global);
+            const std::string group = std::string("union { light_group { sphere { 0, 1 ") + texture +
+                                      " } light_source { <0,0,-100>, rgb <1,0,0> } " + global + " } }\n";
+            const Loaded l = load(scene + group);
+            EXPECT_TRUE(l.warnings.empty()) << l.warnings[0];
+            const Vec3 inGroup = seen(l.scene, 0, 0), outside = seen(l.scene, 2, 0);
+            EXPECT_NEAR(inGroup.x, 1, 1e-9);
+            EXPECT_NEAR(inGroup.z, *global ? 1.0 : 0.0, 1e-9);
+            EXPECT_EQ(outside.x, 0.0);  // (the light is not quite along the sphere's normal there)
+            EXPECT_NEAR(outside.z, 1, 1e-3);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace rays

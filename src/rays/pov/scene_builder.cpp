@@ -198,6 +198,8 @@ Material SceneBuilder::material(const Appearance& look) {
     s.noImage = noImage_;
     s.noReflection = noReflection_;
     s.doubleIlluminate = doubleIlluminate_;
+    s.lightGroup = lightGroup_;
+    s.globalLights = lightGroup_ < 0 || groupGlobalLights_;
     s.normal = normalRoot(look);
     if (!look.layers.empty() || !look.choices.empty()) {
         s.texture = textureNode(look, s, 0);
@@ -245,7 +247,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     std::vector<Clip> clips;
     const Entry* bounds = nullptr;
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
-         doubleIlluminate = false, hollow = false, uvMapping = false;
+         doubleIlluminate = false, hollow = false, uvMapping = false, globalLights = false;
     const Entry* font = nullptr;  // text: its ttf or internal entry
     for (size_t i = 0; i < entries.size(); ++i) {
         const Entry& e = *entries[i];
@@ -296,6 +298,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::double_illuminate: doubleIlluminate = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::hollow: hollow = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::global_lights: globalLights = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::xyz: case Kw::quadratic_spline: case Kw::cubic_spline: case Kw::bezier_spline:
             case Kw::conic_sweep: case Kw::linear_spline: case Kw::linear_sweep: case Kw::b_spline:
                 terms_.push_back(&e);  // polynomial's terms, a prism's, lathe's or sphere_sweep's kind
@@ -321,8 +324,17 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     noReflection_ = noReflection_ || noReflection;
     doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
     hollow_ = hollow_ || hollow;
-    KeepFlag keepGroup{inLightGroup_, inLightGroup_};
-    inLightGroup_ = inLightGroup_ || kind == Kw::light_group;
+    struct KeepGroup {
+        int& group;
+        bool& global;
+        int savedGroup;
+        bool savedGlobal;
+        ~KeepGroup() { group = savedGroup, global = savedGlobal; }
+    } keepGroup{lightGroup_, groupGlobalLights_, lightGroup_, groupGlobalLights_};
+    if (kind == Kw::light_group) {  // measured: global_lights is off unless given
+        lightGroup_ = lightGroups_++;
+        groupGlobalLights_ = globalLights;
+    }
     const Transform toWorld = parent * local;
     if (local.determinant() == 0) throw Error(notes_.where(item.loc) + ": error: the object's transformation is singular");
     // Finite steps can still overflow or underflow together (scale 1e300 scale 1e300): the object

@@ -133,9 +133,12 @@ private:
     bool noReflection_ = false;  ///< and from reflection rays (no_reflection)
     bool doubleIlluminate_ = false;  ///< and lit from both sides (double_illuminate)
     bool hollow_ = false;            ///< and hollow: atmospheric media fill them (hollow)
-    /// Adding a light_group's objects: its lights light no media (they light only the group's
-    /// objects in POV-Ray; Rays lets them light everything else still).
-    bool inLightGroup_ = false;
+    /// The light_group whose objects and lights are being added (-1: none), and its global_lights:
+    /// its lights light only its objects (and no media), and the scene's lights light its objects
+    /// only with global_lights.
+    int lightGroup_ = -1;
+    bool groupGlobalLights_ = true;
+    int lightGroups_ = 0;  ///< light_groups met so far
     uint64_t maxObjects_, objects_ = 0;
     std::shared_ptr<const std::vector<sdl::Entry>> defaultsSeen_;  ///< the #default list applied to defaultsLook_
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries

@@ -127,7 +127,8 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
         }
     }
     if (l.area && (length(cross(l.axis1, l.axis2)) == 0)) l.area = false;
-    if (inLightGroup_) l.mediaInteraction = false;
+    l.lightGroup = lightGroup_;
+    if (lightGroup_ >= 0) l.mediaInteraction = false;
     scene_.lights.push_back(l);
     // projected_through (POV-Ray 3.7 reference, "Projected Through": the light is cast only
     // through the object): the object, moved by the light's transformations, is built aside in

@@ -13,6 +13,11 @@
 
 namespace rays {
 
+/// Whether the light shines on the surface, by light_group (Light::lightGroup).
+inline bool povLightsSurface(const Light& light, const PovSurface& s) {
+    return light.lightGroup == s.lightGroup || (light.lightGroup < 0 && s.globalLights);
+}
+
 /// What one light adds at a surface point: diffuse (to be weighted by the surface's opacity) and
 /// highlights (phong + specular, never weighted by it).
 struct PovLightTerms {

@@ -141,6 +141,7 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
     int blocked = 0;
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& light = scene_.lights[li];
+        if (!povLightsSurface(light, *pt.surface)) continue;
         Vec3 L = light.parallel ? -light.direction : light.position - pt.P;
         const double dist = length(L);
         if (dist == 0) continue;

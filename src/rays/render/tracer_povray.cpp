@@ -341,6 +341,7 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
     int blocked = 0;
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& light = scene_.lights[li];
+        if (!povLightsSurface(light, s)) continue;
         Vec3 L = light.parallel ? -light.direction : light.position - P;
         const double dist = length(L);
         if (dist == 0) continue;

@@ -40,6 +40,10 @@ struct Light {
     double fadePower = 0;
     bool mediaInteraction = true;   ///< lights scattering media (media_interaction)
     bool mediaAttenuation = false;  ///< dimmed by atmospheric media on its way (media_attenuation)
+    /// The light_group it is in (an index, as PovSurface::lightGroup): it lights that group's
+    /// objects only. -1: a light of the scene, lighting every object outside groups and those of
+    /// groups with global_lights.
+    int lightGroup = -1;
 };
 
 }  // namespace rays

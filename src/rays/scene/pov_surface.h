@@ -57,6 +57,10 @@ struct PovSurface {
     bool noImage = false;       ///< not seen by camera rays nor rays transmitted from them (no_image)
     bool noReflection = false;  ///< not seen by rays after a reflection (no_reflection)
     bool hollow = false;        ///< atmospheric media fill the object (POV-Ray's hollow)
+    /// The light_group the object is in (-1: none): lit by that group's lights, and by the scene's
+    /// lights only with the group's global_lights (POV-Ray 3.7 reference, "Light Groups"; measured).
+    int lightGroup = -1;
+    bool globalLights = true;
     /// The pigment pattern: a root of Scene::pigments, or -1 for the flat colour (Material::color,
     /// Material::filter and transmit above; with a pattern those hold its mean colour).
     int pigment = -1;
