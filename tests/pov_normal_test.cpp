@@ -228,7 +228,8 @@ double tiltSpread(const std::string& normal) {
 
 TEST(PovNormal, SpecialisedNormalsTiltAboutAsMuchAsPovRays) {
     // povray 3.7, the same plane seen by a 64×64 perspective camera at −5z (mean |b − median|).
-    // Rays' noise and wave centres are not POV-Ray's: only the strength is compared (±30%).
+    // Rays' noise is not POV-Ray's: only the strength is compared (±30%). (Ripples and waves are
+    // POV-Ray's point for point: RipplesAndWavesTiltAsPovRaysPointForPoint.)
     const struct {
         const char* normal;
         double pov;
@@ -246,6 +247,23 @@ TEST(PovNormal, SpecialisedNormalsTiltAboutAsMuchAsPovRays) {
     EXPECT_LT(huge, 0.0549 * 3);
 }
 
+
+// povray 3.7: a white plane z = 0 seen by an orthographic camera from −z, lit along the view by a
+// light at <0, 0, −10⁶> (diffuse 1, 16-bit linear output): the brightness is the cosine of the
+// tilt. Ripples with number_of_waves 1 and waves with the default ten sources, at two pixels.
+TEST(PovNormal, RipplesAndWavesTiltAsPovRaysPointForPoint) {
+    const auto at = [](const std::string& settings, const std::string& normal, double x, double y) {
+        const Loaded l = load(settings + "light_source { <0, 0, -1e6> color 1 }\n"
+                                         "plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { " +
+                              normal + " } }\n");
+        return seen(l.scene, x, y).x;
+    };
+    const std::string oneWave = "global_settings { number_of_waves 1 }\n";
+    EXPECT_NEAR(at(oneWave, "ripples 1", 0.02, -0.02), 0.992950, kMeasured);
+    EXPECT_NEAR(at(oneWave, "ripples 1", 2.02, 2.5), 0.755947, kMeasured);
+    EXPECT_NEAR(at("", "waves 1", 0.02, -0.02), 0.854124, kMeasured);
+    EXPECT_NEAR(at("", "waves 1", 2.02, 2.5), 0.979950, kMeasured);
+}
 
 // A normal block without a pattern of its own modifies the normal the look already has (the
 // default texture's here). povray 3.7, the plane of litPlane seen at (0.35, 0.2) under

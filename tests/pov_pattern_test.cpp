@@ -737,19 +737,28 @@ TEST(PovPatternRender, SkySphereIsLookedUpByDirection) {
 
 // Rays' noise is not POV-Ray's, so noise patterns cannot match point for point; their mean and
 // spread over space can. POV-Ray 3.7's figures over the same 400 points (printed as above).
-TEST(PovPattern, RipplesPigmentIsASineOfPeriodOneFarFromItsCentres) {
-    // POV-Ray 3.7 along x from 1000 at y = 0.37, z = 0.21: a sine of period 1 about 0.5 (extremes
-    // 0.2415 and 0.7585 there; Rays' centres give their own phase and amplitude).
-    const Probe pr = pigment(std::string("ripples") + kGrey);
-    double lo = 1, hi = 0;
-    for (int i = 0; i < 40; ++i) {
-        const double v = pr.at({1000 + i / 40.0, 0.37, 0.21}).rgb.x;
-        EXPECT_NEAR(v, pr.at({1001 + i / 40.0, 0.37, 0.21}).rgb.x, 1e-3);
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
+TEST(PovPattern, RipplesAndWavesPigmentsArePovRaysPointForPoint) {
+    // POV-Ray 3.7 with its default ten wave sources: a pigment function's values printed with
+    // #debug (8 decimals) at three points; Rays' measured centres give them to 3·10⁻⁶.
+    const Probe ripples = pigment(std::string("ripples") + kGrey), waves = pigment(std::string("waves") + kGrey);
+    const struct {
+        Vec3 p;
+        double ripples, waves;
+    } tenWaves[] = {{{3.63146305, 0.88373024, -2.66518291}, 0.40212169, 0.48064515},
+                    {{-3.72106334, 1.91477262, -0.93619379}, 0.28949735, 0.40719935},
+                    {{-0.14376441, 2.4137308, 2.60956798}, 0.45319936, 0.5101583}};
+    for (const auto& c : tenWaves) {
+        EXPECT_NEAR(ripples.at(c.p).rgb.x, c.ripples, 1e-5);
+        EXPECT_NEAR(waves.at(c.p).rgb.x, c.waves, 1e-5);
     }
-    EXPECT_NEAR((lo + hi) / 2, 0.5, 0.01);
-    EXPECT_GT(hi - lo, 0.1);
+    // number_of_waves 1: POV-Ray's render of a plane z = 1 (16-bit, linear) at two pixels.
+    const std::string oneWave = "global_settings { number_of_waves 1 } sphere { 0, 1 ";
+    const Probe ripples1 = pigment(std::string("ripples") + kGrey, oneWave);
+    const Probe waves1 = pigment(std::string("waves") + kGrey, oneWave);
+    EXPECT_NEAR(ripples1.at({0.02, -0.02, 1}).rgb.x, 0.042374, 3e-5);
+    EXPECT_NEAR(ripples1.at({2.02, 2.5, 1}).rgb.x, 0.043565, 3e-5);
+    EXPECT_NEAR(waves1.at({0.02, -0.02, 1}).rgb.x, 0.309911, 3e-5);
+    EXPECT_NEAR(waves1.at({2.02, 2.5, 1}).rgb.x, 0.643732, 3e-5);
 }
 
 TEST(PovPattern, RipplesWavesAndDentsPigmentsSpreadAsPovRaysDo) {

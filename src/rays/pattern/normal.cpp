@@ -30,8 +30,8 @@ constexpr Vec3 kPyramid[4] = {{kT, kT, kT}, {kT, -kT, -kT}, {-kT, kT, -kT}, {-kT
 
 // The specialised normals' heights are scaled so that their tilt at amount 1 spreads as POV-Ray's
 // (measured over a plane, tests/pov_normal_test.cpp, SpecialisedNormalsTiltAboutAsMuchAsPovRays).
-constexpr double kBumpsScale = 6.9, kDentsScale = 6.7, kRipplesScale = 18.8, kWavesScale = 20.7,
-                 kWrinklesScale = 1.55;
+constexpr double kBumpsScale = 6.9, kDentsScale = 6.7,
+                 kWrinklesScale = 1.55;  // (ripples and waves: wavesTilt, measured exactly)
 
 Vec3 patternPoint(const PigmentTable& patterns, const PigmentNode& pn, Vec3 p) {
     if (pn.warpCount > 0) {
@@ -66,23 +66,22 @@ double slopeHeight(const SlopeEntry* s, int count, double v) {
     return s[count - 1].height;
 }
 
-// ripples and waves: the gradient of rings about ten centres, without the frequency's factor
-// (measured: POV-Ray's tilt does not grow with `frequency`, so that huge scales with huge
-// frequencies, as in var_refl.pov, stay calm).
-Vec3 wavesGradient(Vec3 q, const Wave& w, bool ripples) {
-    Vec3 g;
-    for (int i = 0; i < 10; ++i) {
+// ripples and waves: not the gradient of their pigments but a tilt along each source's direction,
+// (1/n)·Σᵢ sin(2π·fᵢ·|q − cᵢ|)/fᵢ · (q − cᵢ)/|q − cᵢ| over the first n sources, added to the normal
+// facing the viewer times the bump size (fᵢ = 1 for ripples). Measured with POV-Ray 3.7: a plane
+// facing the camera lit along the view (16-bit, linear) with number_of_waves 1 and 10 and bump sizes
+// 1 and 0.5; the fit leaves a residual of 5·10⁻⁶. `frequency` spaces the rings only (POV-Ray's tilt
+// does not grow with it, so that huge scales with huge frequencies, as in var_refl.pov, stay calm).
+Vec3 wavesTilt(Vec3 q, const Wave& w, bool ripples, int n) {
+    Vec3 t;
+    for (int i = 0; i < n; ++i) {
         const Vec3 r = q - kWaveCentres[i];
         const double d = length(r);
         if (d == 0) continue;
-        // ripples: the slope of sine rings of period 1; waves: of cosine rings of each centre's own
-        // frequency, their heights ∝ 1/frequency, so every centre tilts alike (wavesValue).
         const double f = ripples ? 1.0 : kWaveFrequencies[i];
-        const double phase = kTwoPi * (d * w.frequency * f + w.phase);
-        const double slope = ripples ? std::cos(phase) : -std::sin(phase);
-        g += (slope / d) * r;
+        t += (std::sin(kTwoPi * (d * w.frequency * f + w.phase)) / (f * d)) * r;
     }
-    return g / 10.0;
+    return t / double(n);
 }
 
 // The specialised normals' heights at q (pattern space, turbulence applied already).
@@ -144,7 +143,7 @@ Vec3 NormalTable::perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 norm
                 g = quiltedTilt(pn.params.quilt, q) * (-1 / kPovBumpScale);
             } else if (node.kind == NormalKind::Ripples || node.kind == NormalKind::Waves) {
                 const bool ripples = node.kind == NormalKind::Ripples;
-                g = (ripples ? kRipplesScale : kWavesScale) * wavesGradient(q, pn.wave, ripples);
+                g = wavesTilt(q, pn.wave, ripples, waveCount(pn.params.waves)) * (-1 / kPovBumpScale);
             } else {
                 for (const Vec3& d : kPyramid) g += specialHeight(node.kind, pn, q + delta * d) * d;
                 g = g * (3 / (4 * delta));

@@ -264,8 +264,8 @@ double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 
         case PatternKind::Wood: return std::sqrt(p.x * p.x + p.y * p.y);
         case PatternKind::Wrinkles: return wrinkles(p);
         case PatternKind::Crackle: return crackleValue(p, params.crackle);
-        case PatternKind::Ripples: return ripplesValue(p);
-        case PatternKind::Waves: return wavesValue(p);
+        case PatternKind::Ripples: return ripplesValue(p, waveCount(params.waves));
+        case PatternKind::Waves: return wavesValue(p, waveCount(params.waves));
         case PatternKind::Dents: return dentsValue(p);
         case PatternKind::Cells: return cells(p);
         case PatternKind::Mandel: return escapeTime(params, p.x, p.y, p.x, p.y);

@@ -75,6 +75,9 @@ struct PatternParams {
     Crackle crackle;                        ///< Crackle: form, metric, offset, solid
     /// noise_generator: 1, 2 or 3; 0 until the scene's global setting (default 2) is filled in.
     int noiseGenerator = 0;
+    /// number_of_waves (ripples, waves): 1 to kMaxWaves; 0 until the scene's global setting
+    /// (default 10) is filled in, and taken as 10 if never.
+    int waves = 0;
 };
 
 /// The value an escape-time fractal (mandel, julia, magnet) gives its point: from the exterior type

@@ -13,17 +13,17 @@ constexpr double kRingTurn = 2 * std::numbers::pi;
 
 }  // namespace
 
-double ripplesValue(Vec3 p) {
+double ripplesValue(Vec3 p, int n) {
     double sum = 0;
-    for (const Vec3& c : kWaveCentres) sum += std::sin(kRingTurn * length(p - c));
-    return 0.5 + 0.0885 * sum;
+    for (int i = 0; i < n; ++i) sum += std::sin(kRingTurn * length(p - kWaveCentres[i]));
+    return 0.5 + (0.5 / n) * sum;
 }
 
-double wavesValue(Vec3 p) {
+double wavesValue(Vec3 p, int n) {
     double sum = 0;
-    for (int i = 0; i < 10; ++i)
-        sum += std::cos(kRingTurn * kWaveFrequencies[i] * length(p - kWaveCentres[i])) / kWaveFrequencies[i];
-    return 0.5 + 0.02 * sum;
+    for (int i = 0; i < n; ++i)
+        sum += std::sin(kRingTurn * kWaveFrequencies[i] * length(p - kWaveCentres[i])) / kWaveFrequencies[i];
+    return 0.5 + (0.2 / n) * sum;
 }
 
 double dentsValue(Vec3 p) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "rays/error.h"
+#include "rays/pattern/ripples.h"
 #include "rays/pov/build_height_field.h"
 #include "rays/pov/build_mesh.h"
 #include "rays/pov/build_shapes.h"
@@ -670,6 +671,9 @@ void SceneBuilder::globalSettings(const Item& g) {
             case Kw::noise_generator:
                 scene_.pov.noiseGenerator = std::clamp(int(toFloat(e.args[0])), 1, 3);
                 break;
+            case Kw::number_of_waves:
+                scene_.pov.numberOfWaves = std::clamp(int(toFloat(e.args[0])), 1, pattern::kMaxWaves);
+                break;
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
             case Kw::photons: notes_.note("photons", e.loc); break;
             case Kw::subsurface: notes_.note("subsurface", e.loc); break;
@@ -696,9 +700,12 @@ Scene SceneBuilder::finish(const std::string& fileName) {
     // writes older scenes' colours as they are (0) (measured with POV-Ray 3.7.0.10).
     if (!gammaSet_) scene_.pov.assumedGamma = version_ >= 3.7 ? 1.0 : 0.0;
     scene_.pigments.setWorkingGamma(scene_.pov.assumedGamma);
-    // Patterns without their own noise_generator take the scene's, wherever global_settings is.
-    for (pattern::PigmentNode& n : scene_.pigments.nodes)
+    // Patterns without their own noise_generator take the scene's, wherever global_settings is;
+    // number_of_waves likewise.
+    for (pattern::PigmentNode& n : scene_.pigments.nodes) {
         if (n.params.noiseGenerator == 0) n.params.noiseGenerator = scene_.pov.noiseGenerator;
+        n.params.waves = scene_.pov.numberOfWaves;
+    }
     scene_.pov.version = version_;
     if (scene_.cameras.empty()) {
         Camera c;  // POV-Ray's default camera: at the origin looking along +z, right 1.33x, up y

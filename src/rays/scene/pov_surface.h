@@ -121,6 +121,7 @@ struct PovGlobals {
     /// measured (<0.70, 0.52, 0.48>; the manual still gives 3.6's <0.25, 0.18, 0.14>).
     Vec3 iridWavelength{0.70, 0.52, 0.48};
     int noiseGenerator = 2;    ///< global_settings' noise_generator (patterns without their own)
+    int numberOfWaves = 10;    ///< global_settings' number_of_waves (1 to 10: pattern/ripples.h)
     std::vector<PovFog> fogs;  ///< applied together to every ray outside objects
     /// Atmospheric media (top-level `media` blocks): outside objects and inside hollow ones.
     std::vector<PovMedia> media;
