@@ -24,13 +24,14 @@ stages=("$@")
 TSAN_FILES='distribution_test.cpp;parse_pieces_test.cpp;edges_test.cpp;worker_pool_test.cpp;wide_collapse_test.cpp;golden_test.cpp;cli_test.cpp;cli_edges_test.cpp;filter_test.cpp;triangle_bvh_test.cpp;determinism_test.cpp;interrupt_test.cpp;fn_machine_test.cpp'
 TSAN_TESTS='^(Distribution\.|ParsePieces\.|Edges/EdgeMethods\.|StencilTaps\.|StencilPass\.|WorkerPool\.|WideCollapse\.TwoThread|Scenes/Golden\.|CliOptions\.ThreadCount|CliEdges\.|FilterPaths\.ResultsDoNotDependOnTheThreadCount|FilterParallel\.|TriangleBvh\.OneAndTwoThreadBuilds|Determinism|Interrupt|FnMachine\.ThreadsShareOneTable)'
 
-# The code under test at -O1; the test files themselves at -O0 (their compile time halves, their
+# The code under test at -O1 with line tables only (-g1: reports keep their file:line; full -g
+# made the build a quarter slower); the test files themselves at -O0 (their compile time halves, their
 # run time hardly moves: the work is in the code they call). The ASan executables are linked
 # without PIE: an instrumented PIE test binary carries 1.8 million relocations, and with 1,232 test
 # processes their start-up (0.58 s each, 0.31 s without PIE) was a quarter of the ASan suite.
 configure() {  # DIR FLAGS [LINK-FLAGS]
   cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=Sanitize -DRAYS_NATIVE=OFF -DRAYS_WERROR=OFF -DRAYS_STATIC_RUNTIME=OFF -DRAYS_MPI=OFF \
-    -DCMAKE_CXX_FLAGS="$2 -O1 -g -fno-omit-frame-pointer" -DRAYS_TEST_COMPILE_OPTIONS=-O0 \
+    -DCMAKE_CXX_FLAGS="$2 -O1 -g1 -fno-omit-frame-pointer" -DRAYS_TEST_COMPILE_OPTIONS=-O0 \
     -DCMAKE_EXE_LINKER_FLAGS="$2 ${3:-}" >/dev/null
 }
 
