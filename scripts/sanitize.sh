@@ -44,8 +44,11 @@ for stage in "${stages[@]}"; do
       configure build-asan "-fsanitize=address,undefined -fno-sanitize-recover=all" -no-pie
       cmake --build build-asan -j"$jobs"
       echo "== ASan+UBSan: whole test suite" >&2
+      # (No strict_string_checks: with it ASan's strcspn checks the whole rest of the string at
+      # every call, and tinyobjloader reading a face of 100,000 corners took 38 s instead of 2 s,
+      # against the bad-input test's 60 s limit.)
       (cd build-asan &&
-        ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=0 \
+        ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=0 \
         UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
         ctest --output-on-failure -j"$jobs" --timeout 900)
       ;;
