@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Quick start 2 and CI (.ci/run calls exactly this): install what is missing, then
 #   1. the sanitizer stages (scripts/sanitize.sh): an ASan + UBSan build running the whole test
-#      suite, and a TSan build running the multithreaded tests (about 19 minutes on 2 cores, cold);
+#      suite, and a TSan build running the multithreaded tests (about 13 minutes on 2 cores, cold);
 #   2. the warning-free optimised build (reusing what scripts/demo.sh compiled: same flags) and
 #      the whole test suite with CTest, then each skipped test with the reason it gave.
 #   scripts/test.sh --quick    step 2 only (a few minutes)
