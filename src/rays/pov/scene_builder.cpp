@@ -672,7 +672,10 @@ void SceneBuilder::globalSettings(const Item& g) {
                 scene_.pov.noiseGenerator = std::clamp(int(toFloat(e.args[0])), 1, 3);
                 break;
             case Kw::number_of_waves:
-                scene_.pov.numberOfWaves = std::clamp(int(toFloat(e.args[0])), 1, pattern::kMaxWaves);
+                // (clamped as a float first: a huge or NaN count must not reach int)
+                scene_.pov.numberOfWaves = toFloat(e.args[0]) >= pattern::kMaxWaves ? pattern::kMaxWaves
+                                           : toFloat(e.args[0]) >= 1              ? int(toFloat(e.args[0]))
+                                                                                  : 1;
                 break;
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
             case Kw::photons: notes_.note("photons", e.loc); break;
