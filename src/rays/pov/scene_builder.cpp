@@ -22,6 +22,15 @@ namespace {
 
 constexpr int kMaxObjectDepth = 1000;
 
+// Puts a builder state back as it was when the object that changed it is done (no_shadow, a
+// light_group, ... hold for the object and everything inside it).
+template <class T>
+struct Restore {
+    T& state;
+    T saved;
+    ~Restore() { state = saved; }
+};
+
 // The keywords of a julia_fractal's own items (reference's JF_ITEM), read by build_shapes.
 bool isJuliaTerm(Kw k) {
     switch (k) {
@@ -314,24 +323,15 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     }
     // no_shadow, no_image, no_reflection and double_illuminate hold for the object and everything
     // inside it.
-    struct KeepFlag {
-        bool& flag;
-        bool saved;
-        ~KeepFlag() { flag = saved; }
-    } keep{noShadow_, noShadow_}, keepImage{noImage_, noImage_}, keepReflection{noReflection_, noReflection_},
-        keepDouble{doubleIlluminate_, doubleIlluminate_}, keepHollow{hollow_, hollow_};
+    const Restore<bool> keep{noShadow_, noShadow_}, keepImage{noImage_, noImage_},
+        keepReflection{noReflection_, noReflection_}, keepDouble{doubleIlluminate_, doubleIlluminate_},
+        keepHollow{hollow_, hollow_}, keepGlobal{groupGlobalLights_, groupGlobalLights_};
+    const Restore<int> keepGroup{lightGroup_, lightGroup_};
     noShadow_ = noShadow_ || noShadow;
     noImage_ = noImage_ || noImage;
     noReflection_ = noReflection_ || noReflection;
     doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
     hollow_ = hollow_ || hollow;
-    struct KeepGroup {
-        int& group;
-        bool& global;
-        int savedGroup;
-        bool savedGlobal;
-        ~KeepGroup() { group = savedGroup, global = savedGlobal; }
-    } keepGroup{lightGroup_, groupGlobalLights_, lightGroup_, groupGlobalLights_};
     if (kind == Kw::light_group) {  // measured: global_lights is off unless given
         lightGroup_ = lightGroups_++;
         groupGlobalLights_ = globalLights;
@@ -672,10 +672,7 @@ void SceneBuilder::globalSettings(const Item& g) {
                 scene_.pov.noiseGenerator = std::clamp(int(toFloat(e.args[0])), 1, 3);
                 break;
             case Kw::number_of_waves:
-                // (clamped as a float first: a huge or NaN count must not reach int)
-                scene_.pov.numberOfWaves = toFloat(e.args[0]) >= pattern::kMaxWaves ? pattern::kMaxWaves
-                                           : toFloat(e.args[0]) >= 1              ? int(toFloat(e.args[0]))
-                                                                                  : 1;
+                scene_.pov.numberOfWaves = clampedInt(toFloat(e.args[0]), 1, pattern::kMaxWaves);
                 break;
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
             case Kw::photons: notes_.note("photons", e.loc); break;
