@@ -34,7 +34,7 @@ using rays::cli::RenderJob;
 using rays::test::readFile;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 AnimationOptions frames(int initial, int final) {
     AnimationOptions a;
@@ -395,4 +395,4 @@ TEST(AnimationLoop, AFailedFrameStopsTheLoop) {
     EXPECT_EQ(rec.jobs.size(), 2u);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

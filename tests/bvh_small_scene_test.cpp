@@ -13,7 +13,7 @@
 using namespace rays;
 using rays::test::makeObject;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // A 10×10×10 room of 16 triangles (most of the scene: they go to the triangle tree) and two
 // rotated, scaled boxes.
@@ -47,8 +47,6 @@ Vec3 randomDirection(std::mt19937& rng) {
         if (length(d) > 1e-3) return normalize(d);
     }
 }
-
-}  // namespace
 
 TEST(BvhSmallScene, NearestHitsAndBlockersAreThoseOfEveryObjectsExactTest) {
     const std::vector<Object> objects = room();
@@ -173,3 +171,5 @@ TEST(BvhSmallScene, RaysInTheirBoxesFacePlanesAreNotRejected) {
     }
     EXPECT_GT(hits, 100);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -22,7 +22,7 @@ using rays::test::ProcessResult;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 class CompareCli : public ::testing::Test {
 protected:
@@ -66,8 +66,6 @@ std::map<std::string, std::string> figures(const std::string& out) {
 }
 
 int lineCount(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
-
-}  // namespace
 
 TEST_F(CompareCli, IdenticalImagesPrintTheExactLayout) {
     rays::writeImage(path("a.png"), gradient());
@@ -196,3 +194,5 @@ TEST_F(CompareCli, BadOptionsAndHelp) {
     const ProcessResult unknown = runProcess(RAYS_BINARY, {"bogus"}, dir.path().string(), std::chrono::seconds(60));
     EXPECT_NE(unknown.err.find("filter, compare"), std::string::npos) << unknown.err;
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr auto kTimeout = std::chrono::seconds(60);
 
@@ -33,8 +33,6 @@ fs::path writeScene(const TempDir& dir, const std::string& text, const char* nam
 rays::test::ProcessResult runRays(const TempDir& dir, std::vector<std::string> args) {
     return runProcess(RAYS_BINARY, args, dir.path().string(), kTimeout);
 }
-
-}  // namespace
 
 TEST(CliEdges, MaskIsGreyscaleWithTheOutline) {
     TempDir dir;
@@ -146,3 +144,5 @@ TEST(CliScenes, ListsTheShippedScenesAndRendersOneByName) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("soft-shadows"), std::string::npos) << r.err;  // the message lists the scenes
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

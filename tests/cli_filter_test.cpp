@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const std::string kScene =
     "camera { location <0,0,14> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
@@ -23,8 +23,6 @@ const std::string kScene =
 rays::test::ProcessResult run(const TempDir& dir, const std::vector<std::string>& args) {
     return runProcess(RAYS_BINARY, args, dir.path().string(), std::chrono::seconds(60));
 }
-
-}  // namespace
 
 TEST(CliFilter, FilterCommandWritesAndBadKernelsLeaveOutputAlone) {
     TempDir dir;
@@ -58,3 +56,5 @@ TEST(CliFilter, PostProcessingChangesTheRender) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_FALSE(fs::exists(dir.path() / "c.png"));
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

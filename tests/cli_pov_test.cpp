@@ -26,7 +26,7 @@ using rays::test::runProcess;
 using rays::test::TempDir;
 using rays::test::writeFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr auto kTimeout = std::chrono::seconds(60);
 
@@ -277,4 +277,4 @@ TEST(CliPovAnimation, ASubsetSelectingNoFrameIsAnError) {
     EXPECT_EQ(r.err, "rays: error: Subset_Start_Frame selects frame 5, after the final frame 3\n");
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -31,7 +31,7 @@ using rays::test::runProcess;
 using rays::test::TempDir;
 using rays::test::writeFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr auto kTimeout = std::chrono::seconds(60);
 
@@ -810,4 +810,4 @@ TEST(CliBadSize, RaycastZeroSizeFails) {
     expectSizeRefused({"raycast", "scene.pov", "64", "0"}, {"image size"});
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

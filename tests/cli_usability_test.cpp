@@ -18,7 +18,7 @@ using rays::test::runProcess;
 using rays::test::TempDir;
 using rays::test::writeFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const std::string kScene =
     "camera { location <0,0,14> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
@@ -138,4 +138,4 @@ TEST(CliUsability, SceneinfoNumbersObjectsAsPrintraysDoes) {
     EXPECT_TRUE(contains(rays2.out, "(ID #2 - Sphere)")) << rays2.out;
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -17,7 +17,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr double kC1 = 0.01 * 0.01, kC2 = 0.03 * 0.03;
 
@@ -83,8 +83,6 @@ double referenceSsim(const std::vector<float>& a, const std::vector<float>& b, i
         }
     return total / count;
 }
-
-}  // namespace
 
 TEST(CompareSsim, WindowIsTheNormalisedGaussianClippedToSmallSides) {
     const std::vector<double> w = ssimWindow(500);
@@ -266,3 +264,5 @@ TEST(CompareDiff, AbsoluteDifferenceScaledRoundedAndClamped) {
     EXPECT_EQ(differenceImage(a, b, 0).pixels, (std::vector<uint8_t>(6, 0)));
     EXPECT_EQ(differenceImage(b, a, 1).pixels, d1.pixels);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

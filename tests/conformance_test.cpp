@@ -24,7 +24,7 @@
 namespace fs = std::filesystem;
 using namespace rays::test;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr auto kCaseTimeout = std::chrono::seconds(120);
 
@@ -311,4 +311,4 @@ TEST(CourseConformanceSuite, Found) {
     EXPECT_FALSE(allCases().empty()) << "no text/image cases found under " << courseDir().string();
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

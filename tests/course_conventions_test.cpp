@@ -16,7 +16,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene sceneFrom(const std::string& text) {
     ParseOptions opt;
@@ -54,8 +54,6 @@ std::string missRecord(const char* kind, const char* ray, const char* extra) {
     if (extra) s += std::string("      Extra Info: ") + extra + "\n";
     return s + "\n";  // no children: a blank line
 }
-
-}  // namespace
 
 // A 1×1 image looks straight down −z at a sphere of radius 2 (a unit sphere scaled by 2, so
 // every hit prints its object-space ray: origin and direction halved) with no lights: each hit
@@ -284,3 +282,5 @@ TEST(CourseConventions, GiSampleDirectionsAreCosineHemisphere) {
         EXPECT_NEAR(s, std::sin(th), 1e-11);
     }
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -25,7 +25,7 @@ using rays::test::readFile;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const std::string kScene = R"(
 camera { location <0, 3, 12> up <0, 1, 0> right <1.33333, 0, 0> look_at <0, 0.5, 0> }
@@ -114,4 +114,4 @@ TEST_P(Determinism, SameBytesForAnyThreadCountAndEveryRun) {
 INSTANTIATE_TEST_SUITE_P(Modes, Determinism, ::testing::ValuesIn(modes()),
                          [](const ::testing::TestParamInfo<Mode>& info) { return info.param.name; });
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

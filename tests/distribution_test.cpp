@@ -13,7 +13,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene sceneFrom(const std::string& text) {
     ParseOptions opt;
@@ -66,8 +66,6 @@ std::string penumbraScene(double lightSize) {
            // An occluder covering x < 0, high enough to cast a wide penumbra.
            "box { <-50, 4.9, -50>, <0, 5, 50> pigment { color rgb 1 } }\n";
 }
-
-}  // namespace
 
 TEST(Distribution, PenumbraWidthGrowsWithLightSize) {
     RenderSettings s;
@@ -351,3 +349,5 @@ TEST(Distribution, BadValuesAreErrors) {
     EXPECT_NE(err(cam + "}\nlight_source { <0,5,0> color rgb 1 parallel point_at <0,5,0> }")
                   .find("point_at equals"), std::string::npos);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

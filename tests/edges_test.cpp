@@ -19,7 +19,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr int kW = 200, kH = 150;
 
@@ -138,8 +138,6 @@ void expectGood(const Score& s, const char* what) {
     EXPECT_GE(s.recall, 0.95) << what << ": drawn " << s.drawn << ", truth " << s.truth;
     EXPECT_GT(s.truth, 20u) << what;
 }
-
-}  // namespace
 
 TEST_P(EdgeMethods, SphereSilhouetteIsItsProjectedCircle) {
     const Scene scene = sceneFrom(std::string(kCamera) + "sphere { <0, 0, 0>, 2 pigment { color rgb 1 } }\n");
@@ -377,3 +375,5 @@ TEST(EdgesBlock, SceneFileSetsTheSameControls) {
     EXPECT_DOUBLE_EQ(scene.edges.creaseAngle, 45);
     EXPECT_TRUE(scene.edges.linesOnly);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

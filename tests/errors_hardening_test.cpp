@@ -26,7 +26,7 @@ using rays::test::readFile;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct File {
     std::string name;
@@ -242,4 +242,4 @@ TEST(HardeningDoc, ListsEveryRowWithItsExitStatusAndMessage) {
     EXPECT_EQ(lines.size(), rows.size()) << "docs/errors.md H rows vs tests/errors_hardening_test.cpp catalogue";
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -33,7 +33,7 @@ using rays::test::readFile;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // A file of the row: its bytes, or a function making them when the row runs (large contents, so
 // that registering the tests, which every test process does, stays quick).
@@ -525,4 +525,4 @@ TEST(ErrorsDoc, ListsEveryRowWithItsExitStatusAndMessage) {
     EXPECT_EQ(lines.size(), rows.size()) << "docs/errors.md rows vs tests/errors_test.cpp catalogue";
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

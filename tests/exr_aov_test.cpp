@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 rays::test::ProcessResult runRays(const TempDir& dir, std::vector<std::string> args) {
     return runProcess(RAYS_BINARY, args, dir.path().string(), std::chrono::seconds(60));
@@ -93,8 +93,6 @@ PfmRead readPfm(const fs::path& path) {
 // the axis: pixel (32, 24) of 65×49.
 const char* kCamera = "camera { location <0,0,10> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
                       "light_source { <10,10,10> color rgb <1,1,1> }\n";
-
-}  // namespace
 
 TEST(HdrIo, FloatToHalfRoundsToNearestEven) {
     EXPECT_EQ(rays::floatToHalf(1.0f), 0x3c00);
@@ -329,3 +327,5 @@ TEST(HdrIo, BadAovListFailsBeforeWriting) {
     EXPECT_FALSE(fs::exists(dir.path() / "out.pfm"));
     EXPECT_FALSE(fs::exists(dir.path() / "out.depth.pfm"));
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

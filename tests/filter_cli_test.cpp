@@ -31,7 +31,7 @@ using rays::cli::runFilterCommand;
 using rays::test::readFile;
 using rays::test::writeFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 std::vector<std::string> listDir(const fs::path& dir) {
     std::vector<std::string> names;
@@ -82,8 +82,6 @@ protected:
 };
 
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
-
-}  // namespace
 
 TEST_F(FilterCli, WritesTheFilteredImage) {
     ASSERT_EQ(runFilterCommand({in, out, "brighten_2", "-q"}), 0);
@@ -201,3 +199,5 @@ TEST_F(FilterCli, BadOptionsAndArguments) {
         EXPECT_NE(msg.find("usage: rays filter INPUT OUTPUT KERNEL"), std::string::npos) << msg;
     }
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

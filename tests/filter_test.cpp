@@ -23,7 +23,7 @@
 namespace fs = std::filesystem;
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const BorderMode kModes[] = {BorderMode::Clamp, BorderMode::Zero, BorderMode::White, BorderMode::Reflect};
 
@@ -99,8 +99,6 @@ std::string writeText(const fs::path& dir, const std::string& name, const std::s
     std::ofstream(p, std::ios::binary) << text;
     return p.string();
 }
-
-}  // namespace
 
 // ---- kernel specs --------------------------------------------------------------------------------
 
@@ -612,3 +610,5 @@ TEST(FilterParallel, ParallelForRunsEveryIndexOnceAndRethrows) {
     EXPECT_EQ(parallelThreadCount(3), 3);
     EXPECT_GE(parallelThreadCount(0), 1);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

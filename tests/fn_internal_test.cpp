@@ -18,7 +18,7 @@
 
 using namespace rays::fn;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct Measured {
     const char* name;
@@ -451,8 +451,6 @@ double call(const char* name, const std::vector<double>& args) {
     return f->fn(args.data());
 }
 
-}  // namespace
-
 TEST(FnInternal, EveryFunctionsIncNameHasItsNumberAndArity) {
     for (const Declared& d : kDeclared) {
         EXPECT_EQ(internalNumber(d.name), d.number) << d.name;
@@ -560,3 +558,5 @@ TEST(FnInternal, HostileParametersStayDefined) {
     EXPECT_EQ(call("f_polytubes", {0.1, 0.2, 0.3, -3, 1, 0, 0, 0, 0}), INFINITY);
     EXPECT_TRUE(std::isfinite(call("f_polytubes", {0.1, 0.2, 0.3, 1e300, 1, 0, 0, 0, 0})));
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -21,7 +21,7 @@
 using namespace rays::fn;
 using rays::fn::testing::sexpr;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -92,8 +92,6 @@ std::string compileError(const std::string& text, int params, const FunctionTabl
     }
     return "(no error)";
 }
-
-}  // namespace
 
 TEST(FnMachine, Arithmetic) {
     EXPECT_EQ(value("(+ x y)", {2, 3}), 5);
@@ -341,7 +339,6 @@ TEST(FnMachine, InliningAndFoldingShrinkTheCode) {
     EXPECT_EQ(folded->code.size(), 2u);  // MulK, Ret
 }
 
-namespace {
 // A host "vector function": (x + 1, 2, 3) with 3 outputs, or rgbft (0.1, 0.2, 0.3, 0.4, 0.5).
 void hostVector(const void* data, const double* in, double* out) {
     const int n = *static_cast<const int*>(data);
@@ -353,7 +350,6 @@ void hostVector(const void* data, const double* in, double* out) {
         for (int i = 0; i < 5; ++i) out[i] = 0.1 * (i + 1);
     }
 }
-}  // namespace
 
 TEST(FnMachine, HostFunctionsWithMembers) {
     static const int three = 3, five = 5;
@@ -629,14 +625,12 @@ TEST(FnMachine, BatchRunsCalleesThatAreNotInlined) {
     }
 }
 
-namespace {
 std::atomic<int> hostRuns{0};
 // A host function that counts its runs: in[0] + 7.
 void countingHost(const void*, const double* in, double* out) {
     ++hostRuns;
     out[0] = in[0] + 7;
 }
-}  // namespace
 
 TEST(FnMachine, CallsWithConstantArgumentsFoldOnlyWhenSafe) {
     // A call that is not inlined, with constant arguments, is folded by running the callee at
@@ -676,3 +670,5 @@ TEST(FnMachine, CallsWithConstantArgumentsFoldOnlyWhenSafe) {
     s.fit(*top);
     EXPECT_EQ(eval(*top, &x, s), 2.0 * (1 << 20));
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 using rays::test::readFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 /// The Error parseFuzzPov throws for text ("" when it parses), with text padded to an even size so
 /// that strict mode (odd sizes) is off.
@@ -347,4 +347,4 @@ TEST(FuzzPovFindings, NestingWithinTheCountLimitStopsBeforeTheStackRunsOut) {
     EXPECT_EQ(parseOnSmallStack("#declare A = ((((1))));", size_t(1) << 20), "");
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -11,15 +11,13 @@ using namespace rays;
 using rays::test::makeObject;
 using rays::test::sphere;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 void expectVec(Vec3 a, Vec3 b, double eps = 1e-9) {
     EXPECT_NEAR(a.x, b.x, eps);
     EXPECT_NEAR(a.y, b.y, eps);
     EXPECT_NEAR(a.z, b.z, eps);
 }
-
-}  // namespace
 
 TEST(Geometry, SphereHitFromOutsideAndInside) {
     const Object s = sphere({0, 0, 0}, 2);
@@ -128,8 +126,6 @@ TEST(Geometry, TransformedBoundsContainTheShape) {
     }
 }
 
-namespace {
-
 // The nearest hit by testing every object (t and object only).
 Hit bruteForceClosest(const std::vector<Object>& objects, const Ray& ray, double tMin) {
     Hit brute;
@@ -141,8 +137,6 @@ Hit bruteForceClosest(const std::vector<Object>& objects, const Ray& ray, double
         }
     return brute;
 }
-
-}  // namespace
 
 TEST(Bvh, MatchesBruteForceOnRandomRays) {
     std::mt19937 rng(42);
@@ -306,3 +300,5 @@ TEST(Bvh, EmptyAndCoincidentCentroids) {
     ASSERT_TRUE(h.valid());
     EXPECT_DOUBLE_EQ(h.t, 4);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -14,7 +14,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct GoldenCase {
     const char* name;   ///< golden image name
@@ -30,8 +30,6 @@ void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.name; }
 std::string path(const std::string& rel) { return std::string(RAYS_SOURCE_DIR) + "/tests/" + rel; }
 
 class Golden : public ::testing::TestWithParam<GoldenCase> {};
-
-}  // namespace
 
 TEST_P(Golden, MatchesCommittedImage) {
     const GoldenCase& c = GetParam();
@@ -68,3 +66,5 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                                            GoldenCase{"shapes_normals", "shapes", ShadingModel::Normals, false, false, 1},
                                            GoldenCase{"shapes_flat", "shapes", ShadingModel::Flat, false, false, 1}),
                          [](const auto& info) { return std::string(info.param.name); });
+
+}}  // namespace RAYS_TEST_UNIT, namespace

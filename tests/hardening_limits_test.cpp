@@ -23,7 +23,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // A star-shaped polygon of n corners in the plane z = 0, counter-clockwise: radius 1 and `inner`
 // alternately (every second corner concave when inner < cos(π/n)).
@@ -226,10 +226,6 @@ TEST(HardeningStack, PovTraceLevelsStopAtTheStacksEnd) {
     EXPECT_TRUE(done);
 }
 
-}  // namespace
-
-namespace {
-
 // ---- other loaders ------------------------------------------------------------------------------
 
 TEST(HardeningPrism, LongOutlinesGetTheSameOutwardSidesAsEdgeByEdge) {
@@ -263,4 +259,4 @@ TEST(HardeningPrism, LongOutlinesGetTheSameOutwardSidesAsEdgeByEdge) {
     EXPECT_EQ(wrong, 0u);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

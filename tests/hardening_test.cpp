@@ -29,7 +29,7 @@ using rays::test::runProcess;
 using rays::test::TempDir;
 using rays::test::writeFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const std::string kScene =
     "camera { location <0,0,14> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
@@ -44,8 +44,6 @@ unsigned modeOf(const fs::path& p) {
     struct stat st {};
     return ::stat(p.c_str(), &st) == 0 ? unsigned(st.st_mode & 07777) : 0u;
 }
-
-}  // namespace
 
 // ---- class 5: outputs ----
 
@@ -268,3 +266,5 @@ TEST(HardeningFlags, NumbersMustBeFiniteAndWhole) {
     for (std::string bad : {"18446744073709551616", "-1", "1e3", "", "99999999999999999999999"})
         EXPECT_NE(rays::cli::unsigned64Check()(bad), "") << bad;
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -16,7 +16,7 @@
 #include <string>
 #include <thread>
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // The name of the mapping that holds `address` ("[heap]", a path, or "" for an anonymous one),
 // or "?" when no mapping does.
@@ -81,4 +81,4 @@ TEST(HeapSetup, WorkerThreadsGetNoArenaOfTheirOwn) {
     EXPECT_EQ(arenaCount(), before);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

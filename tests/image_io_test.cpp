@@ -19,7 +19,7 @@ using rays::Image8;
 
 using rays::test::writeFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 /// A fresh, empty directory removed (with its contents) when the test ends.
 class TempDir {
@@ -98,8 +98,6 @@ std::string messageOf(const std::function<void()>& f) {
 }
 
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
-
-}  // namespace
 
 TEST(ImageIoExtension, SupportedExtensions) {
     for (const char* p : {"a.png", "a.PNG", "dir/a.jpg", "a.JPEG", "a.jpeg", "a.ppm", "a.tga", "a.Bmp"})
@@ -358,3 +356,5 @@ TEST(ImageIoRead, GarbageFileThrowsWithPath) {
     EXPECT_TRUE(startsWith(messageOf([&] { rays::readImage(dir.path().string()); }),
                            dir.path().string() + ": error: cannot read image: "));
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 using rays::test::readFile;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // Area light with jittered samples, a reflective floor and a wall behind (every pixel hits
 // something, so every tile is slow): 1600x1200 at 64 samples per pixel is minutes of work, so the
@@ -231,10 +231,6 @@ TEST(Interrupt, SecondSignalQuitsAtOnce) {
     }
 }
 
-}  // namespace
-
-namespace {
-
 // Issue 27: the first signal stops any phase within about a second.
 
 TEST(Interrupt, OneTileCoveringTheWholeImageStopsWithinItsPixels) {
@@ -306,4 +302,4 @@ TEST(Interrupt, PostFiltersStopAtTheFirstSignal) {
     EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"k.txt", "scene.pov"}));
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

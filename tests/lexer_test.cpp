@@ -11,7 +11,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct Seen {
     TokenKind kind;
@@ -81,4 +81,4 @@ TEST(Lexer, ErrorsNameTheirPosition) {
     EXPECT_EQ(errorOf("1e999"), "t.pov:1:1: error: number '1e999' is too large");
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -14,7 +14,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const std::string kCam = "camera { location <0.5, 0.5, 10> up <0, 0.1, 0> right <0.1, 0, 0> look_at <0.5, 0.5, 0> }\n";
 
@@ -37,8 +37,6 @@ ImageF flatRender(const Scene& scene, int w, int h) {
     TraceStats st;
     return render(scene, bvh, s, st);
 }
-
-}  // namespace
 
 TEST(Mesh, PovrayMeshAndMesh2AreOneIndexedObject) {
     const Scene a = parse(kCam +
@@ -154,3 +152,5 @@ TEST(Mesh, TransformedMeshIntersectsLikeTransformedTriangles) {
     }
     EXPECT_GT(hits, 30);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

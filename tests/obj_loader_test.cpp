@@ -16,7 +16,7 @@
 namespace fs = std::filesystem;
 using rays::ObjMesh;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 /// A fresh directory for OBJ/MTL files, removed when the test ends.
 class ObjDir {
@@ -66,8 +66,6 @@ const char* const kTriangle =
     "vt 0 1\n"
     "vn 0 0 1\n"
     "f 1/1/1 2/2/1 3/3/1\n";
-
-}  // namespace
 
 TEST(ObjLoader, TriangleWithUvsAndNormals) {
     ObjDir dir;
@@ -304,7 +302,6 @@ TEST(ObjLoader, StanfordBunny) {
         for (int v : f.v) ASSERT_TRUE(v >= 0 && v < int(m.positions.size()));
 }
 
-namespace {
 // Writes `text` gzip-compressed to `path`.
 void writeGzip(const std::string& path, const std::string& text) {
     gzFile f = gzopen(path.c_str(), "wb");
@@ -312,7 +309,6 @@ void writeGzip(const std::string& path, const std::string& text) {
     ASSERT_EQ(gzwrite(f, text.data(), unsigned(text.size())), int(text.size()));
     ASSERT_EQ(gzclose(f), Z_OK);
 }
-}  // namespace
 
 TEST(ObjLoader, GzipFileIsDecompressed) {
     ObjDir dir;
@@ -344,3 +340,5 @@ TEST(ObjLoader, ReaderErrorKeepsItsLineNumber) {
     const std::string msg = messageOf([&] { rays::loadObj(path); });
     EXPECT_TRUE(startsWith(msg, path + ":5:1: error: ")) << msg;
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -22,7 +22,7 @@ using namespace rays;
 using rays::test::makeObject;
 using rays::test::sphere;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // Every kind of bounded object, some of them big or flat, around the origin; a
 // plane too. With manyTriangles the triangles go to the BVH's triangle tree (64
@@ -84,8 +84,6 @@ Vec3 randomDirection(std::mt19937& rng) {
     }
 }
 
-}  // namespace
-
 // Primary rays: the nearest hit from the eye's lists is the BVH's, bit for bit,
 // from eyes outside everything, inside a sphere, near a box, just above the
 // floor (with things below it).
@@ -120,8 +118,6 @@ TEST(OriginBuffer, RaysFromTheEyeFindTheBvhsNearestHit) {
     EXPECT_GT(hits, 20000);
 }
 
-namespace {
-
 // A shadow ray as the tracer casts it, from P + kSurfaceOffset N (P where probe first meets the
 // scene, N facing the probe) towards a point light, traced by the BVH and by the light's buffer.
 struct ShadowVerdicts {
@@ -145,8 +141,6 @@ ShadowVerdicts shadowBothWays(const Bvh& bvh, const std::vector<Object>& objects
                Bvh::kNoBlocker;
     return v;
 }
-
-}  // namespace
 
 // Shadow rays as the tracer casts them: from P + 0.001 N towards a point light.
 // The light's lists (grown by that offset) must find a blocker exactly when the
@@ -362,3 +356,5 @@ sphere { <0, 0, 0>, 1 }
     const Bvh smallBvh(small.objects);
     EXPECT_EQ(built(Tracer::buildSharedOrigins(small, smallBvh, &eye, 640 * 480, 1)), "-");
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

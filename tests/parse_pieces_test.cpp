@@ -14,7 +14,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // A course scene of about 360 KB: spheres (transformed, some of them not similarity-transformed),
 // triangles, boxes, cones and lights, a camera at the top and a second one past the middle, and
@@ -94,8 +94,6 @@ void expectSameScene(const Scene& a, const Scene& b) {
 
 // The start of the first item at or after pos (items are separated by empty lines).
 size_t itemAfter(const std::string& text, size_t pos) { return text.find("\n\n", pos) + 2; }
-
-}  // namespace
 
 TEST(ParsePieces, GivesTheSceneOfOneParser) {
     const std::string text = bigScene(1);
@@ -177,3 +175,5 @@ TEST(ParsePieces, AnEdgesBlockPastTheMiddleGoesToOneParser) {
     EXPECT_EQ(pieces.edges.creaseAngle, whole.edges.creaseAngle);
     expectSameScene(pieces, whole);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

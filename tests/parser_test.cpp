@@ -14,7 +14,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const char* kCamera = "camera { location <0,0,14> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n";
 
@@ -34,8 +34,6 @@ std::string errorOf(const std::string& text) {
         parseScene(text, "t.pov", opt);
     });
 }
-
-}  // namespace
 
 TEST(Parser, ReadsCourseSceneStructure) {
     const Scene s = parse(
@@ -185,3 +183,5 @@ TEST(Parser, LoadsFilesAndPipesAlike) {
     EXPECT_EQ(fromPipe.objects[0].p0.z, 3.0);
     EXPECT_EQ(fromPipe.objects[0].line, fromFile.objects[0].line);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -18,7 +18,7 @@ using rays::Image8;
 using rays::ImageF;
 using rays::Vec3;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // Smooth colours: the PNG encoder picks Z_FILTERED for these.
 ImageF gradient(int w, int h) {
@@ -65,8 +65,6 @@ std::vector<int> bands(int height, int band) {
     for (size_t i = 0; i < v.size(); ++i) v[i] = int(i);
     return v;
 }
-
-}  // namespace
 
 TEST(PngRowEncoder, SameBytesAsTheWholeImageEncoder) {
     for (const ImageF& f : {gradient(97, 61), renderLike(160, 120)}) {
@@ -126,3 +124,5 @@ TEST(PngStream, MissingRowsAreAnError) {
     png.rowsDone(img, 24, 32);  // rows 16..23 never come
     EXPECT_THROW(png.finish(), rays::Error);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -12,7 +12,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 using Tris = std::vector<std::array<int, 3>>;
 
@@ -168,4 +168,4 @@ TEST(PolygonTriangulate, NonFiniteCornersAreFanned) {
     EXPECT_EQ(triangulatePolygon(huge).size(), 3u);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -10,7 +10,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // objects/bezier.pov's patch.
 const char* const kPoints =
@@ -104,5 +104,5 @@ TEST(PovBicubicPatch, CornersLieOnTheBezierSurface) {
     }
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

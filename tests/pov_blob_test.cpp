@@ -14,7 +14,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) { return test::buildPov(text, warnings); }
 
@@ -198,5 +198,5 @@ TEST(PovBlob, PixelsMatchPovRay) {
     test::expectPovPixels(test::renderPov(s), pixels);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

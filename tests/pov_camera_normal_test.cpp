@@ -15,7 +15,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr int kW = 160, kH = 120;
 
@@ -72,5 +72,5 @@ TEST(PovCameraNormal, CamerasWithoutOneKeepTheirRays) {
     EXPECT_EQ(length(tiltAt(scene, 30, 40)), 0);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -17,7 +17,7 @@
 #include "rays/scene/camera.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr int kSize = 101;
 constexpr double kMeasured = 2e-4;  // 16-bit colour quantisation of the measurement
@@ -344,5 +344,5 @@ TEST(PovCrand, SameSampleSameGrain) {
     EXPECT_NE(a[0], a[1]);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

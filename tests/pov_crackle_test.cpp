@@ -13,7 +13,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // Points uniform in [−25, 25]³ from a fixed LCG.
 std::vector<Vec3> randomPoints(int n) {
@@ -126,5 +126,5 @@ TEST(PovCrackle, SolidCellsHoldOneValue) {
     EXPECT_GT(inside, 200);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -11,7 +11,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene load(const std::string& body) {
     return test::loadPov(body, "#version 3.7;\nglobal_settings { assumed_gamma 1 max_trace_level 10 }\n").scene;
@@ -94,5 +94,5 @@ TEST(PovCsgInterior, ShadowRaysLeavingAnOpenObjectTheyWereNotInDoNotFade) {
     EXPECT_NEAR(underCone.x, bare.x, 1e-9);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

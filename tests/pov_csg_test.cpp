@@ -17,7 +17,7 @@
 #include "rays/scene/csg.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) { return test::buildPov(text, warnings); }
 
@@ -406,11 +406,11 @@ TEST(PovCsgNotes, MeshesWithAnInsideVectorMayBeCut) {
     EXPECT_NEAR(shoot(s, {0, 0, -5}, {0, 0, 1}).t, 4.5, 1e-6);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // A box with a sphere and a cylinder cut out, a lens and a clipped sphere over a floor; the
 // pixels were measured from POV-Ray 3.7.0.10 (povray +W160 +H120 -D -A, written as PPM).
@@ -446,11 +446,11 @@ TEST(PovCsgRender, PixelsMatchPovRay) {
     test::expectPovPixels(img, pixels);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 TEST(PovCsgParseTime, InsideAndTraceAnswerForCsgObjects) {
     const Scene s = build(
@@ -488,11 +488,11 @@ TEST(PovCsgParseTime, TraceAnswersWhateverTheTextureAndNotForShapesLeftOut) {
     EXPECT_NE(traceNotes[0].find(":7:"), std::string::npos) << traceNotes[0];
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 ImageF renderSmall(const Scene& s) { return test::renderPov(s, 32, 24, 1); }
 
@@ -510,5 +510,5 @@ TEST(PovCsgShadows, LightPassesThroughATransparentChildOfAnOpaqueOnesCsg) {
     EXPECT_NEAR(through.x, lit.x, 1e-6);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

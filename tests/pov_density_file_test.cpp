@@ -14,7 +14,7 @@
 #include "support/process.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 std::string df3(int nx, int ny, int nz, const std::string& values) {
     std::string b;
@@ -107,5 +107,5 @@ TEST(PovDensityFile, AMissingOrBrokenFileIsAnErrorAtTheKeyword) {
     }
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

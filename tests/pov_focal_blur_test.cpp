@@ -9,7 +9,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 using test::buildPov;
 
@@ -98,5 +98,5 @@ TEST(PovFocalBlur, EarlyStopKeepsTheBlurredEdge) {
     EXPECT_NEAR(sa, sb, 0.02 * sb);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

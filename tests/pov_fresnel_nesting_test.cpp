@@ -11,7 +11,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // The colour along the centre ray of `camera { location <0,0,-5> look_at 0 }` with a glass sphere
 // (fresnel reflection only, ior 1.5) off the axis and `around` added.
@@ -45,5 +45,5 @@ TEST(PovFresnelNesting, InternalReflectionsStopWhereTheRayIsInsideAnotherObject)
     expectColor(centre("sphere { 0, 3 pigment { rgbt 1 } finish { ambient 0 diffuse 0 } }"), {0.30022, 0.31210, 0.30022});
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -20,7 +20,7 @@
 #include "support/tiny_images.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // The 4×2 grey image: top row 0 80 160 240, bottom row 40 120 200 255.
 std::string greyImage(const test::TempDir& dir) {
@@ -298,5 +298,5 @@ TEST(PovHeightField, MtmandPotHeightsMatchPovRaysTrace) {
             << p.i << " " << p.j;
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

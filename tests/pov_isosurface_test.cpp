@@ -15,7 +15,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) { return test::buildPov(text, warnings); }
 
@@ -180,5 +180,5 @@ TEST(PovIsosurface, PixelsMatchPovRay) {
     test::expectPovPixels(test::renderPov(s), pixels);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

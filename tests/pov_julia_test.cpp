@@ -13,7 +13,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct Traced {
     const char* fractal;
@@ -176,5 +176,5 @@ TEST(PovJuliaFractal, CubeAndHypercomplexInsideAgreeWithTheProducts) {
     }
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -12,7 +12,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene build(const std::string& text) { return test::buildPov(text); }
 
@@ -155,11 +155,11 @@ TEST(PovLathe, PixelsMatchPovRay) {
     test::expectPovPixels(test::renderPov(s), pixels);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // sphere_sweep with linear_spline: the convex hulls of neighbouring spheres; points and normals
 // from POV-Ray 3.7's trace().
@@ -240,5 +240,5 @@ TEST(PovSphereSweep, SplineSweepsMatchPovRay) {
     EXPECT_TRUE(test::buildPov("sphere_sweep { cubic_spline 3, 0, 1, x, 1, 2*x, 1 }").objects.empty());  // too few
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -18,7 +18,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr double kMeasured = 1e-4;
 
@@ -365,5 +365,5 @@ TEST(PovLayeredTexture, APigmentWithoutABaseModifiesTheTexturesPigment) {
     }
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -17,7 +17,7 @@
 #include "rays/render/tracer.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr double kMeasured = 1e-4;  // povray's 16-bit output, decoded
 
@@ -512,5 +512,5 @@ TEST(PovLightGroup, ItsLightsLightOnlyItsObjectsAndTheScenesOnlyWithGlobalLights
     }
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

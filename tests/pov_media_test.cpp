@@ -13,7 +13,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr double kMeasured = 2e-4;  // povray's 16-bit output, and Rays' surface offset
 
@@ -272,5 +272,5 @@ TEST(PovMedia, SpotlightBeamsAreSampledApart) {
     ASSERT_EQ(povLightBeamEdges(spot, Ray{{0, 0, -10}, {0, 0, 1}}, 0, 30, edges, 4), 4);  // radius and falloff cones
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

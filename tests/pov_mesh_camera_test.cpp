@@ -14,7 +14,7 @@
 #include "rays/scene/uv_face_grid.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene loadScene(const std::string& text) {
     ParseOptions o;
@@ -255,5 +255,5 @@ TEST(PovMeshCamera, MaxDistanceStopsCameraRaysAndFacelessPixelsAreBlack) {
     expectColor(renderedPixel("camera { mesh_camera { 2 0 " + faces(2) + " " + mesh + " } }", 1, 2), Vec3(1, 0, 0));
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -19,7 +19,7 @@
 #include "rays/render/tracer.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr double kMeasured = 2e-4;  // povray's 16-bit output
 
@@ -198,11 +198,11 @@ TEST(PovNormal, SphereWithATransformedGradientMatchesPovRaysPixels) {
         }
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // The mean absolute deviation from the median of the lit plane's brightness (light from <1,0,-1>)
 // over a 48×48 grid of x, y in [−3, 3]: how strongly a noise-like normal tilts.
@@ -404,5 +404,5 @@ TEST(PovNormal, BumpMapHeightsAreGreyBytesOrPaletteIndices) {
     expectNormal(bumpNormal(file("pal5.png"), 0.55, 0.45), {0, -0.70711, -0.70711});
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

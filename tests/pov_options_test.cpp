@@ -28,7 +28,7 @@ using rays::cli::PovOptions;
 using rays::test::TempDir;
 using rays::test::writeFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 /// Reads args in order; collects the warnings.
 struct Read {
@@ -576,4 +576,4 @@ TEST(PovSettings, ApplyFillsTheJob) {
     EXPECT_EQ(plain.outputPath, "output.png");
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -12,7 +12,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct Traced {
     const char* ovus;
@@ -79,5 +79,5 @@ TEST(PovOvus, InsideIsTheUnionOfItsParts) {
     EXPECT_NEAR(b.hi.x, 1, 1e-6);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

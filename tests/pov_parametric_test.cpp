@@ -9,7 +9,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 TEST(PovParametric, HeightSurfaceMatchesPovRayTrace) {
     std::vector<std::string> warnings;
@@ -48,5 +48,5 @@ TEST(PovParametric, SphereLiesOnTheSphere) {
     }
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -17,7 +17,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const std::string kData = std::string(RAYS_SOURCE_DIR) + "/tests/data/povray/";
 
@@ -207,5 +207,5 @@ TEST(PovPatternFunction, FunctionPatternsNestThroughPatternFunctions) {
         EXPECT_NEAR(l.scene.pigments.atRoot(pig, {0.2, y, 0}).rgb.x, y * 0.5 + 0.25 + 0.2 * 0.125, 1e-9) << y;
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -22,7 +22,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 using Built = test::PovLoaded;
 
@@ -964,5 +964,5 @@ TEST(PovPattern, WavesAreRingsOfManyFrequencies) {
     EXPECT_LT(nearOne, 0.3 * total);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -12,7 +12,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const char* const kPrisms[] = {
     "prism { quadratic_spline linear_sweep 0, 1, 6, <-1,-1>, <1,-1>, <1,1>, <-1,1>, <-1,-1>, <1,-1> }",
@@ -191,5 +191,5 @@ TEST(PovPrismSplines, SubPrismsHolesAndInside) {
     EXPECT_TRUE(unclosed.objects.empty());
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

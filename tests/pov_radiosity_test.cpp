@@ -12,7 +12,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 using Loaded = test::PovLoaded;
 
@@ -213,5 +213,5 @@ TEST(IrradianceCache, BlendsValidRecordsByWardsWeights) {
     EXPECT_NEAR(E.x, 1.0, 1e-12);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -18,7 +18,7 @@
 using rays::sdl::RandomStream;
 using rays::sdl::RandomStreams;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const std::string kData = std::string(RAYS_SOURCE_DIR) + "/tests/data/povray/pov_random.txt";
 
@@ -86,8 +86,6 @@ int mismatches(const Generator& g, int* checked = nullptr) {
     if (checked) *checked = n;
     return bad;
 }
-
-}  // namespace
 
 TEST(PovRandom, MatchesPovRayBitExactly) {
     int checked = 0;
@@ -160,3 +158,5 @@ TEST(PovRandom, UnknownStreamIsPovRaysError) {
         EXPECT_EQ(r.error, "Illegal random number generator.");
     }
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -10,7 +10,7 @@
 #include "rays/pov/load_pov.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct Built {
     Scene scene;
@@ -484,5 +484,5 @@ TEST(PovCorpus, EveryExampleSceneGetsThroughTheLanguage) {
         EXPECT_TRUE(f.find("__empty.pov") != std::string::npos || f.find("sort.pov:81:3: error: cannot find the font file \"arial.ttf\"") != std::string::npos) << f;
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

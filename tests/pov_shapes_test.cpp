@@ -18,7 +18,7 @@
 #include "rays/scene/shapes/poly.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Scene build(const std::string& text, std::vector<std::string>* warnings = nullptr) { return test::buildPov(text, warnings); }
 
@@ -607,5 +607,5 @@ TEST(PovShapesRender, PixelsMatchPovRay) {
     test::expectPovPixels(img, pixels);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

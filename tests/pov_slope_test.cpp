@@ -11,7 +11,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct Sample {
     Vec3 p;  // the point on the unit sphere, also its normal
@@ -94,5 +94,5 @@ TEST(PovSlope, AsANormalPatternItIsNoted) {
     EXPECT_NE(warnings[0].find("normal pattern slope"), std::string::npos);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

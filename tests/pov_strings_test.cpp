@@ -19,7 +19,7 @@
 
 using namespace rays::sdl;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const std::string kDir = std::string(RAYS_SOURCE_DIR) + "/tests/data/povray/";
 
@@ -101,8 +101,6 @@ void expectOutcome(const Outcome<PovString>& got, const Fields& f) {
     else
         EXPECT_EQ(narrowOrError(got), want) << text(f);
 }
-
-}  // namespace
 
 TEST(PovStrings, StrMatchesPovRay) {
     const auto all = casesOf("str", 4);
@@ -203,3 +201,5 @@ TEST(PovStrings, NowCountsDaysFrom2000Utc) {
     const double unixSeconds = povNow() * 86400.0 + 946684800.0;
     EXPECT_NEAR(unixSeconds, double(std::time(nullptr)), 60.0);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

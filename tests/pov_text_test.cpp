@@ -20,7 +20,7 @@
 #include "rays/scene/text_shape.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr const char* kFontDir = "/usr/share/fonts/truetype/povray";
 
@@ -225,10 +225,10 @@ TEST(PovTextRender, PixelsMatchPovRay) {
     test::expectPovPixels(img, pixels);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 TEST(PovTextOutline, AQuadraticIsSplitOnceWhereYTurnsWhateverTheRounding) {
     // Fuzz finding 28 (fuzz_font): splitting the two pieces again found a turning point in (0, 1)
@@ -248,4 +248,4 @@ TEST(PovTextOutline, AQuadraticIsSplitOnceWhereYTurnsWhateverTheRounding) {
     EXPECT_EQ(shape.segments[0].by, shape.segments[1].ay);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -14,7 +14,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct Sample {
     Vec3 p;
@@ -124,5 +124,5 @@ TEST(PovTiling, PenroseTilingsAreNoted) {
     EXPECT_TRUE(pattern::tilingDrawn(5));
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

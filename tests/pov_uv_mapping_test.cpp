@@ -14,7 +14,7 @@
 #include "support/pov_scene.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 using test::buildPov;
 
@@ -72,5 +72,5 @@ TEST(PovUvMapping, TransformsInTheTextureMoveItAndTheObjectsDoNot) {
             -0.3, {{10, 15}, {12, 12}, {16, 16}});
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

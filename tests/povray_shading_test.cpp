@@ -19,7 +19,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 constexpr double kPi = std::numbers::pi;
 const Vec3 kPigment{0.5, 0.6, 0.7};
@@ -96,8 +96,6 @@ void expectColor(Vec3 got, Vec3 want, double tol = 1e-9) {
     EXPECT_NEAR(got.y, want.y, tol);
     EXPECT_NEAR(got.z, want.z, tol);
 }
-
-}  // namespace
 
 // Measured: ambient <.3,.2,.1> on rgb <.5,.6,.7> under ambient_light <1,2,.5> gives
 // <.15,.24,.035>; emission is not multiplied by ambient_light.
@@ -681,3 +679,5 @@ TEST(PovShading, PathInfoOfPovRayScenes) {
     EXPECT_EQ(info.blockedLights, 1);
     EXPECT_NEAR(info.t, 3.0, 1e-6);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 using rays::test::readFile;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const fs::path kDir = fs::path(RAYS_SOURCE_DIR) / "tests" / "regressions";
 
@@ -175,10 +175,6 @@ TEST(RegressionsPng, EmptyIdatChunkInAValidPngIsHarmless) {
     EXPECT_EQ(back.pixels, img.pixels);
 }
 
-}  // namespace
-
-namespace {
-
 // Size-scaling mode (fuzz/run.sh --scaled): "@@" regions repeated 2^(first byte mod 18) times.
 TEST(FuzzScaling, RegionsAreRepeatedByTheFirstBytesPowerOfTwo) {
     const std::string in = std::string("\x03") + "f@@ 1@@\n";
@@ -210,4 +206,4 @@ TEST(FuzzScaling, EverySeedRunsThroughItsTarget) {
     EXPECT_GE(seeds, 10u);
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

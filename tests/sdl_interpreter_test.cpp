@@ -8,7 +8,7 @@
 #include "support/sdl_run.h"
 
 namespace rays {
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 using test::runSdl;
 
@@ -284,5 +284,5 @@ TEST(SdlOptions, ClockImageSizeAndDeclares) {
               "0.25 3 320");
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

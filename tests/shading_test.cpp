@@ -10,7 +10,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 Material mat(double kd, double ks, double rough) {
     Material m;
@@ -28,8 +28,6 @@ Scene sceneFrom(const std::string& body) {
     return parseScene("camera { location <0,0,14> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n" + body,
                       "t.pov", opt);
 }
-
-}  // namespace
 
 TEST(Shading, BlinnPhongMatchesCourseFormula) {
     const Material m = mat(0.4, 0.5, 0.5);
@@ -216,3 +214,5 @@ TEST(Shading, ClearlyFacingAwayAgreesWithTheNormalisedTest) {
     EXPECT_FALSE(clearlyFacingAway({0, 0, 0}, {0, 0, 1}));   // light at the point
     EXPECT_FALSE(clearlyFacingAway({0, 0, 1e-3}, {0, 0, 1}));
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -18,7 +18,7 @@ using rays::test::readFile;
 using rays::test::runProcess;
 using rays::test::TempDir;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 const fs::path kScenes = fs::path(RAYS_SOURCE_DIR) / "scenes";
 
@@ -102,4 +102,4 @@ TEST(ShippedScenes, InstalledRaysRendersAShippedSceneFromAnyFolder) {
     }
 }
 
-}  // namespace
+}}  // namespace RAYS_TEST_UNIT, namespace

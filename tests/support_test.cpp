@@ -96,13 +96,12 @@ TEST(TextCompare, Tokenize) {
 
 // ---- image_compare.h ----
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 std::vector<uint8_t> gradient(int w, int h) {
     std::vector<uint8_t> px(size_t(w) * size_t(h) * 3);
     for (size_t i = 0; i < px.size(); ++i) px[i] = uint8_t((i * 7) % 251);
     return px;
 }
-}  // namespace
 
 TEST(ImageCompare, IdenticalMatches) {
     const auto a = gradient(100, 100);
@@ -250,3 +249,5 @@ TEST(Process, TempDirRemovedUnlessKept) {
     EXPECT_TRUE(std::filesystem::exists(kept));
     std::filesystem::remove_all(kept);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

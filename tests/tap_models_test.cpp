@@ -8,7 +8,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // A record on the plane through p with the (viewer-facing) normal n.
 EdgeRecord facet(Vec3 p, Vec3 n) {
@@ -19,8 +19,6 @@ EdgeRecord facet(Vec3 p, Vec3 n) {
 
 // The eye looks along +z from z = -10.
 Ray eyeRay(double x) { return Ray{{x, 0, -10}, {0, 0, 1}}; }
-
-}  // namespace
 
 TEST(TapModels, TangentPlaneDistance) {
     const EdgeRecord wall = facet({3, 1, 5}, {0, 0, -1});
@@ -61,3 +59,5 @@ TEST(TapModels, UndecidedCasesAreLeftToARay) {
     // One facet seen edge-on.
     EXPECT_EQ(creaseSide(eyeRay(0.2), facet({-1, 0, 3}, {0, 0, -1}), facet({1, 0, 3}, {1, 0, 0})), -1);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -19,7 +19,7 @@
 using namespace rays;
 namespace fs = std::filesystem;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 ImageF renderText(const std::string& text, const std::string& file, int w, int h, ShadingModel shading) {
     ParseOptions opt;
@@ -45,8 +45,6 @@ Image8 codedTexture() {
         }
     return img;
 }
-
-}  // namespace
 
 TEST(Texturing, TangentFramesAreOrthonormal) {
     std::mt19937 rng(3);
@@ -216,3 +214,5 @@ TEST(ShadingModels, PerObjectKeywordAndNames) {
     EXPECT_EQ(s.objects[0].material.shading, int(ShadingModel::Lambert));
     EXPECT_DOUBLE_EQ(s.objects[0].material.sigma, 25);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -11,7 +11,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // A POV-Ray scene (sRGB output) with reflection, an area light and jittered samples.
 Scene testScene() {
@@ -54,8 +54,6 @@ RenderSettings settings(int w, int h) {
     return s;
 }
 
-}  // namespace
-
 TEST(TileRenderer, TilesInAnyOrderMatchRenderByteForByte) {
     const Scene scene = testScene();
     const Bvh bvh(scene.objects);
@@ -87,3 +85,5 @@ TEST(TileRenderer, CountsTheRaysOfItsTiles) {
     tiles.renderTile(0, 0, img);
     EXPECT_EQ(tiles.stats().primaryRays, 16u * 16u);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

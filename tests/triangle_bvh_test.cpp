@@ -15,7 +15,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 struct Mesh {
     std::vector<float> pos;
@@ -211,8 +211,6 @@ void expectAgreement(const Agreement& a) {
     EXPECT_EQ(a.occludedMismatches, 0u);
     EXPECT_GT(a.hits, a.rays / 10);
 }
-
-}  // namespace
 
 TEST(TriangleBvh, SoupMatchesBruteForce) {
     const Mesh m = soup(3000, 1);
@@ -444,3 +442,5 @@ TEST(TriangleBvh, TraversalVariantsGiveTheSameHits) {
     }
     EXPECT_EQ(differ, 0u);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

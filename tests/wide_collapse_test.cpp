@@ -15,7 +15,7 @@
 
 using namespace rays::tribvh;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 double halfArea(const float lo[3], const float hi[3]) {
     const double dx = double(hi[0]) - lo[0], dy = double(hi[1]) - lo[1], dz = double(hi[2]) - lo[2];
@@ -115,8 +115,6 @@ Collapsed inspect(const Collapser::NodeVector& nodes, const BinaryBvh& bin) {
     return c;
 }
 
-}  // namespace
-
 TEST(WideCollapse, ReachesTheLeastTotalAreaOfAnyCollapse) {
     std::mt19937 rng(473);
     int severalNodes = 0;
@@ -172,3 +170,5 @@ TEST(WideCollapse, TwoThreadCollapseEqualsOneThread) {
         }
     }
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace

@@ -12,7 +12,7 @@
 
 using namespace rays;
 
-namespace {
+namespace { namespace RAYS_TEST_UNIT {
 
 // Runs parallelFor(count, threads) and checks each index ran once on a worker in [0, threads).
 void expectEachIndexOnce(int count, int threads, const ProgressFn& progress = {}) {
@@ -25,8 +25,6 @@ void expectEachIndexOnce(int count, int threads, const ProgressFn& progress = {}
     for (int i = 0; i < count; ++i) ASSERT_EQ(hits[size_t(i)].load(), 1) << "index " << i;
     EXPECT_FALSE(badWorker.load());
 }
-
-}  // namespace
 
 TEST(WorkerPool, EveryIndexOnceOnValidWorkers) {
     for (int round = 0; round < 20; ++round) {
@@ -71,3 +69,5 @@ TEST(WorkerPool, JobIsExclusiveUntilWaitedFor) {
     second.wait();
     EXPECT_EQ(ran.load(), 5);
 }
+
+}}  // namespace RAYS_TEST_UNIT, namespace
