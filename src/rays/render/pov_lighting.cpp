@@ -153,6 +153,13 @@ Vec3 povReflectivity(const PovSurface& s, Vec3 C, double cosView, double eta) {
     return r;
 }
 
+Vec3 povMirrorDirection(Vec3 d, Vec3 N, Vec3 Nfacing) {
+    if (dot(d, N) >= 0) return normalize(reflect(d, Nfacing));
+    Vec3 r = normalize(reflect(d, N));
+    if (const double into = dot(r, Nfacing); into < 0) r -= (2 * into) * Nfacing;
+    return r;
+}
+
 Vec3 povReflectionExponent(Vec3 reflected, double exponent) {
     if (exponent == 1) return reflected;
     Vec3 out;

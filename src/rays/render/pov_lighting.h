@@ -62,6 +62,14 @@ double fresnelReflectance(double cosIncidence, double eta);
 /// metallic (povMetallicTint at cosView).
 Vec3 povReflectivity(const PovSurface& s, Vec3 C, double cosView, double eta);
 
+/// The mirror direction for a ray of direction d at a surface whose normal pattern tilts the normal
+/// Nfacing (the shape's, facing the viewer) to N. POV-Ray 3.7 keeps the reflected ray on the viewer's
+/// side: where the tilted normal faces away from the ray it mirrors about Nfacing; where the ray
+/// mirrored about N would go into the surface it is mirrored back about the surface's plane
+/// (measured: a mirror plane with `normal { gradient z }` seen at grazing angles, the reflected
+/// direction read from a sky coloured by direction; docs/povray-lighting.md).
+Vec3 povMirrorDirection(Vec3 d, Vec3 N, Vec3 Nfacing);
+
 /// The reflected colour as the reflection's exponent shapes it: c^(1/exponent) per channel.
 Vec3 povReflectionExponent(Vec3 reflected, double exponent);
 

@@ -279,6 +279,7 @@ private:
         const Material* material = nullptr;
         const PovSurface* surface = nullptr;
         Vec3 P, N, C;
+        Vec3 Nfacing;        ///< the shape's normal facing the viewer, before any normal pattern
         Vec3 uv;             ///< the surface's (u, v, 0) when hasUV (uv-mapped patterns)
         bool hasUV = false;
         const Vec3* uvPoint() const { return hasUV ? &uv : nullptr; }

@@ -64,13 +64,12 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
     Vec3 through(1.0);  // what the layers above let through: it filters the light a layer sends back
     Vec3 color;
     PovGathered gathered;  // radiosity's light at the point, found once for all layers
-    const Vec3 Nraw = pt.entering ? hit.normal : -hit.normal;
     for (int i = 0; i < count && n < kMaxLayers && through != Vec3{}; ++i) {
         const PovLayer& l = scene_.povTextures.layers[size_t(begin + i)];
         PovLayerAt& a = layers[n++];
         a.surface = &l.surface;
         // The normal facing the viewer, tilted (as POV-Ray does, measured).
-        a.N = l.surface.normal >= 0 ? povNormalAt(scene_, l.surface, pt.P, Nraw) : Nraw;
+        a.N = l.surface.normal >= 0 ? povNormalAt(scene_, l.surface, pt.P, pt.Nfacing) : pt.Nfacing;
         const PovPigmentSample c = povLayerPigment(scene_, l, pt.P, a.N, pt.uvPoint());  // slope reads the tilted normal
         a.C = c.color, a.filter = c.filter, a.transmit = c.transmit;
         if (i == 0 && (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0))
@@ -78,7 +77,7 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
         a.opacity = povOpacity(a.C, a.filter, a.transmit, scene_.pov.version);
         a.R = povReflectivity(l.surface, a.C, std::max(0.0, -dot(a.N, ray.dir)), povFresnelEta(pt, r, eta));
         a.through = through;
-        color += (a.opacity * through) * povAmbientTerm(l.surface.finish, a.C, pt.P, Nraw, r, ctx, gathered);
+        color += (a.opacity * through) * povAmbientTerm(l.surface.finish, a.C, pt.P, pt.Nfacing, r, ctx, gathered);
         Vec3 tint = povFilterTint(a.C, a.filter, a.transmit);
         if (l.surface.finish.conserveEnergy) tint *= Vec3(1.0) - a.R;
         a.R *= povReflectionIrid(l.surface.finish, a.N, ray.dir, pt.P);
@@ -109,7 +108,7 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
     // What all the layers let through goes on; total internal reflection replaces it and the
     // reflections by one reflected ray of full weight (as for a plain texture).
     if (!povTransmitted(ray, pt, r, through, ctx, info, color))
-        return color + trace(normalize(reflect(ray.dir, pt.N)), reflected);
+        return color + trace(povMirrorDirection(ray.dir, pt.N, pt.Nfacing), reflected);
     // Each layer reflects with its own finish and normal, not filtered by the layers above
     // (measured); its ray's weight counts what they let through (see povGrey).
     Vec3 lastDir, lastSeen;
@@ -120,7 +119,7 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
         PovRay child = reflected;
         child.weight = r.weight * maxComponent(a.R) * povGrey(a.through);
         if (child.weight < scene_.pov.adcBailout) continue;
-        const Vec3 dir = normalize(reflect(ray.dir, a.N));
+        const Vec3 dir = povMirrorDirection(ray.dir, a.N, pt.Nfacing);
         if (!traced || !(dir == lastDir)) {  // layers sharing a normal share the reflected ray
             lastSeen = trace(dir, child);
             lastDir = dir;

@@ -161,6 +161,7 @@ Tracer::PovPoint Tracer::povPointOf(const Ray& ray, const Hit& hit, const Object
     pt.uv = Vec3{hit.u, hit.v, 0};
     const double facing = dot(ray.dir, hit.geomNormal);
     pt.entering = facing < 0;
+    pt.Nfacing = pt.entering ? hit.normal : -hit.normal;
     // A ray touching the surface exactly tangentially (an orthographic camera's rays along a sphere's
     // rim) does not go in: it would not meet the surface again on its way out.
     pt.intoInterior = facing != 0 && !r.isInside(hit.object, o.material.pov);
@@ -213,8 +214,7 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     // The normal pattern tilts the shading normal (lighting, highlights, reflection, refraction);
     // inside or outside is still decided by the geometric normal. POV-Ray tilts the normal facing
     // the viewer (measured: a plane seen from its back tilts as one seen from its front).
-    const Vec3 facing = pt.entering ? hit.normal : -hit.normal;
-    pt.N = pt.surface->normal >= 0 ? povNormalAt(scene_, *pt.surface, pt.P, facing) : facing;
+    pt.N = pt.surface->normal >= 0 ? povNormalAt(scene_, *pt.surface, pt.P, pt.Nfacing) : pt.Nfacing;
     pt.C = o.material.color;
     pt.filter = o.material.filter;
     pt.transmit = pt.surface->transmit;
@@ -229,7 +229,7 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     const PovSurface& s = *pt.surface;
     const double opacity = povOpacity(pt.C, pt.filter, pt.transmit, scene_.pov.version);
     PovGathered gathered;
-    Vec3 color = opacity * povAmbientTerm(s.finish, pt.C, pt.P, pt.entering ? hit.normal : -hit.normal, r, ctx, gathered);
+    Vec3 color = opacity * povAmbientTerm(s.finish, pt.C, pt.P, pt.Nfacing, r, ctx, gathered);
     ctx.surfaceObject = hit.object;
     const int blocked = povLights(pt, opacity, -ray.dir, ctx, color, info && r.primary);
     ctx.surfaceObject = -1;
@@ -260,10 +260,10 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
     Vec3 color;
     // Total internal reflection: one reflected ray with the full weight replaces both the
     // reflection and the transmission (measured).
-    if (!povTransmitted(ray, pt, r, T, ctx, info, color)) return trace(normalize(reflect(ray.dir, pt.N)), reflected);
+    if (!povTransmitted(ray, pt, r, T, ctx, info, color)) return trace(povMirrorDirection(ray.dir, pt.N, pt.Nfacing), reflected);
     reflected.weight = r.weight * maxComponent(R);
     if (maxComponent(R) > 0 && reflected.weight >= scene_.pov.adcBailout) {
-        const Vec3 seen = trace(normalize(reflect(ray.dir, pt.N)), reflected);
+        const Vec3 seen = trace(povMirrorDirection(ray.dir, pt.N, pt.Nfacing), reflected);
         color += R * povReflectionExponent(seen, s.finish.reflectionExponent);
     }
     return color;
@@ -302,7 +302,11 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
     Vec3 dir = ray.dir;
     int level = r.level;  // passing straight through (ior 1) keeps the level (measured)
     if (ior != 1) {
-        if (!refractDir(ray.dir, pt.N, eta, dir)) return false;
+        // A tilted normal that faces away from the ray is turned to face it, so that the ray
+        // refracts back to the viewer's side (measured with POV-Ray 3.7: a glass plane with
+        // `normal { gradient z }` seen at grazing angles; see povMirrorDirection).
+        const Vec3 n = dot(ray.dir, pt.N) > 0 ? -pt.N : pt.N;
+        if (!refractDir(ray.dir, n, eta, dir)) return false;
         ++level;
     }
     PovRay through{.level = level,
