@@ -482,6 +482,31 @@ TEST(PovShapesSuperellipsoid, HitsLieOnTheSurfaceForWholeAndFractionalPowers) {
     }
 }
 
+TEST(PovShapesSuperellipsoid, RaysFromInsideLeaveThroughTheSurface) {
+    // A convex superellipsoid (e, n <= 2) takes the stretch from a start inside to the box's far side
+    // as its bracket; a non-convex one (n = 2.5, 3) samples as from outside. Both exit on f = 1,
+    // going outwards, and the unit sphere <1, 1> exactly where it should.
+    const Scene sphere = build("superellipsoid { <1, 1> }");
+    const Hit out = shoot(sphere, {0.2, 0.1, 0}, {1, 0, 0});
+    EXPECT_NEAR(out.t, std::sqrt(0.99) - 0.2, 1e-9);
+    EXPECT_TRUE(near(out.normal, {std::sqrt(0.99), 0.1, 0}));
+    for (const Vec3 en : {Vec3{0.05, 0.05, 0}, Vec3{0.5, 0.25, 0}, Vec3{2, 2, 0}, Vec3{1, 2.5, 0}, Vec3{0.3, 3, 0}}) {
+        const Scene s = build("superellipsoid { <" + std::to_string(en.x) + ", " + std::to_string(en.y) + "> }");
+        const double e = en.x, n = en.y;
+        for (int i = 0; i < 40; ++i) {
+            const Vec3 from{0.02 * (i % 7) - 0.06, 0.015 * (i % 5) - 0.03, 0.01 * (i % 3)};
+            const Vec3 dir = normalize(Vec3{std::cos(0.7 * i), std::sin(0.7 * i), 0.9 * std::sin(1.3 * i)});
+            const Hit h = shoot(s, from, dir);
+            ASSERT_TRUE(h.valid()) << e << " " << n << " ray " << i;
+            const Vec3 p = from + h.t * dir;
+            const double f = std::pow(std::pow(std::fabs(p.x), 2 / e) + std::pow(std::fabs(p.y), 2 / e), e / n) +
+                             std::pow(std::fabs(p.z), 2 / n);
+            EXPECT_NEAR(f, 1, 1e-7) << e << " " << n << " ray " << i;
+            EXPECT_GT(dot(h.normal, dir), 0) << e << " " << n << " ray " << i;
+        }
+    }
+}
+
 TEST(PovShapesSuperellipsoid, PixelsMatchPovRay) {
     const Scene s = build(
         "global_settings { assumed_gamma 1.0 }\n"
