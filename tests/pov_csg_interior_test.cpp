@@ -94,5 +94,34 @@ TEST(PovCsgInterior, ShadowRaysLeavingAnOpenObjectTheyWereNotInDoNotFade) {
     EXPECT_NEAR(underCone.x, bare.x, 1e-9);
 }
 
+// A ray refracts by the ratio of the indices on the two sides of a surface: the interior it is in
+// (the one entered last; air when none) and the one it enters, or the one it leaves and the one it
+// is then in. POV-Ray 3.7's directions (measured: an orthographic ray, 16-bit renders of a sky
+// coloured by direction, one channel at a time) for half-spaces y < 0 of ior 1.5 and y < −1 of ior
+// 1.2 (or 1, or cut out of the glass by a difference), crossed from above at 40° and from below at
+// 20°: after parallel surfaces sin θ = sin θ₀·n₀/n, whatever lies between.
+TEST(PovCsgInterior, RaysRefractByTheIndicesOnBothSides) {
+    const std::string clear = " pigment { rgbt 1 } finish { ambient 0 diffuse 0 } ";
+    const std::string sky = "sky_sphere { pigment { average pigment_map {\n"
+                            "  [1 function { (y + 1) / 2 } color_map { [0 rgb 0] [1 rgb <0, 2, 0>] }]\n"
+                            "  [1 function { (z + 1) / 2 } color_map { [0 rgb 0] [1 rgb <0, 0, 2>] }] } } }\n";
+    const std::string glass = "plane { y, 0" + clear + "interior { ior 1.5 } }\n";
+    auto leaving = [&](const std::string& objects, Vec3 from, double degrees, bool up) {
+        const double a = degrees * 3.14159265358979323846 / 180;
+        const Vec3 d{0, up ? std::cos(a) : -std::cos(a), std::sin(a)};
+        return 2.0 * trace(load(sky + objects), Ray{from, d}) - Vec3(1.0);
+    };
+    const std::string inner12 = "plane { y, -1" + clear + "interior { ior 1.2 } }";
+    const std::string inner1 = "plane { y, -1" + clear + "}";
+    const Vec3 above{0, 1, 0}, below{0, -5, 0};
+    EXPECT_NEAR(leaving(glass + inner12, above, 40, false).z, 0.5357, 2e-3);  // sin 40°/1.2
+    EXPECT_NEAR(leaving(glass + inner1, above, 40, false).z, 0.6428, 2e-3);   // sin 40°
+    EXPECT_NEAR(leaving("difference { " + glass + inner1 + " }", above, 40, false).z, 0.6428, 2e-3);
+    EXPECT_NEAR(leaving("difference { " + glass + inner12 + " }", above, 40, false).z, 0.5357, 2e-3);
+    const std::string camera = "camera { location <0, -5, 0> look_at <0, -4, 0> }\n";  // inside both
+    EXPECT_NEAR(leaving(camera + glass + inner12, below, 20, true).z, 0.4104, 2e-3);  // 1.2·sin 20°
+    EXPECT_NEAR(leaving(camera + glass + inner1, below, 20, true).z, 0.3420, 2e-3);   // sin 20°
+}
+
 }}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -406,6 +406,13 @@ private:
     /// leaves an object while inside another (a glass in a sky sphere, or the camera inside a
     /// plane's half-space): there POV-Ray reflects nothing by fresnel (measured), as for ratio 1.
     static double povFresnelEta(const PovPoint& pt, const PovRay& r, double eta);
+    /// The ratio n_from/n_to of the indices on the two sides of pt, as POV-Ray 3.7 takes them: the
+    /// interior the ray is in (the one it entered last, air when none) and the one it enters, or
+    /// the one it leaves and the one it is then in (measured: nested half-spaces of ior 1.5 and
+    /// 1.2 or 1, and a cavity cut out of glass by a difference).
+    double povEta(const PovPoint& pt, const PovRay& r) const;
+    /// The ior of the interior the ray entered by `in` (its surface's; the object's own for −1).
+    double povIorOf(const PovRay::Inside& in) const;
     /// Methods 1 and 2: adds [a, b] in `steps` equal steps sampled in their middles.
     void povMediaMidpoints(const PovMediaSet& set, const Ray& ray, double a, double b, int steps, TraceContext& ctx,
                            PovMediaSum& sum) const;

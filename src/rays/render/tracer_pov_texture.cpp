@@ -57,8 +57,7 @@ Vec3 Tracer::shadePovTextured(const Ray& ray, const Hit& hit, const PovRay& r, V
 Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int begin, int count, const PovRay& r,
                             TraceContext& ctx, PathInfo* info) const {
     const Object& o = shadedObject(scene_.objects, hit);
-    const double ior = pt.surface->interior.ior;
-    const double eta = pt.intoInterior ? 1.0 / ior : ior;
+    const double eta = povEta(pt, r);
     PovLayerAt layers[kMaxLayers];
     int n = 0;
     Vec3 through(1.0);  // what the layers above let through: it filters the light a layer sends back

@@ -101,6 +101,20 @@ std::vector<Tracer::PovRay::Inside> Tracer::povCameraInside() const {
     return out;
 }
 
+double Tracer::povIorOf(const PovRay::Inside& in) const {
+    if (in.surface >= 0 && size_t(in.surface) < scene_.povSurfaces.size()) return scene_.povSurfaces[size_t(in.surface)].interior.ior;
+    return povSurfaceOf(scene_.objects[size_t(in.object)].material).interior.ior;
+}
+
+double Tracer::povEta(const PovPoint& pt, const PovRay& r) const {
+    const double ior = pt.surface->interior.ior;
+    const int surface = pt.material->pov;
+    if (pt.intoInterior) return (r.insideCount > 0 ? povIorOf(r.inside[r.insideCount - 1]) : 1.0) / ior;
+    for (int i = r.insideCount - 1; i >= 0; --i)  // the innermost interior other than the one left
+        if (!r.inside[i].is(pt.object, surface)) return ior / povIorOf(r.inside[i]);
+    return ior;
+}
+
 double Tracer::povFresnelEta(const PovPoint& pt, const PovRay& r, double eta) {
     if (pt.intoInterior) return eta;
     for (int i = 0; i < r.insideCount; ++i)
@@ -245,8 +259,7 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
 Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, TraceContext& ctx,
                           PathInfo* info) const {
     const PovSurface& s = *pt.surface;
-    const double ior = s.interior.ior;
-    const double eta = pt.intoInterior ? 1.0 / ior : ior;
+    const double eta = povEta(pt, r);
     Vec3 R = povReflectivity(s, pt.C, std::max(0.0, -dot(pt.N, ray.dir)), povFresnelEta(pt, r, eta));
     Vec3 T = povFilterTint(pt.C, pt.filter, pt.transmit);
     if (s.finish.conserveEnergy) T *= Vec3(1.0) - R;
@@ -297,11 +310,10 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
 bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r, Vec3 T, TraceContext& ctx,
                             PathInfo* info, Vec3& color) const {
     if (!(maxAbsComponent(T) > 0)) return true;
-    const double ior = pt.surface->interior.ior;
-    const double eta = pt.intoInterior ? 1.0 / ior : ior;
+    const double eta = povEta(pt, r);
     Vec3 dir = ray.dir;
-    int level = r.level;  // passing straight through (ior 1) keeps the level (measured)
-    if (ior != 1) {
+    int level = r.level;  // passing straight through (the same index on both sides) keeps the level (measured)
+    if (eta != 1) {
         // A tilted normal that faces away from the ray is turned to face it, so that the ray
         // refracts back to the viewer's side (measured with POV-Ray 3.7: a glass plane with
         // `normal { gradient z }` seen at grazing angles; see povMirrorDirection).
