@@ -400,6 +400,10 @@ private:
     void povStartInside(Vec3 origin, PovRay& r) const;
     /// Whether p is inside o (a CSG's inside, or the shape's).
     static bool povHolds(const Object& o, Vec3 p);
+    /// Surfaces nearer to each other than kTouching·max(1, t) along a ray touch (povTouching).
+    static constexpr double kTouching = 1e-9;
+    /// hit, or where the ray leaves an object there, another object's surface touching it (povTouching's comment).
+    Hit povTouching(const Ray& ray, const Hit& hit, const PovRay& r) const;
     /// The objects whose inside holds the camera's location (POV-Ray scenes): camera rays start in them.
     std::vector<PovRay::Inside> povCameraInside() const;
     /// The index ratio the fresnel reflection at pt uses: the refraction's, except where the ray
