@@ -4,6 +4,7 @@
 #include <random>
 
 #include "rays/accel/bvh.h"
+#include "rays/math/abs_power.h"
 #include "rays/scene/object.h"
 #include "support/objects.h"
 
@@ -299,6 +300,23 @@ TEST(Bvh, EmptyAndCoincidentCentroids) {
     const Hit h = bvh.closest(same, Ray{{0, 0, 5}, {0, 0, -1}}, 1e-6, kInfinity);
     ASSERT_TRUE(h.valid());
     EXPECT_DOUBLE_EQ(h.t, 4);
+}
+
+TEST(AbsPower, MatchesPowForWholeHalfAndOtherExponents) {
+    // Whole exponents by squaring, whole-and-a-half ones with a square root, others by exp2·log2:
+    // all within a few ulps of std::pow of |x|, zero included.
+    for (const double k : {0.0, 0.5, 1.0, 2.0, 2.5, 3.0, 7.5, 40.0, 64.0, 1.7, 0.3, 65.0, 2.0 / 0.8}) {
+        const AbsPower p(k);
+        for (const double x : {0.0, 1e-3, 0.37, -0.37, 1.0, 1.5, -2.25, 7.0}) {
+            const double want = std::pow(std::fabs(x), k);
+            EXPECT_NEAR(p(x), want, 1e-13 * std::max(1.0, want)) << k << " " << x;
+        }
+    }
+    EXPECT_EQ(AbsPower(2.5).whole, 2);
+    EXPECT_TRUE(AbsPower(2.5).half);
+    EXPECT_EQ(AbsPower(3).whole, 3);
+    EXPECT_FALSE(AbsPower(3).half);
+    EXPECT_EQ(AbsPower(1.7).whole, -1);
 }
 
 }}  // namespace RAYS_TEST_UNIT, namespace

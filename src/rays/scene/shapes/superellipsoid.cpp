@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rays/math/abs_power.h"
 #include "rays/math/regula_falsi.h"
 
 namespace rays {
@@ -16,29 +17,9 @@ namespace {
 
 constexpr int kSamples = 12;  // per piece of the ray
 
-// |x|^k for the exponents 2/e, 2/n and e/n: by repeated squaring when k is a whole number up to
-// 64 (2/e for e = 1, 0.5, 0.25, 0.1, 0.05, ...: the common roundnesses), else as exp2 of the scaled
-// log2 (a zero coordinate: log2 0 = −∞ and exp2 −∞ = 0, as the powers with positive exponents give).
-struct Power {
-    double k = 1;
-    int whole = -1;  ///< k when it is a whole number in [0, 64], else −1
-    explicit Power(double exponent) : k(exponent) {
-        const double r = std::nearbyint(exponent);
-        if (r >= 0 && r <= 64 && std::fabs(exponent - r) <= 1e-12 * r) whole = int(r);
-    }
-    double operator()(double x) const {
-        x = std::fabs(x);
-        if (whole < 0) return std::exp2(k * std::log2(x));
-        double out = 1, base = x;
-        for (int m = whole; m > 0; m >>= 1, base *= base)
-            if (m & 1) out *= base;
-        return out;
-    }
-};
-
 // The superellipsoid's three powers.
 struct SuperPowers {
-    Power u, v, ratio;  ///< 2/e, 2/n, e/n
+    AbsPower u, v, ratio;  ///< 2/e, 2/n, e/n
     SuperPowers(double e, double n) : u(2 / e), v(2 / n), ratio(e / n) {}
 };
 
