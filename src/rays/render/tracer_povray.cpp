@@ -93,7 +93,9 @@ Hit Tracer::povFirstHit(const Ray& ray, bool reflected) const {
 Hit Tracer::povTouching(const Ray& ray, const Hit& hit, const PovRay& r) const {
     if (!r.isInside(hit.object, shadedObject(scene_.objects, hit).material.pov)) return hit;
     const Hit other = bvh_.closest(scene_.objects, ray, hit.t, hit.t + kTouching * std::max(1.0, hit.t));
-    return other.valid() && other.object != hit.object ? other : hit;
+    if (!other.valid() || other.object == hit.object) return hit;
+    const PovSurface& s = povSurfaceOf(shadedObject(scene_.objects, other).material);
+    return (r.reflected ? s.noReflection : s.noImage) ? hit : other;  // not one this ray passes by
 }
 
 bool Tracer::povHolds(const Object& o, Vec3 p) {
@@ -113,8 +115,9 @@ std::vector<Tracer::PovRay::Inside> Tracer::povCameraInside() const {
 }
 
 double Tracer::povIorOf(const PovRay::Inside& in) const {
-    if (in.surface >= 0 && size_t(in.surface) < scene_.povSurfaces.size()) return scene_.povSurfaces[size_t(in.surface)].interior.ior;
-    return povSurfaceOf(scene_.objects[size_t(in.object)].material).interior.ior;
+    const bool own = in.surface >= 0 && size_t(in.surface) < scene_.povSurfaces.size();
+    return (own ? scene_.povSurfaces[size_t(in.surface)] : povSurfaceOf(scene_.objects[size_t(in.object)].material))
+        .interior.ior;
 }
 
 double Tracer::povEta(const PovPoint& pt, const PovRay& r) const {
