@@ -6,9 +6,10 @@
 #   2. build-tsan: the project with -fsanitize=thread and the tests that render or filter with
 #      several threads (TSAN_TESTS below).
 # Usage: scripts/sanitize.sh [asan|tsan]... (default: both). Exit status non-zero on the first failure.
-# On 2 cores on 2026-12-07, built cold without ccache from a fresh clone (.ci/run): ASan build
-# about 415 s; TSan 176 s, 66 s of it the 65 tests. The ASan suite: 526 s as one CTest process per
-# test (1,237 tests), 150 s in shards (1,235 GoogleTest tests; measured separately, incremental).
+# On 2 cores on 2026-12-07, built cold without ccache from a fresh clone (.ci/run): the ASan stage 428 s
+# (build, and the suite in shards: 150 s measured alone; as one CTest process per test it was
+# 526 s), the TSan stage 161 s, 60 s of it the 65 tests. The test files compile as unity batches
+# (tests/CMakeLists.txt; their build times: docs/performance.md "Build time").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
