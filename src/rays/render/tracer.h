@@ -309,9 +309,9 @@ private:
     Vec3 povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, TraceContext& ctx, PathInfo* info) const;
     /// The recursion arguments of a ray reflected at pt (its weight still r's).
     PovRay povReflectedRay(const PovPoint& pt, const PovRay& r) const;
-    /// Adds to color what the ray transmitted at pt brings, weighted by T (bent by the interior's
-    /// ior about pt.N); false, adding nothing, under total internal reflection.
-    bool povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r, Vec3 T, TraceContext& ctx,
+    /// Adds to color what the ray transmitted at pt brings, weighted by T (bent about pt.N by the
+    /// index ratio eta, povEta's); false, adding nothing, under total internal reflection.
+    bool povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r, double eta, Vec3 T, TraceContext& ctx,
                         PathInfo* info, Vec3& color) const;
     // Layered and patterned textures (tracer_pov_texture.cpp).
     /// One layer at the point being shaded: its surface, pigment, normal (facing the viewer),

@@ -106,7 +106,7 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
     const PovRay reflected = povReflectedRay(pt, r);
     // What all the layers let through goes on; total internal reflection replaces it and the
     // reflections by one reflected ray of full weight (as for a plain texture).
-    if (!povTransmitted(ray, pt, r, through, ctx, info, color))
+    if (!povTransmitted(ray, pt, r, eta, through, ctx, info, color))
         return color + trace(povMirrorDirection(ray.dir, pt.N, pt.Nfacing), reflected);
     // Each layer reflects with its own finish and normal, not filtered by the layers above
     // (measured); its ray's weight counts what they let through (see povGrey).

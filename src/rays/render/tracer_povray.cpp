@@ -288,7 +288,7 @@ Vec3 Tracer::povSecondary(const Ray& ray, const PovPoint& pt, const PovRay& r, T
     Vec3 color;
     // Total internal reflection: one reflected ray with the full weight replaces both the
     // reflection and the transmission (measured).
-    if (!povTransmitted(ray, pt, r, T, ctx, info, color)) return trace(povMirrorDirection(ray.dir, pt.N, pt.Nfacing), reflected);
+    if (!povTransmitted(ray, pt, r, eta, T, ctx, info, color)) return trace(povMirrorDirection(ray.dir, pt.N, pt.Nfacing), reflected);
     reflected.weight = r.weight * maxComponent(R);
     if (maxComponent(R) > 0 && reflected.weight >= scene_.pov.adcBailout) {
         const Vec3 seen = trace(povMirrorDirection(ray.dir, pt.N, pt.Nfacing), reflected);
@@ -322,10 +322,9 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
     return reflected;
 }
 
-bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r, Vec3 T, TraceContext& ctx,
+bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r, double eta, Vec3 T, TraceContext& ctx,
                             PathInfo* info, Vec3& color) const {
     if (!(maxAbsComponent(T) > 0)) return true;
-    const double eta = povEta(pt, r);
     Vec3 dir = ray.dir;
     int level = r.level;  // passing straight through (the same index on both sides) keeps the level (measured)
     if (eta != 1) {
