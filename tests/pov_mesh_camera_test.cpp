@@ -117,6 +117,30 @@ TEST(PovMeshCamera, Distribution0TakesRayKFromMeshK) {
     EXPECT_EQ(faceX(c, 1, 2, 3, 3, 1), -1);  // the second mesh has 4 faces: that ray is not shot
 }
 
+TEST(PovMeshCamera, CopiesOfADeclaredMeshShareItsFacesAndKeepTheirOwnPlaces) {
+    // POV-Ray's ess-ortho-camera.pov takes 100 translated copies of one declared mesh: its faces
+    // are kept once, each copy only its transformation.
+    const std::string decl = "#declare M = " + faces(400) + "\n";
+    auto copies = [&](int n) {
+        std::string s = decl + "camera { mesh_camera { " + std::to_string(n) + " 0 ";
+        for (int i = 0; i < n; ++i) s += "mesh { M translate <0, " + std::to_string(i) + ", 0> } ";
+        return loadScene(s + "} }\n").cameras.at(0);
+    };
+    const Camera one = copies(1), many = copies(40);
+    EXPECT_LT(many.mesh->memoryBytes(), one.mesh->memoryBytes() + 40 * 512);  // a copy of the faces: 19,200 bytes
+    for (int k : {0, 7, 39}) {
+        const Ray r = pixelRay(many, 3, 0, 10, 10, k);
+        EXPECT_NEAR(r.origin.x, 30, 1e-9) << k;
+        EXPECT_NEAR(r.origin.y, k - 1.0 / 3, 1e-9) << k;
+        EXPECT_EQ(r.dir, Vec3(0, 0, 1)) << k;
+    }
+    // Copies under distribution 1 are counted as one list all the same.
+    const Camera summed = loadScene("#declare N = " + faces(50) +
+                                    "\ncamera { mesh_camera { 1 1 mesh { N } mesh { N translate 1000*x } } }\n")
+                              .cameras.at(0);
+    EXPECT_NEAR(faceX(summed, 9, 6, 10, 10), 1090, 1e-9);  // face 50 + 9: the copy's face 9
+}
+
 TEST(PovMeshCamera, Distribution1CountsTheMeshesAsOneList) {
     const Camera c = loadCamera("mesh_camera { 1 1 " + faces(2) + " " + faces(3, 1000) + " }");
     EXPECT_EQ(faceX(c, 1, 0, 2, 3), 10);

@@ -56,8 +56,14 @@ private:
     /// mesh_camera (scene_builder_mesh_camera.cpp): the block (its keyword at `at`) → its MeshCamera (offset and
     /// reversed left to the camera's location and direction); one of its meshes into mc, its
     /// faces' uvs appended to uvs (distribution 3).
+    /// Distributions 0–2 keep each distinct mesh's faces once: a mesh's entries other than its
+    /// transformations (the same entries for every copy of one declared mesh) and its faces.
+    struct CameraMeshShape {
+        std::vector<const Entry*> entries;
+        size_t first = 0, count = 0;
+    };
     std::shared_ptr<MeshCamera> meshCamera(const Item& block, const sdl::Loc& at);
-    void addCameraMesh(MeshCamera& mc, std::vector<double>& uvs, const Item& item);
+    void addCameraMesh(MeshCamera& mc, std::vector<double>& uvs, std::vector<CameraMeshShape>& shapes, const Item& item);
     void addLight(const Item& light, const Transform& toWorld);
     void addObject(const Item& object, const Transform& parent, const Appearance* inherited, int depth);
     void addPrimitive(Kw kind, const std::vector<const Value*>& args, const sdl::Loc& at, const Transform& toWorld,

@@ -37,11 +37,12 @@ std::shared_ptr<MeshCamera> SceneBuilder::meshCamera(const Item& block, const sd
     mc->distribution = MeshCamera::Distribution(int(distribution));
     if (numbers.size() > 2 && toFloat(*numbers[2]) > kPovEpsilon) mc->maxDistance = toFloat(*numbers[2]);
     std::vector<double> uvs;  // distribution 3: six per face
+    std::vector<CameraMeshShape> shapes;
     for (const Entry& e : block.entries) {
         if (e.positional() || e.key == kMapEntry) continue;
         if (e.kw() == Kw::smooth) mc->smooth = true;
         if ((e.kw() == Kw::mesh || e.kw() == Kw::mesh2) && !e.args.empty() && e.args[0].type == VType::Item)
-            addCameraMesh(*mc, uvs, e.args[0].item());
+            addCameraMesh(*mc, uvs, shapes, e.args[0].item());
     }
     const bool uv = mc->distribution == MeshCamera::Distribution::Uv;
     if (uv) mc->uvGrid = UvFaceGrid(std::move(uvs));
@@ -54,40 +55,56 @@ std::shared_ptr<MeshCamera> SceneBuilder::meshCamera(const Item& block, const sd
     return mc;
 }
 
-// One mesh of a mesh_camera in world space. A face's normal is POV-Ray's: (c − a) × (b − a) for
-// corners a, b, c (measured: the face <0,1,0>, <1,-1,0>, <-1,-1,0> looks to +z), turned into world
-// space as a normal (measured: `scale <1,1,-1>` on that face looks to −z, `scale <-1,1,1>` to +z).
-void SceneBuilder::addCameraMesh(MeshCamera& mc, std::vector<double>& uvs, const Item& item) {
+// One mesh of a mesh_camera. A face's normal is POV-Ray's: (c − a) × (b − a) for corners a, b, c
+// (measured: the face <0,1,0>, <1,-1,0>, <-1,-1,0> looks to +z), turned into world space as a
+// normal (measured: `scale <1,1,-1>` on that face looks to −z, `scale <-1,1,1>` to +z).
+// Distributions 0–2 keep the faces in the mesh's own space, once for all copies of one declared
+// mesh (their entries are the same), and a placement per copy; distribution 3 keeps every mesh's
+// faces in world space for its uv look-up.
+void SceneBuilder::addCameraMesh(MeshCamera& mc, std::vector<double>& uvs, std::vector<CameraMeshShape>& shapes,
+                                 const Item& item) {
     std::vector<const Entry*> entries;
     Item m;
     m.kind = unrollObject(item, entries, 0);
     m.loc = item.loc;
     Transform toWorld;
+    std::vector<const Entry*> shape;
     for (const Entry* e : entries) {
         if (isTransformEntry(*e))
             applyTransform(*e, toWorld);
         else
-            m.entries.push_back(*e);
+            shape.push_back(e);
     }
     if (!toWorld.isUsable())
         throw Error(notes_.where(item.loc) + ": error: the camera mesh's transformation overflows or is singular");
+    const Transform toObject = toWorld.inverse();
+    const bool uv = mc.distribution == MeshCamera::Distribution::Uv;
+    if (!uv)
+        for (const CameraMeshShape& known : shapes)
+            if (known.entries == shape) {
+                mc.placements.push_back(MeshCameraPlacement{known.first, known.count, toWorld, toObject});
+                mc.meshEnd.push_back((mc.meshEnd.empty() ? 0 : mc.meshEnd.back()) + known.count);
+                return;
+            }
+    for (const Entry* e : shape) m.entries.push_back(*e);
     std::string problem;
     const std::unique_ptr<Mesh> mesh = meshFromItem(m, problem);
     if (!mesh) throw Error(notes_.where(item.loc) + ": error: " + problem);
     countObjects(mesh->triangleCount(), item.loc);
-    const Transform toObject = toWorld.inverse();
-    const bool uv = mc.distribution == MeshCamera::Distribution::Uv;
+    const size_t first = mc.faces.size();
     for (size_t t = 0; t < mesh->triangleCount(); ++t) {
         Vec3 p[3];
         for (int k = 0; k < 3; ++k) p[k] = vertex(mesh->positions, mesh->indices[3 * t + size_t(k)]);
-        const Vec3 n = toObject.transposedVector(cross(p[2] - p[0], p[1] - p[0]));
-        if (!(length(n) > 0)) continue;  // no area: no face (as a mesh's empty triangles)
-        const Vec3 normal = normalize(n);
-        for (Vec3& q : p) q = toWorld.point(q);
+        const Vec3 faceNormal = cross(p[2] - p[0], p[1] - p[0]);
         if (!uv) {
-            mc.faces.push_back(MeshCameraFace{(p[0] + p[1] + p[2]) / 3.0, normal});
+            if (length(faceNormal) > 0)  // no area: no face (as a mesh's empty triangles)
+                mc.faces.push_back(MeshCameraFace{(p[0] + p[1] + p[2]) / 3.0, faceNormal});
             continue;
         }
+        const Vec3 n = toObject.transposedVector(faceNormal);
+        if (!(length(n) > 0)) continue;
+        const Vec3 normal = normalize(n);
+        for (Vec3& q : p) q = toWorld.point(q);
         MeshCameraUvFace f{{p[0], p[1], p[2]}, {normal, normal, normal}, normal};
         if (mesh->hasNormals())
             for (int k = 0; k < 3; ++k) {
@@ -101,7 +118,14 @@ void SceneBuilder::addCameraMesh(MeshCamera& mc, std::vector<double>& uvs, const
             uvs.push_back(mesh->hasUVs() ? mesh->uvs[2 * i + 1] : 0.0);
         }
     }
-    mc.meshEnd.push_back(uv ? mc.uvFaces.size() : mc.faces.size());
+    if (uv) {
+        mc.meshEnd.push_back(mc.uvFaces.size());
+        return;
+    }
+    const size_t count = mc.faces.size() - first;
+    mc.placements.push_back(MeshCameraPlacement{first, count, toWorld, toObject});
+    mc.meshEnd.push_back((mc.meshEnd.empty() ? 0 : mc.meshEnd.back()) + count);
+    shapes.push_back(CameraMeshShape{std::move(shape), first, count});
 }
 
 }  // namespace rays::pov

@@ -4,36 +4,40 @@
 
 namespace rays {
 
-size_t MeshCamera::faceAt(int k, uint64_t ix, uint64_t iy, int width) const {
-    const size_t none = faces.size(), meshes = meshCount();
+MeshCamera::FaceRef MeshCamera::faceAt(int k, uint64_t ix, uint64_t iy, int width) const {
+    const size_t meshes = meshCount();
     auto inMesh = [&](size_t m, uint64_t index) {
         const size_t begin = m == 0 ? 0 : meshEnd[m - 1];
-        return index < meshEnd[m] - begin ? begin + size_t(index) : none;
+        return index < meshEnd[m] - begin ? FaceRef{m, size_t(index)} : FaceRef{};
     };
     switch (distribution) {
         case Distribution::PerMesh:
-            return size_t(k) < meshes ? inMesh(size_t(k), iy * uint64_t(width) + ix) : none;
+            return size_t(k) < meshes ? inMesh(size_t(k), iy * uint64_t(width) + ix) : FaceRef{};
         case Distribution::Summed: {
             const uint64_t index = iy * uint64_t(width) + ix;
-            return index < none ? size_t(index) : none;
+            if (meshes == 0 || index >= meshEnd.back()) return {};
+            const size_t m = size_t(std::upper_bound(meshEnd.begin(), meshEnd.end(), size_t(index)) - meshEnd.begin());
+            return inMesh(m, index - (m == 0 ? 0 : meshEnd[m - 1]));
         }
         case Distribution::Strips: {
-            if (meshes == 0) return none;
+            if (meshes == 0) return {};
             const uint64_t strip = std::max<uint64_t>(uint64_t(width) / meshes, 1);
             return inMesh(std::min<size_t>(size_t(ix / strip), meshes - 1), iy * strip + ix);
         }
         case Distribution::Uv: break;
     }
-    return none;
+    return {};
 }
 
 bool MeshCamera::ray(int k, double px, double py, int width, int height, Ray& out) const {
     const double x = std::clamp(px, 0.0, double(width - 1));
     const double y = std::clamp(double(height) - py - 1.0, 0.0, double(height - 1));
     if (distribution != Distribution::Uv) {
-        const size_t f = faceAt(k, uint64_t(x), uint64_t(y), width);
-        if (f >= faces.size()) return false;
-        out = rayFrom(faces[f].centroid, faces[f].normal);
+        const FaceRef f = faceAt(k, uint64_t(x), uint64_t(y), width);
+        if (f.mesh >= placements.size()) return false;
+        const MeshCameraPlacement& at = placements[f.mesh];
+        const MeshCameraFace& face = faces[at.first + f.index];
+        out = rayFrom(at.toWorld.point(face.centroid), normalize(at.toObject.transposedVector(face.normal)));
         return true;
     }
     double w[3];
@@ -51,7 +55,8 @@ bool MeshCamera::ray(int k, double px, double py, int width, int height, Ray& ou
 }
 
 size_t MeshCamera::memoryBytes() const {
-    return faces.capacity() * sizeof(MeshCameraFace) + uvFaces.capacity() * sizeof(MeshCameraUvFace) +
+    return faces.capacity() * sizeof(MeshCameraFace) + placements.capacity() * sizeof(MeshCameraPlacement) +
+           uvFaces.capacity() * sizeof(MeshCameraUvFace) +
            meshEnd.capacity() * sizeof(size_t) + uvGrid.memoryBytes();
 }
 

@@ -24,15 +24,25 @@
 #include <vector>
 
 #include "rays/geometry/ray.h"
+#include "rays/math/transform.h"
 #include "rays/math/vec3.h"
 #include "rays/scene/uv_face_grid.h"
 
 namespace rays {
 
-/// A face of distributions 0–2 in world space: where its ray starts and its unit normal.
+/// A face of distributions 0–2 in its mesh's own space: where its ray starts and its normal
+/// (c − a) × (b − a), not unit, both before the mesh's transformation.
 struct MeshCameraFace {
     Vec3 centroid;
     Vec3 normal;
+};
+
+/// One mesh of distributions 0–2: its faces, a stretch of MeshCamera::faces that every copy of one
+/// declared mesh shares (100 translated copies of a 19,200-face mesh keep one set of faces), and
+/// the copy's transformation (toObject: its inverse, which turns normals).
+struct MeshCameraPlacement {
+    size_t first = 0, count = 0;
+    Transform toWorld, toObject;
 };
 
 /// A face of distribution 3 in world space: corners, and the corners' unit normals (the face's
@@ -53,9 +63,10 @@ struct MeshCamera {
     double offset = 0;               ///< the ray's origin moved this far along the normal
     bool reversed = false;           ///< rays against the normal
 
-    std::vector<MeshCameraFace> faces;      ///< distributions 0–2: every mesh's faces, mesh after mesh
-    std::vector<MeshCameraUvFace> uvFaces;  ///< distribution 3: likewise
-    std::vector<size_t> meshEnd;            ///< one past each mesh's last face
+    std::vector<MeshCameraFace> faces;            ///< distributions 0–2: each distinct mesh's faces
+    std::vector<MeshCameraPlacement> placements;  ///< distributions 0–2: the meshes, in order
+    std::vector<MeshCameraUvFace> uvFaces;        ///< distribution 3: every mesh's faces in world space, mesh after mesh
+    std::vector<size_t> meshEnd;                  ///< one past each mesh's last face, the meshes' faces counted as one list
     UvFaceGrid uvGrid;                      ///< distribution 3: the faces' uvs
 
     size_t meshCount() const { return meshEnd.size(); }
@@ -69,8 +80,12 @@ struct MeshCamera {
     size_t memoryBytes() const;
 
 private:
-    /// Distributions 0–2: the face of ray k at POV-Ray's integer pixel (ix, iy), or faces.size().
-    size_t faceAt(int k, uint64_t ix, uint64_t iy, int width) const;
+    struct FaceRef {
+        size_t mesh = SIZE_MAX, index = 0;  ///< mesh SIZE_MAX: no face
+    };
+    /// Distributions 0–2: the face of ray k at POV-Ray's integer pixel (ix, iy): its mesh and its
+    /// number within the mesh.
+    FaceRef faceAt(int k, uint64_t ix, uint64_t iy, int width) const;
     Ray rayFrom(Vec3 origin, Vec3 normal) const {
         return Ray{origin + offset * normal, reversed ? -normal : normal};
     }
