@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -173,6 +174,57 @@ TEST(PovJuliaFractal, CubeAndHypercomplexInsideAgreeWithTheProducts) {
             EXPECT_TRUE(inside(from + (h.t + 1e-7) * d)) << c.algebra;
         }
         EXPECT_GT(hits, 10) << c.algebra;
+    }
+}
+
+// Rays steps longer than 1/precision where a point's iterates show that no inside point is near
+// (an exact bound for sqr and cube), but only by whole steps from the escape sphere's entry: the
+// crossing found is always the one of the plain march, in the step where it first meets an
+// inside point, thin parts included.
+TEST(PovJuliaFractal, LongerStepsFindThePlainMarchsCrossing) {
+    struct Case {
+        const char* fractal;
+        double radius;  // the escape sphere's
+    };
+    const Case cases[] = {
+        {"<0.2, 0.1, 0.59, -0.2> max_iteration 7 precision 20 sqr hypercomplex", 4},
+        {"<-0.745, 0, 0.113, 0.05> max_iteration 9 precision 20 hypercomplex", 4},
+        {"<0.02, -0.02, 0.8, 0> max_iteration 10 precision 20 sqr quaternion", 1 + std::sqrt(0.02 * 0.02 * 2 + 0.64)},
+        {"<0.33, 0.54, 0.52, 0.32> max_iteration 7 precision 20 cube quaternion",
+         1 + std::sqrt(0.33 * 0.33 + 0.54 * 0.54 + 0.52 * 0.52 + 0.32 * 0.32)},
+        {"<0.49, 0.5, -0.34, 0.1> max_iteration 7 precision 400 quaternion", 1 + std::sqrt(0.49 * 0.49 + 0.25 + 0.34 * 0.34 + 0.01)},
+        {"<0.1, 0.5, -0.2, 0.3> max_iteration 6 precision 50 slice <1, 1, 0, 1>, 0.1", 1 + std::sqrt(0.01 + 0.25 + 0.04 + 0.09)},
+    };
+    for (const Case& c : cases) {
+        const Scene s = test::buildPov(std::string("julia_fractal { ") + c.fractal + " }");
+        ASSERT_EQ(s.objects.size(), 1u) << c.fractal;
+        const double precision = std::stod(std::strstr(c.fractal, "precision ") + 10), step = 1 / precision;
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<double> U(-1, 1);
+        int hits = 0, wrong = 0;
+        for (int i = 0; i < 400; ++i) {
+            const Vec3 from = (c.radius + 1) * normalize(Vec3{U(rng), U(rng), U(rng)});
+            const Vec3 d = normalize(Vec3{0.8 * U(rng), 0.8 * U(rng), 0.8 * U(rng)} - from);
+            // The plain march: points every step from the sphere's entry; the first inside one.
+            const double b = dot(from, d), disc = b * b - (dot(from, from) - c.radius * c.radius);
+            if (disc <= 0) continue;
+            const double t0 = -b - std::sqrt(disc), t1 = -b + std::sqrt(disc);
+            double first = -1;
+            for (int k = 1; t0 + k * step < t1; ++k)
+                if (insideShape(s.objects[0], from + (t0 + k * step) * d)) {
+                    first = t0 + k * step;
+                    break;
+                }
+            const Hit h = test::shootPov(s, from, d);
+            if (first < 0) {
+                wrong += h.valid();
+                continue;
+            }
+            ++hits;
+            wrong += !h.valid() || !(h.t > first - step - 1e-6 && h.t <= first + 1e-6);
+        }
+        EXPECT_GT(hits, 40) << c.fractal;
+        EXPECT_EQ(wrong, 0) << c.fractal;
     }
 }
 

@@ -97,11 +97,19 @@ Cx juliaSlope(JuliaFunction f, Cx w, const double* pw) {
 // growth, squared, for juliaIterate's reach). n2 is |h|². Quaternions are (a, v) with a real and v
 // a 3-vector; hypercomplex numbers are carried as their two complex parts (w1, w2) in the four slots.
 
+// Steps with kExact bound how far apart two states can be after the step: for states h and h + e
+// with |h| ≤ a (a² = size2, what the step reports), |f(h + e) − f(h)| ≤ after(|e|, a), from
+// |(h + e)ⁿ − hⁿ| ≤ (|h| + |e|)ⁿ − |h|ⁿ (expand the product; norms multiply in the quaternions).
+
 // Quaternion square: (a, v)² = (a² − |v|², 2av); |d(h²)| ≤ 2|h|.
 struct QuatSqrStep {
+    static constexpr bool kExact = true;
+    static constexpr double kStartGap = 1;  // a step of δ in h(0) moves the state by δ
+    static double after(double e, double a) { return e * (2 * a + e); }
     const double* p;
-    Quat operator()(const Quat& h, double n2, double& grow2) const {
+    Quat operator()(const Quat& h, double n2, double& grow2, double& size2) const {
         grow2 = 4 * n2;
+        size2 = n2;
         const double a2 = 2 * h.a;
         return {h.a * h.a - h.b * h.b - h.c * h.c - h.d * h.d + p[0], a2 * h.b + p[1], a2 * h.c + p[2], a2 * h.d + p[3]};
     }
@@ -110,32 +118,46 @@ struct QuatSqrStep {
 // Quaternion cube: h and h² share their vector's direction, so (a, v)³ = (a³ − 3a|v|², (3a² − |v|²)v);
 // |d(h³)| ≤ 3|h|².
 struct QuatCubeStep {
+    static constexpr bool kExact = true;
+    static constexpr double kStartGap = 1;
+    static double after(double e, double a) { return e * (3 * a * a + e * (3 * a + e)); }
     const double* p;
-    Quat operator()(const Quat& h, double n2, double& grow2) const {
+    Quat operator()(const Quat& h, double n2, double& grow2, double& size2) const {
         grow2 = 9 * n2 * n2;
+        size2 = n2;
         const double a2 = h.a * h.a, v2 = h.b * h.b + h.c * h.c + h.d * h.d, k = 3 * a2 - v2;
         return {h.a * (a2 - 3 * v2) + p[0], k * h.b + p[1], k * h.c + p[2], k * h.d + p[3]};
     }
 };
 
 // Hypercomplex square (POV-Ray's hypercomplex cube squares too): each complex part squared, in real
-// arithmetic; |f'| ≤ 2 max(|w1|, |w2|). c holds p's two complex parts.
+// arithmetic; |f'| ≤ 2 max(|w1|, |w2|). c holds p's two complex parts. Its gaps are the larger of
+// the parts' gaps: a step of δ in h(0) moves each part by at most √2·δ, and two states whose parts
+// are within e of each other are within e in |h|² = (|w1|² + |w2|²) / 2.
 struct HyperSqrStep {
+    static constexpr bool kExact = true;
+    static constexpr double kStartGap = 1.4142135623730951;
+    static double after(double e, double a) { return e * (2 * a + e); }
     double c[4];
-    Quat operator()(const Quat& w, double, double& grow2) const {
+    Quat operator()(const Quat& w, double, double& grow2, double& size2) const {
         const double n1 = w.a * w.a + w.b * w.b, n2 = w.c * w.c + w.d * w.d;
         grow2 = 4 * std::max(n1, n2);
+        size2 = std::max(n1, n2);
         return {w.a * w.a - w.b * w.b + c[0], 2 * w.a * w.b + c[1], w.c * w.c - w.d * w.d + c[2], 2 * w.c * w.d + c[3]};
     }
 };
 
 // Any other hypercomplex function, through std::complex; grow2 only when asked (it costs f').
 struct HyperAnyStep {
+    static constexpr bool kExact = false;
+    static constexpr double kStartGap = 1;
+    static double after(double e, double) { return e; }
     JuliaFunction fn;
     const double* pw;
     Cx c1, c2;
     bool wantGrowth;
-    Quat operator()(const Quat& w, double, double& grow2) const {
+    Quat operator()(const Quat& w, double, double& grow2, double& size2) const {
+        size2 = 0;
         const Cx w1(w.a, w.b), w2(w.c, w.d);
         grow2 = wantGrowth ? std::max(std::norm(juliaSlope(fn, w1, pw)), std::norm(juliaSlope(fn, w2, pw))) : 1;
         const Cx f1 = juliaComplex(fn, w1, pw) + c1, f2 = juliaComplex(fn, w2, pw) + c2;
@@ -149,27 +171,54 @@ double stateNorm2(const Quat& h) {
     return kHyper ? 0.5 * qnorm2(h) : qnorm2(h);
 }
 
+// The distance from h(0) within which every state escapes too, for a state whose iterate k is
+// the first outside the escape sphere, by gap = |h(k)| − R: a nearby state stays inside only if
+// its iterate k is within gap of h(k). The gap after k steps from a start δ away, e(δ) (Step::after
+// step by step over the sizes whose squares are sizes2[0..k)), grows faster than δ, so e(δ)/δ rises with δ; δ₀ = gap / e'(0)
+// is then at least the distance sought and gap·δ₀ / e(δ₀) at most it: that is returned. slope is
+// e'(0)/kStartGap, the product of the steps' derivative bounds. 0 when it cannot be told, or when
+// δ₀ is below least (the caller's shortest step: no need to know more).
+template <class Step>
+double escapeReach(const double* sizes2, int k, double gap, double slope, double least) {
+    const double d0 = gap / (Step::kStartGap * slope);
+    if (!(d0 > least) || !std::isfinite(d0)) return 0;
+    double e = Step::kStartGap * d0;
+    for (int j = 0; j < k; ++j) e = Step::after(e, std::sqrt(sizes2[j]));
+    const double reach = gap * d0 / e;
+    return std::isfinite(reach) ? reach : 0;
+}
+
 // Whether the state h(0) stays within the escape sphere (|h|² ≤ r2) for count iterations. When it
-// escapes, *reach gets a step along which no inside point is expected: half the first-order
-// distance to the sphere of the escaping iterate, (|h(k)| − R) / D(k), D(k) the product of the
-// steps' derivative bounds. NaN counts as escaped. *margin gets max |h(k)| − R over the iterates
-// looked at (up to the escaping one): ≤ 0 exactly when inside, and continuous where a point
-// crosses the surface (the crossing iterate passes R), which the crossing's refinement uses.
+// escapes, *reach gets a step along which no inside point lies: escapeReach for the exact steps
+// (up to kExactSteps iterations), else half the first-order distance to the sphere of the escaping
+// iterate, (|h(k)| − R) / D(k), D(k) the product of the steps' derivative bounds. NaN counts as
+// escaped. *margin gets max |h(k)| − R over the iterates looked at (up to the escaping one): ≤ 0
+// exactly when inside, and continuous where a point crosses the surface (the crossing iterate
+// passes R), which the crossing's refinement uses.
+constexpr int kExactSteps = 64;
+
 template <bool kHyper, class Step>
-bool escapeLoop(Quat h, int count, double r2, double* reach, double* margin, const Step& step) {
+bool escapeLoop(Quat h, int count, double r2, double* reach, double least, double* margin, const Step& step) {
     double n2 = stateNorm2<kHyper>(h), slope2 = 1, most = n2;
+    double sizes2[kExactSteps];
     bool in = true;
     for (int k = 0; k <= count; ++k) {
         most = std::max(most, n2);
         if (!(n2 <= r2)) {
-            if (reach) *reach = std::isfinite(n2) ? 0.5 * (std::sqrt(n2) - std::sqrt(r2)) / std::sqrt(slope2) : kInfinity;
+            if (reach) {
+                const double gap = std::sqrt(n2) - std::sqrt(r2);
+                if (!std::isfinite(n2)) *reach = kInfinity;
+                else if (Step::kExact && k <= kExactSteps) *reach = escapeReach<Step>(sizes2, k, gap, std::sqrt(slope2), least);
+                else *reach = 0.5 * gap / std::sqrt(slope2);
+            }
             most = std::isnan(n2) ? kInfinity : n2;
             in = false;
             break;
         }
         if (k == count) break;
-        double grow2;
-        h = step(h, n2, grow2);
+        double grow2, size2;
+        h = step(h, n2, grow2, size2);
+        if (Step::kExact && k < kExactSteps) sizes2[k] = size2;
         slope2 *= grow2;
         n2 = stateNorm2<kHyper>(h);
     }
@@ -177,20 +226,21 @@ bool escapeLoop(Quat h, int count, double r2, double* reach, double* margin, con
     return in;
 }
 
-// Whether h(0) stays within the escape sphere for max_iteration − 1 iterations (see escapeLoop).
-bool juliaIterate(const double* v, Quat h, double* reach, double* margin = nullptr) {
+// Whether h(0) stays within the escape sphere for max_iteration − 1 iterations (see escapeLoop;
+// least: the reach below which the caller takes its shortest step anyway).
+bool juliaIterate(const double* v, Quat h, double* reach, double* margin = nullptr, double least = 0) {
     const double* p = v + kJuliaP;
     const double r2 = v[kJuliaR2];
     const int count = int(v[kJuliaIter]) - 1;
     const JuliaFunction fn = JuliaFunction(int(v[kJuliaFn]));
     if (v[kJuliaAlgebra] == 0) {
-        if (fn == JuliaFunction::Cube) return escapeLoop<false>(h, count, r2, reach, margin, QuatCubeStep{p});
-        return escapeLoop<false>(h, count, r2, reach, margin, QuatSqrStep{p});
+        if (fn == JuliaFunction::Cube) return escapeLoop<false>(h, count, r2, reach, least, margin, QuatCubeStep{p});
+        return escapeLoop<false>(h, count, r2, reach, least, margin, QuatSqrStep{p});
     }
     const Quat w = {h.a - h.d, h.b + h.c, h.a + h.d, h.b - h.c};
     if (fn == JuliaFunction::Sqr || fn == JuliaFunction::Cube)
-        return escapeLoop<true>(w, count, r2, reach, margin, HyperSqrStep{{p[0] - p[3], p[1] + p[2], p[0] + p[3], p[1] - p[2]}});
-    return escapeLoop<true>(w, count, r2, reach, margin,
+        return escapeLoop<true>(w, count, r2, reach, least, margin, HyperSqrStep{{p[0] - p[3], p[1] + p[2], p[0] + p[3], p[1] - p[2]}});
+    return escapeLoop<true>(w, count, r2, reach, least, margin,
                             HyperAnyStep{fn, v + kJuliaPwr, Cx(p[0] - p[3], p[1] + p[2]), Cx(p[0] + p[3], p[1] - p[2]),
                                          reach != nullptr});
 }
@@ -301,14 +351,22 @@ bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, Sh
     double t0 = std::max(tMin, (-b - sq) / dd), t1 = std::min(tMax, (-b + sq) / dd);
     if (t0 >= t1) return false;
     const double len = std::sqrt(dd), step = v[kJuliaStep] / len;
-    // Steps of 1/precision, longer where the point's iterate escaped far (juliaIterate's reach).
+    // Steps of 1/precision, longer where the point's iterate escaped far (juliaIterate's reach, a
+    // distance in h(0)'s four dimensions: a unit of t moves h(0) by len4, its t component too).
+    const double* n = v + kJuliaN;
+    const double dw = (n[0] * r.dir.x + n[1] * r.dir.y + n[2] * r.dir.z) / n[3], len4 = std::sqrt(dd + dw * dw);
     double reach = 0, margin = 0;
-    const bool startIn = juliaIterate(v, juliaStart(v, r.at(t0)), &reach, &margin);
-    double prev = t0, prevMargin = margin, ahead = startIn ? step : std::max(step, reach / len);
+    const double least = v[kJuliaStep];  // reaches below one step make no difference
+    const bool startIn = juliaIterate(v, juliaStart(v, r.at(t0)), &reach, &margin, least);
+    // A whole number of steps, at least one: the points looked at are those of the march of
+    // single steps from t0 (which POV-Ray's precision describes), less those a reach shows are
+    // outside, so the crossings found are that march's.
+    auto stepsAhead = [&](double r) { return step * std::max(1.0, std::floor(r / len4 / step)); };
+    double prev = t0, prevMargin = margin, ahead = startIn ? step : stepsAhead(reach);
     while (prev < t1) {
         const double t = std::min(t1, prev + ahead);
         reach = 0;
-        const bool in = juliaIterate(v, juliaStart(v, r.at(t)), startIn ? nullptr : &reach, &margin);
+        const bool in = juliaIterate(v, juliaStart(v, r.at(t)), startIn ? nullptr : &reach, &margin, least);
         if (in != startIn) {
             const double hi = refineCrossing(v, r, len, prev, prevMargin, t, margin);
             if (!(hi > tMin && hi < tMax)) return false;
@@ -320,7 +378,7 @@ bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, Sh
         }
         prev = t;
         prevMargin = margin;
-        ahead = std::max(step, reach / len);
+        ahead = stepsAhead(reach);
     }
     return false;  // no crossing (no inside point reaches the widened sphere)
 }
