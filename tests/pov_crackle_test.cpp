@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rays/pattern/crackle.h"
+#include "rays/pattern/noise.h"
 #include "support/pov_scene.h"
 
 namespace rays {
@@ -90,6 +91,31 @@ TEST(PovCrackle, NearestSeedsAreExact) {
                                       {{-0.2, 0, 0.9}, 2, 0, false}, {{0, 0, 0.5}, 4, 0.3, false}, {{0.4, 0.4, -0.4}, 3, 0, false}};
     for (const pattern::Crackle& c : forms)
         for (const Vec3& p : randomPoints(300)) EXPECT_NEAR(pattern::crackleValue(p, c), bruteForce(p, c), 1e-12) << p.x << " " << p.y;
+}
+
+// Metric 2 keeps the seeds of the cubes round the last ones looked at (per thread): points
+// walking in small steps, three walks interleaved as a sample's rays are, and the cubes they share
+// or evict, still find the exact nearest seeds (and a solid cell's seed).
+TEST(PovCrackle, NearestSeedsAreExactAlongInterleavedWalks) {
+    const pattern::Crackle forms[] = {{{-1, 1, 0}, 2, 0, false}, {{0.2, -0.4, 0.9}, 2, 0.3, false}};
+    const pattern::Crackle solid{{-1, 1, 0}, 2, 0, true};
+    Vec3 at[3] = {{-3.7, 0.2, 5.1}, {0.4, -8.3, -2.2}, {12.5, 3.3, -0.9}};
+    const Vec3 step[3] = {{0.013, 0.007, -0.011}, {-0.009, 0.017, 0.004}, {0.021, -0.003, 0.015}};
+    for (int i = 0; i < 600; ++i)
+        for (int w = 0; w < 3; ++w) {
+            const Vec3 p = at[w] += step[w];
+            for (const pattern::Crackle& c : forms) EXPECT_NEAR(pattern::crackleValue(p, c), bruteForce(p, c), 1e-12) << p.x;
+            Vec3 nearest;
+            double best = INFINITY;
+            for (int k = -2; k <= 2; ++k)
+                for (int j = -2; j <= 2; ++j)
+                    for (int l = -2; l <= 2; ++l) {
+                        const Vec3 s = pattern::crackleSeed(int64_t(std::floor(p.x)) + l, int64_t(std::floor(p.y)) + j,
+                                                            int64_t(std::floor(p.z)) + k);
+                        if (length(s - p) < best) best = length(s - p), nearest = s;
+                    }
+            EXPECT_EQ(pattern::crackleValue(p, solid), std::clamp(pattern::noise(nearest), 0.0, 1.0)) << p.x;
+        }
 }
 
 TEST(PovCrackle, EachCubesSeedLiesUniformlyInIt) {
