@@ -47,6 +47,27 @@ TEST(PovCsgInterior, EachChildFadesByItsOwnInterior) {
     }
 }
 
+// Where a stretch inside glass fades: at its end, on a surface the ray leaves, by that surface's
+// interior (measured with POV-Ray 3.7, 16-bit linear output: boxes A = <-1,-1,-1>–<1,1,0> of
+// fade_distance 1 and B = <-1,-1,-0.5>–<1,1,2> of fade_distance 10, fade_power 1, ior 1, seen along
+// +z and along −z). Along +z through their union the stretch ending where the ray enters B does not
+// fade, the overlap fades by A (left at its end) and the rest by B: 1/(1 + 0.5)·1/(1 + 2/10) =
+// 0.5556; along −z 1/(1 + 0.5/10)·1/(1 + 0.5) = 0.6349. Through their merge or intersection the ray
+// goes in through one box and out through the other's surface, and nothing fades (1.0000 each way).
+TEST(PovCsgInterior, AStretchFadesByTheInteriorLeftAtItsEnd) {
+    const std::string boxes = "box { <-1,-1,-1>, <1,1,0> " + kClear + " interior { fade_distance 1 fade_power 1 } }\n" +
+                              "box { <-1,-1,-0.5>, <1,1,2> " + kClear + " interior { fade_distance 10 fade_power 1 } }\n";
+    const Ray forward{{0.1, 0.2, -5}, {0, 0, 1}}, back{{0.1, 0.2, 5}, {0, 0, -1}};
+    const Scene u = load("background { rgb 1 }\nunion { " + boxes + " }");
+    EXPECT_NEAR(trace(u, forward).y, 1 / 1.5 / 1.2, 1e-3);  // each stretch starts 0.001 past its surface
+    EXPECT_NEAR(trace(u, back).y, 1 / 1.05 / 1.5, 1e-3);
+    for (const char* csg : {"merge", "intersection"}) {
+        const Scene s = load(std::string("background { rgb 1 }\n") + csg + " { " + boxes + " }");
+        EXPECT_NEAR(trace(s, forward).y, 1, 1e-9) << csg;
+        EXPECT_NEAR(trace(s, back).y, 1, 1e-9) << csg;
+    }
+}
+
 // Whether a ray goes into an interior or out of it is decided by the objects it is inside, not by
 // the side of the surface it meets (measured with POV-Ray 3.7: a flat glass height field of ior 1.2
 // under a mirroring scale, whose solid lies above its surface and whose open top the ray crosses

@@ -163,10 +163,19 @@ Vec3 Tracer::tracePov(const Ray& ray, const PovRay& r, TraceContext& ctx, PathIn
     if (hit.valid() && r.insideCount > 0) hit = povTouching(ray, hit, r);
     if (hit.t > r.reach) hit = Hit{};  // past a mesh camera's max_distance: a miss (measured: the background)
     if (info) info->push(hit.object);
+    // A transmitted ray's stretch fades where it ends on a surface it leaves: by that surface's
+    // interior, over the stretch (measured with POV-Ray 3.7 on two overlapping glass boxes of
+    // different fade_distance, crossed both ways: in a union the stretch ending where the ray
+    // enters the second box does not fade, the overlap fades by the box left at its end; in a merge
+    // the ray that went in through one box and out through the other's surface does not fade at
+    // all, nor does one that meets nothing more).
     Vec3 fade(1.0);
-    if (r.fades && r.interior >= 0) {
-        const PovInterior& in = povInteriorOf(r).interior;
-        if (povFades(in)) fade = povFade(in, hit.t);
+    if (r.fades && hit.valid()) {
+        const Material& m = shadedObject(scene_.objects, hit).material;
+        if (r.isInside(hit.object, m.pov)) {
+            const PovInterior& in = povSurfaceOf(m).interior;
+            if (povFades(in)) fade = povFade(in, hit.t);
+        }
     }
     Vec3 seen = fade * (hit.valid() ? shadePov(ray, hit, r, fade, ctx, info) : povSky(scene_, ray.dir));
     // Radiosity's gathering rays pass media by (radiosity's `media` is off by default; Rays does
