@@ -68,6 +68,15 @@ TEST(PovCsgInterior, AStretchFadesByTheInteriorLeftAtItsEnd) {
     }
 }
 
+// The camera inside a fading object: its ray fades where it leaves it (measured with POV-Ray 3.7:
+// the camera at the centre of a clear sphere of radius 2, fade_distance 1, fade_power 1, ior 1, a
+// white background: 0.3333 = 1/(1 + 2)).
+TEST(PovCsgInterior, ACameraInsideAFadingObjectIsFadedWhereItsRayLeaves) {
+    const Scene s = load("camera { location 0 look_at z }\nbackground { rgb 1 }\nsphere { 0, 2 " + kClear +
+                         " interior { fade_distance 1 fade_power 1 } }\n");
+    EXPECT_NEAR(trace(s, Ray{{0, 0, 0}, {0, 0, 1}}).y, 1.0 / 3, 1e-9);
+}
+
 // Whether a ray goes into an interior or out of it is decided by the objects it is inside, not by
 // the side of the surface it meets (measured with POV-Ray 3.7: a flat glass height field of ior 1.2
 // under a mirroring scale, whose solid lies above its surface and whose open top the ray crosses

@@ -140,6 +140,7 @@ Vec3 Tracer::tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) 
     ctx.radLocal.clear();  // a camera sample reuses only its own radiosity records (and the cache's)
     PovRay r;
     r.primary = true;
+    r.fades = true;  // a camera inside a fading object is faded where its ray leaves it (measured)
     r.reach = primaryReach_;
     if (!povMediaHolders_.empty()) povStartInside(ray.origin, r);  // the camera inside a media holder
     // Those holding the camera that hold this ray's start too: tested only where the ray starts
