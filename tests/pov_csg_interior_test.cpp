@@ -77,6 +77,27 @@ TEST(PovCsgInterior, ACameraInsideAFadingObjectIsFadedWhereItsRayLeaves) {
     EXPECT_NEAR(trace(s, Ray{{0, 0, 0}, {0, 0, 1}}).y, 1.0 / 3, 1e-9);
 }
 
+// Shadow rays fade by the same rule (measured with POV-Ray 3.7: the same two boxes between a white
+// wall at z = −5 and a light at z = 10, the wall's brightness against that without them: union
+// 0.5556, merge and intersection 1.0000; with the fade distances swapped, union 0.3175).
+TEST(PovCsgInterior, ShadowRaysFadeByTheInteriorLeftAtTheEndOfEachStretch) {
+    auto boxes = [](double fa, double fb) {
+        return "box { <-1,-1,-1>, <1,1,0> " + kClear + " interior { fade_distance " + std::to_string(fa) +
+               " fade_power 1 } }\nbox { <-1,-1,-0.5>, <1,1,2> " + kClear + " interior { fade_distance " +
+               std::to_string(fb) + " fade_power 1 } }\n";
+    };
+    const std::string lit = "light_source { <0.1, 0.2, 10> rgb 1 }\nplane { z, -5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n";
+    const Vec3 from{6, 0.2, 3};  // looking at the wall point (0.1, 0.2, −5) past the boxes
+    const Ray view{from, normalize(Vec3{0.1, 0.2, -5} - from)};
+    const double bare = trace(load(lit), view).y;
+    ASSERT_GT(bare, 0.01);
+    auto seen = [&](const std::string& csg, double fa, double fb) { return trace(load(lit + csg + " { " + boxes(fa, fb) + " }"), view).y / bare; };
+    EXPECT_NEAR(seen("union", 1, 10), 1 / 1.5 / 1.2, 1e-3);  // 0.5556
+    EXPECT_NEAR(seen("union", 10, 1), 1 / 1.05 / 3.0, 1e-3);  // 0.3175
+    EXPECT_NEAR(seen("merge", 1, 10), 1, 1e-9);
+    EXPECT_NEAR(seen("intersection", 1, 10), 1, 1e-9);
+}
+
 // Whether a ray goes into an interior or out of it is decided by the objects it is inside, not by
 // the side of the surface it meets (measured with POV-Ray 3.7: a flat glass height field of ior 1.2
 // under a mirroring scale, whose solid lies above its surface and whose open top the ray crosses
