@@ -25,7 +25,7 @@ uint64_t sceneBytes(const Scene& scene) {
     // Per object of the scene's BVH (built after this check): its share of the 8-wide nodes, the
     // leaf slots and the build's bins (accel/object_bvh.h, triangle_bvh.h), generously.
     constexpr uint64_t kBvhPerObject = 160;
-    uint64_t b = scene.objects.capacity() * (sizeof(Object) + kBvhPerObject);
+    uint64_t b = scene.objects.size() * (sizeof(Object) + kBvhPerObject);
     for (const Texture& t : scene.textures) b += t.bytes();
     for (const auto& m : scene.meshes) b += m->memoryBytes();  // its own BVH included
     for (const Camera& c : scene.cameras)

@@ -1,5 +1,6 @@
 #include "rays/accel/huge_pages.h"
 
+#include <cstdint>
 #include <cstdlib>
 
 #if defined(__linux__)
@@ -24,6 +25,16 @@ void* hugeAlloc(size_t bytes, size_t align) {
         return p;
     }
     return ::operator new(bytes, std::align_val_t(align));
+}
+
+void adviseHugePages(void* p, size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const auto begin = (reinterpret_cast<uintptr_t>(p) + kHugePage - 1) / kHugePage * kHugePage;
+    const auto end = (reinterpret_cast<uintptr_t>(p) + bytes) / kHugePage * kHugePage;
+    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+    (void)p, (void)bytes;
+#endif
 }
 
 void hugeFree(void* p, size_t bytes, size_t align) noexcept {

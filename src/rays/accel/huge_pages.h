@@ -16,6 +16,9 @@ constexpr size_t kHugePage = size_t(2) << 20;
 /// Allocates at least `bytes` (throws std::bad_alloc); free with hugeFree(p, bytes, align).
 void* hugeAlloc(size_t bytes, size_t align);
 void hugeFree(void* p, size_t bytes, size_t align) noexcept;
+/// Marks the whole 2 MiB pages within [p, p + bytes) of a buffer allocated elsewhere for
+/// transparent huge pages (nothing elsewhere than Linux).
+void adviseHugePages(void* p, size_t bytes) noexcept;
 /// Bytes actually reserved for a request of `bytes`.
 size_t hugeFootprint(size_t bytes);
 
