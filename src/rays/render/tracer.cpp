@@ -89,7 +89,7 @@ Vec3 Tracer::tracePrimary(const Ray& ray, TraceContext& ctx, std::vector<TraceRe
 }
 
 bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
-                      const FromLight* fromLight) const {
+                      const FromLight* fromLight, int* blocker) const {
     ++ctx.stats.shadowRays;
     // The light's buffer cells first: their loads overlap the tests below.
     OriginBuffer::Cells cells;
@@ -102,18 +102,21 @@ bool Tracer::shadowed(const Ray& shadow, double tMax, size_t light, TraceContext
     if (intoSurface && ctx.surfaceObject >= 0 &&
         bvh_.occludesObject(scene_.objects, uint32_t(ctx.surfaceObject), shadow, kTMin, tMax)) {
         if (cached) ctx.lastBlocker[light] = ctx.surfaceObject;
+        if (blocker) *blocker = ctx.surfaceObject;
         return true;
     }
     if (cached && ctx.lastBlocker[light] >= 0) {
-        if (bvh_.occludesObject(scene_.objects, uint32_t(ctx.lastBlocker[light]), shadow, kTMin, tMax)) return true;
+        if (bvh_.occludesObject(scene_.objects, uint32_t(ctx.lastBlocker[light]), shadow, kTMin, tMax)) {
+            if (blocker) *blocker = ctx.lastBlocker[light];
+            return true;
+        }
         ctx.lastBlocker[light] = -1;  // a miss: no longer worth testing first (the walk re-finds it)
     }
-    const int blocker = cells.valid
-                            ? bvh_.anyBlockerFrom(cells, scene_.objects, shadow, kTMin, tMax, fromLight->dist)
-                            : bvh_.anyBlocker(scene_.objects, shadow, kTMin, tMax);
-    if (!cached) return blocker != Bvh::kNoBlocker;
-    if (blocker >= 0) ctx.lastBlocker[light] = blocker;
-    return blocker != Bvh::kNoBlocker;
+    const int found = cells.valid ? bvh_.anyBlockerFrom(cells, scene_.objects, shadow, kTMin, tMax, fromLight->dist)
+                                  : bvh_.anyBlocker(scene_.objects, shadow, kTMin, tMax);
+    if (blocker) *blocker = found;
+    if (cached && found >= 0) ctx.lastBlocker[light] = found;
+    return found != Bvh::kNoBlocker;
 }
 
 ShadingModel Tracer::modelFor(const Material& m) const {

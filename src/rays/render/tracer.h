@@ -116,7 +116,8 @@ public:
     /// settings ask for the flat or normals views.
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
-          povShadowsWalk_(povPath_ && povShadowsWalk()), povHides_(povPath_ && povHides()),
+          povShadowsWalk_(povPath_ && povShadowsWalk()),
+          povOpaque_(povShadowsWalk_ ? povOpaqueObjects() : std::vector<uint8_t>{}), povHides_(povPath_ && povHides()),
           povMedia_(povPath_ && povHasMedia()), povMediaHolders_(povMedia_ ? povMediaHolders() : std::vector<PovMediaHolder>{}),
           povCameraInside_(povPath_ ? povCameraInside() : std::vector<PovRay::Inside>{}),
           primaryReach_(primaryReach(scene, settings)) {}
@@ -196,9 +197,10 @@ private:
         Vec3 toPoint;
         double dist;
     };
-    /// fromLight (point lights) lets the light's origin buffer answer.
+    /// fromLight (point lights) lets the light's origin buffer answer. When shadowed, *blocker (if
+    /// given) gets the object found in the way, or Bvh::kSomeTriangle.
     bool shadowed(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface = false,
-                  const FromLight* fromLight = nullptr) const;
+                  const FromLight* fromLight = nullptr, int* blocker = nullptr) const;
 
     // POV-Ray's lighting model (tracer_povray.cpp; docs/povray-lighting.md).
     /// Per-ray arguments of POV-Ray's recursion: the trace level (the camera ray is 1; reflected
@@ -259,6 +261,8 @@ private:
     /// True when some object lets light through (filter or transmit) or casts no shadow
     /// (no_shadow): blocked shadow rays then walk the surfaces on their way.
     bool povShadowsWalk() const;
+    /// povOpaque_'s flags.
+    std::vector<uint8_t> povOpaqueObjects() const;
     /// True when some object is hidden from camera or reflection rays (no_image, no_reflection).
     bool povHides() const;
     /// firstHit, passing the objects hidden from this kind of ray (no_image: camera rays and
@@ -447,6 +451,9 @@ private:
     const SharedOrigins* origins_;
     bool povPath_;         ///< the scene is traced by POV-Ray's rules
     bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
+    /// When shadows walk: per object, 1 when each of its surfaces blocks light and casts shadows
+    /// (a shadow ray it is found in the way of needs no walk).
+    std::vector<uint8_t> povOpaque_;
     bool povHides_;        ///< and some are hidden from camera or reflection rays
     bool povMedia_;        ///< and some interiors or the atmosphere hold media
     std::vector<PovMediaHolder> povMediaHolders_;

@@ -56,6 +56,22 @@ bool Tracer::povShadowsWalk() const {
     return false;
 }
 
+std::vector<uint8_t> Tracer::povOpaqueObjects() const {
+    auto blocks = [&](const Material& m) {
+        const PovSurface& s = povSurfaceOf(m);
+        return !letsLightThrough(m, s) && !s.noShadow;
+    };
+    std::vector<uint8_t> opaque(scene_.objects.size());
+    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+        const Object& o = scene_.objects[i];
+        bool all = blocks(o.material);
+        if (o.type == ShapeType::Csg)  // each child of a CSG keeps its own material
+            for (const Object& leaf : o.csg->leaves) all = all && blocks(leaf.material);
+        opaque[i] = all;
+    }
+    return opaque;
+}
+
 const PovSurface& Tracer::povInteriorOf(const PovRay& r) const {
     const int s = r.interiorSurface;
     if (s >= 0 && size_t(s) < scene_.povSurfaces.size()) return scene_.povSurfaces[size_t(s)];
@@ -491,8 +507,10 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
 Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
                            const FromLight* fromLight) const {
     Vec3 tint(1.0);
-    if (shadowed(shadow, tMax, light, ctx, intoSurface, fromLight)) {
-        if (!povShadowsWalk_) return {};
+    int blocker = Bvh::kNoBlocker;
+    if (shadowed(shadow, tMax, light, ctx, intoSurface, fromLight, &blocker)) {
+        // An opaque object in the way blocks the light whatever else lies there.
+        if (!povShadowsWalk_ || (blocker >= 0 && povOpaque_[size_t(blocker)])) return {};
         tint = povTransmittance(shadow, tMax);
     }
     // Atmospheric media dim only the lights with media_attenuation on (the manual; measured).
