@@ -59,7 +59,8 @@ struct NormalTable {
     Vec3 perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 normal) const;
     /// Root r's unit normal at world point P for the unit surface normal N (world space).
     Vec3 atRoot(const PigmentTable& patterns, int r, Vec3 P, Vec3 N) const;
-    /// The height node n's pattern gives at p (pattern value, wave and slope_map), enclosing space.
+    /// The height a pattern node (NormalKind::Pattern) gives at p (pattern value, wave and
+    /// slope_map), enclosing space.
     double height(const PigmentTable& patterns, const NormalNode& node, Vec3 p) const;
 };
 
