@@ -414,11 +414,13 @@ void SceneBuilder::emit(const Object& o, bool inverse) {
     }
     // Grown four times at a time: a scene of many objects made in a loop copies a third of them
     // once instead of all of them, and touches 1.33 times their memory instead of twice (room not
-    // yet used is not touched, and the memory budget counts only the objects made).
+    // yet used is not touched, and the memory budget counts only the objects made). From 4 MiB on
+    // the array is marked for transparent huge pages, as the BVH's big buffers are.
     std::vector<Object>& all = scene_.objects;
     if (all.size() == all.capacity()) {
         all.reserve(std::max<size_t>(256, all.capacity() * 4));
-        tribvh::adviseHugePages(all.data(), all.capacity() * sizeof(Object));
+        const size_t bytes = all.capacity() * sizeof(Object);
+        if (bytes >= tribvh::kHugeThreshold) tribvh::adviseHugePages(all.data(), bytes);  // as the BVH's buffers
     }
     all.push_back(o);
 }
