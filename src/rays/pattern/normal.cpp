@@ -86,9 +86,10 @@ Vec3 wavesTilt(Vec3 q, const Wave& w, bool ripples, int n) {
 // absolute values, each octave twice the frequency and half the weight, so that the normal leans
 // towards +x, +y and +z. Measured with POV-Ray 3.7 on a plane facing the camera, lit along the
 // view and from 45° to each side (16-bit linear, the normal recovered per pixel): the tilt's
-// spread (bumps 0.5: 0.13 per component), its correlation over distance (0.48 at half a unit:
-// the value of a noise, where a gradient's falls below zero), dents' heavy tail (mean tilt 0.066,
-// spread 0.077) and wrinkles' lean (the normal at amount 1 tilted by 0.44 along each axis).
+// spread (bumps 1: 0.327 ± 0.160), its correlation over distance (0.48 at half a unit: the value
+// of a noise, where a gradient's falls below zero), dents' small mean tilt with a long tail
+// (0.055 ± 0.065) and wrinkles' lean (at amount 1 the normal facing −z turns to (0.51, 0.51, −0.63)).
+// docs/povray-patterns.md has Rays' figures beside these.
 Vec3 noiseTilt(NormalKind kind, Vec3 q) {
     switch (kind) {
         case NormalKind::Bumps: return vectorNoise(q);

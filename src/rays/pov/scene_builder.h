@@ -53,15 +53,16 @@ private:
     /// Sets the window or angles of a non-perspective camera from the camera block's vectors.
     static void finishProjection(Camera& c, Vec3 dir, Vec3 right, Vec3 up, Vec3 lookAt, bool rightOrUpSet,
                                  bool angleSet, const double angles[2]);
-    /// mesh_camera (scene_builder_mesh_camera.cpp): the block (its keyword at `at`) → its MeshCamera (offset and
-    /// reversed left to the camera's location and direction); one of its meshes into mc, its
-    /// faces' uvs appended to uvs (distribution 3).
-    /// Distributions 0–2 keep each distinct mesh's faces once: a mesh's entries other than its
-    /// transformations (the same entries for every copy of one declared mesh) and its faces.
+    /// A mesh_camera's distinct meshes (distributions 0–2 keep each one's faces once): a mesh's
+    /// entries other than its transformations (the same entries for every copy of one declared
+    /// mesh) and its stretch of MeshCamera::faces.
     struct CameraMeshShape {
         std::vector<const Entry*> entries;
         size_t first = 0, count = 0;
     };
+    /// mesh_camera (scene_builder_mesh_camera.cpp): the block (its keyword at `at`) → its MeshCamera (offset and
+    /// reversed left to the camera's location and direction); one of its meshes into mc, its
+    /// faces' uvs appended to uvs (distribution 3), a new distinct mesh added to shapes.
     std::shared_ptr<MeshCamera> meshCamera(const Item& block, const sdl::Loc& at);
     void addCameraMesh(MeshCamera& mc, std::vector<double>& uvs, std::vector<CameraMeshShape>& shapes, const Item& item);
     void addLight(const Item& light, const Transform& toWorld);
