@@ -173,11 +173,12 @@ double stateNorm2(const Quat& h) {
 
 // The distance from h(0) within which every state escapes too, for a state whose iterate k is
 // the first outside the escape sphere, by gap = |h(k)| − R: a nearby state stays inside only if
-// its iterate k is within gap of h(k). The gap after k steps from a start δ away, e(δ) (Step::after
-// step by step over the sizes whose squares are sizes2[0..k)), grows faster than δ, so e(δ)/δ rises with δ; δ₀ = gap / e'(0)
-// is then at least the distance sought and gap·δ₀ / e(δ₀) at most it: that is returned. slope is
-// e'(0)/kStartGap, the product of the steps' derivative bounds. 0 when it cannot be told, or when
-// δ₀ is below least (the caller's shortest step: no need to know more).
+// its iterate k is within gap of h(k). The gap after k steps from a start δ away, e(δ)
+// (Step::after step by step over the sizes whose squares are sizes2[0..k)), grows faster than δ,
+// so e(δ)/δ rises with δ; δ₀ = gap / e'(0) is then at least the distance sought and
+// gap·δ₀ / e(δ₀) at most it: that is returned. slope is e'(0)/kStartGap, the product of the
+// steps' derivative bounds. 0 when it cannot be told, or when δ₀ is below least (the caller's
+// shortest step: no need to know more).
 template <class Step>
 double escapeReach(const double* sizes2, int k, double gap, double slope, double least) {
     const double d0 = gap / (Step::kStartGap * slope);
@@ -190,7 +191,7 @@ double escapeReach(const double* sizes2, int k, double gap, double slope, double
 
 // Whether the state h(0) stays within the escape sphere (|h|² ≤ r2) for count iterations. When it
 // escapes, *reach gets a step along which no inside point lies: escapeReach for the exact steps
-// (up to kExactSteps iterations), else half the first-order distance to the sphere of the escaping
+// (0 past kExactSteps iterations), else half the first-order distance to the sphere of the escaping
 // iterate, (|h(k)| − R) / D(k), D(k) the product of the steps' derivative bounds. NaN counts as
 // escaped. *margin gets max |h(k)| − R over the iterates looked at (up to the escaping one): ≤ 0
 // exactly when inside, and continuous where a point crosses the surface (the crossing iterate
@@ -208,8 +209,8 @@ bool escapeLoop(Quat h, int count, double r2, double* reach, double least, doubl
             if (reach) {
                 const double gap = std::sqrt(n2) - std::sqrt(r2);
                 if (!std::isfinite(n2)) *reach = kInfinity;
-                else if (Step::kExact && k <= kExactSteps) *reach = escapeReach<Step>(sizes2, k, gap, std::sqrt(slope2), least);
-                else *reach = 0.5 * gap / std::sqrt(slope2);
+                else if (!Step::kExact) *reach = 0.5 * gap / std::sqrt(slope2);
+                else *reach = k <= kExactSteps ? escapeReach<Step>(sizes2, k, gap, std::sqrt(slope2), least) : 0;
             }
             most = std::isnan(n2) ? kInfinity : n2;
             in = false;
