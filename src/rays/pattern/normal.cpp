@@ -82,7 +82,9 @@ Vec3 wavesTilt(Vec3 q, const Wave& w, bool ripples, int n) {
 // bumps, dents and wrinkles: not gradients of heights but a vector noise added to the normal
 // (its three components the noise at three far-apart places, each in about [−1, 1]) at q, in
 // pattern space, times the bump size: bumps the vector noise itself; dents the vector noise times
-// noise(q)³ (mostly flat, dented where the noise is high); wrinkles ten octaves of its components'
+// 2.7·noise(q)⁵ (mostly flat, dented where the noise is high: POV-Ray's tilt correlates 0.89 with
+// its bozo cubed at the same point, and its mean at each level of bozo, 0.03 at 0.5 to 0.30 at 0.8,
+// fits 2.7·n⁵ times the vector noise's mean length); wrinkles ten octaves of its components'
 // absolute values, each octave twice the frequency and half the weight, so that the normal leans
 // towards +x, +y and +z. Measured with POV-Ray 3.7 on a plane facing the camera, lit along the
 // view and from 45° to each side (16-bit linear, the normal recovered per pixel): the tilt's
@@ -94,8 +96,8 @@ Vec3 noiseTilt(NormalKind kind, Vec3 q) {
     switch (kind) {
         case NormalKind::Bumps: return vectorNoise(q);
         case NormalKind::Dents: {
-            const double n = noise(q);
-            return vectorNoise(q) * (n * n * n);
+            const double n = noise(q), n2 = n * n;
+            return vectorNoise(q) * (2.7 * n2 * n2 * n);
         }
         case NormalKind::Wrinkles: {
             Vec3 sum;
