@@ -54,6 +54,37 @@ std::string sideBox(const std::string& pigment, const std::string& modifiers) {
 // Centre pixel of povray's 4×4 render of that camera (right x, up y).
 constexpr double kCx = 0.125, kCy = -0.125;
 
+// POV-Ray weighs an area light's samples by halving each axis's index range again and again (an
+// odd number of samples sharing its middle one, an even number split into disjoint halves), the
+// parts alike, down to single cells whose corners average; with `adaptive A` a part at depth A or
+// deeper whose corners agree is taken whole. povray 3.7 (16-bit linear): a wall z = 0 lit by an
+// unjittered N × N light 2 units wide at z = −4 past the edge of a black slab (x < 0 at z = −1;
+// the wall is looked at where x ≥ 0, beside the slab), and past a thin pole (|x| < 0.03 at
+// z = −2, no_image) in front of a 9 × 9 light.
+TEST(PovAreaLight, SamplesWeighAsPovRaysSubdivisionWeighsThem) {
+    auto wall = [](int n, const std::string& light, const std::string& occluder, double x) {
+        const Loaded l = load("light_source { <0,0,-4> rgb 1 area_light <2,0,0>, <0,2,0>, " + std::to_string(n) + ", " +
+                              std::to_string(n) + " " + light + " }\n"
+                              "plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n" + occluder);
+        return seen(l.scene, x, 0.005, -10).x;
+    };
+    const std::string edge = "box { <-10,-10,-1.01>, <0,10,-1> pigment { rgb 0 } }\n";
+    // x = 0.035, 0.135 and 0.275: 3, 4 and 5 of N = 5 or 6 columns lit, 2, 3 and 3 of N = 4.
+    EXPECT_NEAR(wall(4, "", edge, 0.035), 0.5, kMeasured);
+    EXPECT_NEAR(wall(4, "", edge, 0.135), 0.7496, kMeasured);
+    EXPECT_NEAR(wall(5, "", edge, 0.035), 0.625, kMeasured);  // the trapezoid rule (plain mean: 0.6)
+    EXPECT_NEAR(wall(5, "", edge, 0.275), 0.8729, kMeasured);
+    EXPECT_NEAR(wall(6, "", edge, 0.035), 0.5, kMeasured);
+    EXPECT_NEAR(wall(6, "", edge, 0.135), 0.6246, kMeasured);
+    EXPECT_NEAR(wall(6, "", edge, 0.275), 0.8729, kMeasured);
+    const std::string pole = "box { <-0.03,-10,-2.01>, <0.03,10,-2> pigment { rgb 0 } no_image }\n";
+    EXPECT_NEAR(wall(9, "", pole, -0.815), 0.8574, kMeasured);
+    EXPECT_NEAR(wall(9, "adaptive 0", pole, 0.005), 1.0, kMeasured);  // the four corners are lit
+    EXPECT_NEAR(wall(9, "adaptive 1", pole, 0.005), 0.875, kMeasured);
+    EXPECT_NEAR(wall(9, "adaptive 1", pole, -0.565), 0.9902, kMeasured);
+    EXPECT_NEAR(wall(9, "adaptive 2", pole, -0.565), 0.8664, kMeasured);
+}
+
 TEST(PovNoShadow, ObjectsWithNoShadowCastNone) {
     for (const char* pigment : {"rgb <.5,.6,.7>", "rgbf <.5,.6,.7,.5>", "rgbt <.5,.6,.7,.5>"}) {
         SCOPED_TRACE(pigment);
