@@ -7,6 +7,7 @@
 
 #include "rays/geometry/refract.h"
 #include "rays/render/area_light.h"
+#include "rays/render/pov_area_mean.h"
 #include "rays/render/pov_lighting.h"
 #include "rays/render/pov_normal.h"
 #include "rays/render/pov_pigment.h"
@@ -484,12 +485,8 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
         if (d == 0 || end <= 0) return Vec3(1.0);
         return povShadowTint(Ray{origin, toLight / d}, end, index, ctx, intoSurface, nullptr);
     };
-    // POV-Ray's weighing of the samples (measured, docs/povray-lighting.md "Area lights"): each
-    // axis's index range is halved again and again, an odd number of samples sharing its middle
-    // one, an even number split into disjoint halves, the parts weighing alike, down to single
-    // cells, whose corners average; so 3, 5, 9 or 17 samples take the trapezoid rule and 4 or 8
-    // the plain average. With `adaptive A`, a part at depth A or deeper whose four corners agree
-    // takes their value without looking inside. Each sample (jittered or not) is traced once.
+    // Weighed as POV-Ray weighs them (render/pov_area_mean.h); each sample, jittered or not, is
+    // traced once.
     const size_t count = size_t(grid.n1) * size_t(grid.n2);
     thread_local std::vector<Vec3> tints;
     thread_local std::vector<uint8_t> known;
@@ -503,42 +500,7 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
         }
         return tints[k];
     };
-    auto halves = [](int a, int b, int& lo, int& hi) {  // [a, lo] and [hi, b]
-        const int d = b - a;
-        lo = a + d / 2;  // d odd: d / 2 rounds down, the lower half's last sample
-        hi = d % 2 == 0 ? lo : lo + 1;
-    };
-    auto part = [&](auto&& self, int u0, int u1, int v0, int v1, int depth) -> Vec3 {
-        const bool splitU = u1 - u0 >= 2, splitV = v1 - v0 >= 2;
-        if (!splitU && !splitV) {  // a cell (or an edge, or a point): its distinct corners' mean
-            Vec3 sum = tintAt(u0, v0);
-            int n = 1;
-            if (u1 != u0) sum += tintAt(u1, v0), ++n;
-            if (v1 != v0) {
-                sum += tintAt(u0, v1), ++n;
-                if (u1 != u0) sum += tintAt(u1, v1), ++n;
-            }
-            return sum / double(n);
-        }
-        if (light.adaptive >= 0 && depth >= light.adaptive) {
-            const Vec3 c = tintAt(u0, v0);
-            if (tintAt(u1, v0) == c && tintAt(u0, v1) == c && tintAt(u1, v1) == c) return c;
-        }
-        int ua = u1, ub = u0, va = v1, vb = v0;
-        if (splitU) halves(u0, u1, ua, ub);
-        if (splitV) halves(v0, v1, va, vb);
-        const int us[2][2] = {{u0, ua}, {ub, u1}}, vs[2][2] = {{v0, va}, {vb, v1}};
-        Vec3 sum;
-        int parts = 0;
-        for (int i = 0; i < (splitU ? 2 : 1); ++i)
-            for (int j = 0; j < (splitV ? 2 : 1); ++j) {
-                sum += self(self, splitU ? us[i][0] : u0, splitU ? us[i][1] : u1, splitV ? vs[j][0] : v0,
-                            splitV ? vs[j][1] : v1, depth + 1);
-                ++parts;
-            }
-        return sum / double(parts);
-    };
-    return color * part(part, 0, grid.n1 - 1, 0, grid.n2 - 1, 0);
+    return color * povAreaMean(grid.n1, grid.n2, light.adaptive, tintAt);
 }
 
 Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceContext& ctx, bool intoSurface,
