@@ -562,6 +562,7 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
         return false;
     if (k == Kw::interior) {
         applyInterior(e.args[0].item(), a.interior, notes, pigments);
+        a.interior.block = reinterpret_cast<uintptr_t>(&e.args[0].item());  // the block's identity while the scene is built
         a.interiorSet = true;
         return true;
     }

@@ -2,6 +2,7 @@
 // "Interior"): finish and interior values, and the colour's transmit, kept apart from the course
 // Material (which stays small for the course's big scenes) and referenced by Material::pov.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "rays/math/vec3.h"
@@ -44,6 +45,11 @@ struct PovInterior {
     /// The interior's media: entries [mediaFirst, mediaFirst + mediaCount) of Scene::povMedia.
     int mediaFirst = 0, mediaCount = 0;
     double caustics = 0;        ///< fake caustics' power (0: none): render/pov_lighting.h, povCausticGain
+    /// Which `interior { }` block it came from (0: none, the default interior): only compared, so
+    /// that the children of one CSG with blocks of their own stay apart even when the blocks read
+    /// alike, as POV-Ray keeps them apart (a ray going from one into the other leaves the first).
+    /// Copies of one declared object share their block.
+    uint64_t block = 0;
 
     bool operator==(const PovInterior&) const = default;
 };
