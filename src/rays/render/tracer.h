@@ -116,8 +116,9 @@ public:
     /// settings ask for the flat or normals views.
     Tracer(const Scene& scene, const Bvh& bvh, const RenderSettings& settings, const SharedOrigins* origins = nullptr)
         : scene_(scene), bvh_(bvh), settings_(settings), origins_(origins), povPath_(usesPovPath(scene, settings)),
-          povShadowsWalk_(povPath_ && povShadowsWalk()),
-          povOpaque_(povShadowsWalk_ ? povOpaqueObjects() : std::vector<uint8_t>{}), povHides_(povPath_ && povHides()),
+          povOpaque_(povPath_ ? povOpaqueObjects() : std::vector<uint8_t>{}),
+          povShadowsWalk_(std::find(povOpaque_.begin(), povOpaque_.end(), uint8_t(0)) != povOpaque_.end()),
+          povHides_(povPath_ && povHides()),
           povMedia_(povPath_ && povHasMedia()), povMediaHolders_(povMedia_ ? povMediaHolders() : std::vector<PovMediaHolder>{}),
           povCameraInside_(povPath_ ? povCameraInside() : std::vector<PovRay::Inside>{}),
           primaryReach_(primaryReach(scene, settings)) {}
@@ -258,10 +259,8 @@ private:
     static double primaryReach(const Scene& scene, const RenderSettings& settings);
     /// True when the scene is traced by POV-Ray's rules: pov.enabled, and not the flat or normals view.
     static bool usesPovPath(const Scene& scene, const RenderSettings& settings);
-    /// True when some object lets light through (filter or transmit) or casts no shadow
-    /// (no_shadow): blocked shadow rays then walk the surfaces on their way.
-    bool povShadowsWalk() const;
-    /// povOpaque_'s flags.
+    /// povOpaque_'s flags: per object, whether each of its surfaces (a CSG's leaves too) blocks
+    /// light and casts shadows.
     std::vector<uint8_t> povOpaqueObjects() const;
     /// True when some object is hidden from camera or reflection rays (no_image, no_reflection).
     bool povHides() const;
@@ -450,10 +449,12 @@ private:
     const RenderSettings& settings_;
     const SharedOrigins* origins_;
     bool povPath_;         ///< the scene is traced by POV-Ray's rules
-    bool povShadowsWalk_;  ///< and some of its objects let light through or cast no shadow
-    /// When shadows walk: per object, 1 when each of its surfaces blocks light and casts shadows
-    /// (a shadow ray it is found in the way of needs no walk).
+    /// POV-Ray scenes: per object, 1 when each of its surfaces blocks light and casts shadows (a
+    /// shadow ray it is found in the way of needs no walk).
     std::vector<uint8_t> povOpaque_;
+    /// Some object is not opaque (lets light through: filter, transmit; or casts no shadow):
+    /// blocked shadow rays then walk the surfaces on their way.
+    bool povShadowsWalk_;
     bool povHides_;        ///< and some are hidden from camera or reflection rays
     bool povMedia_;        ///< and some interiors or the atmosphere hold media
     std::vector<PovMediaHolder> povMediaHolders_;

@@ -43,20 +43,6 @@ bool Tracer::usesPovPath(const Scene& scene, const RenderSettings& settings) {
     return scene.pov.enabled && settings.shading != ShadingModel::Flat && settings.shading != ShadingModel::Normals;
 }
 
-bool Tracer::povShadowsWalk() const {
-    auto walks = [&](const Material& m) {
-        const PovSurface& s = povSurfaceOf(m);
-        return letsLightThrough(m, s) || s.noShadow;
-    };
-    for (const Object& o : scene_.objects) {
-        if (walks(o.material)) return true;
-        if (o.type == ShapeType::Csg)  // each child of a CSG keeps its own material
-            for (const Object& leaf : o.csg->leaves)
-                if (walks(leaf.material)) return true;
-    }
-    return false;
-}
-
 std::vector<uint8_t> Tracer::povOpaqueObjects() const {
     auto blocks = [&](const Material& m) {
         const PovSurface& s = povSurfaceOf(m);
