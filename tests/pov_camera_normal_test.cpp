@@ -1,11 +1,13 @@
 // POV-Ray's camera `normal { }`: camera rays tilted as surface normals by the pattern at the
 // sample's screen point (u, v, 0), u and v in [−½, ½] (v up), along world axes. The expected
-// places come from POV-Ray 3.7 renders (160×120, -A) of a camera at <0, 0, −5> looking at the
-// origin (angle 40) through a sine-wave gradient normal, in front of a wall whose colour ramps
-// with x (or y): the wall point each pixel sees moved with the tilt, and it did not move at
-// columns 27 and 132 for `gradient x 0.2 sine_wave scale 1.3` (the slope of the wave is zero at
-// u = ±0.325) and at rows 23, 66 and 108 (from the top) for `gradient y 0.2 sine_wave scale 0.7
-// translate 0.13*y` (v = 0.305, −0.045, −0.395); at the centre the first moved towards −x.
+// places come from POV-Ray 3.7 renders (160×120, -A, 16-bit linear) of a camera at <0, 0, −5>
+// looking at the origin (angle 40) through a sine-wave gradient normal, in front of a wall whose
+// colour ramps with x (or y), against the same render without the normal: the wall point each
+// pixel sees moved with the tilt. For `gradient x 0.2 sine_wave scale 1.3` it moved towards +x
+// at column 26 and towards −x at column 27, and the other way at columns 130 and 131 (the slope
+// of the wave is zero near u = ±0.325, the tetrahedron's samples place the zero a little to the
+// left); for `gradient y 0.2 sine_wave scale 0.7 translate 0.13*y` it moved up at rows 23, 66 and
+// 107 (from the top) and down at rows 24, 65 and 108. At the centre the first moved towards −x.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,29 +43,28 @@ Vec3 tiltAt(const Scene& scene, double x, double y) {
 TEST(PovCameraNormal, TiltsAlongXWhereThePatternSlopesAcrossTheScreen) {
     const Scene scene = sceneWith("gradient x 0.2 sine_wave scale 1.3");
     ASSERT_EQ(scene.cameras.at(0).normal, 0);
-    // No tilt where u = ±0.325 (pixel centres at 28 and 132 of 160: x = 27.5 and 131.5), the
-    // columns where POV-Ray's wall stood still (27 and 132, each the first past the crossing).
     const Vec3 centre = tiltAt(scene, 79.5, 60);
     EXPECT_LT(centre.x, -0.01);  // towards −x, as POV-Ray's wall showed
-    EXPECT_LT(std::fabs(tiltAt(scene, 27.5, 60).x), 0.02 * std::fabs(centre.x));
-    EXPECT_LT(std::fabs(tiltAt(scene, 131.5, 60).x), 0.02 * std::fabs(centre.x));
     EXPECT_NEAR(centre.y, 0, 1e-4);  // only the renormalisation moves y
-    // Between the zero columns the tilt keeps its sign; beyond them it turns.
-    EXPECT_LT(tiltAt(scene, 50, 60).x, 0);
+    // The tilt turns between the columns where POV-Ray's wall turned.
+    EXPECT_GT(tiltAt(scene, 26, 60).x, 0);
+    EXPECT_LT(tiltAt(scene, 27, 60).x, 0);
+    EXPECT_LT(tiltAt(scene, 130, 60).x, 0);
+    EXPECT_GT(tiltAt(scene, 131, 60).x, 0);
     EXPECT_GT(tiltAt(scene, 10, 60).x, 0);
     EXPECT_GT(tiltAt(scene, 150, 60).x, 0);
 }
 
 TEST(PovCameraNormal, ScreenVCountsUpAndTheWaveKeepsItsTranslation) {
     const Scene scene = sceneWith("gradient y 0.2 sine_wave scale 0.7 translate 0.13*y");
-    // v = 0.305, −0.045 and −0.395 lie at pixel centres 23.4, 65.4 and 107.4 from the top (rows
-    // 22.9, 64.9 and 106.9 here): POV-Ray's wall stood still at rows 23, 66 and 108, each the
-    // first past its crossing.
-    const double most = std::fabs(tiltAt(scene, 80, 44).y);
-    EXPECT_GT(most, 0.01);
-    for (double row : {22.9, 64.9, 106.9}) EXPECT_LT(std::fabs(tiltAt(scene, 80, row).y), 0.02 * most) << row;
-    // The tilt's sign alternates between the crossings.
-    EXPECT_LT(tiltAt(scene, 80, 44).y * tiltAt(scene, 80, 86).y, 0);
+    EXPECT_GT(std::fabs(tiltAt(scene, 80, 44).y), 0.01);
+    // The tilt turns between the rows where POV-Ray's wall turned.
+    for (int row : {23, 107}) {
+        EXPECT_GT(tiltAt(scene, 80, row).y, 0) << row;
+        EXPECT_LT(tiltAt(scene, 80, row + 1).y, 0) << row;
+    }
+    EXPECT_LT(tiltAt(scene, 80, 65).y, 0);
+    EXPECT_GT(tiltAt(scene, 80, 66).y, 0);
 }
 
 TEST(PovCameraNormal, CamerasWithoutOneKeepTheirRays) {

@@ -69,6 +69,30 @@ TEST(PovNormal, GradientTiltsTheNormalAgainstThePatternByTwoFifteenthsOfTheAmoun
     EXPECT_NEAR(n.z, want.z, 1e-6);
 }
 
+// Across a step the four samples cross one after another, so the bands the step shows place the
+// tetrahedron: a step up at x = 0.5 (accuracy 0.1) gives a band 0.094 wide where only the +x
+// sample has crossed, then one 0.047 wide where the +y sample has too; a step in y one band
+// 0.133 wide. povray, lit by parallel lights along <1,0,−1> and <0,1,−1> (flat: 0.7071).
+TEST(PovNormal, PatternGradientSamplesPovRaysTetrahedron) {
+    auto brightness = [](const char* axis, double lx, double ly, double x, double y) {
+        const std::string light = "light_source { <" + std::to_string(lx) + ", " + std::to_string(ly) +
+                                  ", -1>*1000 color 1 parallel point_at 0 }\n";
+        const Loaded l = load(light + "plane { -z, -0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { "
+                                      "pigment_pattern { gradient " + axis +
+                              " color_map { [0.5 rgb 0][0.5 rgb 1] } } 0.5 accuracy 0.1 } }\n");
+        return seen(l.scene, x, y).x;
+    };
+    EXPECT_NEAR(brightness("x", 1, 0, 0.4525, 0.5), 0.3343, kMeasured);
+    EXPECT_NEAR(brightness("x", 1, 0, 0.5275, 0.5), 0.3237, kMeasured);
+    EXPECT_NEAR(brightness("x", 0, 1, 0.4525, 0.5), 0.7379, kMeasured);
+    EXPECT_NEAR(brightness("x", 0, 1, 0.5275, 0.5), 0.4083, kMeasured);
+    EXPECT_NEAR(brightness("x", 0, 1, 0.5525, 0.5), 0.7071, kMeasured);
+    EXPECT_NEAR(brightness("y", 1, 0, 0.5, 0.4525), 0.6325, kMeasured);
+    EXPECT_NEAR(brightness("y", 0, 1, 0.5, 0.4125), 0.3162, kMeasured);
+    EXPECT_NEAR(brightness("y", 0, 1, 0.5, 0.5275), 0.3162, kMeasured);
+    EXPECT_NEAR(brightness("y", 0, 1, 0.5, 0.3875), 0.7071, kMeasured);
+}
+
 // object { OBJECT normal { A }, normal { B } }: A outside, B inside (povray: 0.6074 outside, as
 // gradient x 1 alone, 0.5010 inside, as gradient x 2 alone).
 TEST(PovNormal, ObjectPatternTiltsByItsOutsideAndInsideNormals) {
