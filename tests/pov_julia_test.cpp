@@ -228,5 +228,40 @@ TEST(PovJuliaFractal, LongerStepsFindThePlainMarchsCrossing) {
     }
 }
 
+// From inside (a ray through glass), the march looks at every step from the ray's start, four at
+// a time where it can: the first point outside ends it, as in the plain march.
+TEST(PovJuliaFractal, RaysFromInsideLeaveAtThePlainMarchsCrossing) {
+    const char* fractals[] = {
+        "<0.2, 0.1, 0.59, -0.2> max_iteration 7 precision 20 sqr hypercomplex",
+        "<0.02, -0.02, 0.8, 0> max_iteration 10 precision 20 sqr quaternion",
+        "<0.33, 0.54, 0.52, 0.32> max_iteration 7 precision 20 cube quaternion",
+        "<-0.745, 0, 0.113, 0.05> max_iteration 9 precision 20 exp hypercomplex",  // no lanes
+    };
+    for (const char* fractal : fractals) {
+        const Scene s = test::buildPov(std::string("julia_fractal { ") + fractal + " }");
+        ASSERT_EQ(s.objects.size(), 1u) << fractal;
+        const double step = 1 / std::stod(std::strstr(fractal, "precision ") + 10);
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> U(-1.5, 1.5);
+        int rays = 0, wrong = 0;
+        for (int i = 0; i < 20000 && rays < 200; ++i) {
+            const Vec3 from{U(rng), U(rng), U(rng)};
+            if (!insideShape(s.objects[0], from)) continue;
+            ++rays;
+            const Vec3 d = normalize(Vec3{U(rng), U(rng), U(rng)});
+            double first = -1;
+            for (int k = 1; k < 4000; ++k)
+                if (!insideShape(s.objects[0], from + (1e-9 + k * step) * d)) {
+                    first = 1e-9 + k * step;
+                    break;
+                }
+            const Hit h = test::shootPov(s, from, d);
+            wrong += !h.valid() || !(h.t > first - step - 1e-6 && h.t <= first + 1e-6);
+        }
+        EXPECT_GT(rays, 50) << fractal;
+        EXPECT_EQ(wrong, 0) << fractal;
+    }
+}
+
 }}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

@@ -248,6 +248,104 @@ bool juliaIterate(const double* v, Quat h, double* reach, double* margin = nullp
 
 bool juliaInside(const double* v, Vec3 p) { return juliaIterate(v, juliaStart(v, p), nullptr); }
 
+// Four points of the march at once: their iterations are independent, so running them side by
+// side lets the processor overlap them (one point's iteration is a chain of dependent products).
+// Each lane's outcome is what escapeLoop gives for it alone.
+constexpr int kLanes = 4;
+
+struct LaneOutcome {
+    bool in;
+    double margin;  // escapeLoop's *margin
+    int k;          // the escaping iterate (out lanes)
+    double n2;      // its |h|²
+    double slope2;  // the product of the derivative bounds up to it
+};
+
+// The exact steps only (kExact), and count < kExactSteps: lane l's sizes² are sizes2[j][l].
+template <bool kHyper, class Step>
+void escapeLanes(const Quat* start, int count, double r2, const Step& step, LaneOutcome* out,
+                 double (*sizes2)[kLanes]) {
+    Quat h[kLanes];
+    double n2[kLanes], slope2[kLanes], most[kLanes];
+    int escaped[kLanes];  // the escaping iterate, count + 1 while none has
+    for (int l = 0; l < kLanes; ++l) {
+        h[l] = start[l];
+        n2[l] = most[l] = stateNorm2<kHyper>(h[l]);
+        slope2[l] = 1;
+        escaped[l] = count + 1;
+    }
+    for (int k = 0; k <= count; ++k) {
+        // Lanes are frozen (not stepped) once out, so each keeps its escaping state.
+        bool any = false;
+        for (int l = 0; l < kLanes; ++l) {
+            const bool live = escaped[l] > k;
+            const bool out = live && !(n2[l] <= r2);
+            escaped[l] = out ? k : escaped[l];
+            any |= escaped[l] > k;
+        }
+        if (!any || k == count) break;
+        for (int l = 0; l < kLanes; ++l) {
+            double grow2, size2;
+            const Quat next = step(h[l], n2[l], grow2, size2);
+            const bool live = escaped[l] > k;
+            h[l] = live ? next : h[l];
+            sizes2[k][l] = size2;
+            slope2[l] = live ? slope2[l] * grow2 : slope2[l];
+            const double m = stateNorm2<kHyper>(next);
+            n2[l] = live ? m : n2[l];
+            most[l] = live ? std::max(most[l], m) : most[l];
+        }
+    }
+    const double radius = std::sqrt(r2);
+    for (int l = 0; l < kLanes; ++l) {
+        if (escaped[l] > count) {
+            out[l] = {true, std::min(-1e-300, std::sqrt(most[l]) - radius), count, n2[l], slope2[l]};
+        } else {
+            const double m = std::isnan(n2[l]) ? kInfinity : n2[l];
+            out[l] = {false, std::max(std::sqrt(m) - radius, 1e-300), escaped[l], n2[l], slope2[l]};
+        }
+    }
+}
+
+// escapeLoop's *reach for an out lane of escapeLanes.
+template <class Step>
+double laneReach(const LaneOutcome& o, double (*sizes2)[kLanes], int lane, double r2, double least) {
+    if (!std::isfinite(o.n2)) return kInfinity;
+    double own[kExactSteps];
+    for (int j = 0; j < o.k; ++j) own[j] = sizes2[j][lane];
+    return escapeReach<Step>(own, o.k, std::sqrt(o.n2) - std::sqrt(r2), std::sqrt(o.slope2), least);
+}
+
+// juliaIterate for four points, with the reach of the last (when it is out; 0 otherwise). False
+// (nothing done) for the functions without exact steps and for more than kExactSteps iterations.
+template <class Step, bool kHyper>
+void iterateLanes(const double* v, const Quat* start, const Step& step, LaneOutcome* out, double* lastReach,
+                  double least) {
+    double sizes2[kExactSteps][kLanes];
+    const int count = int(v[kJuliaIter]) - 1;
+    escapeLanes<kHyper>(start, count, v[kJuliaR2], step, out, sizes2);
+    const LaneOutcome& last = out[kLanes - 1];
+    *lastReach = last.in ? 0 : laneReach<Step>(last, sizes2, kLanes - 1, v[kJuliaR2], least);
+}
+
+bool juliaIterateLanes(const double* v, const Quat* h, LaneOutcome* out, double* lastReach, double least) {
+    const double* p = v + kJuliaP;
+    const int count = int(v[kJuliaIter]) - 1;
+    const JuliaFunction fn = JuliaFunction(int(v[kJuliaFn]));
+    if (count >= kExactSteps) return false;
+    if (v[kJuliaAlgebra] == 0) {
+        if (fn == JuliaFunction::Cube) iterateLanes<QuatCubeStep, false>(v, h, QuatCubeStep{p}, out, lastReach, least);
+        else iterateLanes<QuatSqrStep, false>(v, h, QuatSqrStep{p}, out, lastReach, least);
+        return true;
+    }
+    if (fn != JuliaFunction::Sqr && fn != JuliaFunction::Cube) return false;
+    Quat w[kLanes];
+    for (int l = 0; l < kLanes; ++l) w[l] = {h[l].a - h[l].d, h[l].b + h[l].c, h[l].a + h[l].d, h[l].b - h[l].c};
+    iterateLanes<HyperSqrStep, true>(v, w, HyperSqrStep{{p[0] - p[3], p[1] + p[2], p[0] + p[3], p[1] - p[2]}}, out,
+                                     lastReach, least);
+    return true;
+}
+
 // The normal: the gradient of |h(max_iteration)| with respect to h(0)'s x, y and z components
 // (POV-Ray's normals leave the slice's t alone: measured with a slice <1, 1, 0, 1>), by carrying
 // the three derivatives along the iteration (rescaled each step; only the direction matters).
@@ -363,20 +461,44 @@ bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, Sh
     // single steps from t0 (which POV-Ray's precision describes), less those a reach shows are
     // outside, so the crossings found are that march's.
     auto stepsAhead = [&](double r) { return step * std::max(1.0, std::floor(r / len4 / step)); };
+    auto crossing = [&](double lo, double glo, double t, double gt) {
+        const double hi = refineCrossing(v, r, len, lo, glo, t, gt);
+        if (!(hi > tMin && hi < tMax)) return false;
+        h.t = hi;
+        Vec3 n = juliaNormal(v, r.at(hi));
+        if (!(length(n) > 0)) n = -r.dir;
+        h.normal = normalize(n);
+        return true;
+    };
     double prev = t0, prevMargin = margin, ahead = startIn ? step : stepsAhead(reach);
+    bool lanes = true;  // while the fractal's steps can run four points at once
     while (prev < t1) {
+        if (lanes && ahead == step && prev + kLanes * step < t1) {
+            // Single steps: the next four points at once. Every point of the march is looked at
+            // then (the plain march's), so the first on the other side is the crossing's.
+            Quat starts[kLanes];
+            double ts[kLanes];
+            for (int l = 0; l < kLanes; ++l) {
+                ts[l] = (l ? ts[l - 1] : prev) + step;
+                starts[l] = juliaStart(v, r.at(ts[l]));
+            }
+            LaneOutcome out[kLanes];
+            lanes = juliaIterateLanes(v, starts, out, &reach, least);
+            if (lanes) {
+                for (int l = 0; l < kLanes; ++l) {
+                    if (out[l].in == startIn) continue;
+                    return crossing(l ? ts[l - 1] : prev, l ? out[l - 1].margin : prevMargin, ts[l], out[l].margin);
+                }
+                prev = ts[kLanes - 1];
+                prevMargin = out[kLanes - 1].margin;
+                ahead = stepsAhead(startIn ? 0 : reach);
+                continue;
+            }
+        }
         const double t = std::min(t1, prev + ahead);
         reach = 0;
         const bool in = juliaIterate(v, juliaStart(v, r.at(t)), startIn ? nullptr : &reach, &margin, least);
-        if (in != startIn) {
-            const double hi = refineCrossing(v, r, len, prev, prevMargin, t, margin);
-            if (!(hi > tMin && hi < tMax)) return false;
-            h.t = hi;
-            Vec3 n = juliaNormal(v, r.at(hi));
-            if (!(length(n) > 0)) n = -r.dir;
-            h.normal = normalize(n);
-            return true;
-        }
+        if (in != startIn) return crossing(prev, prevMargin, t, margin);
         prev = t;
         prevMargin = margin;
         ahead = stepsAhead(reach);
