@@ -316,8 +316,7 @@ double laneReach(const LaneOutcome& o, double (*sizes2)[kLanes], int lane, doubl
     return escapeReach<Step>(own, o.k, std::sqrt(o.n2) - std::sqrt(r2), std::sqrt(o.slope2), least);
 }
 
-// juliaIterate for four points, with the reach of the last (when it is out; 0 otherwise). False
-// (nothing done) for the functions without exact steps and for more than kExactSteps iterations.
+// escapeLanes for one kind of step, with the reach of the last lane (when it is out; 0 otherwise).
 template <class Step, bool kHyper>
 void iterateLanes(const double* v, const Quat* start, const Step& step, LaneOutcome* out, double* lastReach,
                   double least) {
@@ -328,6 +327,8 @@ void iterateLanes(const double* v, const Quat* start, const Step& step, LaneOutc
     *lastReach = last.in ? 0 : laneReach<Step>(last, sizes2, kLanes - 1, v[kJuliaR2], least);
 }
 
+// juliaIterate for four points (see iterateLanes). False (nothing done) for the functions without
+// exact steps and for kExactSteps iterations or more.
 bool juliaIterateLanes(const double* v, const Quat* h, LaneOutcome* out, double* lastReach, double least) {
     const double* p = v + kJuliaP;
     const int count = int(v[kJuliaIter]) - 1;
