@@ -113,6 +113,18 @@ struct QuatSqrStep {
         const double a2 = 2 * h.a;
         return {h.a * h.a - h.b * h.b - h.c * h.c - h.d * h.d + p[0], a2 * h.b + p[1], a2 * h.c + p[2], a2 * h.d + p[3]};
     }
+    // The same for four states at once (escapeLanes), one per lane of the vectors.
+    template <class V>
+    void lanes(V& a, V& b, V& c, V& d, V n2, V& grow2, V& size2) const {
+        grow2 = 4.0 * n2;
+        size2 = n2;
+        const V a2 = 2.0 * a;
+        const V na = a * a - b * b - c * c - d * d + p[0];
+        b = a2 * b + p[1];
+        c = a2 * c + p[2];
+        d = a2 * d + p[3];
+        a = na;
+    }
 };
 
 // Quaternion cube: h and h² share their vector's direction, so (a, v)³ = (a³ − 3a|v|², (3a² − |v|²)v);
@@ -127,6 +139,16 @@ struct QuatCubeStep {
         size2 = n2;
         const double a2 = h.a * h.a, v2 = h.b * h.b + h.c * h.c + h.d * h.d, k = 3 * a2 - v2;
         return {h.a * (a2 - 3 * v2) + p[0], k * h.b + p[1], k * h.c + p[2], k * h.d + p[3]};
+    }
+    template <class V>
+    void lanes(V& a, V& b, V& c, V& d, V n2, V& grow2, V& size2) const {
+        grow2 = 9.0 * n2 * n2;
+        size2 = n2;
+        const V a2 = a * a, v2 = b * b + c * c + d * d, k = 3.0 * a2 - v2;
+        a = a * (a2 - 3.0 * v2) + p[0];
+        b = k * b + p[1];
+        c = k * c + p[2];
+        d = k * d + p[3];
     }
 };
 
@@ -144,6 +166,17 @@ struct HyperSqrStep {
         grow2 = 4 * std::max(n1, n2);
         size2 = std::max(n1, n2);
         return {w.a * w.a - w.b * w.b + c[0], 2 * w.a * w.b + c[1], w.c * w.c - w.d * w.d + c[2], 2 * w.c * w.d + c[3]};
+    }
+    template <class V>
+    void lanes(V& a, V& b, V& x, V& y, V, V& grow2, V& size2) const {
+        const V n1 = a * a + b * b, n2 = x * x + y * y, most = n1 > n2 ? n1 : n2;
+        grow2 = 4.0 * most;
+        size2 = most;
+        const V na = a * a - b * b + c[0], nx = x * x - y * y + c[2];
+        b = 2.0 * a * b + c[1];
+        y = 2.0 * x * y + c[3];
+        a = na;
+        x = nx;
     }
 };
 
@@ -248,10 +281,12 @@ bool juliaIterate(const double* v, Quat h, double* reach, double* margin = nullp
 
 bool juliaInside(const double* v, Vec3 p) { return juliaIterate(v, juliaStart(v, p), nullptr); }
 
-// Four points of the march at once: their iterations are independent, so running them side by
-// side lets the processor overlap them (one point's iteration is a chain of dependent products).
-// Each lane's outcome is what escapeLoop gives for it alone.
+// Four points of the march at once, in the lanes of vectors (GCC's vector extensions: AVX where
+// the processor has it): their iterations are independent, so the four run side by side. Each
+// lane's outcome is what escapeLoop gives for its point alone.
 constexpr int kLanes = 4;
+using LaneReal = double __attribute__((vector_size(kLanes * sizeof(double))));
+using LaneMask = int64_t __attribute__((vector_size(kLanes * sizeof(int64_t))));  // comparisons: −1 or 0
 
 struct LaneOutcome {
     bool in;
@@ -265,36 +300,38 @@ struct LaneOutcome {
 template <bool kHyper, class Step>
 void escapeLanes(const Quat* start, int count, double r2, const Step& step, LaneOutcome* out,
                  double (*sizes2)[kLanes]) {
-    Quat h[kLanes];
-    double n2[kLanes], slope2[kLanes], most[kLanes];
+    LaneReal a, b, c, d;
+    for (int l = 0; l < kLanes; ++l) a[l] = start[l].a, b[l] = start[l].b, c[l] = start[l].c, d[l] = start[l].d;
+    auto norm2 = [](LaneReal a, LaneReal b, LaneReal c, LaneReal d) {
+        const LaneReal n = a * a + b * b + c * c + d * d;
+        return kHyper ? 0.5 * n : n;
+    };
+    const LaneReal r2s = LaneReal{} + r2;
+    LaneReal n2 = norm2(a, b, c, d), most = n2, slope2 = LaneReal{} + 1.0;
+    LaneMask live = LaneMask{} - 1;
     int escaped[kLanes];  // the escaping iterate, count + 1 while none has
-    for (int l = 0; l < kLanes; ++l) {
-        h[l] = start[l];
-        n2[l] = most[l] = stateNorm2<kHyper>(h[l]);
-        slope2[l] = 1;
-        escaped[l] = count + 1;
-    }
+    for (int l = 0; l < kLanes; ++l) escaped[l] = count + 1;
     for (int k = 0; k <= count; ++k) {
-        // Lanes are frozen (not stepped) once out, so each keeps its escaping state.
+        // Lanes are frozen (not stepped) once out, so each keeps its escaping state; NaN is out.
+        const LaneMask leaving = live & ~(n2 <= r2s);
         bool any = false;
         for (int l = 0; l < kLanes; ++l) {
-            const bool live = escaped[l] > k;
-            const bool out = live && !(n2[l] <= r2);
-            escaped[l] = out ? k : escaped[l];
+            if (leaving[l]) escaped[l] = k;
             any |= escaped[l] > k;
         }
+        live &= ~leaving;
         if (!any || k == count) break;
-        for (int l = 0; l < kLanes; ++l) {
-            double grow2, size2;
-            const Quat next = step(h[l], n2[l], grow2, size2);
-            const bool live = escaped[l] > k;
-            h[l] = live ? next : h[l];
-            sizes2[k][l] = size2;
-            slope2[l] = live ? slope2[l] * grow2 : slope2[l];
-            const double m = stateNorm2<kHyper>(next);
-            n2[l] = live ? m : n2[l];
-            most[l] = live ? std::max(most[l], m) : most[l];
-        }
+        LaneReal na = a, nb = b, nc = c, nd = d, grow2, size2;
+        step.lanes(na, nb, nc, nd, n2, grow2, size2);
+        for (int l = 0; l < kLanes; ++l) sizes2[k][l] = size2[l];
+        const LaneReal m = norm2(na, nb, nc, nd);
+        a = live ? na : a;
+        b = live ? nb : b;
+        c = live ? nc : c;
+        d = live ? nd : d;
+        slope2 = live ? slope2 * grow2 : slope2;
+        n2 = live ? m : n2;
+        most = live & (m > most) ? m : most;
     }
     const double radius = std::sqrt(r2);
     for (int l = 0; l < kLanes; ++l) {
