@@ -263,5 +263,43 @@ TEST(PovJuliaFractal, RaysFromInsideLeaveAtThePlainMarchsCrossing) {
     }
 }
 
+// The bounds are a box the reaches prove holds every inside point, much smaller than the escape
+// sphere's (radius 1 + |p|, or 4 for hypercomplex numbers): random points of the sphere found
+// inside all lie in it, and the hits are still the plain march's from the sphere's entry
+// (LongerStepsFindThePlainMarchsCrossing).
+TEST(PovJuliaFractal, BoundsAreAProvenBoxAroundTheInsidePoints) {
+    struct Case {
+        const char* fractal;
+        double radius;     // the escape sphere's
+        double mostHalf;   // the box's half extent is at most this on every axis
+    };
+    const Case cases[] = {
+        {"<0.02, -0.02, 0.8, 0> max_iteration 10 precision 20 sqr quaternion", 1.8005, 1.5},
+        {"<0.33, 0.54, 0.52, 0.32> max_iteration 7 precision 20 cube quaternion", 1.8794, 1.5},
+        {"<0.2, 0.1, 0.59, -0.2> max_iteration 7 precision 20 sqr hypercomplex", 4, 2.5},
+        {"<0.1, 0.5, -0.2, 0.3> max_iteration 6 precision 50 slice <1, 1, 0, 1>, 0.1", 1.6245, 1.7},  // soundness only
+    };
+    for (const Case& c : cases) {
+        const Scene s = test::buildPov(std::string("julia_fractal { ") + c.fractal + " }");
+        ASSERT_EQ(s.objects.size(), 1u) << c.fractal;
+        const Bounds b = worldBounds(s.objects[0]);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_LE(b.hi[a], c.mostHalf) << c.fractal;
+            EXPECT_GE(b.lo[a], -c.mostHalf) << c.fractal;
+        }
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<double> U(-c.radius, c.radius);
+        int inside = 0, outOfBox = 0;
+        for (int i = 0; i < 200000; ++i) {
+            const Vec3 p{U(rng), U(rng), U(rng)};
+            if (!insideShape(s.objects[0], p)) continue;
+            ++inside;
+            outOfBox += p.x < b.lo.x || p.y < b.lo.y || p.z < b.lo.z || p.x > b.hi.x || p.y > b.hi.y || p.z > b.hi.z;
+        }
+        EXPECT_GT(inside, 100) << c.fractal;
+        EXPECT_EQ(outOfBox, 0) << c.fractal;
+    }
+}
+
 }}  // namespace RAYS_TEST_UNIT, namespace
 }  // namespace rays

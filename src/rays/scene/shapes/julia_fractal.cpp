@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <vector>
 
 #include "rays/math/regula_falsi.h"
 
@@ -18,7 +19,7 @@ namespace {
 using Cx = std::complex<double>;
 
 enum JuliaSlot { kJuliaP = 0, kJuliaN = 4, kJuliaD = 8, kJuliaIter, kJuliaStep, kJuliaR2, kJuliaAlgebra, kJuliaFn, kJuliaPwr,
-                 kJuliaSlots = kJuliaPwr + 2 };
+                 kJuliaBox = kJuliaPwr + 2, kJuliaSlots = kJuliaBox + 6 };
 
 // Bisection stops when the crossing is bracketed this tightly in object units: far below the
 // march step (1/precision) and the 0.001 offset of secondary rays, and half the halvings of a
@@ -453,6 +454,90 @@ double refineCrossing(const double* v, const Ray& r, double len, double lo, doub
 
 }  // namespace
 
+// A box holding every inside point, proven with the reaches. The escape sphere's box is cut into
+// kBoxCells³ cells; a cell is empty when it lies wholly outside the escape sphere (h(0) escapes at
+// once) or when its centre escapes with a reach (a distance in h(0)'s four dimensions) beyond the
+// cell's half diagonal as h(0) sees it (a step δ in x, y, z moves h(0) by at most δ/|n₄|, n the
+// slice's unit normal); a cell neither empty nor with its centre inside is cut in eight, down to
+// kBoxDepth times. The box is that of the cells not shown empty: first those whose centre is
+// inside, then the others that reach out of it. Only for the exact steps, whose reach is a bound
+// (escapeReach); else the escape sphere's box.
+constexpr int kBoxCells = 32;
+constexpr int kBoxDepth = 3;
+
+struct BoxProof {
+    const double* v;
+    double radius;  // the escape sphere's
+    double spread;  // 1/|n₄|: how far h(0) moves for a unit step in x, y, z
+
+    bool outsideSphere(Vec3 lo, double size) const {
+        Vec3 near;
+        for (int a = 0; a < 3; ++a) near[a] = std::clamp(0.0, lo[a], lo[a] + size);
+        return length(near) > radius;
+    }
+    // Whether the centre c is inside; else *empty tells whether the reach covers the cell. A centre
+    // outside the escape sphere is first moved onto it (just inside), the cell's points then lying
+    // as much further from it: those outside the sphere escape anyway, the others need the reach
+    // of the iterates after the first, which a point outside cannot show.
+    bool centreInside(Vec3 c, double size, bool* empty) const {
+        double shift = 0;
+        if (const double d = length(c); d >= radius * (1 - 1e-6)) {
+            const Vec3 onto = c * (radius * (1 - 1e-6) / d);
+            shift = length(c - onto);
+            c = onto;
+        }
+        double reach = 0;
+        if (juliaIterate(v, juliaStart(v, c), &reach, nullptr, 0)) return true;
+        *empty = reach > (0.5 * std::sqrt(3.0) * size + shift) * spread * (1 + 1e-9);
+        return false;
+    }
+    static bool within(const Bounds& box, Vec3 lo, double size) {
+        return !box.empty() && lo.x >= box.lo.x && lo.y >= box.lo.y && lo.z >= box.lo.z && lo.x + size <= box.hi.x &&
+               lo.y + size <= box.hi.y && lo.z + size <= box.hi.z;
+    }
+    void extend(Bounds& box, Vec3 lo, double size) const {
+        box.extend(lo);
+        box.extend(lo + Vec3(size));
+    }
+    // Adds to box the parts of the cell not shown empty.
+    void collect(Vec3 lo, double size, int depth, Bounds& box) const {
+        if (within(box, lo, size) || outsideSphere(lo, size)) return;
+        bool empty = false;
+        if (centreInside(lo + Vec3(0.5 * size), size, &empty) || (!empty && depth == 0)) return extend(box, lo, size);
+        if (empty) return;
+        const double half = 0.5 * size;
+        for (int i = 0; i < 8; ++i) collect(lo + Vec3(i & 1 ? half : 0, i & 2 ? half : 0, i & 4 ? half : 0), half, depth - 1, box);
+    }
+};
+
+Bounds provenBox(const double* v, double radius) {
+    const Bounds whole{Vec3(-radius), Vec3(radius)};
+    const JuliaFunction fn = JuliaFunction(int(v[kJuliaFn]));
+    const bool exact = v[kJuliaAlgebra] == 0 || fn == JuliaFunction::Sqr || fn == JuliaFunction::Cube;
+    if (!exact || int(v[kJuliaIter]) - 1 > kExactSteps) return whole;
+    const BoxProof proof{v, std::sqrt(v[kJuliaR2]), 1 / std::fabs(v[kJuliaN + 3])};
+    const double cell = 2 * radius / kBoxCells;
+    auto cellLo = [&](int i, int j, int k) { return Vec3{-radius + i * cell, -radius + j * cell, -radius + k * cell}; };
+    Bounds box;
+    std::vector<int> open;  // the cells neither inside nor shown empty at once
+    for (int i = 0; i < kBoxCells; ++i)
+        for (int j = 0; j < kBoxCells; ++j)
+            for (int k = 0; k < kBoxCells; ++k) {
+                const Vec3 lo = cellLo(i, j, k);
+                if (proof.outsideSphere(lo, cell)) continue;
+                bool empty = false;
+                if (proof.centreInside(lo + Vec3(0.5 * cell), cell, &empty)) proof.extend(box, lo, cell);
+                else if (!empty) open.push_back((i * kBoxCells + j) * kBoxCells + k);
+            }
+    for (const int n : open) {
+        const Vec3 lo = cellLo(n / (kBoxCells * kBoxCells), n / kBoxCells % kBoxCells, n % kBoxCells);
+        const double half = 0.5 * cell;
+        for (int i = 0; i < 8; ++i)
+            proof.collect(lo + Vec3(i & 1 ? half : 0, i & 2 ? half : 0, i & 4 ? half : 0), half, kBoxDepth - 1, box);
+    }
+    return box.empty() ? whole : box;
+}
+
 bool makeJuliaFractal(const JuliaParams& q, ShapeData& data) {
     if (q.maxIteration < 2 || !(q.precision > 0)) return false;
     if (!q.hypercomplex && q.function != JuliaFunction::Sqr && q.function != JuliaFunction::Cube) return false;
@@ -472,7 +557,9 @@ bool makeJuliaFractal(const JuliaParams& q, ShapeData& data) {
     v[kJuliaFn] = double(int(q.function));
     v[kJuliaPwr] = q.pwr[0];
     v[kJuliaPwr + 1] = q.pwr[1];
-    data.bounds = Bounds{Vec3(-r * (1 + 1e-9)), Vec3(r * (1 + 1e-9))};
+    const Bounds box = provenBox(v.data(), r * (1 + 1e-9));
+    for (int a = 0; a < 3; ++a) v[kJuliaBox + a] = box.lo[a], v[kJuliaBox + 3 + a] = box.hi[a];
+    data.bounds = box;
     return true;
 }
 
@@ -488,6 +575,23 @@ bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, Sh
     double t0 = std::max(tMin, (-b - sq) / dd), t1 = std::min(tMax, (-b + sq) / dd);
     if (t0 >= t1) return false;
     const double len = std::sqrt(dd), step = v[kJuliaStep] / len;
+    // Outside the proven box every point is outside: the march starts at its last point before
+    // the box (so that its points stay those of the march from t0) and ends where the ray leaves it.
+    double bIn = t0, bOut = t1;
+    for (int a = 0; a < 3; ++a) {
+        const double lo = v[kJuliaBox + a], hi = v[kJuliaBox + 3 + a];
+        if (r.dir[a] == 0) {  // parallel to the slab: in it or not
+            if (r.origin[a] < lo || r.origin[a] > hi) return false;
+            continue;
+        }
+        double ta = (lo - r.origin[a]) / r.dir[a], tb = (hi - r.origin[a]) / r.dir[a];
+        if (ta > tb) std::swap(ta, tb);
+        bIn = std::max(bIn, ta);
+        bOut = std::min(bOut, tb);
+    }
+    if (bIn > bOut) return false;
+    t0 += std::floor((bIn - t0) / step) * step;
+    t1 = bOut;
     // Steps of 1/precision, longer where the point's iterate escaped far (juliaIterate's reach, a
     // distance in h(0)'s four dimensions: a unit of t moves h(0) by len4, its t component too).
     const double* n = v + kJuliaN;
