@@ -91,7 +91,7 @@ ShapeBuild buildParametric(const std::vector<const Value*>& a, const std::vector
 }
 
 ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
-                      std::unique_ptr<ShapeData>& data, const std::string& where) {
+                      std::unique_ptr<ShapeData>& data, const std::string& where, ShapeMemo& memo) {
     auto need = [&](size_t n) {
         if (a.size() < n)
             throw Error(where + ": error: " + std::string(sdl::keywordName(kind)) + " needs " + std::to_string(n) +
@@ -226,8 +226,18 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             if (!q.hypercomplex && q.function != JuliaFunction::Sqr && q.function != JuliaFunction::Cube)
                 return ShapeBuild::NotAShape;  // POV-Ray's quaternions have sqr and cube only
             o.type = ShapeType::JuliaFractal;
+            std::vector<double> key = {q.p[0], q.p[1], q.p[2], q.p[3], q.slice[0], q.slice[1], q.slice[2], q.slice[3],
+                                       q.distance, double(q.maxIteration), q.precision, q.hypercomplex ? 1.0 : 0.0,
+                                       double(int(q.function)), q.pwr[0], q.pwr[1]};
+            if (const auto seen = memo.julia.find(key); seen != memo.julia.end()) {
+                if (!seen->second) return ShapeBuild::Empty;
+                o.data = seen->second;
+                return ShapeBuild::Made;
+            }
             data = std::make_unique<ShapeData>();
-            return makeJuliaFractal(q, *data) ? ShapeBuild::Made : ShapeBuild::Empty;
+            const bool made = makeJuliaFractal(q, *data);
+            memo.julia.emplace(std::move(key), made ? data.get() : nullptr);
+            return made ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::ovus: {
             // ovus { Bottom_radius, Top_radius }

@@ -2,6 +2,7 @@
 // sor, quadric, cubic, quartic, poly,
 // polynomial), from the POV-Ray 3.7 reference's syntax of each.
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,7 +32,15 @@ void buildBicubicPatch(const std::vector<const Value*>& a, const std::vector<con
 ShapeBuild buildParametric(const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Mesh& mesh,
                            const std::string& where);
 
+/// Shapes already built in this scene whose data a copy can share: julia fractals by their
+/// parameters (each costs a proof of its bounds, julia_fractal.cpp). The data stay the scene's.
+struct ShapeMemo {
+    std::map<std::vector<double>, const ShapeData*> julia;
+};
+
+/// memo: a julia fractal whose parameters it holds gets o.data from it and no data of its own;
+/// a new one is added once the caller keeps data (its address does not change).
 ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::vector<const Entry*>& terms, Object& o,
-                      std::unique_ptr<ShapeData>& data, const std::string& where);
+                      std::unique_ptr<ShapeData>& data, const std::string& where, ShapeMemo& memo);
 
 }  // namespace rays::pov

@@ -534,7 +534,7 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
         }
         default: {
             std::unique_ptr<ShapeData> data;
-            const ShapeBuild made = buildShape(kind, a, terms_, o, data, notes_.where(at));
+            const ShapeBuild made = buildShape(kind, a, terms_, o, data, notes_.where(at), shapeMemo_);
             if (made == ShapeBuild::Empty) return;
             if (made == ShapeBuild::NotAShape) {
                 notes_.note(std::string(sdl::keywordName(kind)), at, "(left out)");

@@ -13,6 +13,7 @@
 
 #include "rays/io/ttf_font.h"
 #include "rays/pov/appearance.h"
+#include "rays/pov/build_shapes.h"
 #include "rays/pov/not_rendered.h"
 #include "rays/pov/pov_host.h"
 #include "rays/scene/scene.h"
@@ -151,6 +152,7 @@ private:
     size_t defaultsApplied_ = 0;                                   ///< how many of its entries
     Appearance defaultsLook_;
     std::map<uint32_t, Appearance> earlierDefaults_;  ///< defaultLookAt's looks, by #default count
+    ShapeMemo shapeMemo_;  ///< shapes whose data copies share (build_shapes.h)
     std::function<std::string(const std::string&)> findFile_;
     FontCache ownFonts_;
     FontCache* fonts_ = &ownFonts_;
