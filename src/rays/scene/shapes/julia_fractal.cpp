@@ -462,8 +462,8 @@ double refineCrossing(const double* v, const Ray& r, double len, double lo, doub
 // kBoxDepth times. The box is that of the cells not shown empty: first those whose centre is
 // inside, then the others that reach out of it. Only for the exact steps, whose reach is a bound
 // (escapeReach); else the escape sphere's box.
-constexpr int kBoxCells = 8;
-constexpr int kBoxDepth = 5;
+constexpr int kBoxCells = 16;
+constexpr int kBoxDepth = 4;
 
 struct BoxProof {
     const double* v;
