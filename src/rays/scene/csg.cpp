@@ -236,9 +236,10 @@ bool convexInside(const Object& o, bool inverse) {
     }
 }
 
-// Narrows [lo, hi] to the stretch of the world ray within the closed inside of convex leaf o
-// (convexInside); lo ≥ hi when the ray misses it. Widened a little for rounding.
-void insideInterval(const Object& o, bool inverse, const Ray& worldRay, double& lo, double& hi) {
+// The stretch [a, b] of the world ray within the closed inside of convex leaf o (convexInside),
+// widened a little for rounding; false when the ray misses it (a, b unset). Infinite ends for
+// shapes without a convex inside.
+bool insideSpan(const Object& o, bool inverse, const Ray& worldRay, double& spanLo, double& spanHi) {
     const Ray r = o.localSpace ? Ray{o.toObject.point(worldRay.origin), o.toObject.vector(worldRay.dir)} : worldRay;
     double a = -kInfinity, b = kInfinity;
     switch (o.type) {
@@ -283,15 +284,26 @@ void insideInterval(const Object& o, bool inverse, const Ray& worldRay, double& 
             }
             break;
         case ShapeType::Poly: quadricInsideInterval(*o.data, r, a, b); break;
-        default: return;
+        default:
+            spanLo = -kInfinity, spanHi = kInfinity;
+            return true;
     }
-    if (!(a <= b)) {
+    if (!(a <= b)) return false;
+    const double pad = 1e-7 * ((std::isfinite(a) ? std::fabs(a) : 0) + (std::isfinite(b) ? std::fabs(b) : 0)) + 1e-12;
+    spanLo = a - pad, spanHi = b + pad;
+    return true;
+}
+
+// Narrows [lo, hi] to the stretch of the world ray within the closed inside of convex leaf o
+// (insideSpan); lo ≥ hi when the ray misses it.
+void insideInterval(const Object& o, bool inverse, const Ray& worldRay, double& lo, double& hi) {
+    double a, b;
+    if (!insideSpan(o, inverse, worldRay, a, b)) {
         hi = lo;
         return;
     }
-    const double pad = 1e-7 * ((std::isfinite(a) ? std::fabs(a) : 0) + (std::isfinite(b) ? std::fabs(b) : 0)) + 1e-12;
-    lo = std::max(lo, a - pad);
-    hi = std::min(hi, b + pad);
+    lo = std::max(lo, a);
+    hi = std::min(hi, b);
 }
 
 }  // namespace
@@ -482,11 +494,28 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
     // Leaf i's hits are sought only where the ray is within its window and the convex leaves it
     // must be inside (csg.h).
     double winLo[kCsgCachedLeaves], winHi[kCsgCachedLeaves];
+    // The convex leaves' inside spans along this ray, each found once (a leaf clips the windows of
+    // all the others of its intersection): 0 not yet, 1 found, −1 the ray misses it.
+    signed char spanState[kCsgCachedLeaves];
+    double spanLo[kCsgCachedLeaves], spanHi[kCsgCachedLeaves];
+    std::fill(spanState, spanState + cached, static_cast<signed char>(0));
     auto clipToWindow = [&](int i, double& lo, double& hi) {
         clipToBox(c.leafWindow[size_t(i)], ray, invDir, lo, hi);
         for (int j = c.clipStart[size_t(i)]; j < c.clipStart[size_t(i) + 1] && lo < hi; ++j) {
             const int k = c.clipList[size_t(j)];
-            insideInterval(c.leaves[size_t(k)], c.nodes[size_t(c.leafNode[size_t(k)])].inverse, ray, lo, hi);
+            const bool inverse = c.nodes[size_t(c.leafNode[size_t(k)])].inverse;
+            if (k >= cached) {
+                insideInterval(c.leaves[size_t(k)], inverse, ray, lo, hi);
+                continue;
+            }
+            if (spanState[k] == 0)
+                spanState[k] = insideSpan(c.leaves[size_t(k)], inverse, ray, spanLo[k], spanHi[k]) ? 1 : -1;
+            if (spanState[k] < 0) {
+                hi = lo;
+            } else {
+                lo = std::max(lo, spanLo[k]);
+                hi = std::min(hi, spanHi[k]);
+            }
         }
     };
     auto window = [&](int i, double& lo, double& hi) {

@@ -57,7 +57,9 @@ struct Csg {
     /// above k, the first child of a difference that subtracts k), as leaf indices
     /// clipList[clipStart[k] .. clipStart[k + 1]): the walk seeks k's hits only on the stretch of the
     /// ray within all of them (Roth, "Ray casting for modeling solids", 1982: a ray's intervals in
-    /// the solids of an intersection are intersected).
+    /// the solids of an intersection are intersected). Each such stretch is found once per ray and
+    /// shared by the leaves it clips (`advanced/chess2.pov`, intersections of about ten convex
+    /// leaves: render 960 → 840 ms at 160×120).
     std::vector<int32_t> clipStart, clipList;
     /// Trees with more than kCsgCachedLeaves leaves: a box tree over the leaves' windows, which
     /// the walk asks for the nearest leaf hit (csg_box_tree.h).
