@@ -144,6 +144,26 @@ TEST(PovTextLayout, ExtentsMatchPovRay) {
     }
 }
 
+// Texts with the same string, font, thickness and offset share one outline (a scene of many
+// letter blocks lays each letter out once); others get their own. The font is looked for once
+// per name (FontCache::pathOf), by the scene's builder and by those of trace() and the extents.
+TEST(PovTextLayout, TheSameTextSharesItsOutlines) {
+    NEED_FONTS();
+    const Scene s = build(
+        "#declare T = text { ttf \"timrom.ttf\" \"A\" 1, 0 }\n"
+        "#declare E = max_extent(T);\n"
+        "object { T translate x } object { T rotate 30*y }\n"
+        "text { ttf \"timrom.ttf\" \"A\" 1, 0 }\n"
+        "text { ttf \"timrom.ttf\" \"A\" 0.5, 0 }\n"
+        "text { ttf \"timrom.ttf\" \"B\" 1, 0 }\n");
+    ASSERT_EQ(s.objects.size(), 5u);
+    EXPECT_EQ(s.objects[0].text, s.objects[1].text);
+    EXPECT_EQ(s.objects[0].text, s.objects[2].text);
+    EXPECT_NE(s.objects[0].text, s.objects[3].text);
+    EXPECT_NE(s.objects[0].text, s.objects[4].text);
+    EXPECT_EQ(s.texts.size(), 3u);
+}
+
 TEST(PovTextLayout, LongStringsTestOnlyNearbyGlyphs) {
     NEED_FONTS();
     std::string line;

@@ -35,9 +35,13 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-/// Fonts read so far, by path (one parse's builders share them: the objects built for trace()
-/// and the extents read the same fonts as the scene).
-using FontCache = std::unordered_map<std::string, std::unique_ptr<TtfFont>>;
+/// Fonts read so far and the files their names were found at (one parse's builders share them:
+/// the objects built for trace() and the extents read the same fonts as the scene, and a scene of
+/// many texts looks for each font once).
+struct FontCache {
+    std::unordered_map<std::string, std::unique_ptr<TtfFont>> byPath;  ///< the fonts loaded, by file
+    std::unordered_map<std::string, std::string> pathOf;  ///< the file each font name was found at
+};
 
 /// Code points of s: UTF-8 sequences decoded, other bytes taken as Latin-1.
 std::u32string decodeText(std::string_view s);

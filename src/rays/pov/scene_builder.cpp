@@ -582,14 +582,17 @@ void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a
     else if (font->args[0].type == VType::String) name = font->args[0].str();
     else throw Error(notes_.where(font->loc) + ": error: ttf needs the font file's name as a string");
     // A name without an extension is also tried with ".ttf" (POV-Ray's examples write "cyrvetic").
-    std::vector<std::string> names{name};
-    if (!std::filesystem::path(name).has_extension()) names.push_back(name + ".ttf");
-    std::string path;
-    for (const std::string& n : names) {
-        if (path.empty() && findFile_) path = findFile_(n);
-        if (path.empty() && !std::filesystem::path(n).is_absolute()) {
-            const std::string installed = (std::filesystem::path(kInstalledFonts) / n).string();
-            if (std::filesystem::is_regular_file(installed)) path = installed;
+    // Found once per name (a scene of many texts looked in every folder for each).
+    std::string& path = fonts_->pathOf[name];
+    if (path.empty()) {
+        std::vector<std::string> names{name};
+        if (!std::filesystem::path(name).has_extension()) names.push_back(name + ".ttf");
+        for (const std::string& n : names) {
+            if (path.empty() && findFile_) path = findFile_(n);
+            if (path.empty() && !std::filesystem::path(n).is_absolute()) {
+                const std::string installed = (std::filesystem::path(kInstalledFonts) / n).string();
+                if (std::filesystem::is_regular_file(installed)) path = installed;
+            }
         }
     }
     if (path.empty())
@@ -598,22 +601,27 @@ void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a
     const double thickness = toFloat(*a[1]);
     const Vec3 offset = toVec3(*a[2]);
     if (!std::isfinite(thickness)) return;
-    std::unique_ptr<TtfFont>& f = (*fonts_)[path];
-    try {
-        if (!f) f = std::make_unique<TtfFont>(path);
-    } catch (const Error& err) {
-        throw Error(notes_.where(font->loc) + ": " + err.what());
+    // The same string in the same font, thickness and offset shares its outlines.
+    TextKey key{path, a[0]->str(), thickness, offset.x, offset.y, offset.z};
+    const TextShape*& shape = texts_[key];
+    if (!shape) {
+        std::unique_ptr<TtfFont>& f = fonts_->byPath[path];
+        try {
+            if (!f) f = std::make_unique<TtfFont>(path);
+        } catch (const Error& err) {
+            throw Error(notes_.where(font->loc) + ": " + err.what());
+        }
+        scene_.texts.push_back(std::make_unique<TextShape>(f->layout(a[0]->str(), thickness, offset)));
+        shape = scene_.texts.back().get();
     }
-    auto shape = std::make_unique<TextShape>(f->layout(a[0]->str(), thickness, offset));
     if (shape->bounds.empty()) return;  // "": nothing (a string of spaces is an empty box, as in POV-Ray)
     Object o;
     o.type = ShapeType::Text;
-    o.text = shape.get();
+    o.text = shape;
     o.line = int(at.line);
     o.col = int(at.col);
     o.material = material(look);
     prepareObject(o, toWorld);
-    scene_.texts.push_back(std::move(shape));
     emit(o, inverse);
 }
 
