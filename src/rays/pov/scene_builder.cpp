@@ -601,9 +601,11 @@ void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a
     const double thickness = toFloat(*a[1]);
     const Vec3 offset = toVec3(*a[2]);
     if (!std::isfinite(thickness)) return;
-    // The same string in the same font, thickness and offset shares its outlines.
-    TextKey key{path, a[0]->str(), thickness, offset.x, offset.y, offset.z};
-    const TextShape*& shape = texts_[key];
+    // The same string in the same font, thickness and offset shares its outlines (a key with a
+    // NaN in it would not order: such a text gets outlines of its own).
+    const bool keyed = std::isfinite(offset.x) && std::isfinite(offset.y) && std::isfinite(offset.z);
+    const TextShape* own = nullptr;
+    const TextShape*& shape = keyed ? texts_[TextKey{path, a[0]->str(), thickness, offset.x, offset.y, offset.z}] : own;
     if (!shape) {
         std::unique_ptr<TtfFont>& f = fonts_->byPath[path];
         try {
