@@ -229,14 +229,18 @@ ShapeBuild buildShape(Kw kind, const std::vector<const Value*>& a, const std::ve
             std::vector<double> key = {q.p[0], q.p[1], q.p[2], q.p[3], q.slice[0], q.slice[1], q.slice[2], q.slice[3],
                                        q.distance, double(q.maxIteration), q.precision, q.hypercomplex ? 1.0 : 0.0,
                                        double(int(q.function)), q.pwr[0], q.pwr[1]};
-            if (const auto seen = memo.julia.find(key); seen != memo.julia.end()) {
-                if (!seen->second) return ShapeBuild::Empty;
-                o.data = seen->second;
-                return ShapeBuild::Made;
+            // Keys with a NaN would not order: such a fractal is built on its own.
+            const bool keyed = std::all_of(key.begin(), key.end(), [](double k) { return !std::isnan(k); });
+            if (keyed) {
+                if (const auto seen = memo.julia.find(key); seen != memo.julia.end()) {
+                    if (!seen->second) return ShapeBuild::Empty;
+                    o.data = seen->second;
+                    return ShapeBuild::Made;
+                }
             }
             data = std::make_unique<ShapeData>();
             const bool made = makeJuliaFractal(q, *data);
-            memo.julia.emplace(std::move(key), made ? data.get() : nullptr);
+            if (keyed) memo.julia.emplace(std::move(key), made ? data.get() : nullptr);
             return made ? ShapeBuild::Made : ShapeBuild::Empty;
         }
         case Kw::ovus: {
