@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rays/math/regula_falsi.h"
+#include "rays/scene/shapes/box_clip.h"
 
 namespace rays {
 
@@ -20,7 +21,7 @@ namespace {
 using Cx = std::complex<double>;
 
 enum JuliaSlot { kJuliaP = 0, kJuliaN = 4, kJuliaD = 8, kJuliaIter, kJuliaStep, kJuliaR2, kJuliaAlgebra, kJuliaFn, kJuliaPwr,
-                 kJuliaBox = kJuliaPwr + 2, kJuliaSlots = kJuliaBox + 6 };
+                 kJuliaSlots = kJuliaPwr + 2 };
 
 // Bisection stops when the crossing is bracketed this tightly in object units: far below the
 // march step (1/precision) and the 0.001 offset of secondary rays, and half the halvings of a
@@ -558,9 +559,7 @@ bool makeJuliaFractal(const JuliaParams& q, ShapeData& data) {
     v[kJuliaFn] = double(int(q.function));
     v[kJuliaPwr] = q.pwr[0];
     v[kJuliaPwr + 1] = q.pwr[1];
-    const Bounds box = provenBox(v.data(), r * (1 + 1e-9));
-    for (int a = 0; a < 3; ++a) v[kJuliaBox + a] = box.lo[a], v[kJuliaBox + 3 + a] = box.hi[a];
-    data.bounds = box;
+    data.bounds = provenBox(v.data(), r * (1 + 1e-9));
     return true;
 }
 
@@ -579,18 +578,7 @@ bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, Sh
     // Outside the proven box every point is outside: the march starts at its last point before
     // the box (so that its points stay those of the march from t0) and ends where the ray leaves it.
     double bIn = t0, bOut = t1;
-    for (int a = 0; a < 3; ++a) {
-        const double lo = v[kJuliaBox + a], hi = v[kJuliaBox + 3 + a];
-        if (r.dir[a] == 0) {  // parallel to the slab: in it or not
-            if (r.origin[a] < lo || r.origin[a] > hi) return false;
-            continue;
-        }
-        double ta = (lo - r.origin[a]) / r.dir[a], tb = (hi - r.origin[a]) / r.dir[a];
-        if (ta > tb) std::swap(ta, tb);
-        bIn = std::max(bIn, ta);
-        bOut = std::min(bOut, tb);
-    }
-    if (bIn > bOut) return false;
+    if (!clipRayToBox(o.data->bounds, r, bIn, bOut)) return false;
     t0 += std::floor((bIn - t0) / step) * step;
     t1 = bOut;
     // Steps of 1/precision, longer where the point's iterate escaped far (juliaIterate's reach, a
