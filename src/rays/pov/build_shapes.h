@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "rays/pov/item_values.h"
@@ -33,9 +34,12 @@ ShapeBuild buildParametric(const std::vector<const Value*>& a, const std::vector
                            const std::string& where);
 
 /// Shapes already built in this scene whose data a copy can share: julia fractals by their
-/// parameters (each costs a proof of its bounds, julia_fractal.cpp). The data stay the scene's.
+/// parameters (each costs a proof of its bounds, julia_fractal.cpp), texts' outlines by font file,
+/// string, thickness and offset (SceneBuilder::addText). The data stay the scene's.
 struct ShapeMemo {
     std::map<std::vector<double>, const ShapeData*> julia;
+    using TextKey = std::tuple<std::string, std::string, double, double, double, double>;
+    std::map<TextKey, const TextShape*> texts;
 };
 
 /// memo: a julia fractal whose parameters it holds gets o.data from it and no data of its own;

@@ -605,7 +605,7 @@ void SceneBuilder::addText(const Entry* font, const std::vector<const Value*>& a
     // NaN in it would not order: such a text gets outlines of its own).
     const bool keyed = std::isfinite(offset.x) && std::isfinite(offset.y) && std::isfinite(offset.z);
     const TextShape* own = nullptr;
-    const TextShape*& shape = keyed ? texts_[TextKey{path, a[0]->str(), thickness, offset.x, offset.y, offset.z}] : own;
+    const TextShape*& shape = keyed ? shapeMemo_.texts[ShapeMemo::TextKey{path, a[0]->str(), thickness, offset.x, offset.y, offset.z}] : own;
     if (!shape) {
         std::unique_ptr<TtfFont>& f = fonts_->byPath[path];
         try {

@@ -9,7 +9,6 @@
 #include <map>
 #include <memory>
 #include <string>
-#include <tuple>
 #include <unordered_map>
 
 #include "rays/io/ttf_font.h"
@@ -154,9 +153,6 @@ private:
     Appearance defaultsLook_;
     std::map<uint32_t, Appearance> earlierDefaults_;  ///< defaultLookAt's looks, by #default count
     ShapeMemo shapeMemo_;  ///< shapes whose data copies share (build_shapes.h)
-    /// addText: the outlines made so far, by font file, string, thickness and offset (owned by the scene).
-    using TextKey = std::tuple<std::string, std::string, double, double, double, double>;
-    std::map<TextKey, const TextShape*> texts_;
     std::function<std::string(const std::string&)> findFile_;
     FontCache ownFonts_;
     FontCache* fonts_ = &ownFonts_;
