@@ -498,7 +498,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
     // all the others of its intersection): 0 not yet, 1 found, −1 the ray misses it.
     signed char spanState[kCsgCachedLeaves];
     double spanLo[kCsgCachedLeaves], spanHi[kCsgCachedLeaves];
-    std::fill(spanState, spanState + cached, static_cast<signed char>(0));
+    if (!c.clipList.empty()) std::fill(spanState, spanState + cached, static_cast<signed char>(0));
     auto clipToWindow = [&](int i, double& lo, double& hi) {
         clipToBox(c.leafWindow[size_t(i)], ray, invDir, lo, hi);
         for (int j = c.clipStart[size_t(i)]; j < c.clipStart[size_t(i) + 1] && lo < hi; ++j) {
