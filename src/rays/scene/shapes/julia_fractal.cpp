@@ -622,7 +622,7 @@ bool hitJuliaFractal(const Object& o, const Ray& r, double tMin, double tMax, Sh
                 }
                 prev = ts[kLanes - 1];
                 prevMargin = out[kLanes - 1].margin;
-                ahead = stepsAhead(startIn ? 0 : reach);
+                ahead = stepsAhead(reach);  // 0 when the lanes are inside
                 continue;
             }
         }
