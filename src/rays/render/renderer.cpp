@@ -41,7 +41,9 @@ Vec3 aaLook(Vec3 linear, double gamma) {
 // POV-Ray's method 1 (reference 3.2.8.7): a pixel whose colour differs from its left or upper
 // neighbour's by more than the threshold (|Δr| + |Δg| + |Δb|) is supersampled, and so is that
 // neighbour.
-std::vector<uint8_t> markColourChanges(const std::vector<Vec3>& looks, int w, int h, double threshold) {
+using Looks = std::vector<Vec3, PixelAllocator<Vec3>>;  // unset until the first pass writes them
+
+std::vector<uint8_t> markColourChanges(const Looks& looks, int w, int h, double threshold) {
     std::vector<uint8_t> mark(looks.size(), 0);
     auto differ = [&](size_t a, size_t b) {
         const Vec3 d = looks[a] - looks[b];
@@ -406,17 +408,23 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         ViewSetup pinhole = view;
         pinhole.samples = 1;
         pinhole.aperture = 0;
-        std::vector<PathInfo> seen(size_t(s.width) * size_t(s.height));
         const bool byColour = s.aaThreshold >= 0;
-        std::vector<Vec3> looks(byColour ? seen.size() : 0);  // the colours POV-Ray's rule compares
+        // What each centre saw, kept only for a reader: the path rule or the line records (48
+        // bytes a pixel to clear and fault in otherwise: 3.7 MB at 320×240).
+        const size_t pixels = size_t(s.width) * size_t(s.height);
+        std::vector<PathInfo> seen(!byColour || onRecord ? pixels : 0);
+        Looks looks;  // the colours POV-Ray's rule compares, first touched by the render threads
+        if (byColour) looks.resize(pixels);
         forTiles([&](int x, int y, TraceContext& ctx) {
             const size_t i = size_t(y) * s.width + x;
-            const Vec3 c = renderPixel(tracer, pinhole, one, x, s.height - 1 - y, ctx, &seen[i]);
+            const Vec3 c = renderPixel(tracer, pinhole, one, x, s.height - 1 - y, ctx, seen.empty() ? nullptr : &seen[i]);
             img.at(x, y) = pixelOut(c);
             if (byColour) looks[i] = aaLook(povOutput ? povLinearColor(c, assumedGamma) : c, s.aaGamma);
         }, progress ? ProgressFn([&](double f) { progress(0.5 * f); }) : ProgressFn{});
-        std::vector<uint8_t> mark =
-            byColour ? markColourChanges(looks, s.width, s.height, s.aaThreshold) : markPathChanges(seen, s.width, s.height);
+        // A cancelled first pass left pixels unset: nothing is marked (pass 2 stops at once anyway).
+        std::vector<uint8_t> mark = cancelled() ? std::vector<uint8_t>(pixels, 0)
+                                    : byColour  ? markColourChanges(looks, s.width, s.height, s.aaThreshold)
+                                                : markPathChanges(seen, s.width, s.height);
         // Pass 2: full sampling of the marked pixels only.
         forTiles([&](int x, int y, TraceContext& ctx) {
             if (mark[size_t(y) * s.width + x])
