@@ -11,7 +11,11 @@ namespace rays {
 namespace {
 
 constexpr int kStride = 5;
-constexpr size_t kCurveStride = 13;  // x0..x3, z0..z3, side, xlo, xhi, zlo, zhi
+// A curved segment: x0..x3, z0..z3 (the cubics x(u), z(u)), side, xlo, xhi, zlo, zhi (its box),
+// then the pieces on which z(u) is monotone: the count of cuts k (0–2), the cuts, and z at the
+// k + 2 piece ends 0, cuts…, 1 (kPieceZ…).
+constexpr size_t kCurveStride = 20;
+constexpr size_t kCuts = 13, kPieceZ = 16;
 constexpr double kJointPad = 1e-9;   // segment ends are searched from both neighbours
 
 // Even-odd rule by crossings along +x (as in polygon.cpp).
@@ -52,26 +56,43 @@ bool insideCurves(const std::vector<double>& v, double px, double pz) {
     for (size_t i = 0; i + kCurveStride <= v.size(); i += kCurveStride) {
         const double* seg = &v[i];
         if (pz < seg[11] || pz > seg[12] || px >= seg[10]) continue;
-        const double dz[3] = {seg[5], 2 * seg[6], 3 * seg[7]};
-        double cuts[4] = {0, 0, 0, 0};
-        const int k = polyRoots(dz, 2, 0, 1, cuts + 1);
-        cuts[k + 1] = 1;
+        const int k = int(seg[kCuts]);
+        const double* z = seg + kPieceZ;
         for (int j = 0; j <= k; ++j) {
-            double lo = cuts[j], hi = cuts[j + 1];
-            const bool above = cubicAt(seg + 4, lo) > pz;
-            if (above == (cubicAt(seg + 4, hi) > pz)) continue;
+            if ((z[j] > pz) == (z[j + 1] > pz)) continue;
+            // Wholly right of the point, the segment's crossing counts without finding it.
+            if (px < seg[9]) {
+                in = !in;
+                continue;
+            }
+            const double lo = j == 0 ? 0.0 : seg[kCuts + j], hi = j == k ? 1.0 : seg[kCuts + j + 1];
             if (cubicAt(seg, crossingOf(seg + 4, pz, lo, hi)) > px) in = !in;
         }
     }
     return in;
 }
 
+// A segment's monotone pieces of z(u) (see kCuts).
+void setPieces(double* seg) {
+    const double dz[3] = {seg[5], 2 * seg[6], 3 * seg[7]};
+    double cuts[2] = {0, 0};
+    const int k = polyRoots(dz, 2, 0, 1, cuts);
+    seg[kCuts] = k;
+    seg[kCuts + 1] = cuts[0];
+    seg[kCuts + 2] = cuts[1];
+    seg[kPieceZ] = cubicAt(seg + 4, 0);
+    for (int j = 0; j < k; ++j) seg[kPieceZ + 1 + j] = cubicAt(seg + 4, cuts[j]);
+    seg[kPieceZ + 1 + k] = cubicAt(seg + 4, 1);
+}
+
 // A segment (x(u), z(u) cubics) with its box; its side is set later.
 void addCurve(std::vector<double>& v, Vec3 c0, Vec3 c1, Vec3 c2, Vec3 c3) {
     v.insert(v.end(), {c0.x, c1.x, c2.x, c3.x, c0.z, c1.z, c2.z, c3.z, 1.0, kInfinity, -kInfinity, kInfinity, -kInfinity});
+    v.resize(v.size() + kCurveStride - 13);
     double* seg = &v[v.size() - kCurveStride];
     cubicRange(seg, seg[9], seg[10]);
     cubicRange(seg + 4, seg[11], seg[12]);
+    setPieces(seg);
 }
 
 // The sub-prisms' segments by the reference's reading of each spline type; each closed outline's
@@ -172,6 +193,12 @@ void curvedWalls(const Object& o, Vec3 O, Vec3 D, double shift, double tMin, dou
         const double pad = 1e-9 * (std::fabs(lo) + std::fabs(hi));
         if (lo > pad || hi < -pad) continue;
         const double p[4] = {a * seg[0] + b * seg[4] + c, a * seg[1] + b * seg[5], a * seg[2] + b * seg[6], a * seg[3] + b * seg[7]};
+        // The cubic's Bernstein coefficients on [0, 1] bound it (the convex hull property): all of
+        // one sign, by more than the joints' padding can change it, and it has no root there.
+        const double b1 = p[0] + p[1] / 3, b2 = b1 + (p[1] + p[2]) / 3, b3 = p[0] + p[1] + p[2] + p[3];
+        const double hull = 1e-8 * (std::fabs(p[0]) + std::fabs(b1) + std::fabs(b2) + std::fabs(b3));
+        if ((p[0] > hull && b1 > hull && b2 > hull && b3 > hull) || (p[0] < -hull && b1 < -hull && b2 < -hull && b3 < -hull))
+            continue;
         double roots[3];
         const int k = polyRoots(p, 3, -kJointPad, 1 + kJointPad, roots);
         for (int j = 0; j < k; ++j) {
