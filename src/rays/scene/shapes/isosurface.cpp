@@ -4,7 +4,9 @@
 // steps over a crossing when G is right — then bisection of the step that changed sign until it
 // is shorter than accuracy / 16 (the hit is its far end, so that the next search from it, by CSG
 // or a ray going on, does not find the same crossing again). This is the textbook Lipschitz
-// "sphere tracing" (Hart 1996) on a line, not POV-Ray's own subdivision; the reference
+// "sphere tracing" (Hart 1996) on a line, each step first tried 1.6 times as long and kept when
+// the two ends prove the longer stretch empty (Keinert et al. 2014), not POV-Ray's own
+// subdivision; the reference
 // (3.4.5.1.6) gives the keywords' meaning. The normal is the function's gradient by central
 // differences (gradientStep: the accuracy, within [1e-6, 0.01]). The function runs on this
 // thread's fn::Scratch, grown once per thread to the largest isosurface's frame: no allocation
@@ -25,6 +27,7 @@ enum : size_t { kAccuracy, kMaxGradient, kSphere, kValues };
 
 constexpr int kMaxSteps = 4096;   // march steps over the container span at most (a grazing ray's cost)
 constexpr int kMaxBisections = 64;
+constexpr double kOverStep = 1.6;  // the over-relaxed step, in plain steps
 
 // f − threshold at p on this thread's scratch.
 double value(const Object& o, Vec3 p) {
@@ -126,7 +129,19 @@ bool hitIsosurface(const Object& o, const Ray& r, double tMin, double tMax, Shap
     const double minStep = std::max(accuracy / len, (end - a) / kMaxSteps);
     for (;;) {
         double step = std::fabs(va) / g;  // NaN (sqrt of a negative number, say) steps the least
-        if (!(step > minStep)) step = minStep;
+        if (!(step > minStep)) {
+            step = minStep;
+        } else if (a + kOverStep * step < end) {
+            // Over-relaxed (Keinert et al., "Enhanced Sphere Tracing", 2014): a step kOverStep
+            // times as long is kept when both ends, of one sign, are too far from 0 for a
+            // crossing between them (|va| + |vb| > G·(b − a)); else the plain step is taken.
+            const double b = a + kOverStep * step, vb = value(o, r.at(b));
+            if ((va < 0) == (vb < 0) && std::fabs(va) + std::fabs(vb) > g * (b - a)) {
+                a = b;
+                va = vb;
+                continue;
+            }
+        }
         const double b = a + step < end ? a + step : end;
         const double vb = value(o, r.at(b));
         if ((va < 0) != (vb < 0)) {
