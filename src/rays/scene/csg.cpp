@@ -1,6 +1,7 @@
 #include "rays/scene/csg.h"
 
 #include <algorithm>
+#include <new>
 #include <cmath>
 
 #include "rays/scene/mesh.h"
@@ -579,12 +580,25 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
     }
     double nextT[kCsgCachedLeaves];  // leaf i's nearest hit after from[i] (infinite: none)
     double from[kCsgCachedLeaves];
+    // The first leaves' hits themselves, kept when the caller wants the surface's normals: the hit
+    // taken is then the one already found, not found again (a quartic's or a lathe's roots twice).
+    // Unconstructed until a leaf's search writes its slot.
+    union HitSlot {
+        ShapeHit h;
+        HitSlot() {}
+    };
+    HitSlot kept[kCsgKeptHits];
+    const int keep = hit ? std::min(cached, kCsgKeptHits) : 0;
+    auto nextHit = [&](int i, double after) {
+        ShapeHit& h = i < keep ? *new (&kept[i].h) ShapeHit{} : sh;
+        return hitLeaf(i, after, tMax, h) ? h.t : kInfinity;
+    };
     for (int i = 0; i < cached; ++i) {
         winLo[i] = tMin, winHi[i] = tMax;
         if (c.hasSurface[size_t(i)]) clipToWindow(i, winLo[i], winHi[i]);
         else winHi[i] = winLo[i];
         from[i] = tMin;
-        nextT[i] = hitLeaf(i, tMin, tMax, sh) ? sh.t : kInfinity;
+        nextT[i] = nextHit(i, tMin);
     }
     double tLast = tMin;  // the hits taken so far lie at or before it
     for (;;) {
@@ -597,11 +611,21 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
         if (best < 0) return false;
         if (best < cached) bestFrom = from[best];
         bool flip = false;
-        if (onSurface(c, best, ray.at(bestT), flip)) return !hit || take(best, bestFrom, flip);  // bestT: the nearest after bestFrom
+        if (onSurface(c, best, ray.at(bestT), flip)) {
+            if (!hit) return true;
+            if (best >= keep) return take(best, bestFrom, flip);  // bestT: the nearest after bestFrom
+            *hit = kept[best].h;
+            if (flip) {
+                hit->normal = -hit->normal;
+                hit->geomNormal = -hit->geomNormal;
+            }
+            if (!hit->part) hit->part = &c.leaves[size_t(best)];
+            return true;
+        }
         tLast = bestT;
         if (best < cached) {
             from[best] = bestT;
-            nextT[best] = hitLeaf(best, bestT, tMax, sh) ? sh.t : kInfinity;
+            nextT[best] = nextHit(best, bestT);
         }
     }
 }

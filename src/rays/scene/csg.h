@@ -91,6 +91,8 @@ struct Csg {
 /// Leaves whose next hits the walk keeps on the stack; the hits of further leaves are recomputed
 /// at every step of the walk (correct, slower).
 constexpr int kCsgCachedLeaves = 128;
+/// Of those, the first ones whose hits intersectCsg keeps for the normals of the hit it returns.
+constexpr int kCsgKeptHits = 8;
 /// Nodes with this many children or more get a box tree over them (Csg::childTree).
 constexpr int kCsgWideNode = 8;
 
