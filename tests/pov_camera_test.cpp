@@ -108,6 +108,37 @@ TEST(PovCamera, LookAtMirrorsUnlessUpCrossDirectionPointsAlongRight) {
     expectDir("location <-10,10,-10> right x up -y look_at 0", 0, 50, mirrored, kSide);
 }
 
+TEST(PovCamera, LookAtComesLastFromVersion35AndInOrderBefore) {
+    // Measured with POV-Ray 3.7 (a sphere at the look_at point and one above the origin): under
+    // #version 3.5 and later `direction`, `location`, `right` and `sky` written after look_at give
+    // the image of the same items written before it; under 3.1 (3.49 too) they apply in order,
+    // so a direction written after look_at turns the camera away from the point.
+    auto centre = [](const std::string& version, const std::string& body) {
+        ParseOptions o;
+        o.language.installedIncludeDir.clear();
+        const Scene s = pov::parsePovText("#version " + version + ";\ncamera { " + body + " }\n", "scene.pov", ".", o);
+        return CameraRays(s.cameras.at(0)).rayThrough(50.5, 50.5, kSize, kSize);
+    };
+    auto expectTowards = [](const Ray& r, Vec3 p) {
+        const Vec3 want = normalize(p - r.origin), got = normalize(r.dir);
+        EXPECT_NEAR(length(got - want), 0, 1e-9);
+    };
+    for (const char* v : {"3.5", "3.7"}) {
+        SCOPED_TRACE(v);
+        expectTowards(centre(v, "location <0,0,-10> look_at <5,0,0> direction z"), {5, 0, 0});
+        expectTowards(centre(v, "location <0,0,-10> look_at <5,0,0> location <0,0,-20>"), {5, 0, 0});
+        EXPECT_NEAR(centre(v, "location <0,0,-10> look_at <5,0,0> location <0,0,-20>").origin.z, -20, 1e-12);
+    }
+    // A sky written after look_at rolls the view as one written before it (a corner pixel).
+    const Ray late = CameraRays(loadCamera("location <0,0,-10> look_at <5,0,0> sky x")).rayThrough(10.5, 90.5, kSize, kSize);
+    const Ray early = CameraRays(loadCamera("location <0,0,-10> sky x look_at <5,0,0>")).rayThrough(10.5, 90.5, kSize, kSize);
+    EXPECT_NEAR(length(late.dir - early.dir), 0, 1e-12);
+    // Before 3.5: in order. The direction after look_at points the camera along +z again, the
+    // location after it moves the camera without turning it.
+    EXPECT_NEAR(length(normalize(centre("3.1", "location <0,0,-10> look_at <5,0,0> direction z").dir) - Vec3{0, 0, 1}), 0, 1e-12);
+    expectTowards(centre("3.49", "location <0,0,-10> look_at <5,0,0> location <0,0,-20>"), {5, 0, -10});
+}
+
 TEST(PovCamera, OrthographicWindowOfThePerspectiveView) {
     // No right or up: the perspective camera's view at the look_at point (right·dist/|direction|).
     expectHit("orthographic location 0 look_at 5*z", 100, 50, 3.2920, 0);

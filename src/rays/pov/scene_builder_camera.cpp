@@ -14,7 +14,7 @@ using sdl::VType;
 // ---- camera ----------------------------------------------------------------------------------
 // POV-Ray 3.7 reference, "Placing the Camera": items apply in order, but angle sets the direction's
 // length from the final right vector's, after them; look_at turns direction, right and up (right = sky × direction,
-// keeping the handedness of the vectors before it); transformations move the location and turn
+// keeping the handedness of the vectors before it), after the other items from #version 3.5 on; transformations move the location and turn
 // the vectors after every other item, wherever they stand (measured with povray 3.7: `rotate`,
 // `translate` or a shearing `matrix` before `location` or `look_at` give the same image as after).
 // The camera's `normal { }`: a normal root in world space (camera rays are tilted by it as
@@ -72,6 +72,30 @@ void SceneBuilder::addCamera(const Item& cam) {
     Transform moved;  // the camera's transformations, in file order
     const Entry* lastTransform = nullptr;
     const Entry* meshEntry = nullptr;  // mesh_camera and its block
+    // look_at turns direction, right and up towards lookAt from loc, keeping their lengths.
+    auto aim = [&](const Entry& e) {
+        const double handed = dot(cross(up, dir), right);
+        const double dl = length(dir), ul = length(up), rl = length(right);
+        if (length(lookAt - loc) == 0) throw Error(notes_.where(e.loc) + ": error: look_at is the camera location");
+        const Vec3 d = normalize(lookAt - loc);
+        Vec3 r = cross(sky, d);
+        if (length(r) < 1e-12 * length(sky)) {
+            // Looking along the sky vector: keep the right vector, made perpendicular.
+            r = right - dot(right, d) * d;
+            if (length(r) == 0) r = std::fabs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
+            if (handed <= 0) r = -r;
+        }
+        r = normalize(r);
+        dir = d * dl;
+        up = normalize(cross(d, r)) * ul;
+        right = r * (handed <= 0 ? -rl : rl);  // up × direction along right: left-handed; else (0 too) mirrored (measured)
+    };
+    // From #version 3.5 on, look_at is applied after every other item, with the final location,
+    // sky and vectors (measured with POV-Ray 3.7: `direction`, `location`, `right` or `sky` written
+    // after look_at give the image of the same items written before it); before 3.5 the items
+    // apply in order.
+    const bool lookAtLast = version_ >= 3.5;
+    const Entry* lookAtEntry = nullptr;
     for (const Entry* ep : entries) {
         const Entry& e = *ep;
         if (e.positional()) continue;
@@ -108,26 +132,11 @@ void SceneBuilder::addCamera(const Item& cam) {
                 for (size_t i = 0; i < 2; ++i) angles[i] = i < e.args.size() ? toFloat(e.args[i]) : -1;
                 break;
             }
-            case Kw::look_at: {
-                const Vec3 at = toVec3(e.args[0]);
-                lookAt = at;
-                const double handed = dot(cross(up, dir), right);
-                const double dl = length(dir), ul = length(up), rl = length(right);
-                if (length(at - loc) == 0) throw Error(notes_.where(e.loc) + ": error: look_at is the camera location");
-                const Vec3 d = normalize(at - loc);
-                Vec3 r = cross(sky, d);
-                if (length(r) < 1e-12 * length(sky)) {
-                    // Looking along the sky vector: keep the right vector, made perpendicular.
-                    r = right - dot(right, d) * d;
-                    if (length(r) == 0) r = std::fabs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
-                    if (handed <= 0) r = -r;
-                }
-                r = normalize(r);
-                dir = d * dl;
-                up = normalize(cross(d, r)) * ul;
-                right = r * (handed <= 0 ? -rl : rl);  // up × direction along right: left-handed; else (0 too) mirrored (measured)
+            case Kw::look_at:
+                lookAt = toVec3(e.args[0]);
+                lookAtEntry = &e;
+                if (!lookAtLast) aim(e);
                 break;
-            }
             case Kw::focal_point: c.focalPoint = toVec3(e.args[0]); break;
             // The lens radius is a quarter of `aperture` (the reference calls its values arbitrary):
             // measured with POV-Ray 3.7 on the blurred edge of a wall behind the focal plane, the
@@ -144,6 +153,7 @@ void SceneBuilder::addCamera(const Item& cam) {
             default: break;
         }
     }
+    if (lookAtLast && lookAtEntry) aim(*lookAtEntry);
     // The angle sets the direction's length from the final right vector, wherever it is written
     // (measured with POV-Ray 3.7: `angle 35` before or after `right x*4/3`, before or after
     // `direction z*5`, or with `right x*2 up y*1.5`, gives the same image).
