@@ -460,17 +460,18 @@ TEST(PovPattern, ObjectTexturesChooseTheOutsideAndInsideTextures) {
 }
 
 TEST(PovPattern, TilesAreACheckerOfTwoTextures) {
-    // POV-Ray's old `tiles { texture {A} tile2 texture {B} }` (as `checker texture {A} texture {B}`);
-    // the block's transformations move the checker, then the texture's.
+    // POV-Ray's old `tiles { texture {A} tile2 texture {B} }`: `checker texture {B} texture {A}`
+    // (measured with POV-Ray 3.7: B where a checker puts its first entry, on planes at y = −1.5 …
+    // 1.5); the block's transformations move the checker, then the texture's.
     const Built b = build("sphere { 0, 1 texture { tiles { texture { pigment { rgb <1, 0, 0> } finish { ambient 0.7 } }\n"
                           "  tile2 texture { pigment { rgb <0, 0, 1> } } scale 2 } translate x } }");
     EXPECT_TRUE(b.warnings.empty()) << b.warnings[0];
     const pattern::PigmentTable& t = b.scene.pigments;
     const PovSurface& s = b.scene.povSurfaces.at(size_t(b.scene.objects[0].material.pov));
     ASSERT_GE(s.pigment, 0);
-    EXPECT_NEAR(length(t.atRoot(s.pigment, {1.5, 0.5, 0.5}).rgb - Vec3{1, 0, 0}), 0, 1e-9);
-    EXPECT_NEAR(length(t.atRoot(s.pigment, {3.5, 0.5, 0.5}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
-    EXPECT_NEAR(length(t.atRoot(s.pigment, {0.5, 0.5, 0.5}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s.pigment, {1.5, 0.5, 0.5}).rgb - Vec3{0, 0, 1}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s.pigment, {3.5, 0.5, 0.5}).rgb - Vec3{1, 0, 0}), 0, 1e-9);
+    EXPECT_NEAR(length(t.atRoot(s.pigment, {0.5, 0.5, 0.5}).rgb - Vec3{1, 0, 0}), 0, 1e-9);
     EXPECT_DOUBLE_EQ(s.finish.ambient.x, 0.7);  // the first texture's finish
     EXPECT_GE(s.texture, 0);  // each tile lit with its own texture
 }
