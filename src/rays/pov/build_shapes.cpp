@@ -22,13 +22,7 @@ namespace rays::pov {
 namespace {
 
 // A poly of degree n from its coefficients in POV-Ray's order (poly.h).
-std::unique_ptr<ShapeData> polyData(int n, const std::vector<double>& coef) {
-    auto d = std::make_unique<ShapeData>();
-    d->order = n;
-    d->values = coef;
-    d->values.resize(size_t(polyTermCount(n)), 0.0);
-    return d;
-}
+std::unique_ptr<ShapeData> polyData(int n, const std::vector<double>& coef) { return makePolySurface(n, coef); }
 
 }  // namespace
 

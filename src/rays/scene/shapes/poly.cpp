@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "rays/math/poly_roots.h"
 
@@ -106,6 +107,34 @@ double evalPolySurface(const ShapeData& d, Vec3 q) {
     return v;
 }
 
+std::unique_ptr<ShapeData> makePolySurface(int n, const std::vector<double>& coef) {
+    auto d = std::make_unique<ShapeData>();
+    d->order = n;
+    std::vector<double>& v = d->values;
+    v = coef;
+    v.resize(size_t(polyTermCount(n)), 0.0);
+    // The plan (poly.h): the groups of x^i y^j terms with a nonzero coefficient, in the order of
+    // the coefficients.
+    const size_t countAt = v.size();
+    v.push_back(0);
+    int idx = 0;
+    for (int i = n; i >= 0; --i)
+        for (int j = n - i; j >= 0; --j) {
+            const size_t head = v.size();
+            int terms = 0;
+            for (int k = n - i - j; k >= 0; --k, ++idx) {
+                const double a = coef.size() > size_t(idx) ? coef[size_t(idx)] : 0.0;
+                if (a == 0) continue;
+                if (terms++ == 0) v.insert(v.end(), {double(i), double(j), 0.0});
+                v.insert(v.end(), {double(k), a});
+            }
+            if (terms == 0) continue;
+            v[head + 2] = terms;
+            v[countAt] += 1;
+        }
+    return d;
+}
+
 bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit& h) {
     const ShapeData& sd = *o.data;
     const int n = sd.order;
@@ -115,27 +144,29 @@ bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, Sha
     const Vec3 O = r.origin + t0 * r.dir, D = r.dir;
     double X[kStride * kStride], Y[kStride * kStride], Z[kStride * kStride];
     binomialRows(O.x, D.x, n, X), binomialRows(O.y, D.y, n, Y), binomialRows(O.z, D.z, n, Z);
-    double c[kStride] = {};
-    int idx = 0;
-    for (int i = n; i >= 0; --i)
-        for (int j = n - i; j >= 0; --j) {
-            // zs(t) = Σ_k a_ijk (Oz + t Dz)^k, then c += X_i · Y_j · zs.
-            const int kMax = n - i - j;
-            double zs[kStride] = {};
-            bool any = false;
-            for (int k = kMax; k >= 0; --k, ++idx) {
-                const double a = sd.values[size_t(idx)];
-                if (a == 0) continue;
-                any = true;
-                for (int m = 0; m <= k; ++m) zs[m] += a * Z[k * kStride + m];
-            }
-            if (!any) continue;
-            double xy[kStride] = {};
-            for (int p = 0; p <= i; ++p)
-                for (int q = 0; q <= j; ++q) xy[p + q] += X[i * kStride + p] * Y[j * kStride + q];
-            for (int p = 0; p <= i + j; ++p)
-                for (int m = 0; m <= kMax; ++m) c[p + m] += xy[p] * zs[m];
+    double c[kStride];
+    std::fill_n(c, n + 1, 0.0);
+    // The plan's groups: zs(t) = Σ_k a_ijk (Oz + t Dz)^k, then c += X_i · Y_j · zs.
+    const double* plan = sd.values.data() + polyTermCount(n);
+    const int groups = int(plan[0]);
+    const double* g = plan + 1;
+    for (int gi = 0; gi < groups; ++gi) {
+        const int i = int(g[0]), j = int(g[1]), terms = int(g[2]), kMax = n - i - j;
+        g += 3;
+        double zs[kStride];
+        std::fill_n(zs, kMax + 1, 0.0);
+        for (int t = 0; t < terms; ++t, g += 2) {
+            const int k = int(g[0]);
+            const double a = g[1];
+            for (int m = 0; m <= k; ++m) zs[m] += a * Z[k * kStride + m];
         }
+        double xy[kStride];
+        std::fill_n(xy, i + j + 1, 0.0);
+        for (int p = 0; p <= i; ++p)
+            for (int q = 0; q <= j; ++q) xy[p + q] += X[i * kStride + p] * Y[j * kStride + q];
+        for (int p = 0; p <= i + j; ++p)
+            for (int m = 0; m <= kMax; ++m) c[p + m] += xy[p] * zs[m];
+    }
     // Real roots are bounded by Cauchy's bound 1 + max |c_m / c_top| (in the shifted variable).
     int top = n;
     while (top > 0 && c[top] == 0) --top;
@@ -152,18 +183,20 @@ bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, Sha
     const Vec3 q = r.at(h.t);
     double px[kStride], py[kStride], pz[kStride];
     powers(q.x, n, px), powers(q.y, n, py), powers(q.z, n, pz);
-    Vec3 g;
-    idx = 0;
-    for (int i = n; i >= 0; --i)
-        for (int j = n - i; j >= 0; --j)
-            for (int k = n - i - j; k >= 0; --k, ++idx) {
-                const double a = sd.values[size_t(idx)];
-                if (a == 0) continue;
-                if (i) g.x += a * i * px[i - 1] * py[j] * pz[k];
-                if (j) g.y += a * j * px[i] * py[j - 1] * pz[k];
-                if (k) g.z += a * k * px[i] * py[j] * pz[k - 1];
-            }
-    h.normal = length(g) > 0 ? normalize(g) : -r.dir / std::sqrt(dd);
+    Vec3 grad;
+    g = plan + 1;
+    for (int gi = 0; gi < groups; ++gi) {
+        const int i = int(g[0]), j = int(g[1]), terms = int(g[2]);
+        g += 3;
+        for (int t = 0; t < terms; ++t, g += 2) {
+            const int k = int(g[0]);
+            const double a = g[1];
+            if (i) grad.x += a * i * px[i - 1] * py[j] * pz[k];
+            if (j) grad.y += a * j * px[i] * py[j - 1] * pz[k];
+            if (k) grad.z += a * k * px[i] * py[j] * pz[k - 1];
+        }
+    }
+    h.normal = length(grad) > 0 ? normalize(grad) : -r.dir / std::sqrt(dd);
     return true;
 }
 

@@ -4,11 +4,19 @@
 // by falling i, then falling j, then falling k (A1 = x^N, A2 = x^(N−1) y, …, the last = 1).
 // Unbounded: data->bounds is empty unless set.
 #pragma once
+#include <memory>
+#include <vector>
+
 #include "rays/scene/object.h"
 #include "rays/scene/shapes/shape_data.h"
 
 namespace rays {
 
+/// A degree-n surface from its coefficients in POV-Ray's order (missing ones 0). Its values are the
+/// coefficients, then the plan the ray test walks: the number of groups, then per group of terms
+/// x^i y^j with a nonzero coefficient i, j, their count and (k, a) for each term a·x^i y^j z^k,
+/// in the coefficients' order.
+std::unique_ptr<ShapeData> makePolySurface(int n, const std::vector<double>& coef);
 /// Number of coefficients of a degree-n poly: (n + 1)(n + 2)(n + 3) / 6.
 int polyTermCount(int n);
 /// Index in POV-Ray's order of the term x^i y^j z^k of a degree-n poly.
