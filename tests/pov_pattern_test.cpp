@@ -736,6 +736,37 @@ TEST(PovPatternRender, SkySphereIsLookedUpByDirection) {
     EXPECT_NEAR(length(traceColor(l.scene, Ray{{0, 0, 0}, {0, 1, 0}}) - Vec3{0.5, 0, 1.5}), 0, 1e-9);
 }
 
+TEST(PovPatternRender, SkySphereLayersComposeAsPovRayDoes) {
+    // POV-Ray 3.7's pixels (8-bit sRGB, assumed_gamma 1) looking at sky_spheres of rgbf, rgbt and
+    // rgbft layers over a background: a filter lets the layers below through untinted, as a
+    // transmit does, but tints the background (pov_pigment.h povSky).
+    auto linear = [](int v) {
+        const double c = v / 255.0;
+        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    };
+    const struct {
+        const char* scene;
+        int r, g, b;
+    } cases[] = {
+        {"background { rgb <1, 0.3, 0.6> } sky_sphere { pigment { rgbt <0, 1, 1, 0.5> } pigment { rgbf <0, 0, 1, 0.5> } }", 0, 137, 225},
+        {"background { rgb <1, 0.3, 0.6> } sky_sphere { pigment { rgbt <0, 1, 1, 0.5> } pigment { rgbt <0, 0, 1, 0.5> } }", 137, 154, 243},
+        {"background { rgb <1, 0, 0> } sky_sphere { pigment { rgbft <1, 1, 0, 0.3, 0.2> } pigment { rgbft <1, 0, 1, 0.2, 0.5> } }", 232, 160, 149},
+        {"background { rgb <0.8, 0.5, 0.9> } sky_sphere { pigment { rgbft <0.7, 0.8, 0.4, 0.4, 0.3> } "
+         "pigment { rgbft <0.6, 0.9, 0.5, 0.3, 0.3> } pigment { rgbft <0.9, 0.6, 0.8, 0.5, 0.2> } }", 190, 188, 175},
+        {"background { rgb <0.3, 0.9, 0.6> } sky_sphere { pigment { rgbft <0.2, 0.8, 0.4, 0.1, 0.6> } "
+         "pigment { rgbft <0.6, 0.3, 0.5, 0.6, 0.1> } pigment { rgbft <0.9, 0.6, 0.1, 0.2, 0.2> } "
+         "pigment { rgbft <0.5, 0.5, 0.9, 0.3, 0.4> } }", 197, 175, 158},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.scene);
+        const Built b = build(c.scene);
+        const Vec3 got = traceColor(b.scene, Ray{{0, 0, 0}, {0, 0, 1}});
+        EXPECT_NEAR(got.x, linear(c.r), 0.004);
+        EXPECT_NEAR(got.y, linear(c.g), 0.004);
+        EXPECT_NEAR(got.z, linear(c.b), 0.004);
+    }
+}
+
 // Rays' noise is not POV-Ray's, so noise patterns cannot match point for point; their mean and
 // spread over space can. POV-Ray 3.7's figures over the same 400 points (printed as above).
 TEST(PovPattern, RipplesAndWavesPigmentsArePovRaysPointForPoint) {

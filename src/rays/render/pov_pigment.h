@@ -21,21 +21,32 @@ inline PovPigmentSample povPigmentAt(const Scene& scene, const PovSurface& s, Ve
 }
 
 /// The colour seen along a ray that meets nothing: the sky_sphere's pigments looked up at the
-/// direction, each layer over the ones below (its filter and transmit let them through, as a
-/// layered texture does), the lowest over the background; without a sky_sphere the background.
+/// direction, the last written on top; without a sky_sphere the background. Measured with POV-Ray
+/// 3.7 (one to three layers of rgbf, rgbt and rgbft colours over backgrounds, every 8-bit value
+/// reproduced): a layer shows its own colour by 1 − f − t, seen through the layers above it by
+/// the product of their filters plus the product of their transmits (the top layer fully; a
+/// filter does not tint the layers below), and the background comes through by the product of
+/// all the transmits plus the product of all the filters times their colours (one layer: t + f·L,
+/// as through a surface):
+///   C = Σᵢ (1 − fᵢ − tᵢ)·Lᵢ·(Πⱼ₍above i₎ fⱼ + Πⱼ₍above i₎ tⱼ) + B ⊙ (Πᵢ tᵢ + Πᵢ fᵢ·Lᵢ).
 inline Vec3 povSky(const Scene& scene, Vec3 dir) {
     const PovGlobals& g = scene.pov;
     if (g.skyCount == 0) return g.background;
     const double len = length(dir);
     if (len == 0) return g.background;
     const Vec3 d = dir / len;
-    Vec3 c = g.background;
-    for (int i = 0; i < g.skyCount; ++i) {
+    Vec3 c{}, filteredColour{1, 1, 1};
+    double filtered = 1, transmitted = 1;  // the products over the layers above
+    for (int i = g.skyCount - 1; i >= 0; --i) {
         const pattern::Rgbft l = scene.pigments.atRoot(g.skyFirst + i, d);
         const double f = std::clamp(l.filter, 0.0, 1.0), t = std::clamp(l.transmit, 0.0, 1.0);
-        c = l.rgb * std::max(0.0, 1 - f - t) + c * (Vec3(t) + f * l.rgb);
+        const double seen = i == g.skyCount - 1 ? 1.0 : filtered + transmitted;
+        c += seen * std::max(0.0, 1 - f - t) * l.rgb;
+        filtered *= f;
+        transmitted *= t;
+        filteredColour = filteredColour * (f * l.rgb);
     }
-    return c * g.skyEmission;
+    return (c + g.background * (Vec3(transmitted) + filteredColour)) * g.skyEmission;
 }
 
 }  // namespace rays
