@@ -12,11 +12,12 @@ namespace rays::pov {
 using sdl::VType;
 
 // ---- camera ----------------------------------------------------------------------------------
-// POV-Ray 3.7 reference, "Placing the Camera": items apply in order, but angle sets the direction's
-// length from the final right vector's, after them; look_at turns direction, right and up (right = sky × direction,
-// keeping the handedness of the vectors before it), after the other items from #version 3.5 on; transformations move the location and turn
-// the vectors after every other item, wherever they stand (measured with povray 3.7: `rotate`,
-// `translate` or a shearing `matrix` before `location` or `look_at` give the same image as after).
+// POV-Ray 3.7 reference, "Placing the Camera": items apply in order, but angle sets the
+// direction's length from the final right vector's, after them; look_at turns direction, right
+// and up (right = sky × direction, keeping the handedness of the vectors before it), after the
+// other items from #version 3.5 on; transformations move the location and turn the vectors after
+// every other item, wherever they stand (measured with povray 3.7: `rotate`, `translate` or a
+// shearing `matrix` before `location` or `look_at` give the same image as after).
 // The camera's `normal { }`: a normal root in world space (camera rays are tilted by it as
 // surface normals are; the camera's own transformations do not move it).
 namespace {

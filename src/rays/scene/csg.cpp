@@ -1,8 +1,8 @@
 #include "rays/scene/csg.h"
 
 #include <algorithm>
-#include <new>
 #include <cmath>
+#include <new>
 
 #include "rays/scene/mesh.h"
 #include "rays/scene/text_shape.h"

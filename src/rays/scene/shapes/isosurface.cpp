@@ -6,11 +6,10 @@
 // or a ray going on, does not find the same crossing again). This is the textbook Lipschitz
 // "sphere tracing" (Hart 1996) on a line, each step first tried 1.6 times as long and kept when
 // the two ends prove the longer stretch empty (Keinert et al. 2014), not POV-Ray's own
-// subdivision; the reference
-// (3.4.5.1.6) gives the keywords' meaning. The normal is the function's gradient by central
-// differences (gradientStep: the accuracy, within [1e-6, 0.01]). The function runs on this
-// thread's fn::Scratch, grown once per thread to the largest isosurface's frame: no allocation
-// per ray.
+// subdivision; the reference (3.4.5.1.6) gives the keywords' meaning. The normal is the
+// function's gradient by central differences (gradientStep: the accuracy, within [1e-6, 0.01]).
+// The function runs on this thread's fn::Scratch, grown once per thread to the largest
+// isosurface's frame: no allocation per ray.
 #include "rays/scene/shapes/isosurface.h"
 
 #include <algorithm>

@@ -14,6 +14,7 @@ constexpr int kStride = 5;
 // A curved segment: x0..x3, z0..z3 (the cubics x(u), z(u)), side, xlo, xhi, zlo, zhi (its box),
 // then the pieces on which z(u) is monotone: the count of cuts k (0–2), the cuts, and z at the
 // k + 2 piece ends 0, cuts…, 1 (kPieceZ…).
+constexpr size_t kCurveHead = 13;  // the cubics, side and box, as addCurve writes them
 constexpr size_t kCurveStride = 20;
 constexpr size_t kCuts = 13, kPieceZ = 16;
 constexpr double kJointPad = 1e-9;   // segment ends are searched from both neighbours
@@ -88,7 +89,7 @@ void setPieces(double* seg) {
 // A segment (x(u), z(u) cubics) with its box; its side is set later.
 void addCurve(std::vector<double>& v, Vec3 c0, Vec3 c1, Vec3 c2, Vec3 c3) {
     v.insert(v.end(), {c0.x, c1.x, c2.x, c3.x, c0.z, c1.z, c2.z, c3.z, 1.0, kInfinity, -kInfinity, kInfinity, -kInfinity});
-    v.resize(v.size() + kCurveStride - 13);
+    v.resize(v.size() + kCurveStride - kCurveHead);
     double* seg = &v[v.size() - kCurveStride];
     cubicRange(seg, seg[9], seg[10]);
     cubicRange(seg + 4, seg[11], seg[12]);
