@@ -99,11 +99,17 @@ double evalPolySurface(const ShapeData& d, Vec3 q) {
     if (n == 2 && d.values.size() >= 10) return evalQuadric(d.values.data(), q);
     double px[kStride], py[kStride], pz[kStride];
     powers(q.x, n, px), powers(q.y, n, py), powers(q.z, n, pz);
+    // The nonzero terms in the coefficients' order (the plan, poly.h): the sum of them all but for
+    // the zero terms, which add nothing (0·∞ at coordinates beyond 1e77 aside).
+    const double* g = d.values.data() + polyTermCount(n);
+    const int groups = int(g[0]);
+    ++g;
     double v = 0;
-    int idx = 0;
-    for (int i = n; i >= 0; --i)
-        for (int j = n - i; j >= 0; --j)
-            for (int k = n - i - j; k >= 0; --k, ++idx) v += d.values[size_t(idx)] * px[i] * py[j] * pz[k];
+    for (int gi = 0; gi < groups; ++gi) {
+        const int i = int(g[0]), j = int(g[1]), terms = int(g[2]);
+        g += 3;
+        for (int t = 0; t < terms; ++t, g += 2) v += g[1] * px[i] * py[j] * pz[int(g[0])];
+    }
     return v;
 }
 
