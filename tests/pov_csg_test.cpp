@@ -465,12 +465,12 @@ TEST(PovCsgParseTime, InsideAndTraceAnswerForCsgObjects) {
     EXPECT_TRUE(near(s.objects[1].p0, {0.3, 10.2, 0}));  // the cut face at z = 0
 }
 
-// trace() and inside() need the shape only: an object whose look Rays draws otherwise (here an
-// interior's dispersion, noted) still answers; one whose shape is left out does not (<0, 0, 0>).
+// trace() and inside() need the shape only: an object whose look Rays draws otherwise (here a
+// finish's subsurface, noted) still answers; one whose shape is left out does not (<0, 0, 0>).
 TEST(PovCsgParseTime, TraceAnswersWhateverTheTextureAndNotForShapesLeftOut) {
     std::vector<std::string> warnings;
     const Scene s = build(
-        "#declare D = sphere { 0, 1 interior { dispersion 1.1 } }\n"
+        "#declare D = sphere { 0, 1 finish { subsurface { translucency 0.5 } } }\n"
         "#declare N = <0, 0, 0>;\n"
         "#declare P = trace(D, <0, 0, -5>, z, N);\n"
         "sphere { P + <0, 10, 0>, 0.5 }\n"

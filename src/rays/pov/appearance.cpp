@@ -273,7 +273,9 @@ void applyInterior(const Item& i, InteriorLook& in, NotRendered& notes, PigmentC
                 }
                 break;
             case Kw::caustics: in.caustics = toFloat(e.args[0]); break;
-            case Kw::dispersion: notes.note("dispersion", e.loc); break;
+            case Kw::dispersion: in.dispersion = toFloat(e.args[0]); break;
+            // At least 2, as POV-Ray 3.7 takes them (its reference's minimum); at most 1024.
+            case Kw::dispersion_samples: in.dispersionSamples = int(std::clamp(toFloat(e.args[0]), 2.0, 1024.0)); break;
             default: break;
         }
     }

@@ -223,6 +223,10 @@ private:
         int radLevel = 0;        ///< radiosity bounces on the ray's way from the camera
         bool gathering = false;  ///< a radiosity gathering ray (or one of its children): no highlights
         double reach = kInfinity;  ///< objects farther along the ray are not met (a mesh camera's max_distance)
+        /// A ray split by dispersion (render/pov_dispersion.h) carries its band of the spectrum:
+        /// every interior's index is then ior·dispersion^spectral for it.
+        bool dispersed = false;
+        double spectral = 0;
         /// The objects the ray is inside (entered and not left), innermost last, each with the
         /// Material::pov of the (leaf) surface it entered by (−1: any of the object's surfaces, for
         /// a CSG the camera starts in): for media, and for whether a hit enters or leaves an
@@ -418,8 +422,16 @@ private:
     /// the one it leaves and the one it is then in (measured: nested half-spaces of ior 1.5 and
     /// 1.2 or 1, and a cavity cut out of glass by a difference).
     double povEta(const PovPoint& pt, const PovRay& r) const;
-    /// The ior of the interior the ray entered by `in` (its surface's; the object's own for −1).
-    double povIorOf(const PovRay::Inside& in) const;
+    /// The ior of the interior the ray entered by `in` (its surface's; the object's own for −1),
+    /// for the ray's band of the spectrum when it is dispersed.
+    double povIorOf(const PovRay::Inside& in, const PovRay& r) const;
+    /// An interior's ior for ray r (its dispersion applied to a dispersed ray).
+    static double povIorFor(const PovInterior& in, const PovRay& r);
+    /// The transmission at pt split into the dispersion samples of the interior crossed there
+    /// (each band refracted by its own index, weighted by its colour); false when pt's interior
+    /// does not disperse r.
+    bool povDispersed(const Ray& ray, const PovPoint& pt, const PovRay& r, Vec3 T, TraceContext& ctx, PathInfo* info,
+                      Vec3& color) const;
     /// Methods 1 and 2: adds [a, b] in `steps` equal steps sampled in their middles.
     void povMediaMidpoints(const PovMediaSet& set, const Ray& ray, double a, double b, int steps, TraceContext& ctx,
                            PovMediaSum& sum) const;

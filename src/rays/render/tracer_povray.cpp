@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "rays/geometry/refract.h"
+#include "rays/render/pov_dispersion.h"
 #include "rays/render/area_light.h"
 #include "rays/render/pov_area_mean.h"
 #include "rays/render/pov_lighting.h"
@@ -117,18 +118,23 @@ std::vector<Tracer::PovRay::Inside> Tracer::povCameraInside() const {
     return out;
 }
 
-double Tracer::povIorOf(const PovRay::Inside& in) const {
+double Tracer::povIorFor(const PovInterior& in, const PovRay& r) {
+    if (!r.dispersed || in.dispersion == 1 || !(in.dispersion > 0)) return in.ior;
+    return in.ior * std::pow(in.dispersion, r.spectral);
+}
+
+double Tracer::povIorOf(const PovRay::Inside& in, const PovRay& r) const {
     const bool own = in.surface >= 0 && size_t(in.surface) < scene_.povSurfaces.size();
-    return (own ? scene_.povSurfaces[size_t(in.surface)] : povSurfaceOf(scene_.objects[size_t(in.object)].material))
-        .interior.ior;
+    return povIorFor(
+        (own ? scene_.povSurfaces[size_t(in.surface)] : povSurfaceOf(scene_.objects[size_t(in.object)].material)).interior, r);
 }
 
 double Tracer::povEta(const PovPoint& pt, const PovRay& r) const {
-    const double ior = pt.surface->interior.ior;
+    const double ior = povIorFor(pt.surface->interior, r);
     const int surface = pt.material->pov;
-    if (pt.intoInterior) return (r.insideCount > 0 ? povIorOf(r.inside[r.insideCount - 1]) : 1.0) / ior;
+    if (pt.intoInterior) return (r.insideCount > 0 ? povIorOf(r.inside[r.insideCount - 1], r) : 1.0) / ior;
     for (int i = r.insideCount - 1; i >= 0; --i)  // the innermost interior other than the one left
-        if (!r.inside[i].is(pt.object, surface)) return ior / povIorOf(r.inside[i]);
+        if (!r.inside[i].is(pt.object, surface)) return ior / povIorOf(r.inside[i], r);
     return ior;
 }
 
@@ -328,7 +334,9 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
                      .interiorSurface = pt.intoInterior ? r.interiorSurface : pt.material->pov,
                      .reflected = true,
                      .radLevel = r.radLevel,
-                     .gathering = r.gathering};
+                     .gathering = r.gathering,
+                     .dispersed = r.dispersed,
+                     .spectral = r.spectral};
     if (reflected.interior == r.interior) reflected.faded = pt.viewFade;
     reflected.copyInside(r);
     if (!pt.intoInterior) reflected.enter(pt.object, pt.material->pov);  // reflected inside: still in it
@@ -338,6 +346,7 @@ Tracer::PovRay Tracer::povReflectedRay(const PovPoint& pt, const PovRay& r) cons
 bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r, double eta, Vec3 T, TraceContext& ctx,
                             PathInfo* info, Vec3& color) const {
     if (!(maxAbsComponent(T) > 0)) return true;
+    if (povDispersed(ray, pt, r, T, ctx, info, color)) return true;
     Vec3 dir = ray.dir;
     int level = r.level;  // passing straight through (the same index on both sides) keeps the level (measured)
     if (eta != 1) {
@@ -355,13 +364,51 @@ bool Tracer::povTransmitted(const Ray& ray, const PovPoint& pt, const PovRay& r,
                    .fades = true,
                    .reflected = r.reflected,
                    .radLevel = r.radLevel,
-                   .gathering = r.gathering};
+                   .gathering = r.gathering,
+                   .dispersed = r.dispersed,
+                   .spectral = r.spectral};
     through.copyInside(r);
     if (pt.intoInterior) through.enter(pt.object, pt.material->pov);
     else through.leave(pt.object, pt.material->pov);
     if (through.weight >= scene_.pov.adcBailout) {
         ++ctx.stats.secondaryRays;
         color += T * tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, through, ctx, info);
+    }
+    return true;
+}
+
+bool Tracer::povDispersed(const Ray& ray, const PovPoint& pt, const PovRay& r, Vec3 T, TraceContext& ctx,
+                          PathInfo* info, Vec3& color) const {
+    const PovInterior& in = pt.surface->interior;
+    if (r.dispersed || in.dispersion == 1 || !(in.dispersion > 0)) return false;
+    const int n = in.dispersionSamples;
+    auto bandOf = [&](int i) {
+        PovRay band = r;
+        band.dispersed = true;
+        band.spectral = povDispersionExponent(i, n);
+        return band;
+    };
+    // When every band is reflected whole (total internal reflection), so is the undispersed ray:
+    // the caller's path takes it.
+    const Vec3 facing = dot(ray.dir, pt.N) > 0 ? -pt.N : pt.N;
+    bool anyThrough = false;
+    for (int i = 0; i < n && !anyThrough; ++i) {
+        Vec3 dir;
+        anyThrough = refractDir(ray.dir, facing, povEta(pt, bandOf(i)), dir);
+    }
+    if (!anyThrough) return false;
+    for (int i = 0; i < n; ++i) {
+        const PovRay band = bandOf(i);
+        const Vec3 share = povDispersionColor(i, n);
+        Vec3 seen;
+        if (povTransmitted(ray, pt, band, povEta(pt, band), T * share, ctx, info, seen)) {
+            color += seen;
+        } else {  // this band alone is reflected whole, with its share of the colour
+            const PovRay mirrored = povReflectedRay(pt, band);
+            const Vec3 dir = povMirrorDirection(ray.dir, pt.N, pt.Nfacing);
+            ++ctx.stats.secondaryRays;
+            color += share * tracePov(Ray{pt.P + kSurfaceOffset * dir, dir}, mirrored, ctx, info);
+        }
     }
     return true;
 }

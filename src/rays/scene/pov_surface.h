@@ -45,6 +45,10 @@ struct PovInterior {
     /// The interior's media: entries [mediaFirst, mediaFirst + mediaCount) of Scene::povMedia.
     int mediaFirst = 0, mediaCount = 0;
     double caustics = 0;        ///< fake caustics' power (0: none): render/pov_lighting.h, povCausticGain
+    /// `dispersion` (the ratio of violet's index to red's; 1: none) and `dispersion_samples`
+    /// (the rays a refraction into it splits into): render/pov_dispersion.h.
+    double dispersion = 1;
+    int dispersionSamples = 7;
     /// Which `interior { }` block it came from (0: none, the default interior): only compared, so
     /// that the children of one CSG with blocks of their own stay apart even when the blocks read
     /// alike, as POV-Ray keeps them apart (a ray going from one into the other leaves the first).
