@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "rays/geometry/refract.h"
-#include "rays/render/pov_dispersion.h"
 #include "rays/render/area_light.h"
 #include "rays/render/pov_area_mean.h"
+#include "rays/render/pov_dispersion.h"
 #include "rays/render/pov_lighting.h"
 #include "rays/render/pov_normal.h"
 #include "rays/render/pov_pigment.h"
