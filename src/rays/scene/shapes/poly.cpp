@@ -92,6 +92,18 @@ bool hitQuadric(const ShapeData& sd, const Ray& r, double tMin, double tMax, Sha
     return true;
 }
 
+// The plan's terms a·x^i y^j z^k (makePolySurface), in the coefficients' order: f(i, j, k, a).
+template <class F>
+void forEachPlanTerm(const ShapeData& d, F&& f) {
+    const double* g = d.values.data() + polyTermCount(d.order);
+    const int groups = int(*g++);
+    for (int gi = 0; gi < groups; ++gi) {
+        const int i = int(g[0]), j = int(g[1]), terms = int(g[2]);
+        g += 3;
+        for (int t = 0; t < terms; ++t, g += 2) f(i, j, int(g[0]), g[1]);
+    }
+}
+
 }  // namespace
 
 double evalPolySurface(const ShapeData& d, Vec3 q) {
@@ -99,17 +111,10 @@ double evalPolySurface(const ShapeData& d, Vec3 q) {
     if (n == 2 && d.values.size() >= 10) return evalQuadric(d.values.data(), q);
     double px[kStride], py[kStride], pz[kStride];
     powers(q.x, n, px), powers(q.y, n, py), powers(q.z, n, pz);
-    // The nonzero terms in the coefficients' order (the plan, poly.h): the sum of them all but for
-    // the zero terms, which add nothing (0·∞ at coordinates beyond 1e77 aside).
-    const double* g = d.values.data() + polyTermCount(n);
-    const int groups = int(g[0]);
-    ++g;
+    // The sum of all the terms but the zero ones, which add nothing (0·∞ at coordinates beyond 1e77
+    // aside).
     double v = 0;
-    for (int gi = 0; gi < groups; ++gi) {
-        const int i = int(g[0]), j = int(g[1]), terms = int(g[2]);
-        g += 3;
-        for (int t = 0; t < terms; ++t, g += 2) v += g[1] * px[i] * py[j] * pz[int(g[0])];
-    }
+    forEachPlanTerm(d, [&](int i, int j, int k, double a) { v += a * px[i] * py[j] * pz[k]; });
     return v;
 }
 
@@ -129,7 +134,7 @@ std::unique_ptr<ShapeData> makePolySurface(int n, const std::vector<double>& coe
             const size_t head = v.size();
             int terms = 0;
             for (int k = n - i - j; k >= 0; --k, ++idx) {
-                const double a = coef.size() > size_t(idx) ? coef[size_t(idx)] : 0.0;
+                const double a = v[size_t(idx)];
                 if (a == 0) continue;
                 if (terms++ == 0) v.insert(v.end(), {double(i), double(j), 0.0});
                 v.insert(v.end(), {double(k), a});
@@ -190,18 +195,11 @@ bool hitPolySurface(const Object& o, const Ray& r, double tMin, double tMax, Sha
     double px[kStride], py[kStride], pz[kStride];
     powers(q.x, n, px), powers(q.y, n, py), powers(q.z, n, pz);
     Vec3 grad;
-    g = plan + 1;
-    for (int gi = 0; gi < groups; ++gi) {
-        const int i = int(g[0]), j = int(g[1]), terms = int(g[2]);
-        g += 3;
-        for (int t = 0; t < terms; ++t, g += 2) {
-            const int k = int(g[0]);
-            const double a = g[1];
-            if (i) grad.x += a * i * px[i - 1] * py[j] * pz[k];
-            if (j) grad.y += a * j * px[i] * py[j - 1] * pz[k];
-            if (k) grad.z += a * k * px[i] * py[j] * pz[k - 1];
-        }
-    }
+    forEachPlanTerm(sd, [&](int i, int j, int k, double a) {
+        if (i) grad.x += a * i * px[i - 1] * py[j] * pz[k];
+        if (j) grad.y += a * j * px[i] * py[j - 1] * pz[k];
+        if (k) grad.z += a * k * px[i] * py[j] * pz[k - 1];
+    });
     h.normal = length(grad) > 0 ? normalize(grad) : -r.dir / std::sqrt(dd);
     return true;
 }
