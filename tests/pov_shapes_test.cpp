@@ -576,6 +576,48 @@ TEST(PovShapesPrism, PixelsMatchPovRay) {
     test::expectPovPixels(img, pixels);
 }
 
+// The object BVH rejects an object whose bounding sphere the ray misses (the leaf's box bounds
+// several objects at once), so the sphere must hold every hit; a torus' sphere is its own, R + r,
+// not the one round its box.
+TEST(PovShapesBounds, BoundingSpheresHoldEveryHitAndATorusIsTight) {
+    const Scene s = build(
+        "torus { 10, 1.5 rotate 90*x translate 35*x rotate 15*y }\n"
+        "torus { 2, 0.5 scale <1, 3, 0.5> rotate <20, 40, 60> translate <1, 2, 3> }\n"
+        "box { <-1, -2, -0.5>, <2, 1, 3> rotate <10, 70, 5> scale <2, 1, 1> }\n"
+        "cone { <0, 0, 0>, 1, <0, 3, 1>, 0.2 translate <5, 0, 0> }\n"
+        "cylinder { <-1, 0, 0>, <1, 1, 0>, 0.3 rotate 30*z }\n"
+        "sphere { <1, 1, 1>, 2 scale <1, 0.5, 3> rotate 45*y }\n"
+        "superellipsoid { <0.3, 0.6> scale <3, 1, 1> rotate 30*z }\n"
+        "difference { box { -1, 1 } sphere { 0, 1.2 } rotate <30, 30, 0> translate 4*y }\n");
+    ASSERT_EQ(s.objects.size(), 8u);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (size_t i = 0; i < s.objects.size(); ++i) {
+        const Object& o = s.objects[i];
+        Vec3 c;
+        double radius = 0;
+        ASSERT_TRUE(worldBoundingSphere(o, c, radius)) << i;
+        int hits = 0;
+        for (int k = 0; k < 4000; ++k) {
+            const Vec3 aim = c + radius * Vec3{u(rng), u(rng), u(rng)};
+            const Vec3 from = c + 3 * radius * normalize(Vec3{u(rng), u(rng), u(rng)});
+            ShapeHit h;
+            if (!intersect(o, Ray{from, aim - from}, 1e-9, 1e30, h)) continue;
+            ++hits;
+            EXPECT_LE(length(from + h.t * (aim - from) - c), radius) << "object " << i;
+        }
+        EXPECT_GT(hits, 100) << "object " << i;
+    }
+    Vec3 c;
+    double radius = 0;
+    ASSERT_TRUE(worldBoundingSphere(s.objects[0], c, radius));
+    const double a = 15 * M_PI / 180;
+    EXPECT_TRUE(near(c, {35 * std::cos(a), 0, -35 * std::sin(a)}, 1e-9));  // rotate 15*y turns +x to −z
+    EXPECT_NEAR(radius, 11.5, 1e-6);  // the box's sphere would be √(2·11.5² + 1.5²) ≈ 16.3
+    ASSERT_TRUE(worldBoundingSphere(s.objects[5], c, radius));
+    EXPECT_NEAR(radius, 6, 1e-6);  // the sphere's radius times its largest scale
+}
+
 TEST(PovShapesNotes, RenderedShapesAreNoLongerNoted) {
     std::vector<std::string> warnings;
     const Scene s = build(

@@ -49,6 +49,15 @@ ObjectBvh::Prim objectPrim(const Object& o, const Bounds& b, uint32_t id) {
         for (int a = 0; a < 3; ++a) p.center[a] = o.p1[a];
         p.sphereRadius = o.r1;
         p.isSphere = true;
+        return p;
+    }
+    // Any other object: a bounding sphere for the leaf's reject test (the box alone bounds a
+    // whole leaf, not each of its objects).
+    Vec3 c;
+    double r;
+    if (worldBoundingSphere(o, c, r)) {
+        for (int a = 0; a < 3; ++a) p.center[a] = c[a];
+        p.sphereRadius = r;
     }
     return p;
 }

@@ -2,6 +2,7 @@
 #include "rays/scene/object_transform.h"
 
 #include <cmath>
+#include <limits>
 
 #include "rays/geometry/sphere_hit.h"
 #include "rays/scene/csg.h"
@@ -347,6 +348,60 @@ Transform objectToWorld(const Object& o) {
     return (coneFrame(o) * o.toObject).inverse();  // toObject = frame⁻¹ · M⁻¹
 }
 
+namespace {
+
+// The box of o in the space its rays are intersected in: cones' toObject includes the canonical
+// frame (axis along z), so their box is taken in that frame.
+Bounds intersectionSpaceBounds(const Object& o) {
+    if (o.type != ShapeType::Cone) return localBounds(o);
+    const double r = std::max(o.r0, o.r1);
+    return Bounds{{-r, -r, 0}, {r, r, o.p2.x}};
+}
+
+// An upper bound of the largest stretch |M·v|/|v| of the linear part M of t: the square root of
+// the largest row sum of |MᵀM| (Gershgorin's circle theorem bounds MᵀM's largest eigenvalue by
+// it). Exact for rotations, uniform scales and scales along the axes.
+double largestStretch(const Transform& t) {
+    double worst = 0;
+    for (int i = 0; i < 3; ++i) {
+        double row = 0;
+        for (int j = 0; j < 3; ++j) {
+            double g = 0;
+            for (int k = 0; k < 3; ++k) g += t.m[k][i] * t.m[k][j];
+            row += std::fabs(g);
+        }
+        worst = std::max(worst, row);
+    }
+    return std::sqrt(worst);
+}
+
+}  // namespace
+
+bool worldBoundingSphere(const Object& o, Vec3& centre, double& radius) {
+    if (!o.localSpace && o.type == ShapeType::Sphere) {
+        centre = o.p1;
+        radius = o.r1;
+        return true;
+    }
+    const Bounds lb = o.transformed ? intersectionSpaceBounds(o) : localBounds(o);  // as worldBounds
+    if (lb.empty()) return false;
+    const Vec3 c = 0.5 * (lb.lo + lb.hi);
+    double shapeRadius = std::numeric_limits<double>::infinity();  // a sphere tighter than the box's
+    if (o.type == ShapeType::Torus) shapeRadius = std::fabs(o.r0) + o.r1;  // centred at the origin
+    if (o.type == ShapeType::Sphere) shapeRadius = o.r1;
+    const Transform toWorld = o.transformed ? o.toObject.inverse() : Transform::identity();
+    centre = toWorld.point(c);
+    double corner2 = 0;  // the transformed box lies within its corners' farthest distance
+    for (int i = 0; i < 8; ++i) {
+        const Vec3 k{(i & 1) ? lb.hi.x : lb.lo.x, (i & 2) ? lb.hi.y : lb.lo.y, (i & 4) ? lb.hi.z : lb.lo.z};
+        const Vec3 v = toWorld.point(k) - centre;
+        corner2 = std::max(corner2, dot(v, v));
+    }
+    radius = std::min(std::sqrt(corner2), largestStretch(toWorld) * shapeRadius);
+    radius *= 1 + 1e-9;  // the rounding of the numbers above
+    return std::isfinite(radius) && std::isfinite(centre.x) && std::isfinite(centre.y) && std::isfinite(centre.z);
+}
+
 Bounds worldBounds(const Object& o) {
     if (!o.localSpace && o.type == ShapeType::Sphere) return Bounds{o.p1 - Vec3(o.r1), o.p1 + Vec3(o.r1)};
     if (!o.transformed) return localBounds(o);
@@ -360,12 +415,7 @@ Bounds worldBounds(const Object& o) {
                                        toWorld.m[i][2] * toWorld.m[i][2]);
         return Bounds{c - half, c + half};
     }
-    // Cones: toObject includes the canonical frame, so the box is taken in that frame.
-    Bounds lb = localBounds(o);
-    if (o.type == ShapeType::Cone) {
-        const double r = std::max(o.r0, o.r1);
-        lb = Bounds{{-r, -r, 0}, {r, r, o.p2.x}};
-    }
+    const Bounds lb = intersectionSpaceBounds(o);
     if (lb.empty()) return lb;
     Bounds wb;
     for (int i = 0; i < 8; ++i) {

@@ -59,6 +59,10 @@ inline bool usesLocalSpace(const Object& o) { return o.localSpace; }
 /// World-space bounds; empty for planes (unbounded).
 Bounds worldBounds(const Object& o);
 
+/// A world-space sphere (centre, radius) holding every point of o, or false when o is unbounded.
+/// The sphere round its transformed box, or tighter where the shape's own sphere is (torus, sphere).
+bool worldBoundingSphere(const Object& o, Vec3& centre, double& radius);
+
 /// Object hit record: t along the ray, the outward world-space unit shading normal and the
 /// geometric normal (they differ only for smooth triangles and meshes; both on the same side),
 /// and for meshes with texture coordinates the uv and the object-space tangent dP/du; for CSG
