@@ -352,11 +352,11 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         look.set = true;
     }
     const Appearance* own = look.set ? &look : inherited;
-    // Intersection, difference, merge and clipped objects become one CSG object (csg.h); unions
-    // outside them are flattened into their children.
+    // Intersection, difference, merge, clipped and inverted objects become one CSG object (csg.h);
+    // other unions outside them are flattened into their children.
     Csg tree;
-    const bool started =
-        !csg_ && (kind == Kw::difference || kind == Kw::intersection || kind == Kw::merge || !clips.empty());
+    const bool started = !csg_ && (kind == Kw::difference || kind == Kw::intersection || kind == Kw::merge ||
+                                   !clips.empty() || (kind == Kw::union_ && inverse));
     struct Reset {  // the builder forgets the tree when an error leaves the object half made
         SceneBuilder& b;
         bool on;

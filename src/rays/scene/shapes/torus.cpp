@@ -88,7 +88,7 @@ bool hitTorus(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
 
 bool insideTorus(const Object& o, Vec3 p) {
     const double ring = std::sqrt(p.x * p.x + p.z * p.z) - o.r0;
-    return ring * ring + p.y * p.y < o.r1 * o.r1;
+    return ring * ring + p.y * p.y <= o.r1 * o.r1;  // closed, as POV-Ray's (csg.cpp insideShape)
 }
 
 Bounds torusBounds(const Object& o) {
