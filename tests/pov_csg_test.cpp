@@ -119,6 +119,30 @@ TEST(PovCsgInside, BoundariesAnswerAsPovRaysInsideDoes) {
     // Plane: 1e-10 beyond.
     EXPECT_EQ(in(5, {0, 1 + 5.6e-11, 0}), 1);
     EXPECT_EQ(in(5, {0, 1 + 1e-10, 0}), 0);
+
+    const Scene more = build(
+        "quartic { <1,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,0,0, 1,0,0,0,0,0,0,0,0,0, 1,0,0,0,-16> }\n"
+        "quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }\n"
+        "superellipsoid { <0.5, 0.5> scale 3 }\n"
+        "isosurface { function { x*x + y*y + z*z - 1 } contained_by { box { -2, 2 } } }\n"
+        "prism { linear_sweep linear_spline -1, 2, 5, <-1,-1>, <1,-1>, <1,1>, <-1,1>, <-1,-1> }\n"
+        "lathe { linear_spline 4, <0,0>, <1,0>, <1,1>, <0,1> }\n");
+    ASSERT_EQ(more.objects.size(), 6u);
+    auto at = [&](int i, Vec3 p) { return insideShape(more.objects[size_t(i)], p); };
+    // x⁴ + y⁴ + z⁴ − 16 at x = 2 + d is about 32·d: inside while below 1e-4.
+    EXPECT_EQ(at(0, {2 + 1.78e-6, 0, 0}), 1);
+    EXPECT_EQ(at(0, {2 + 3.16e-6, 0, 0}), 0);
+    EXPECT_EQ(at(1, {1, 0, 0}), 1);  // a quadric is closed
+    EXPECT_EQ(at(1, {1 + 1e-12, 0, 0}), 0);
+    // Superellipsoid: 1e-10 of its own size beyond, whatever its exponents.
+    EXPECT_EQ(at(2, {3 + 1.78e-10, 0, 0}), 1);
+    EXPECT_EQ(at(2, {3 + 3.16e-10, 0, 0}), 0);
+    EXPECT_EQ(at(3, {1, 0, 0}), 1);  // isosurface closed
+    EXPECT_EQ(at(3, {1 + 1e-12, 0, 0}), 0);
+    EXPECT_EQ(at(4, {0.1, -1, 0.1}), 1);  // prism: bottom closed, top open
+    EXPECT_EQ(at(4, {0.1, 2, 0.1}), 0);
+    EXPECT_EQ(at(5, {1, 0.5, 0}), 1);  // lathe closed
+    EXPECT_EQ(at(5, {1 + 1e-12, 0.5, 0}), 0);
 }
 
 // So two cylinders sharing a cap plane keep both caps where they overlap in a merge (each cap lies

@@ -1,5 +1,6 @@
 #include "rays/pov/pattern_object.h"
 
+#include <cmath>
 #include <vector>
 
 #include "rays/pov/standalone_object.h"
@@ -17,8 +18,13 @@ struct ObjectInside {
     std::vector<Bounds> bounds;
 };
 
+// Within box b, widened a little: some insides reach beyond their surfaces (csg.cpp insideShape).
 bool inBox(const Bounds& b, Vec3 p) {
-    return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y && p.z >= b.lo.z && p.z <= b.hi.z;
+    for (int a = 0; a < 3; ++a) {
+        const double pad = 1e-8 * (1 + std::fabs(b.lo[a]) + std::fabs(b.hi[a]));
+        if (!(p[a] >= b.lo[a] - pad && p[a] <= b.hi[a] + pad)) return false;
+    }
+    return true;
 }
 
 // Inside any part (a union's parts: POV-Ray's union is inside where any child is), as PovHost's

@@ -325,7 +325,15 @@ void Csg::buildBoxTrees(const std::vector<Bounds>& nb) {
         std::vector<Bounds> boxes;
         std::vector<int32_t> ids;
         for (int s = node.firstChild; s >= 0; s = nodes[size_t(s)].nextSibling) {
-            boxes.push_back(nb[size_t(s)]);
+            // Widened: some insides reach a little beyond their surfaces (insideShape).
+            Bounds b = nb[size_t(s)];
+            for (int a = 0; a < 3; ++a) {
+                const double pad = 1e-8 * (1 + (std::isfinite(b.lo[a]) ? std::fabs(b.lo[a]) : 0) +
+                                           (std::isfinite(b.hi[a]) ? std::fabs(b.hi[a]) : 0));
+                b.lo[a] -= pad;
+                b.hi[a] += pad;
+            }
+            boxes.push_back(b);
             ids.push_back(s);
         }
         childTree[n] = int32_t(childTrees.size());

@@ -169,10 +169,10 @@ bool hitIsosurface(const Object& o, const Ray& r, double tMin, double tMax, Shap
 bool insideIsosurface(const Object& o, Vec3 p) {
     if (o.data->values[kSphere] != 0) {
         if (!(dot(p - o.p0, p - o.p0) < o.r0 * o.r0)) return false;
-    } else if (!(p.x > o.p0.x && p.x < o.p1.x && p.y > o.p0.y && p.y < o.p1.y && p.z > o.p0.z && p.z < o.p1.z)) {
+    } else if (!(p.x >= o.p0.x && p.x <= o.p1.x && p.y >= o.p0.y && p.y <= o.p1.y && p.z >= o.p0.z && p.z <= o.p1.z)) {
         return false;
     }
-    return value(o, p) < 0;
+    return value(o, p) <= 0;  // closed, and so is the box, as POV-Ray 3.7's inside() (measured)
 }
 
 }  // namespace rays

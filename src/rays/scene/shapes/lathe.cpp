@@ -174,7 +174,7 @@ bool insideLathe(const Object& o, Vec3 p) {
         double roots[3];
         const int k = polyRoots(ys, 3, 0, 1, roots);
         for (int j = 0; j < k; ++j)
-            if (std::fabs(cubicAt(seg, roots[j])) > rho) in = !in;
+            if (std::fabs(cubicAt(seg, roots[j])) >= rho) in = !in;  // closed, as POV-Ray's inside()
     }
     return in;
 }

@@ -370,7 +370,7 @@ bool hitPrism(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
 }
 
 bool insidePrism(const Object& o, Vec3 p) {
-    if (!(p.y > o.r0 && p.y < o.r1)) return false;
+    if (!(p.y >= o.r0 && p.y < o.r1)) return false;  // POV-Ray 3.7's inside(): bottom closed, top open
     if (o.data->order != 3) return insideOutline(o.data->values, p.x, p.z);
     const double s = o.data->conic ? p.y : 1.0;
     return s != 0 && insideCurves(o.data->values, p.x / s, p.z / s);
