@@ -450,6 +450,37 @@ TEST(PovCsgBounds, IntersectionIsBoundedAndPlanesCutHalfSpaces) {
     EXPECT_NEAR(h.t, 5 - std::sqrt(0.96), 1e-9);  // the half ball's underside
 }
 
+// POV-Ray 3.7 keeps a too-small bounded_by as a gate on the rays (measured: each kind under a
+// bound covering a small part of it, with and without the bound): a ray that meets the bound
+// anywhere sees the whole object, one that misses it sees nothing; spheres, boxes, planes, discs,
+// blobs, polygons, triangles, meshes and height fields drop the bound.
+TEST(PovCsgBounds, BoundedByGatesTheRaysOfTheKindsPovRayKeepsItFor) {
+    const std::string bound = " bounded_by { box { <-0.3, -0.3, -2>, <0.3, 0.3, 2> } }";
+    const Scene cyl = build("cylinder { -x, x, 0.6" + bound + " }");
+    ASSERT_EQ(cyl.objects.size(), 1u);
+    EXPECT_FALSE(shoot(cyl, {0.8, 0, -5}, {0, 0, 1}).valid());  // misses the bound
+    const Hit through = shoot(cyl, {0.2, 0, -5}, {0, 0, 1});
+    ASSERT_TRUE(through.valid());
+    EXPECT_NEAR(through.t, 5 - 0.6, 1e-9);
+    const Hit cap = shoot(cyl, {-5, 0, 0}, {1, 0, 0});  // meets the bound: the cap beyond it shows
+    ASSERT_TRUE(cap.valid());
+    EXPECT_NEAR(cap.t, 4, 1e-9);
+    const Bvh bvh(cyl.objects);  // shadows too
+    EXPECT_FALSE(bvh.any(cyl.objects, Ray{{0.8, 0, -5}, {0, 0, 1}}, 1e-9, 10));
+    EXPECT_TRUE(bvh.any(cyl.objects, Ray{{0.2, 0, -5}, {0, 0, 1}}, 1e-9, 10));
+    // The transformations after bounded_by move the bound, those before it do not.
+    const Scene moved = build("cylinder { -x, x, 0.6" + bound + " translate 0.5*x }");
+    EXPECT_TRUE(shoot(moved, {0.7, 0, -5}, {0, 0, 1}).valid());
+    EXPECT_FALSE(shoot(moved, {0.1, 0, -5}, {0, 0, 1}).valid());
+    // CSG kinds are gated; a sphere and a box drop the bound.
+    EXPECT_FALSE(shoot(build("union { sphere { <-0.5, 0, 0>, 0.7 } sphere { <0.5, 0, 0>, 0.7 }" + bound + " }"),
+                       {0.8, 0, -5}, {0, 0, 1}).valid());
+    EXPECT_FALSE(shoot(build("difference { box { -0.8, 0.8 } sphere { 2, 0.1 }" + bound + " }"), {0.6, 0, -5},
+                       {0, 0, 1}).valid());
+    EXPECT_TRUE(shoot(build("sphere { 0, 1" + bound + " }"), {0.8, 0, -5}, {0, 0, 1}).valid());
+    EXPECT_TRUE(shoot(build("box { -0.8, 0.8" + bound + " }"), {0.6, 0, -5}, {0, 0, 1}).valid());
+}
+
 TEST(PovCsgShadows, ShadowRaysPassThroughHolesOnly) {
     const Scene s = build("difference { box { -1, 1 } cylinder { <0, -2, 0>, <0, 2, 0>, 0.5 } }");
     const Bvh bvh(s.objects);

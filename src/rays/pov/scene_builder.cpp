@@ -257,6 +257,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     std::vector<const Item*> children;
     std::vector<Clip> clips;
     const Entry* bounds = nullptr;
+    Transform boundsBefore;  // the transformations written before bounded_by (they do not move it)
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
          doubleIlluminate = false, hollow = false, uvMapping = false, globalLights = false;
     const Entry* font = nullptr;  // text: its ttf or internal entry
@@ -302,7 +303,10 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         }
         switch (k) {
             case Kw::clipped_by: clips.push_back(Clip{&e, local}); break;
-            case Kw::bounded_by: bounds = &e; break;  // a speed hint only
+            case Kw::bounded_by:
+                bounds = &e;
+                boundsBefore = local;
+                break;
             case Kw::inverse: inverse = true; break;
             case Kw::no_shadow: noShadow = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_image: noImage = e.args.empty() || toFloat(e.args[0]) != 0; break;
@@ -354,9 +358,12 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     const Appearance* own = look.set ? &look : inherited;
     // Intersection, difference, merge, clipped and inverted objects become one CSG object (csg.h);
     // other unions outside them are flattened into their children.
+    // A bounded_by on the object itself (not within another CSG) gates the rays that see it, on the
+    // kinds POV-Ray 3.7 keeps it for (SceneBuilder::gatedByBounds).
+    const bool gated = !csg_ && bounds && gatedByBounds(kind);
     Csg tree;
     const bool started = !csg_ && (kind == Kw::difference || kind == Kw::intersection || kind == Kw::merge ||
-                                   !clips.empty() || (kind == Kw::union_ && inverse));
+                                   !clips.empty() || (kind == Kw::union_ && inverse) || gated);
     struct Reset {  // the builder forgets the tree when an error leaves the object half made
         SceneBuilder& b;
         bool on;
@@ -400,9 +407,39 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         for (const Clip& c : clips) addClippers(*c.entry, bounds, parent * local * c.before.inverse(), depth);
     }
     csgParent_ = outer;
+    if (gated) {
+        // The bound follows the transformations written after bounded_by, as a clip does.
+        auto gate = std::make_shared<Csg>();
+        csg_ = gate.get();
+        csgParent_ = gate->add(-1, CsgOp::Union, false);
+        addClippers(*bounds, nullptr, parent * local * boundsBefore.inverse(), depth);
+        csg_ = &tree;
+        csgParent_ = outer;
+        if (!gate->leaves.empty()) {
+            gate->finish();
+            tree.gate = std::move(gate);
+        }
+    }
     if (started) {
         csg_ = nullptr;
         finishCsg(std::move(tree), kind, item.loc);
+    }
+}
+
+// The kinds whose bounded_by POV-Ray 3.7 keeps as a gate on their rays, measured: each object
+// under a bound that covers a small part of it, rendered with and without the bound. Spheres,
+// boxes, planes, discs, blobs, polygons, triangles, meshes, height fields and julia fractals show
+// whole (POV-Ray drops the bound); the others show only where the rays cross the bound.
+bool SceneBuilder::gatedByBounds(Kw kind) {
+    switch (kind) {
+        case Kw::cylinder: case Kw::cone: case Kw::torus: case Kw::lathe: case Kw::sor: case Kw::prism:
+        case Kw::superellipsoid: case Kw::quadric: case Kw::cubic: case Kw::quartic: case Kw::poly:
+        case Kw::polynomial: case Kw::text: case Kw::isosurface: case Kw::sphere_sweep: case Kw::ovus:
+        case Kw::parametric: case Kw::bicubic_patch: case Kw::union_: case Kw::merge:
+        case Kw::intersection: case Kw::difference:
+            return true;
+        default:
+            return false;
     }
 }
 

@@ -91,6 +91,7 @@ private:
     void finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at);
     void emit(const Object& o, bool inverse);
     /// A clipped_by entry and the object's transformation written before it.
+    static bool gatedByBounds(Kw kind);
     struct Clip {
         const Entry* entry;
         Transform before;

@@ -74,7 +74,7 @@ void SceneBuilder::finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at) {
         unionLike = unionLike && !n.inverse && (n.op == CsgOp::Leaf || n.op == CsgOp::Union || n.op == CsgOp::Merge);
     for (const Object& leaf : tree.leaves)
         unionLike = unionLike && leaf.material.filter == 0 && scene_.povSurfaces[size_t(leaf.material.pov)].transmit == 0;
-    if (unionLike) {
+    if (unionLike && !tree.gate) {  // a bounded_by gate needs the tree
         for (const Object& leaf : tree.leaves) scene_.objects.push_back(leaf);
         return;
     }

@@ -18,6 +18,7 @@
 // as the tree.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "rays/scene/csg_box_tree.h"
@@ -44,6 +45,10 @@ struct CsgNode {
 };
 
 struct Csg {
+    /// POV-Ray's `bounded_by` on the object (scene_builder.cpp says on which kinds): a ray that
+    /// neither starts inside this tree nor meets it anywhere along its length does not see the
+    /// object, even where the object reaches beyond it. Null when there is none.
+    std::shared_ptr<const Csg> gate;
     std::vector<CsgNode> nodes;   ///< node 0 is the root
     std::vector<Object> leaves;   ///< primitives in world space (prepared), with their materials
     std::vector<int32_t> leafNode;  ///< node of each leaf
