@@ -430,6 +430,26 @@ TEST(PovCsgMaterials, ChildrenKeepTheirTexturesAndTheRestTakeTheCsgs) {
     EXPECT_TRUE(near(shadedObject(s.objects, ball).material.color, {0, 0, 1}));
 }
 
+// cutaway_textures (reference, "Cutaway Textures"; the images match POV-Ray 3.7's pixel for pixel
+// on an intersection, a difference, patterned textures and a textured cutter): a surface of a
+// child without a texture shows the texture of the textured child holding the point.
+TEST(PovCsgMaterials, CutawayTexturesShowTheTextureOfTheObjectCut) {
+    const std::string parts = "sphere { 0, 1 pigment { rgb <1, 0, 0> } } box { <-2, -2, -0.2>, <2, 2, 2> }";
+    const Scene cut = build("intersection { " + parts + " cutaway_textures }");
+    const Scene plain = build("intersection { " + parts + " }");
+    const Hit a = shoot(cut, {0.1, 0.1, -5}, {0, 0, 1}), b = shoot(plain, {0.1, 0.1, -5}, {0, 0, 1});
+    ASSERT_TRUE(a.valid() && b.valid());
+    EXPECT_NEAR(a.t, 4.8, 1e-9);  // the box's face
+    EXPECT_TRUE(near(shadedObject(cut.objects, a).material.color, {1, 0, 0}));
+    EXPECT_TRUE(near(shadedObject(plain.objects, b).material.color, {0, 0, 0}));  // the default texture
+    // A textured cutter keeps its own.
+    const Scene own = build("difference { sphere { 0, 1 pigment { rgb <1, 0, 0> } } "
+                            "box { <-2, -2, -2>, <2, 2, -0.2> pigment { rgb <0, 1, 0> } } cutaway_textures }");
+    const Hit c = shoot(own, {0.1, 0.1, -5}, {0, 0, 1});
+    ASSERT_TRUE(c.valid());
+    EXPECT_TRUE(near(shadedObject(own.objects, c).material.color, {0, 1, 0}));
+}
+
 TEST(PovCsgBounds, IntersectionIsBoundedAndPlanesCutHalfSpaces) {
     const Scene s = build(
         "intersection { sphere { 0, 1 } plane { y, 0 } }\n"

@@ -258,6 +258,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     std::vector<Clip> clips;
     const Entry* bounds = nullptr;
     Transform boundsBefore;  // the transformations written before bounded_by (they do not move it)
+    bool cutaway = false;  // cutaway_textures (on a difference or intersection)
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
          doubleIlluminate = false, hollow = false, uvMapping = false, globalLights = false;
     const Entry* font = nullptr;  // text: its ttf or internal entry
@@ -308,6 +309,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
                 boundsBefore = local;
                 break;
             case Kw::inverse: inverse = true; break;
+            case Kw::cutaway_textures: cutaway = kind == Kw::difference || kind == Kw::intersection; break;
             case Kw::no_shadow: noShadow = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_image: noImage = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
@@ -356,6 +358,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         look.set = true;
     }
     const Appearance* own = look.set ? &look : inherited;
+    leafTextured_ = own != nullptr;
     // Intersection, difference, merge, clipped and inverted objects become one CSG object (csg.h);
     // other unions outside them are flattened into their children.
     // A bounded_by on the object itself (not within another CSG) gates the rays that see it, on the
@@ -422,6 +425,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     }
     if (started) {
         csg_ = nullptr;
+        tree.cutaway = cutaway;
         finishCsg(std::move(tree), kind, item.loc);
     }
 }
@@ -447,6 +451,7 @@ bool SceneBuilder::gatedByBounds(Kw kind) {
 void SceneBuilder::emit(const Object& o, bool inverse) {
     if (csg_) {
         csg_->addLeaf(csgParent_, o, inverse);
+        csg_->leafTextured.push_back(leafTextured_);
         return;
     }
     // Grown four times at a time: a scene of many objects made in a loop copies a third of them

@@ -550,6 +550,17 @@ void clipToBox(const Bounds& b, const Ray& r, Vec3 invDir, double& tMin, double&
 
 namespace {
 
+// cutaway_textures: the surface of leaf k, without a texture of its own, shows the first textured
+// leaf holding the hit point p (its texture evaluated there).
+void cutawayPart(const Csg& c, int k, Vec3 p, ShapeHit& h) {
+    if (!c.cutaway || size_t(k) >= c.leafTextured.size() || c.leafTextured[size_t(k)]) return;
+    for (size_t j = 0; j < c.leaves.size() && j < c.leafTextured.size(); ++j)
+        if (int(j) != k && c.leafTextured[j] && insideShape(c.leaves[j], p) > 0) {
+            h.part = &c.leaves[j];
+            return;
+        }
+}
+
 // Whether the ray passes POV-Ray's bounded_by test of gate g: it starts inside g or meets it at
 // some t > 0, whatever the range the caller asks about (measured with POV-Ray 3.7: objects seen
 // only through the rays that cross their too-small bound, and whole beyond it).
@@ -633,6 +644,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
             hit->geomNormal = -hit->geomNormal;
         }
         if (!hit->part) hit->part = &leaf;  // a blob's component texture stays
+        cutawayPart(c, best, ray.at(hit->t), *hit);
         return true;
     };
     ShapeHit sh;
@@ -694,6 +706,7 @@ bool intersectCsg(const Csg& c, const Ray& ray, double tMin, double tMax, ShapeH
                 hit->geomNormal = -hit->geomNormal;
             }
             if (!hit->part) hit->part = &c.leaves[size_t(best)];
+            cutawayPart(c, best, ray.at(hit->t), *hit);
             return true;
         }
         tLast = bestT;

@@ -49,6 +49,11 @@ struct Csg {
     /// neither starts inside this tree nor meets it anywhere along its length does not see the
     /// object, even where the object reaches beyond it. Null when there is none.
     std::shared_ptr<const Csg> gate;
+    /// POV-Ray's `cutaway_textures` on the tree: a surface of a leaf without a texture of its own
+    /// shows the texture of the first textured leaf holding the hit point (reference,
+    /// "Cutaway Textures"; where several do, POV-Ray averages them and Rays takes the first).
+    bool cutaway = false;
+    std::vector<unsigned char> leafTextured;  ///< per leaf: a texture was given to it or above it
     std::vector<CsgNode> nodes;   ///< node 0 is the root
     std::vector<Object> leaves;   ///< primitives in world space (prepared), with their materials
     std::vector<int32_t> leafNode;  ///< node of each leaf
