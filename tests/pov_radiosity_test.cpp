@@ -57,6 +57,20 @@ TEST(PovRadiosity, SurfaceUnderAUniformSkyGetsDiffuseTimesItsRadiance) {
     expectGrey(centre(load("radiosity { count 200 brightness 2 }", skyScene("ambient 0 diffuse .6", sky)).scene), 0.6);
 }
 
+// no_radiosity hides an object from the gathering rays only (reference, "Object Modifiers";
+// measured with POV-Ray 3.7: a red emitting wall with no_radiosity no longer tints the floor
+// before it, and still shows itself). The sky sphere hidden so, the plane gathers nothing.
+TEST(PovRadiosity, NoRadiosityHidesAnObjectFromTheGatheringRays) {
+    const std::string plane = std::string(kOrtho) + "plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse .6 } }\n";
+    const std::string sky = "sphere { 0, 100 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission .5 } ";
+    expectGrey(centre(load("radiosity { count 200 }", plane + sky + "}").scene), 0.3);
+    expectGrey(centre(load("radiosity { count 200 }", plane + sky + "no_radiosity }").scene), 0.0, 1e-9);
+    // Within a union too, and the object itself still shows.
+    expectGrey(centre(load("radiosity { count 200 }", plane + "union { " + sky + "} no_radiosity }").scene), 0.0, 1e-9);
+    const std::string facing = std::string(kOrtho) + "plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission .5 } no_radiosity }\n";
+    expectGrey(centre(load("radiosity { count 200 }", facing).scene), 0.5);
+}
+
 TEST(PovRadiosity, AmbientIsDroppedInVersion37AndEmissionKept) {
     // Measured: plane ambient .2 → .29999 (as ambient 0), also with ambient_light .5; plane
     // emission .2 → .50001; a sky of ambient .5 (no emission) lights nothing: 0.

@@ -208,6 +208,7 @@ Material SceneBuilder::material(const Appearance& look) {
     if (s.pigment >= 0) s.pigmentTransparent = scene_.pigments.mayLetLightThrough(look.pigmentNode);
     s.noImage = noImage_;
     s.noReflection = noReflection_;
+    s.noRadiosity = noRadiosity_;
     s.doubleIlluminate = doubleIlluminate_;
     s.lightGroup = lightGroup_;
     s.globalLights = lightGroup_ < 0 || groupGlobalLights_;
@@ -259,6 +260,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     const Entry* bounds = nullptr;
     Transform boundsBefore;  // the transformations written before bounded_by (they do not move it)
     bool cutaway = false;  // cutaway_textures (on a difference or intersection)
+    bool noRadiosity = false;
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
          doubleIlluminate = false, hollow = false, uvMapping = false, globalLights = false;
     const Entry* font = nullptr;  // text: its ttf or internal entry
@@ -313,6 +315,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             case Kw::no_shadow: noShadow = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_image: noImage = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::no_reflection: noReflection = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::no_radiosity: noRadiosity = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::double_illuminate: doubleIlluminate = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::hollow: hollow = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::global_lights: globalLights = e.args.empty() || toFloat(e.args[0]) != 0; break;
@@ -328,15 +331,17 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
             default: break;  // sturm, hierarchy, photons, radiosity: no visible change
         }
     }
-    // no_shadow, no_image, no_reflection and double_illuminate hold for the object and everything
-    // inside it.
+    // no_shadow, no_image, no_reflection, no_radiosity and double_illuminate hold for the object
+    // and everything inside it.
     const Restore<bool> keep{noShadow_, noShadow_}, keepImage{noImage_, noImage_},
-        keepReflection{noReflection_, noReflection_}, keepDouble{doubleIlluminate_, doubleIlluminate_},
-        keepHollow{hollow_, hollow_}, keepGlobal{groupGlobalLights_, groupGlobalLights_};
+        keepReflection{noReflection_, noReflection_}, keepRadiosity{noRadiosity_, noRadiosity_},
+        keepDouble{doubleIlluminate_, doubleIlluminate_}, keepHollow{hollow_, hollow_},
+        keepGlobal{groupGlobalLights_, groupGlobalLights_};
     const Restore<int> keepGroup{lightGroup_, lightGroup_};
     noShadow_ = noShadow_ || noShadow;
     noImage_ = noImage_ || noImage;
     noReflection_ = noReflection_ || noReflection;
+    noRadiosity_ = noRadiosity_ || noRadiosity;
     doubleIlluminate_ = doubleIlluminate_ || doubleIlluminate;
     hollow_ = hollow_ || hollow;
     if (kind == Kw::light_group) {  // measured: global_lights is off unless given

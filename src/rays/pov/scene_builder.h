@@ -141,6 +141,7 @@ private:
     bool noShadow_ = false;    ///< the objects being added cast no shadow (no_shadow, looks_like)
     bool noImage_ = false;       ///< the objects being added are hidden from camera rays (no_image)
     bool noReflection_ = false;  ///< and from reflection rays (no_reflection)
+    bool noRadiosity_ = false;   ///< and from radiosity's gathering rays (no_radiosity)
     bool doubleIlluminate_ = false;  ///< and lit from both sides (double_illuminate)
     bool hollow_ = false;            ///< and hollow: atmospheric media fill them (hollow)
     /// The light_group whose objects and lights are being added (-1: none), and its global_lights:

@@ -270,7 +270,8 @@ private:
     bool povHides() const;
     /// firstHit, passing the objects hidden from this kind of ray (no_image: camera rays and
     /// their transmitted rays; no_reflection: rays after a reflection).
-    Hit povFirstHit(const Ray& ray, bool reflected) const;
+    /// gathering: a radiosity gathering ray, which also passes no_radiosity objects.
+    Hit povFirstHit(const Ray& ray, bool reflected, bool gathering = false) const;
     /// tracePrimary of POV-Ray scenes (a camera ray at level 1, weight 1, in no interior).
     Vec3 tracePovPrimary(const Ray& ray, TraceContext& ctx, PathInfo* info) const;
     /// Colour along a ray (the background when it misses), faded by the interior it travels in or

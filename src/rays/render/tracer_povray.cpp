@@ -73,17 +73,17 @@ const PovSurface& Tracer::povSurfaceOf(const Material& m) const {
 
 bool Tracer::povHides() const {
     for (const PovSurface& s : scene_.povSurfaces)
-        if (s.noImage || s.noReflection) return true;
+        if (s.noImage || s.noReflection || s.noRadiosity) return true;
     return false;
 }
 
-Hit Tracer::povFirstHit(const Ray& ray, bool reflected) const {
+Hit Tracer::povFirstHit(const Ray& ray, bool reflected, bool gathering) const {
     Hit hit = firstHit(ray);
     if (!povHides_) return hit;
     // The hidden objects are passed by looking further along the same ray.
     while (hit.valid()) {
         const PovSurface& s = povSurfaceOf(shadedObject(scene_.objects, hit).material);
-        if (!(reflected ? s.noReflection : s.noImage)) break;
+        if (!((reflected ? s.noReflection : s.noImage) || (gathering && s.noRadiosity))) break;
         hit = bvh_.closest(scene_.objects, ray, hit.t + kMinHitT * std::max(1.0, hit.t), kInfinity);
     }
     return hit;

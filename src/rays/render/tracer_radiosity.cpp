@@ -78,7 +78,7 @@ IrradianceRecord Tracer::povGatherRecord(Vec3 P, Vec3 N, const PovRay& r, TraceC
         const Vec3 d = hemisphere(wrapUnit((i + 0.5) / n + shiftA), wrapUnit(radicalInverse2(uint32_t(i)) + shiftB));
         const Ray ray{origin, d};
         ++ctx.stats.secondaryRays;
-        const Hit hit = povFirstHit(ray, r.reflected);
+        const Hit hit = povFirstHit(ray, r.reflected, true);
         Vec3 seen = hit.valid() ? shadePov(ray, hit, child, Vec3(1.0), ctx, nullptr) : povSky(scene_, d);
         if (!scene_.pov.fogs.empty() && povInAtmosphere(child)) seen = povFog(scene_.pov.fogs, seen, ray, hit.t);
         if (hit.valid()) inverseDistances += 1.0 / std::max(hit.t, kMinHitT);

@@ -66,6 +66,7 @@ struct PovSurface {
     bool noShadow = false;      ///< the object casts no shadow (POV-Ray's no_shadow; looks_like objects)
     bool noImage = false;       ///< not seen by camera rays nor rays transmitted from them (no_image)
     bool noReflection = false;  ///< not seen by rays after a reflection (no_reflection)
+    bool noRadiosity = false;   ///< not seen by radiosity's gathering rays (no_radiosity)
     bool hollow = false;        ///< atmospheric media fill the object (POV-Ray's hollow)
     /// The light_group the object is in (-1: none): lit by that group's lights, and by the scene's
     /// lights only with the group's global_lights (POV-Ray 3.7 reference, "Light Groups"; measured).
