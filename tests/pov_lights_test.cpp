@@ -85,6 +85,30 @@ TEST(PovAreaLight, SamplesWeighAsPovRaysSubdivisionWeighsThem) {
     EXPECT_NEAR(wall(9, "adaptive 2", pole, -0.565), 0.8664, kMeasured);
 }
 
+// area_illumination: povray 3.7 (16-bit linear), a white sphere (diffuse 1) at <1,0.4,0> of
+// radius 0.4 under a 4 × 4 area light at <0,1,0>, seen by an orthographic camera along +z: the
+// plain mean of the samples' own diffuse, unshadowed, times the share of the light arriving, in
+// which a sample behind the surface is blocked (weighed as above).
+TEST(PovAreaLight, AreaIlluminationShadesEachSampleFromItsOwnPlace) {
+    auto front = [](const std::string& grid, double x) {
+        const Loaded l = load("light_source { <0,1,0> rgb 1 area_light <4,0,0>, <0,0,4>, " + grid +
+                              " area_illumination on }\n"
+                              "sphere { <1,0.4,0>, 0.4 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n");
+        return seen(l.scene, x, 0.395, -5).x;
+    };
+    constexpr double k8bit = 2e-3;  // measured on 8-bit-precise points of the 16-bit image
+    EXPECT_NEAR(front("5, 5", 1.005), 0.0843, k8bit);
+    EXPECT_NEAR(front("5, 5", 0.605), 0.2519, k8bit);
+    EXPECT_NEAR(front("1, 2", 1.005), 0.1991, k8bit);  // one sample in front: its diffuse / 2, times 1/2
+    EXPECT_NEAR(front("2, 2", 1.005), 0.1576, k8bit);
+    EXPECT_NEAR(front("3, 3", 1.005), 0.0571, k8bit);  // one column in front: weight 1/4
+    EXPECT_NEAR(front("3, 3", 0.605), 0.3087, k8bit);
+    // Without it the light shades from its centre, behind this point's surface: dark.
+    const Loaded off = load("light_source { <0,1,0> rgb 1 area_light <4,0,0>, <0,0,4>, 5, 5 }\n"
+                            "sphere { <1,0.4,0>, 0.4 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n");
+    EXPECT_NEAR(seen(off.scene, 1.005, 0.395, -5).x, 0.0, 1e-9);
+}
+
 TEST(PovNoShadow, ObjectsWithNoShadowCastNone) {
     for (const char* pigment : {"rgb <.5,.6,.7>", "rgbf <.5,.6,.7,.5>", "rgbt <.5,.6,.7,.5>"}) {
         SCOPED_TRACE(pigment);

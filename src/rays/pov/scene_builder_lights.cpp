@@ -80,6 +80,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             case Kw::adaptive: l.adaptive = clampedInt(toFloat(e.args[0]), -1, 1000); break;
             case Kw::circular: l.circular = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::orient: l.orient = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::area_illumination: l.areaIllumination = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::fade_distance: l.fadeDistance = std::max(0.0, toFloat(e.args[0])); break;
             case Kw::fade_power: l.fadePower = toFloat(e.args[0]); break;
             case Kw::looks_like: looksLike = lookedLikeObject(e); break;

@@ -19,6 +19,7 @@ struct Light {
     int adaptive = -1;      ///< ≥ 0: test the four corner samples first; all agreeing decides visibility
     bool circular = false;  ///< the grid is mapped onto the disc (ellipse) inscribed in the rectangle
     bool orient = false;    ///< the light's plane turns to face the shaded point
+    bool areaIllumination = false;  ///< POV-Ray's area_illumination: each sample lights from its own place
 
     // Parallel light: every light ray has direction `direction` (from the light toward point_at).
     bool parallel = false;
