@@ -90,8 +90,9 @@ private:
     void addClippers(const Entry& clip, const Entry* bounds, const Transform& toWorld, int depth);
     void finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at);
     void emit(const Object& o, bool inverse);
-    /// A clipped_by entry and the object's transformation written before it.
+    /// Whether POV-Ray keeps a bounded_by on this kind as a gate on its rays (measured).
     static bool gatedByBounds(Kw kind);
+    /// A clipped_by entry and the object's transformation written before it.
     struct Clip {
         const Entry* entry;
         Transform before;

@@ -359,9 +359,10 @@ private:
     /// light at its centre (the points radiosity gathers from: measured, docs/povray-lighting.md).
     Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
                           TraceContext& ctx, bool centreOnly = false) const;
-    /// An area light with area_illumination at pt: the mean over its samples of the diffuse and
-    /// highlight each gives from its own place through its own shadow ray (weighed as povAreaMean
-    /// weighs samples), the light's colour dimmed at its centre as povLightReaching dims it.
+    /// An area light with area_illumination at pt: the plain mean over its samples of the diffuse
+    /// and highlight each gives from its own place, unshadowed, times the share of the light that
+    /// arrives (its samples' shadow rays weighed as povAreaMean weighs them); the light's colour
+    /// dimmed at its centre as povLightReaching dims it.
     Vec3 povAreaIlluminated(const Light& light, size_t index, const PovPoint& pt, Vec3 V, Vec3 scale,
                             double weight, bool highlights, TraceContext& ctx) const;
     /// 1 when nothing lies on the shadow ray before tMax, else what the objects on it let through.
