@@ -98,6 +98,22 @@ TEST(SdlMacros, ParametersLocalsAndReturnedValues) {
     EXPECT_EQ(dbg("#declare X = 1; #macro M() #local X = 2; #debug str(X,0,0) #end M() #debug str(X,0,0)"), "21");
 }
 
+// POV-Ray 3.7 reads shapes3.inc, whose Rounded_Tube ends its parameter list with a comma, whose
+// Half_Hollowed_Rounded_Cylinder2 leaves a comma out, and whose #warning texts run across lines.
+TEST(SdlMacros, ParameterListsAsLenientAsPovRays) {
+    EXPECT_EQ(dbg("#macro M(A, B,) str(A + B, 0, 0) #end\n#debug M(1, 2)"), "3");
+    EXPECT_EQ(dbg("#macro M(A, B C, D) str(A + B + C + D, 0, 0) #end\n#debug M(1, 2, 3, 4)"), "10");
+    EXPECT_EQ(err("#macro M(A, , B) #end"),
+              "scene.pov:1:13: error: expected an identifier for the macro parameter, found ','");
+}
+
+TEST(SdlStrings, AStringMaySpanLines) {
+    EXPECT_EQ(dbg("#declare S = \"one\ntwo\";\n#debug str(strlen(S), 0, 0)"), "7");
+    // The lines it spans count for the positions after it.
+    EXPECT_EQ(err("#declare S = \"a\nb\";\n#declare T = U;"), "scene.pov:3:14: error: undeclared identifier 'U'");
+    EXPECT_EQ(err("#declare S = \"open\n\n"), "scene.pov:1:14: error: unterminated string");
+}
+
 TEST(SdlMacros, LoneIdentifiersArePassedByReference) {
     EXPECT_EQ(dbg("#macro Set(R) #declare R = 5; #end #declare V = 0; Set(V) #debug str(V,0,0)"), "5");
     EXPECT_EQ(dbg("#macro Set(R) #declare R = 5; #end #declare V = 0; Set(V+0) #debug str(V,0,0)"), "0");

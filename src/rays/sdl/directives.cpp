@@ -415,8 +415,13 @@ void Interpreter::dirMacro(const Loc& at) {
             def->optional.push_back(optional);
             if (tokNoMacro().kind == Tk::Symbol && cur_->sym == ',') {
                 next();
+                // POV-Ray 3.7 takes a comma before the ')' (shapes3.inc's Rounded_Tube).
+                if (tokNoMacro().kind == Tk::Symbol && cur_->sym == ')') break;
                 continue;
             }
+            // ... and parameters without a comma between them (shapes3.inc's
+            // Half_Hollowed_Rounded_Cylinder2).
+            if (tokNoMacro().kind == Tk::Name) continue;
             break;
         }
     }

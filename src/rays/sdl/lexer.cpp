@@ -176,11 +176,16 @@ private:
         ++i_;  // opening quote
         std::string out;
         for (;;) {
-            if (i_ >= s_.size() || s_[i_] == '\n') fail(t, "unterminated string");
+            if (i_ >= s_.size()) fail(t, "unterminated string");
             const char c = s_[i_];
             if (c == '"') {
                 ++i_;
                 break;
+            }
+            if (c == '\n') {  // POV-Ray 3.7 reads a string across lines (shapes3.inc's #warning texts)
+                out += c;
+                newline();
+                continue;
             }
             if (c == '\\' && i_ + 1 < s_.size()) {
                 escape(out);
