@@ -107,6 +107,11 @@ TEST(SdlMacros, ParameterListsAsLenientAsPovRays) {
               "scene.pov:1:13: error: expected an identifier for the macro parameter, found ','");
 }
 
+// #undef of a macro names it without calling it (ior.inc ends so).
+TEST(SdlMacros, UndefOfAMacroDoesNotCallIt) {
+    EXPECT_EQ(dbg("#macro M(A) A #end\n#undef M\n#ifdef (M) #debug \"kept\" #else #debug \"gone\" #end"), "gone");
+}
+
 TEST(SdlStrings, AStringMaySpanLines) {
     EXPECT_EQ(dbg("#declare S = \"one\ntwo\";\n#debug str(strlen(S), 0, 0)"), "7");
     // The lines it spans count for the positions after it.

@@ -307,7 +307,8 @@ uint32_t Interpreter::readNewName(const char* what) {
 }
 
 void Interpreter::dirUndef() {
-    const Loc at = loc();
+    tokNoMacro();  // the name, not expanded: `#undef M` of a macro M (ior.inc does so)
+    const Loc at{curFile_, cur_->line, cur_->col};
     const uint32_t name = readNewName("#undef");
     if (!scopes_.undef(name)) warning(at, "#undef of '" + std::string(names_.name(name)) + "', which is not defined");
 }
