@@ -103,6 +103,9 @@ TEST(SdlMacros, ParametersLocalsAndReturnedValues) {
 TEST(SdlMacros, ParameterListsAsLenientAsPovRays) {
     EXPECT_EQ(dbg("#macro M(A, B,) str(A + B, 0, 0) #end\n#debug M(1, 2)"), "3");
     EXPECT_EQ(dbg("#macro M(A, B C, D) str(A + B + C + D, 0, 0) #end\n#debug M(1, 2, 3, 4)"), "10");
+    // ... and a call may end its arguments with a comma (the shapes3.inc templates do).
+    EXPECT_EQ(dbg("#macro M(A, B) str(A + B, 0, 0) #end\n#debug M(1, 2,)"), "3");
+    EXPECT_EQ(err("#macro M(A, B) #end\nM(1, 2, 3)"), "scene.pov:2:9: error: macro M takes 2 parameters, more were given");
     EXPECT_EQ(err("#macro M(A, , B) #end"),
               "scene.pov:1:13: error: expected an identifier for the macro parameter, found ','");
 }

@@ -233,8 +233,10 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
     const size_t n = def->params.size();
     if (!isSym(')')) {
         for (;;) {
-            if (args.size() >= n)
+            if (args.size() >= n) {
+                if (isSym(')')) break;  // a comma after the last argument (shapes3.inc's templates)
                 errorHere("macro " + name() + " takes " + std::to_string(n) + " parameters, more were given");
+            }
             if (isSym(',') || isSym(')')) {
                 args.emplace_back();
             } else if (!passByReference(def->params[args.size()], args, byRef)) {
