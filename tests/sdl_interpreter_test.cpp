@@ -115,6 +115,22 @@ TEST(SdlMacros, UndefOfAMacroDoesNotCallIt) {
     EXPECT_EQ(dbg("#macro M(A) A #end\n#undef M\n#ifdef (M) #debug \"kept\" #else #debug \"gone\" #end"), "gone");
 }
 
+// POV-Ray 3.7 (measured) reads '#' before a keyword that is no directive as the keyword alone, and
+// an unknown word after '#' stays an error.
+TEST(SdlDirectives, AHashBeforeAKeywordThatIsNoDirectiveIsDropped) {
+    EXPECT_EQ(dbg("#declare A = #union { sphere { 0, 1 } }\n#debug \"ok\""), "ok");
+    EXPECT_EQ(err("#declare Foo = 1;\n#Foo"), "scene.pov:2:1: error: unknown directive '#Foo'");
+}
+
+// In a function whose parameters do not name them, x, y, z, u and v read as 0 (POV-Ray 3.7,
+// measured: function(a, b) { x + 10*y + 100*z } gives 0 at (2, 3); function(u, v) { x + 10*y +
+// 100*z } gives 32, x and y being u and v).
+TEST(SdlFunctions, CoordinatesThatAreNoParameterReadAsZero) {
+    EXPECT_EQ(dbg("#declare G = function(a, b) { x + 10*y + 100*z }\n#debug str(G(2, 3), 0, 0)"), "0");
+    EXPECT_EQ(dbg("#declare G = function(u, v) { x + 10*y + 100*z }\n#debug str(G(2, 3), 0, 0)"), "32");
+    EXPECT_EQ(dbg("#declare K = function(u) { v + 10 }\n#debug str(K(2), 0, 0)"), "10");
+}
+
 TEST(SdlStrings, AStringMaySpanLines) {
     EXPECT_EQ(dbg("#declare S = \"one\ntwo\";\n#debug str(strlen(S), 0, 0)"), "7");
     // The lines it spans count for the positions after it.

@@ -285,6 +285,13 @@ private:
                 for (int i = 0; i < f->params; ++i) a.push_back(i < int(f_.params.size()) ? e_.param(i, at) : e_.constant(0, at));
                 return e_.internal(n, a, at);
             }
+            case Kw::x: case Kw::y: case Kw::z: case Kw::u: case Kw::v: {
+                // Not a parameter of this function (param() found none): POV-Ray 3.7 reads it as
+                // 0 (measured: function(a, b) { x + 10*y + 100*z } gives 0 for (2, 3), and
+                // function(u, v) { x + 10*y + 100*z } 32; meshmaker.inc's templates use z so).
+                in_.next();
+                return e_.constant(0, at);
+            }
             default:
                 in_.errorHere("'" + name + "' cannot be used in a function body");
         }

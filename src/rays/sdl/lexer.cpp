@@ -260,9 +260,26 @@ private:
             }
             return false;
         }
-        t.kind = Tk::Directive;
         t.id = names_.intern(word());
+        // POV-Ray 3.7 reads '#' before a keyword that is no directive as the keyword alone
+        // (measured: `#sphere { … }` draws the sphere; the templates write `#union {`); before any
+        // other word it is an unknown directive.
+        t.kind = Names::isKeyword(t.id) && !directiveWord(Kw(t.id)) ? Tk::Name : Tk::Directive;
         return true;
+    }
+
+    static bool directiveWord(Kw k) {
+        switch (k) {
+            case Kw::include: case Kw::declare: case Kw::local: case Kw::undef: case Kw::if_: case Kw::ifdef:
+            case Kw::ifndef: case Kw::else_: case Kw::elseif: case Kw::end: case Kw::switch_: case Kw::case_:
+            case Kw::range: case Kw::break_: case Kw::while_: case Kw::for_: case Kw::macro: case Kw::version:
+            case Kw::default_: case Kw::debug: case Kw::warning: case Kw::error: case Kw::render:
+            case Kw::statistics: case Kw::fopen: case Kw::fclose: case Kw::read: case Kw::write:
+            case Kw::max_trace_level: case Kw::max_intersections:
+                return true;
+            default:
+                return false;
+        }
     }
 
     std::string_view s_;
