@@ -131,6 +131,14 @@ TEST(SdlFunctions, CoordinatesThatAreNoParameterReadAsZero) {
     EXPECT_EQ(dbg("#declare K = function(u) { v + 10 }\n#debug str(K(2), 0, 0)"), "10");
 }
 
+// `spline { A[i] }` copies a spline out of an array of splines (meshmaker.inc's MSM does so).
+TEST(SdlValues, ASplineCopiedFromAnArrayOfSplines) {
+    EXPECT_EQ(dbg("#declare S = spline { linear_spline 0, <0,0,0> 1, <2,4,6> }\n"
+                  "#declare A = array[2] { S, S }\n#declare T = spline { A[1] }\n"
+                  "#debug vstr(3, T(0.5), \",\", 0, 0)"),
+              "1,2,3");
+}
+
 TEST(SdlStrings, AStringMaySpanLines) {
     EXPECT_EQ(dbg("#declare S = \"one\ntwo\";\n#debug str(strlen(S), 0, 0)"), "7");
     // The lines it spans count for the positions after it.

@@ -114,6 +114,14 @@ Value Interpreter::parseSplineBlock() {
     if (const Binding* b = identBinding(); b && b->value.type == VType::Spline) {
         *sp = b->value.spline();
         next();
+    } else if (b && b->value.type == VType::Array && b->value.arr().elemType == VType::Spline) {
+        // `spline { A[i] }`: a spline of an array of splines (meshmaker.inc's MSM does so).
+        const Value arr = b->value;
+        const Loc eAt = loc();
+        next();
+        const Value e = arrayElement(arr, false, nullptr);
+        if (e.type != VType::Spline) error(eAt, "expected a spline, found " + std::string(typeName(e.type)));
+        *sp = e.spline();
     }
     const char* const counted = "array elements and spline points made (new and copied)";
     spend(arrayElements_, sp->t.size(), limits_.arrayElements, at, counted);  // spline { S ... } in a loop
