@@ -246,6 +246,23 @@ TEST(PovInteriorTexture, TheInnerSideHasItsOwnTexture) {
     expectColor(sphere("rgb <.5,.4,1>", ""), {0.34607, 0.27685, 0.69213}, 1e-3);
 }
 
+// A triangle's or mesh's outer side is the one its winding's normal points away from (POV-Ray 3.7,
+// measured: triangle { <-1,-1,0>, <1,-1,0>, <1,1,0> } seen from -z shows its texture, with its
+// corners in the other order its interior_texture; the same for mesh and mesh2; a polygon and a
+// disc follow their normals as solids do).
+TEST(PovInteriorTexture, TrianglesShowTheirOuterSideAwayFromTheirNormal) {
+    const std::string looks = " texture { pigment { rgb <1,0,0> } finish { ambient 1 diffuse 0 } }"
+                              " interior_texture { pigment { rgb <0,0,1> } finish { ambient 1 diffuse 0 } }";
+    auto seen = [&](const std::string& object) { return centre(load(object + "\n")); };
+    expectColor(seen("triangle { <-1,-1,0>, <1,-1,0>, <1,1,0>" + looks + " }"), {1, 0, 0});
+    expectColor(seen("triangle { <-1,-1,0>, <1,1,0>, <1,-1,0>" + looks + " }"), {0, 0, 1});
+    expectColor(seen("mesh { triangle { <-1,-1,0>, <1,-1,0>, <1,1,0> }" + looks + " }"), {1, 0, 0});
+    expectColor(seen("mesh2 { vertex_vectors { 3, <-1,-1,0>, <1,-1,0>, <1,1,0> } face_indices { 1, <0,1,2> }" + looks + " }"),
+                {1, 0, 0});
+    expectColor(seen("polygon { 4, <-1,-1>, <1,-1>, <1,1>, <-1,-1>" + looks + " }"), {0, 0, 1});
+    expectColor(seen("disc { 0, -z, 2" + looks + " }"), {1, 0, 0});
+}
+
 TEST(PovMeshTextureList, OneTextureEveryFaceNamesDrawsTheMesh) {
     // .8·C + phong .2 (measured 1 .60001 .20001), whatever the mesh's own texture; a face
     // without an index keeps the mesh's own texture.

@@ -250,12 +250,26 @@ Vec3 Tracer::shadePovCorners(const Ray& ray, const Hit& hit, const PovRay& r, Ve
     return color;
 }
 
+namespace {
+
+// Whether a ray along dir meets the outer side (texture, not interior_texture) of a surface whose
+// geometric normal is n. Triangles and meshes show their outer side where their winding's normal
+// points away from the ray (measured with POV-Ray 3.7: triangle { <-1,-1,0>, <1,-1,0>, <1,1,0> }
+// seen from -z shows its texture and from +z its interior_texture; so do mesh, mesh2 and
+// bicubic_patch); solids, discs and polygons where it points towards the ray.
+bool povMeetsOuterSide(const Object& o, Vec3 dir, Vec3 n) {
+    const bool flat = o.type == ShapeType::Triangle || o.type == ShapeType::Mesh;
+    return flat ? dot(dir, n) > 0 : dot(dir, n) < 0;
+}
+
+}  // namespace
+
 Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                       PathInfo* info) const {
     if (hit.blend.on()) return shadePovCorners(ray, hit, r, segmentFade, ctx, info);
     const Object& o = shadedObject(scene_.objects, hit);
     if (const PovSurface& s = povSurfaceOf(o.material); s.texture >= 0 || s.interiorTexture >= 0) {
-        const int node = povTextureSeen(s, dot(ray.dir, hit.geomNormal) < 0);
+        const int node = povTextureSeen(s, povMeetsOuterSide(o, ray.dir, hit.geomNormal));
         if (node >= 0) return shadePovTextured(ray, hit, r, segmentFade, ctx, info, node);
     }
     PovPoint pt = povPointOf(ray, hit, o, r, segmentFade);
@@ -664,7 +678,7 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
         const Vec3 facing = dot(shadow.dir, h.normal) < 0 ? h.normal : -h.normal;
         const Vec3 uv{h.u, h.v, 0};
         const Vec3* uvAt = h.hasUV ? &uv : nullptr;
-        if (const int node = povTextureSeen(s, dot(shadow.dir, h.geomNormal) < 0); node >= 0) {
+        if (const int node = povTextureSeen(s, povMeetsOuterSide(o, shadow.dir, h.geomNormal)); node >= 0) {
             tint *= povTextureTint(scene_, node, shadow.at(h.t), facing, uvAt);  // a layered or patterned texture: each layer tints
         } else {
             Vec3 C = o.material.color;
