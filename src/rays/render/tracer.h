@@ -357,6 +357,10 @@ private:
     /// visible share of an area light's samples; shadow rays leave P on side Nl, aimed at the light
     /// (each sample) from there. centreOnly: an area light as a point
     /// light at its centre (the points radiosity gathers from: measured, docs/povray-lighting.md).
+    /// The light's colour at P before anything blocks it (spotlight cone, cylinder, fading), and
+    /// where its shadow rays end (a projected_through projector; infinite without one); false
+    /// when a projector keeps the light from P altogether.
+    bool povLightDimmed(const Light& light, Vec3 P, Vec3& color, double& shadowEnd) const;
     Vec3 povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl, bool intoSurface,
                           TraceContext& ctx, bool centreOnly = false) const;
     /// An area light with area_illumination at pt: the plain mean over its samples of the diffuse

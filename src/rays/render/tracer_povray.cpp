@@ -494,17 +494,24 @@ double Tracer::povProjectorDistance(const Light& light, Vec3 P) const {
     return crossed ? nearest : -1;
 }
 
-Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
-                              bool intoSurface, TraceContext& ctx, bool centreOnly) const {
+bool Tracer::povLightDimmed(const Light& light, Vec3 P, Vec3& color, double& shadowEnd) const {
     // Spotlights, cylindrical lights and fading dim the light before anything blocks it.
-    Vec3 color = light.color;
+    color = light.color;
     if (light.spot != Light::Spot::None) color *= povSpotFactor(light, P - light.position);
     if (light.fadeDistance > 0) color *= povLightFade(light, length(P - light.position));
-    double shadowEnd = kInfinity;  // shadow rays stop at a projector (projected_through)
+    shadowEnd = kInfinity;  // shadow rays stop at a projector (projected_through)
     if (light.projectorCount > 0) {
         shadowEnd = povProjectorDistance(light, P);
-        if (shadowEnd < 0) return {};
+        if (shadowEnd < 0) return false;
     }
+    return true;
+}
+
+Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
+                              bool intoSurface, TraceContext& ctx, bool centreOnly) const {
+    Vec3 color;
+    double shadowEnd;
+    if (!povLightDimmed(light, P, color, shadowEnd)) return {};
     if (light.shadowless || color == Vec3{}) return color;
     const Vec3 origin = P + kSurfaceOffset * Nl;
     if (light.parallel) {
@@ -566,15 +573,9 @@ Vec3 Tracer::povLightReaching(const Light& light, size_t index, Vec3 P, Vec3 Nl,
 Vec3 Tracer::povAreaIlluminated(const Light& light, size_t index, const PovPoint& pt, Vec3 V, Vec3 scale,
                                 double weight, bool highlights, TraceContext& ctx) const {
     const PovSurface& s = *pt.surface;
-    Vec3 color = light.color;
-    if (light.spot != Light::Spot::None) color *= povSpotFactor(light, pt.P - light.position);
-    if (light.fadeDistance > 0) color *= povLightFade(light, length(pt.P - light.position));
-    double shadowEnd = kInfinity;
-    if (light.projectorCount > 0) {
-        shadowEnd = povProjectorDistance(light, pt.P);
-        if (shadowEnd < 0) return {};
-    }
-    if (color == Vec3{}) return {};
+    Vec3 color;
+    double shadowEnd;
+    if (!povLightDimmed(light, pt.P, color, shadowEnd) || color == Vec3{}) return {};
     const AreaGrid grid = areaGrid(light, settings_.areaSamples, pt.P);
     const size_t count = size_t(grid.n1) * size_t(grid.n2);
     thread_local std::vector<Vec3> places, tints;
