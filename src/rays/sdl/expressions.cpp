@@ -53,7 +53,6 @@ Num make(VType type, int dim, const std::array<double, 5>& c) {
 
 }  // namespace
 
-namespace {
 // One operator on two floats (on each component of promoted vectors and colours).
 double combineFloats(char op, double x, double y) {
     switch (op) {
@@ -72,7 +71,8 @@ double combineFloats(char op, double x, double y) {
     }
     return 0;
 }
-}  // namespace
+
+double grayOf(const Num& v) { return 0.297 * v.c[0] + 0.589 * v.c[1] + 0.114 * v.c[2]; }
 
 Num combine(char op, const Num& a, const Num& b) {
     if (a.type == VType::Float && b.type == VType::Float) return Num::number(combineFloats(op, a.c[0], b.c[0]));
@@ -207,6 +207,7 @@ Num Interpreter::fullNum() {
 Num Interpreter::binary(int minPrec, bool full, bool colorCtx) {
     Num quick;
     if (quickOperand(full, quick)) return quick;
+    if (compiledOperand(minPrec, full, colorCtx, quick)) return binaryAfter(quick, minPrec, full, colorCtx);
     return binaryAfter(full && minPrec <= 2 && atStringStart() ? stringComparison() : unary(colorCtx), minPrec, full,
                        colorCtx);
 }
@@ -278,17 +279,20 @@ Num Interpreter::stringComparison() {
     return Num::number(r);
 }
 
+Num unaryOperator(char op, Num v) {
+    for (int i = 0; i < v.dim; ++i) {
+        if (op == '-') v.c[i] = -v.c[i];
+        else if (op == '!') v.c[i] = std::fabs(v.c[i]) > kEpsilon ? 0.0 : 1.0;
+    }
+    return v;
+}
+
 Num Interpreter::unary(bool colorCtx) {
     if (isSym('-') || isSym('+') || isSym('!')) {
         const char op = char(cur_->sym);
         NestGuard guard(*this);
         next();
-        Num v = unary(colorCtx);
-        for (int i = 0; i < v.dim; ++i) {
-            if (op == '-') v.c[i] = -v.c[i];
-            else if (op == '!') v.c[i] = std::fabs(v.c[i]) > kEpsilon ? 0.0 : 1.0;
-        }
-        return v;
+        return unaryOperator(op, unary(colorCtx));
     }
     return postfix(factor(colorCtx));
 }
@@ -312,7 +316,7 @@ Num Interpreter::postfix(Num v) {
         next();
         if (v.type == VType::Float) error(at, "'.' needs a vector or colour, found a float");
         // Gray is POV-Ray's grey value of a colour (weights measured with POV-Ray 3.7).
-        const double r = i == 5 ? 0.297 * v.c[0] + 0.589 * v.c[1] + 0.114 * v.c[2] : (i < v.dim ? v.c[i] : 0.0);
+        const double r = i == 5 ? grayOf(v) : (i < v.dim ? v.c[i] : 0.0);
         if (i < 5 && i >= v.dim) error(at, "the vector has only " + std::to_string(v.dim) + " components");
         v = Num::number(r);
     }
@@ -347,17 +351,11 @@ Num Interpreter::factor(bool colorCtx) {
                 case Kw::pi: next(); return Num::number(std::numbers::pi);
                 case Kw::true_: case Kw::yes: case Kw::on: next(); return Num::number(1);
                 case Kw::false_: case Kw::no: case Kw::off: next(); return Num::number(0);
-                case Kw::clock: next(); return Num::number(options_.animation.clock);
-                case Kw::clock_delta: next(); return Num::number(options_.animation.clockDelta);
-                case Kw::clock_on: next(); return Num::number(options_.animation.clockOn ? 1 : 0);
-                case Kw::initial_clock: next(); return Num::number(options_.animation.initialClock);
-                case Kw::final_clock: next(); return Num::number(options_.animation.finalClock);
-                case Kw::initial_frame: next(); return Num::number(options_.animation.initialFrame);
-                case Kw::final_frame: next(); return Num::number(options_.animation.finalFrame);
-                case Kw::frame_number: next(); return Num::number(options_.animation.frameNumber);
-                case Kw::image_width: next(); return Num::number(options_.imageWidth);
-                case Kw::image_height: next(); return Num::number(options_.imageHeight);
-                case Kw::version: next(); return Num::number(version_);
+                case Kw::clock: case Kw::clock_delta: case Kw::clock_on: case Kw::initial_clock:
+                case Kw::final_clock: case Kw::initial_frame: case Kw::final_frame: case Kw::frame_number:
+                case Kw::image_width: case Kw::image_height: case Kw::version:
+                    next();
+                    return Num::number(environmentValue(Kw(t.id)));
                 case Kw::color: case Kw::colour: {
                     next();
                     NestGuard guard(*this);
@@ -377,6 +375,24 @@ Num Interpreter::factor(bool colorCtx) {
             break;
     }
     error(at, "expected a numeric expression, found " + describe());
+}
+
+// The keywords whose values come from the options and the #version in force.
+double Interpreter::environmentValue(Kw k) const {
+    switch (k) {
+        case Kw::clock: return options_.animation.clock;
+        case Kw::clock_delta: return options_.animation.clockDelta;
+        case Kw::clock_on: return options_.animation.clockOn ? 1 : 0;
+        case Kw::initial_clock: return options_.animation.initialClock;
+        case Kw::final_clock: return options_.animation.finalClock;
+        case Kw::initial_frame: return options_.animation.initialFrame;
+        case Kw::final_frame: return options_.animation.finalFrame;
+        case Kw::frame_number: return options_.animation.frameNumber;
+        case Kw::image_width: return options_.imageWidth;
+        case Kw::image_height: return options_.imageHeight;
+        case Kw::version: return version_;
+        default: return 0;
+    }
 }
 
 Num Interpreter::vectorLiteral() {

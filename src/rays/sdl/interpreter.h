@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "rays/fn/function_table.h"
+#include "rays/sdl/expr_code.h"
 #include "rays/sdl/host.h"
 #include "rays/sdl/item.h"
 #include "rays/sdl/names.h"
@@ -310,6 +311,15 @@ private:
     Num additive(bool colorCtx) { return binary(3, false, colorCtx); }
     Num binaryAfter(Num a, int minPrec, bool full, bool colorCtx);
     bool quickOperand(bool full, Num& out);
+    /// The operand binary(minPrec, full, colorCtx) reads at the current token, from the code compiled
+    /// for its place (expr_code.h), the tokens after it fetched as the reader would; false when the
+    /// place has no code or the identifiers hold other kinds of values now (nothing consumed).
+    bool compiledOperand(int minPrec, bool full, bool colorCtx, Num& out);
+    /// Runs code whose identifiers hold the given bindings (type-checked): its value, or false
+    /// (nothing changed) when an array element read is not there or of another type.
+    bool runCompiled(const ExprCode& code, const Binding* const* binds, Num& out);
+    /// The same for code that makes floats only (ExprCode::scalar).
+    bool runScalar(const ExprCode& code, const Binding* const* binds, double& out);
     Num unary(bool colorCtx);
     Num factor(bool colorCtx);
     Num postfix(Num v);
@@ -317,6 +327,9 @@ private:
     Num colorKeyword();
     Num colorComponents(Num c);
     Num vectorLiteral();
+    /// clock, clock_delta, clock_on, initial/final_clock, initial/final_frame, frame_number,
+    /// image_width, image_height, version.
+    double environmentValue(Kw k) const;
     Num numericOf(const Value& v, const Loc& at);
     double toFloat(const Value& v, const Loc& at, std::string_view what);
     double toFloat(const Num& v, const Loc& at, std::string_view what);
@@ -381,6 +394,11 @@ private:
     RandomStreams random_;
     std::shared_ptr<fn::FunctionTable> functions_ = std::make_shared<fn::FunctionTable>();
     std::unordered_map<std::string, int> warnedTimes_;
+    /// Compiled expressions: by file id, for each token the index of the code compiled at it in
+    /// exprCodes_, kExprUntried or kExprNever.
+    static constexpr int32_t kExprUntried = -1, kExprNever = -2;
+    std::vector<std::vector<int32_t>> exprSlots_;
+    std::vector<ExprCode> exprCodes_;
 };
 
 }  // namespace rays::sdl
