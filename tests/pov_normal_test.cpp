@@ -134,6 +134,25 @@ TEST(PovNormal, WaveFrequencySlopeMapAndTransformationsShapeTheTilt) {
     EXPECT_NEAR(planeBrightness("gradient <1, 1, 0> 1", 1), 0.6348, kMeasured);
 }
 
+TEST(PovNormal, NoBumpScaleTiltsByTheWorldGradient) {
+    // povray 3.7, gradient x 0.5 lit from <-1, 0, -1>: 0.75257 plain (a tilt of 1/15), scaled
+    // 0.25 with no_bump_scale 0.86543 (4/15), scaled 2 with it 0.73027 (1/30); a scale along x
+    // steepens it with or without (0.79435, 2/15); unscaled it changes nothing.
+    EXPECT_NEAR(planeBrightness("gradient x 0.5 scale 0.25", -1), 0.75257, kMeasured);
+    EXPECT_NEAR(planeBrightness("gradient x 0.5 scale 0.25 no_bump_scale", -1), 0.86543, kMeasured);
+    EXPECT_NEAR(planeBrightness("gradient x 0.5 scale 2 no_bump_scale", -1), 0.73027, kMeasured);
+    EXPECT_NEAR(planeBrightness("gradient x 0.5 scale <0.5, 1, 1> no_bump_scale", -1), 0.79435, kMeasured);
+    EXPECT_NEAR(planeBrightness("gradient x 0.5 scale <1, 0.5, 1> no_bump_scale", -1), 0.75257, kMeasured);
+    EXPECT_NEAR(planeBrightness("gradient x 0.5 no_bump_scale", -1), 0.75257, kMeasured);
+    // The object's scale counts as the normal's own (povray: 0.75257 without, 0.86543 with).
+    for (const bool flag : {false, true}) {
+        const Loaded l = load(std::string("light_source { <-1, 0, -1>*1000 color 1 parallel point_at 0 }\n") +
+                              "plane { -z, -2 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { gradient x 0.5 " +
+                              (flag ? "no_bump_scale" : "") + " } scale 0.25 }\n");
+        EXPECT_NEAR(seen(l.scene, 0.35, 0.2).x, flag ? 0.86543 : 0.75257, kMeasured) << flag;
+    }
+}
+
 TEST(PovNormal, IdentifiersBumpSizeAndPlacesOfTheNormal) {
     const std::string light = "light_source { <1, 0, -1>*1000 color 1 parallel point_at 0 }\n";
     const std::string plane = "plane { -z, -0.5 ";

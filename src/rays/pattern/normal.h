@@ -39,6 +39,9 @@ struct NormalNode {
     Transform fromPattern;    ///< its inverse
     double amount = 0.5;      ///< the pattern's amount or bump_size
     double accuracy = 0.02;   ///< distance of the gradient's sample points (pattern space)
+    /// no_bump_scale: the tilt is the world gradient's, so the bumps deepen as the pattern shrinks
+    /// (by default a uniform scale keeps their depth).
+    bool noBumpScale = false;
     int slopeBegin = 0, slopeCount = 0;  ///< NormalTable::slopes (none: height = value)
     int mapBegin = 0, mapCount = 0;      ///< NormalTable::entries
 };
@@ -55,8 +58,10 @@ struct NormalTable {
     std::vector<NormalEntry> entries;
     std::vector<NormalRoot> roots;
 
-    /// Node n's normal at p (the enclosing space) for the unit surface normal `normal` there.
-    Vec3 perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 normal) const;
+    /// Node n's normal at p (the enclosing space) for the unit surface normal `normal` there;
+    /// stretch: the length the world normal took on its way into the enclosing space before it
+    /// was made a unit vector again (product over the spaces above), which no_bump_scale undoes.
+    Vec3 perturb(const PigmentTable& patterns, int n, Vec3 p, Vec3 normal, double stretch = 1) const;
     /// Root r's unit normal at world point P for the unit surface normal N (world space).
     Vec3 atRoot(const PigmentTable& patterns, int r, Vec3 P, Vec3 N) const;
     /// The height a pattern node (NormalKind::Pattern) gives at p (pattern value, wave and

@@ -45,6 +45,7 @@ struct NormalCompiler::State {
     double bumpSize = 0;      ///< bump_size, when set
     bool bumpSizeSet = false;
     double accuracy = 0.02;
+    bool noBumpScale = false;  ///< no_bump_scale
     std::vector<pattern::SlopeEntry> slopes;
     std::vector<pattern::NormalEntry> map;   ///< normal_map entries
     std::vector<pattern::NormalEntry> list;  ///< a block pattern's normals
@@ -106,6 +107,7 @@ int NormalCompiler::build(const Item& normal) {
         node.fromPattern = toPattern.determinant() != 0 ? toPattern.inverse() : Transform{};
         node.amount = s.bumpSizeSet ? s.bumpSize : s.amount;
         node.accuracy = s.accuracy;
+        node.noBumpScale = s.noBumpScale;
         node.kind = s.kind;
         if (s.kind == NormalKind::BumpMap) node.amount = s.amount;  // bump_map's own bump_size
         if (s.kind == NormalKind::Pattern && s.block && !s.list.empty()) node.kind = NormalKind::Block;
@@ -189,6 +191,7 @@ void NormalCompiler::read(const Item& normal, State& s, int depth) {
                 s.bumpSizeSet = true;
                 break;
             case Kw::accuracy: s.accuracy = toFloat(e.args[0]); break;
+            case Kw::no_bump_scale: s.noBumpScale = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::normal: s.list.push_back({0, nested(e.args[0].item(), depth + 1)}); break;
             case Kw::normal_map: {
                 Entry inner;
