@@ -31,6 +31,7 @@ enum class PatternKind : uint8_t {
     Quilted,   ///< unit cubes rising from their centres along a cubic curve (pattern/quilted.h)
     Function,  ///< a user function of x, y, z (`function { ... }`), run on rays/fn's machine
     Slope,     ///< the surface normal's angle to a direction, and the altitude (pattern/slope.h)
+    Aoi,       ///< the angle of incidence: between the normal facing the viewer and the ray, over π
     PigmentPattern,  ///< a pigment's grey (PigmentTable::rawValue; PatternParams::source)
     Average,  ///< the weighted mean of a pigment_map's pigments
     Layered,  ///< two entries: a texture layer (the second) over the one below (the first)
@@ -86,9 +87,9 @@ struct PatternParams {
 double escapeColouring(const PatternParams& m, bool escaped, int n, double zr, double zi, double minAbs2);
 
 /// The value of a continuous pattern at p (pattern space), turbulence included, before the wave.
-/// N: the world normal facing the viewer at the surface point (only slope reads it; zero where
-/// there is no surface).
-double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 N = {});
+/// N: the world normal facing the viewer at the surface point (slope and aoi read it), D: the
+/// direction of the ray that met the surface (aoi); zero where there is no surface.
+double patternValue(PatternKind kind, const PatternParams& params, Vec3 p, Vec3 N = {}, Vec3 D = {});
 /// The list index (0 to 5) of a block pattern at p, turbulence included.
 int blockIndex(PatternKind kind, const PatternParams& params, Vec3 p);
 

@@ -13,20 +13,20 @@ Vec3 PigmentTable::inNodeSpace(const PigmentNode& node, Vec3 p) const {
     return p;
 }
 
-double PigmentTable::rawValue(const PigmentNode& node, Vec3 q, Vec3 N) const {
+double PigmentTable::rawValue(const PigmentNode& node, Vec3 q, Vec3 N, Vec3 D) const {
     if (node.kind == PatternKind::ImagePattern) {
         if (node.params.turbulence.on()) q = turbulent(q, node.params.turbulence);
         return node.image >= 0 ? images[size_t(node.image)].value(q) : 0;
     }
     if (node.kind == PatternKind::MaterialMap) return node.image >= 0 ? images[size_t(node.image)].materialIndex(q) : 0;
-    if (node.kind != PatternKind::PigmentPattern) return patternValue(node.kind, node.params, q, N);
+    if (node.kind != PatternKind::PigmentPattern) return patternValue(node.kind, node.params, q, N, D);
     if (node.params.source < 0) return 0;
     if (node.params.turbulence.on()) q = turbulent(q, node.params.turbulence);
-    const Rgbft c = evaluate(node.params.source, q, N);
+    const Rgbft c = evaluate(node.params.source, q, N, D);
     return 0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z;
 }
 
-MapPlace PigmentTable::place(int n, Vec3 p, Vec3 N) const {
+MapPlace PigmentTable::place(int n, Vec3 p, Vec3 N, Vec3 D) const {
     const PigmentNode& node = nodes[size_t(n)];
     if (node.mapCount == 0) return {};
     p = inNodeSpace(node, p);
@@ -38,11 +38,11 @@ MapPlace PigmentTable::place(int n, Vec3 p, Vec3 N) const {
         const int i = std::min(blockIndex(node.kind, node.params, p), node.mapCount - 1);
         return {i, i, 0};
     }
-    const double v = applyWave(node.wave, rawValue(node, p, N));
+    const double v = applyWave(node.wave, rawValue(node, p, N, D));
     return placeInMap({entries.data() + node.mapBegin, size_t(node.mapCount)}, v);
 }
 
-Rgbft PigmentTable::evaluate(int n, Vec3 p, Vec3 N) const {
+Rgbft PigmentTable::evaluate(int n, Vec3 p, Vec3 N, Vec3 D) const {
     const PigmentNode& node = nodes[size_t(n)];
     if (node.kind == PatternKind::Solid) return node.color;
     p = inNodeSpace(node, p);
@@ -50,7 +50,7 @@ Rgbft PigmentTable::evaluate(int n, Vec3 p, Vec3 N) const {
     const MapEntry* map = entries.data() + node.mapBegin;
     // Entries that are pigments are evaluated at the point in this pigment's space (the outer
     // pigment's transformations move its map's pigments too).
-    auto entry = [&](int i) { return map[i].pigment >= 0 ? evaluate(map[i].pigment, p, N) : map[i].color; };
+    auto entry = [&](int i) { return map[i].pigment >= 0 ? evaluate(map[i].pigment, p, N, D) : map[i].color; };
     if (node.mapCount == 0) return node.color;
     if (node.kind == PatternKind::MaterialMap) return entry(materialEntry(node, p));
     if (isBlockPattern(node.kind)) {
@@ -80,14 +80,14 @@ Rgbft PigmentTable::evaluate(int n, Vec3 p, Vec3 N) const {
         if (weights == 0) return sum;
         return {sum.rgb / weights, sum.filter / weights, sum.transmit / weights};
     }
-    const double v = applyWave(node.wave, rawValue(node, p, N));
+    const double v = applyWave(node.wave, rawValue(node, p, N, D));
     const MapPlace at = placeInMap({map, size_t(node.mapCount)}, v);
     if (at.lo == at.hi || at.t == 0) return entry(at.lo);
     if (at.t == 1) return entry(at.hi);
     return mix(entry(at.lo), entry(at.hi), at.t);
 }
 
-double PigmentTable::value(int n, Vec3 p, Vec3 N) const {
+double PigmentTable::value(int n, Vec3 p, Vec3 N, Vec3 D) const {
     const PigmentNode& node = nodes[size_t(n)];
     switch (node.kind) {
         case PatternKind::Solid: case PatternKind::Average: case PatternKind::Layered: case PatternKind::ImageMap:
@@ -96,7 +96,7 @@ double PigmentTable::value(int n, Vec3 p, Vec3 N) const {
     }
     p = inNodeSpace(node, p);
     if (isBlockPattern(node.kind)) return blockIndex(node.kind, node.params, p);
-    return applyWave(node.wave, rawValue(node, p, N));
+    return applyWave(node.wave, rawValue(node, p, N, D));
 }
 
 int PigmentTable::materialEntry(const PigmentNode& node, Vec3 q) const {

@@ -53,31 +53,32 @@ struct PigmentTable {
     }
 
     /// The colour of node n at p, p in the space enclosing the node. N: the world normal facing
-    /// the viewer at the surface point, for the slope pattern (zero off surfaces).
-    Rgbft evaluate(int n, Vec3 p, Vec3 N = {}) const;
+    /// the viewer at the surface point, for the slope and aoi patterns, D the direction of the
+    /// ray that met it, for aoi (both zero off surfaces).
+    Rgbft evaluate(int n, Vec3 p, Vec3 N = {}, Vec3 D = {}) const;
     /// The colour of root r at the world point p.
     /// uv: the surface's (u, v, 0), when it has texture coordinates (for uv-mapped roots).
-    Rgbft atRoot(int r, Vec3 world, Vec3 N = {}, const Vec3* uv = nullptr) const {
+    Rgbft atRoot(int r, Vec3 world, Vec3 N = {}, const Vec3* uv = nullptr, Vec3 D = {}) const {
         const PigmentRoot& root = roots[size_t(r)];
-        return evaluate(root.node, root.worldToTexture.point(root.uv && uv ? *uv : world), N);
+        return evaluate(root.node, root.worldToTexture.point(root.uv && uv ? *uv : world), N, D);
     }
     /// The value of node n's pattern at p (p in the space enclosing the node), as a pattern
     /// function gives it: after the node's transformations, warps, turbulence and wave, its map
     /// ignored; a block pattern's list index (0, 1 or 2); 0 for nodes without a pattern value.
-    double value(int n, Vec3 p, Vec3 N = {}) const;
+    double value(int n, Vec3 p, Vec3 N = {}, Vec3 D = {}) const;
     /// The value of node's pattern at q (its pattern space), turbulence included, before the
     /// wave: patternValue, or for pigment_pattern the grey of its pigment (POV-Ray 3.7 reference,
     /// "Pigment Pattern"; measured: 0.297·r + 0.589·g + 0.114·b, filter and transmit ignored).
-    double rawValue(const PigmentNode& node, Vec3 q, Vec3 N = {}) const;
+    double rawValue(const PigmentNode& node, Vec3 q, Vec3 N = {}, Vec3 D = {}) const;
     /// True when some colour of node n filters or transmits.
     bool mayLetLightThrough(int n) const;
     /// Where node n's pattern puts p (p in the space enclosing the node): the place in its map, or
     /// for a block pattern the entry of its list (lo == hi). For nodes with a pattern and a map.
-    MapPlace place(int n, Vec3 p, Vec3 N = {}) const;
+    MapPlace place(int n, Vec3 p, Vec3 N = {}, Vec3 D = {}) const;
     /// place() of root r's node at the world point.
-    MapPlace placeAtRoot(int r, Vec3 world, Vec3 N = {}, const Vec3* uv = nullptr) const {
+    MapPlace placeAtRoot(int r, Vec3 world, Vec3 N = {}, const Vec3* uv = nullptr, Vec3 D = {}) const {
         const PigmentRoot& root = roots[size_t(r)];
-        return place(root.node, root.worldToTexture.point(root.uv && uv ? *uv : world), N);
+        return place(root.node, root.worldToTexture.point(root.uv && uv ? *uv : world), N, D);
     }
 
 private:

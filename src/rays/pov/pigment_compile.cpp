@@ -59,6 +59,7 @@ bool patternKind(Kw k, PatternKind& out) {
         case Kw::spiral2: out = PatternKind::Spiral2; return true;
         case Kw::quilted: out = PatternKind::Quilted; return true;
         case Kw::slope: out = PatternKind::Slope; return true;
+        case Kw::aoi: out = PatternKind::Aoi; return true;
         case Kw::pigment_pattern: out = PatternKind::PigmentPattern; return true;
         case Kw::tiling: out = PatternKind::Tiling; return true;
         case Kw::pavement: out = PatternKind::Pavement; return true;
@@ -293,9 +294,9 @@ void PigmentCompiler::readEntry(const Entry& e, State& s, int depth) {
     const Kw k = e.kw();
     const auto num = [&](size_t i) { return i < e.args.size() ? toFloat(e.args[i]) : 0.0; };
     PatternKind kind;
-    // slope reads the surface normal: as a normal pattern it is not rendered (noted below).
+    // slope and aoi read the surface normal: as normal patterns they are not rendered (noted below).
     // tiling N: the Penrose tilings (25 to 27) are not drawn (noted below).
-    const bool known = patternKind(k, kind) && !(s.normal && kind == PatternKind::Slope) &&
+    const bool known = patternKind(k, kind) && !(s.normal && (kind == PatternKind::Slope || kind == PatternKind::Aoi)) &&
                        !(kind == PatternKind::Tiling && !pattern::tilingDrawn(int(num(0))));
     if (known) {
         s.pattern = true;

@@ -19,13 +19,16 @@ double srgbDecode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.
 
 // The surface colour at the hit before lighting: the pigment (POV-Ray pattern, image map) or the
 // material colour, in the EXR colour's units.
-Vec3 albedoAt(const Scene& scene, const Hit& h, Vec3 P) {
+Vec3 albedoAt(const Scene& scene, const Hit& h, const Ray& ray) {
+    const Vec3 P = ray.at(h.t);
     const Object& o = shadedObject(scene.objects, h);
     Vec3 C = o.material.color;
     const bool pov = scene.pov.enabled;
     if (pov && o.material.pov >= 0 && size_t(o.material.pov) < scene.povSurfaces.size()) {
         const PovSurface& s = scene.povSurfaces[size_t(o.material.pov)];
-        if (s.pigment >= 0) C = povPigmentAt(scene, s, P, h.normal).color;  // slope: the outward normal
+        // slope and aoi read the normal facing the viewer, as the render's pigment does.
+        const Vec3 facing = dot(ray.dir, h.normal) < 0 ? h.normal : -h.normal;
+        if (s.pigment >= 0) C = povPigmentAt(scene, s, P, facing, nullptr, ray.dir).color;
     }
     if (o.material.pigmentMap >= 0) {
         Vec3 N = h.normal;
@@ -110,7 +113,7 @@ AovBuffers computeAovs(const Scene& scene, const Bvh& bvh, const RenderSettings&
             const Object& o = shadedObject(scene.objects, h);
             if (!a.depth.empty()) a.depth[i] = float(h.t * length(ray.dir));
             if (!a.normal.empty()) a.normal[i] = normalize(h.normal);
-            if (!a.albedo.empty()) a.albedo[i] = albedoAt(scene, h, ray.at(h.t));
+            if (!a.albedo.empty()) a.albedo[i] = albedoAt(scene, h, ray);
             if (!a.objectId.empty()) a.objectId[i] = float(h.object);
             if (!a.materialId.empty()) a.materialId[i] = float(scene.pov.enabled ? o.material.pov : h.object);
         }

@@ -13,10 +13,12 @@ struct PovPigmentSample {
 };
 
 /// The pattern colour of surface s at world point P, N the (perturbed) normal facing the viewer
-/// there (for the slope pattern); s.pigment must be ≥ 0. uv: the surface's (u, v, 0) when it has
-/// texture coordinates (uv-mapped pigments are looked up there).
-inline PovPigmentSample povPigmentAt(const Scene& scene, const PovSurface& s, Vec3 P, Vec3 N, const Vec3* uv = nullptr) {
-    const pattern::Rgbft c = scene.pigments.atRoot(s.pigment, P, N, uv);
+/// there (for the slope and aoi patterns), D the direction of the ray that met it (aoi); s.pigment
+/// must be ≥ 0. uv: the surface's (u, v, 0) when it has texture coordinates (uv-mapped pigments
+/// are looked up there).
+inline PovPigmentSample povPigmentAt(const Scene& scene, const PovSurface& s, Vec3 P, Vec3 N, const Vec3* uv = nullptr,
+                                     Vec3 D = {}) {
+    const pattern::Rgbft c = scene.pigments.atRoot(s.pigment, P, N, uv, D);
     return {c.rgb, std::clamp(c.filter, 0.0, 1.0), c.transmit};
 }
 

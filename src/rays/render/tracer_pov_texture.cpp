@@ -40,7 +40,7 @@ Vec3 Tracer::shadePovTextured(const Ray& ray, const Hit& hit, const PovRay& r, V
     PovTextureChoice choices[kMaxTextureChoices];
     // A texture pattern's slope reads the surface's own normal (the textures' normals come after).
     const int n = povTextureChoices(scene_, texture, pt.P, pt.entering ? hit.normal : -hit.normal, choices,
-                                      pt.uvPoint());
+                                      pt.uvPoint(), ray.dir);
     if (n == 1) return shadePovLayers(ray, hit, pt, choices[0].begin, choices[0].count, r, ctx, info);
     // Between two entries of a texture map both textures are shaded in full, reflection and
     // refraction included, and their colours blended (the manual, "Texture Maps"; measured).
@@ -69,7 +69,7 @@ Vec3 Tracer::shadePovLayers(const Ray& ray, const Hit& hit, PovPoint pt, int beg
         a.surface = &l.surface;
         // The normal facing the viewer, tilted (as POV-Ray does, measured).
         a.N = l.surface.normal >= 0 ? povNormalAt(scene_, l.surface, pt.P, pt.Nfacing) : pt.Nfacing;
-        const PovPigmentSample c = povLayerPigment(scene_, l, pt.P, a.N, pt.uvPoint());  // slope reads the tilted normal
+        const PovPigmentSample c = povLayerPigment(scene_, l, pt.P, a.N, pt.uvPoint(), ray.dir);  // slope and aoi read the tilted normal
         a.C = c.color, a.filter = c.filter, a.transmit = c.transmit;
         if (i == 0 && (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0))
             applyMaps(scene_, o, pt.P, SurfaceUV{hit.hasUV, hit.u, hit.v, hit.dpdu}, a.C, a.N);

@@ -281,7 +281,7 @@ Vec3 Tracer::shadePov(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segm
     pt.filter = o.material.filter;
     pt.transmit = pt.surface->transmit;
     if (pt.surface->pigment >= 0) {
-        const PovPigmentSample c = povPigmentAt(scene_, *pt.surface, pt.P, pt.N, pt.uvPoint());
+        const PovPigmentSample c = povPigmentAt(scene_, *pt.surface, pt.P, pt.N, pt.uvPoint(), ray.dir);
         pt.C = c.color, pt.filter = c.filter, pt.transmit = c.transmit;
     }
     if (o.material.pigmentMap >= 0 || o.material.normalMap >= 0 || o.material.bumpMap >= 0)
@@ -675,17 +675,17 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             continue;
         }
         if (!letsLightThrough(o.material, s)) return {};
-        // The normal facing where the shadow ray comes from (for the slope pattern).
+        // The normal facing where the shadow ray comes from (for the slope and aoi patterns).
         const Vec3 facing = dot(shadow.dir, h.normal) < 0 ? h.normal : -h.normal;
         const Vec3 uv{h.u, h.v, 0};
         const Vec3* uvAt = h.hasUV ? &uv : nullptr;
         if (const int node = povTextureSeen(s, povMeetsOuterSide(o, shadow.dir, h.geomNormal)); node >= 0) {
-            tint *= povTextureTint(scene_, node, shadow.at(h.t), facing, uvAt);  // a layered or patterned texture: each layer tints
+            tint *= povTextureTint(scene_, node, shadow.at(h.t), facing, uvAt, shadow.dir);  // a layered or patterned texture: each layer tints
         } else {
             Vec3 C = o.material.color;
             double filter = o.material.filter, transmit = s.transmit;
             if (s.pigment >= 0) {
-                const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t), facing, uvAt);
+                const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t), facing, uvAt, shadow.dir);
                 C = c.color, filter = c.filter, transmit = c.transmit;
             }
             if (o.material.pigmentMap >= 0) {
