@@ -6,6 +6,7 @@
 
 #include "rays/error.h"
 #include "rays/pov/build_mesh.h"
+#include "rays/pov/grammar.h"
 #include "rays/pov/scene_builder.h"
 #include "rays/pov/scene_builder_parts.h"
 
