@@ -11,6 +11,7 @@
 #include "rays/render/pov_pigment.h"
 #include "rays/render/pov_radiosity.h"
 #include "rays/render/tracer.h"
+#include "rays/util/stack_room.h"
 
 namespace rays {
 namespace {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "rays/fn/compile.h"
 #include "rays/fn/machine.h"
 #include "rays/fn/program.h"
 
