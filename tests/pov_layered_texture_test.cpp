@@ -263,6 +263,35 @@ TEST(PovInteriorTexture, TrianglesShowTheirOuterSideAwayFromTheirNormal) {
     expectColor(seen("disc { 0, -z, 2" + looks + " }"), {1, 0, 0});
 }
 
+// A smooth triangle (its three normals not all the same) shows its outer side where its normals,
+// interpolated at the hit, point towards the viewer, whatever its winding (POV-Ray 3.7, measured
+// on mesh2s of one and two faces and on smooth_triangle; meshmaker.inc's MSM meshes, whose faces
+// alternate their windings, show one side throughout). Three equal normals leave it flat.
+TEST(PovInteriorTexture, SmoothTrianglesShowTheSideTheirNormalsFace) {
+    const std::string looks = " texture { pigment { rgb <1,0,0> } finish { ambient 1 diffuse 0 } }"
+                              " interior_texture { pigment { rgb <0,0,1> } finish { ambient 1 diffuse 0 } }";
+    auto seen = [&](const std::string& object) { return centre(load(object + "\n")); };
+    const std::string toViewer = "<0.1,0,-1>, <0,0.1,-1>, <0,0,-1>", away = "<0.1,0,1>, <0,0.1,1>, <0,0,1>";
+    for (const char* faces : {"<0,1,2>", "<0,2,1>"}) {
+        const std::string mesh = "mesh2 { vertex_vectors { 3, <-1,-1,0>, <1,-1,0>, <1,1,0> } normal_vectors { 3, ";
+        expectColor(seen(mesh + toViewer + " } face_indices { 1, " + faces + " }" + looks + " }"), {1, 0, 0});
+        expectColor(seen(mesh + away + " } face_indices { 1, " + faces + " }" + looks + " }"), {0, 0, 1});
+    }
+    // Normals interpolated at the hit decide, each made a unit vector first: <0.1,0,3> at the
+    // first corner is outweighed at the centre by the two pointing at the viewer.
+    expectColor(seen("mesh2 { vertex_vectors { 3, <-1,-1,0>, <1,-1,0>, <1,1,0> } normal_vectors { 3, "
+                     "<0.1,0,3>, <0,0.1,-1>, <0,0,-1> } face_indices { 1, <0,1,2> }" + looks + " }"),
+                {1, 0, 0});
+    expectColor(seen("smooth_triangle { <-1,-1,0>, <0.1,0,-1>, <1,1,0>, <0,0.1,-1>, <1,-1,0>, <0,0,-1>" + looks + " }"),
+                {1, 0, 0});
+    expectColor(seen("mesh { smooth_triangle { <-1,-1,0>, <0.1,0,1>, <1,-1,0>, <0,0.1,1>, <1,1,0>, <0,0,1> }" + looks + " }"),
+                {0, 0, 1});
+    // Equal normals: flat, the winding decides.
+    expectColor(seen("mesh2 { vertex_vectors { 3, <-1,-1,0>, <1,-1,0>, <1,1,0> } normal_vectors { 3, -z, -z, -z } "
+                     "face_indices { 1, <0,2,1> }" + looks + " }"),
+                {0, 0, 1});
+}
+
 TEST(PovMeshTextureList, OneTextureEveryFaceNamesDrawsTheMesh) {
     // .8·C + phong .2 (measured 1 .60001 .20001), whatever the mesh's own texture; a face
     // without an index keeps the mesh's own texture.

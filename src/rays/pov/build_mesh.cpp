@@ -27,6 +27,7 @@ int32_t textureIndex(FaceTextures& ft, std::unordered_map<const Item*, int32_t>&
 
 std::unique_ptr<Mesh> fromTriangles(const Item& m, FaceTextures& ft) {
     auto mesh = std::make_unique<Mesh>();
+    mesh->povSides = true;
     std::unordered_map<const Item*, int32_t> seen;
     bool anySmooth = false, anyUV = false;
     for (const Entry& e : m.entries)
@@ -152,6 +153,7 @@ bool faceTextureIndices(const Item& m, FaceTextures& ft, std::string& problem) {
 
 std::unique_ptr<Mesh> fromMesh2(const Item& m, std::string& problem) {
     auto mesh = std::make_unique<Mesh>();
+    mesh->povSides = true;
     for (const Value* v : section(m, Kw::vertex_vectors)) pushVec(mesh->positions, toVec3(*v));
     for (const Value* v : section(m, Kw::normal_vectors)) {
         const Vec3 n = toVec3(*v);

@@ -103,8 +103,12 @@ bool intersectMesh(const Mesh& m, const Ray& ray, double tMin, double tMax, Mesh
     hit.normal = hit.geomNormal;
     if (m.hasNormals()) {
         const uint32_t* ni = &m.normalIndices[3 * f];
-        const Vec3 n = b0 * vec(m.normals, ni[0]) + b1 * vec(m.normals, ni[1]) + b2 * vec(m.normals, ni[2]);
-        if (length(n) > 0) hit.normal = normalize(dot(n, hit.geomNormal) < 0 ? -n : n);
+        const Vec3 n0 = vec(m.normals, ni[0]), n1 = vec(m.normals, ni[1]), n2 = vec(m.normals, ni[2]);
+        const Vec3 n = b0 * n0 + b1 * n1 + b2 * n2;
+        if (length(n) > 0) {
+            if (m.povSides && !(n0 == n1 && n1 == n2)) hit.geomNormal = triangleSides(hit.geomNormal, n);
+            hit.normal = normalize(dot(n, hit.geomNormal) < 0 ? -n : n);
+        }
     }
     if (m.hasUVs()) {
         const uint32_t* ti = &m.uvIndices[3 * f];

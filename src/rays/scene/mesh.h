@@ -23,6 +23,10 @@ struct Mesh {
     /// POV-Ray's inside_vector (unit, object space): a mesh with one has an inside (insideMesh).
     Vec3 insideVector;
     bool hasInside = false;
+    /// POV-Ray's sides for smooth triangles (mesh, mesh2): where a triangle's three normals are not
+    /// all the same, its interpolated normal at the hit, not its winding, says which side is which
+    /// (intersectMesh turns geomNormal to match; see triangleSides).
+    bool povSides = false;
 
     size_t triangleCount() const { return indices.size() / 3; }
     bool hasNormals() const { return !normalIndices.empty(); }
@@ -41,12 +45,21 @@ struct Mesh {
 struct MeshHit {
     uint32_t triangle = 0;
     double t = 0;
-    Vec3 geomNormal;   ///< unit, from the winding (a, b, c)
+    Vec3 geomNormal;   ///< unit, from the winding (a, b, c); with povSides, see triangleSides
     Vec3 normal;       ///< interpolated vertex normal (or geomNormal), same side as geomNormal
     double u = 0, v = 0;  ///< texture coordinates (0 without uvs)
     double b1 = 0, b2 = 0;  ///< barycentric weights of the triangle's second and third corners
     Vec3 dpdu;         ///< tangent along u (zero without uvs)
 };
+
+/// The geometric normal of a smooth triangle under POV-Ray's rule for its sides: g (the winding's
+/// normal) turned so that −g points along the interpolated normal n. A flat triangle shows its
+/// texture where g points away from the viewer; a smooth one (its three normals not all the same)
+/// where n points towards the viewer, whatever its winding (measured with POV-Ray 3.7 on one- and
+/// two-triangle mesh2s: winding ignored, the side following the normals interpolated at the hit;
+/// three equal normals leave the triangle flat). Smooth triangles of POV-Ray scenes only (Object
+/// triangles with smooth set, meshes with povSides).
+inline Vec3 triangleSides(Vec3 g, Vec3 n) { return dot(n, g) > 0 ? -g : g; }
 
 /// Nearest hit of an object-space ray with t in (tMin, tMax).
 bool intersectMesh(const Mesh& m, const Ray& ray, double tMin, double tMax, MeshHit& hit);

@@ -108,6 +108,7 @@ void triangleNormals(const Object& o, double u, double v, Vec3& geomNormal, Vec3
     geomNormal = normalize(cross(o.p1 - o.p0, o.p2 - o.p0));
     if (o.smooth) {
         const Vec3 n = normalize((1 - u - v) * o.n0 + u * o.n1 + v * o.n2);
+        if (!(o.n0 == o.n1 && o.n1 == o.n2)) geomNormal = triangleSides(geomNormal, n);
         normal = dot(n, geomNormal) < 0 ? -n : n;
     } else {
         normal = geomNormal;
