@@ -377,13 +377,30 @@ TEST(PovCsgHits, UnionInsideCsgKeepsInnerSurfacesAndMergeRemovesThem) {
     const Scene u = build("intersection { union { " + spheres + " } box { -10, 10 } }");
     const Scene m = build("merge { " + spheres + " pigment { rgbf <1, 1, 1, 0.5> } }");
     ASSERT_EQ(m.objects.size(), 1u);
-    // An opaque merge looks as a union does: its children are objects of their own.
-    EXPECT_EQ(build("merge { " + spheres + " }").objects.size(), 2u);
+    // An opaque merge looks as a union does from outside: its children are objects of their own,
+    // when the camera read before it is outside it.
+    EXPECT_EQ(build("camera { location <0, 0, -5> look_at 0 } merge { " + spheres + " }").objects.size(), 2u);
     EXPECT_EQ(allHits(u, {-5, 0, 0}, {1, 0, 0}).size(), 4u);
     const std::vector<double> merged = allHits(m, {-5, 0, 0}, {1, 0, 0});
     ASSERT_EQ(merged.size(), 2u);
     EXPECT_NEAR(merged[0], 3.5, 1e-9);
     EXPECT_NEAR(merged[1], 6.5, 1e-9);
+}
+
+// A camera inside an opaque merge sees only its outer boundary (POV-Ray 3.7, measured: from the
+// centre of one of two overlapping spheres, the other's surface inside it does not show), so the
+// merge keeps its tree where a camera ray may start inside it.
+TEST(PovCsgHits, ACameraInsideAnOpaqueMergeSeesOnlyItsOuterBoundary) {
+    const std::string merge = "merge { sphere { 0, 2 } sphere { <1.5, 0, 0>, 2 } pigment { rgb 1 } }";
+    const Scene inside = build("camera { location 0 look_at z } " + merge);
+    ASSERT_EQ(inside.objects.size(), 1u);
+    EXPECT_NEAR(shoot(inside, {0, 0, 0}, {0, 0, 1}).t, 2, 1e-9);  // not the second sphere's 1.32
+    // Read before any camera (the default one sits at the origin), or under an orthographic one or
+    // focal blur: the tree stays.
+    EXPECT_EQ(build(merge + " camera { location <0, 0, -10> look_at 0 }").objects.size(), 1u);
+    EXPECT_EQ(build("camera { orthographic location <0, 0, -10> look_at 0 } " + merge).objects.size(), 1u);
+    EXPECT_EQ(build("camera { location <0, 0, -10> look_at 0 aperture 0.1 focal_point 0 } " + merge).objects.size(), 1u);
+    EXPECT_EQ(build("camera { location <0, 0, -10> look_at 0 } " + merge).objects.size(), 2u);
 }
 
 // POV-Ray 3.7, measured (a camera inside A looking through B, and a box with a union of two

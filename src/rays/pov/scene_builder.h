@@ -89,6 +89,7 @@ private:
                         const Appearance* own, int depth);
     void addClippers(const Entry& clip, const Entry* bounds, const Transform& toWorld, int depth);
     void finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at);
+    bool cameraMayStartInside(const Csg& tree) const;
     void emit(const Object& o, bool inverse);
     /// Whether POV-Ray keeps a bounded_by on this kind as a gate on its rays (measured).
     static bool gatedByBounds(Kw kind);

@@ -58,6 +58,19 @@ void SceneBuilder::addClippers(const Entry& clip, const Entry* bounds, const Tra
     csgParent_ = node;
 }
 
+// Whether a camera ray may start inside one of the tree's leaves: the camera read so far is a
+// perspective one without focal blur and its location is outside every leaf, or not. A merge read
+// before any camera, or under a camera whose rays start across a window (orthographic, mesh and
+// the other projections) or round its location (focal blur), keeps its tree.
+bool SceneBuilder::cameraMayStartInside(const Csg& tree) const {
+    if (scene_.cameras.empty()) return true;
+    const Camera& c = scene_.cameras.front();
+    if (c.projection != Projection::Perspective || c.aperture > 0) return true;
+    for (const Object& leaf : tree.leaves)
+        if (insideShape(leaf, c.location) != 0) return true;  // inside, or no inside to ask (-1)
+    return false;
+}
+
 // A finished CSG tree becomes one object, unless it needs the inside of a triangle or mesh (they
 // have none) or can never be seen.
 void SceneBuilder::finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at) {
@@ -67,13 +80,18 @@ void SceneBuilder::finishCsg(Csg&& tree, Kw kind, const sdl::Loc& at) {
             notes_.note(std::string(sdl::keywordName(kind)) + " of triangles or meshes", at, "(left out)");
             return;
         }
-    // An opaque merge looks as a union does (its inner surfaces are hidden): its children become
-    // objects of their own, in the scene's BVH.
-    bool unionLike = true;
-    for (const CsgNode& n : tree.nodes)
+    // An opaque merge looks as a union does from outside (its inner surfaces are hidden): its
+    // children become objects of their own, in the scene's BVH. Not where a camera ray may start
+    // inside it, where the inner surfaces would show (measured with POV-Ray 3.7: from inside two
+    // overlapping spheres it shows only their outer boundary).
+    bool unionLike = true, merge = false;
+    for (const CsgNode& n : tree.nodes) {
         unionLike = unionLike && !n.inverse && (n.op == CsgOp::Leaf || n.op == CsgOp::Union || n.op == CsgOp::Merge);
+        merge = merge || n.op == CsgOp::Merge;
+    }
     for (const Object& leaf : tree.leaves)
         unionLike = unionLike && leaf.material.filter == 0 && scene_.povSurfaces[size_t(leaf.material.pov)].transmit == 0;
+    if (unionLike && merge && cameraMayStartInside(tree)) unionLike = false;
     if (unionLike && !tree.gate) {  // a bounded_by gate needs the tree
         for (const Object& leaf : tree.leaves) scene_.objects.push_back(leaf);
         return;
