@@ -34,6 +34,7 @@ void take(Hit& best, uint32_t id, const ShapeHit& sh) {
     best.dpdu = sh.dpdu;
     best.part = sh.part;
     best.blend = sh.blend;
+    best.cutawayBlend = sh.cutawayBlend;
 }
 
 // The object BVH's entry for o: its world box and, for spheres intersected in world space, the
@@ -77,6 +78,7 @@ void takeTriangleHit(Hit& best, const Object& o, uint32_t id, Vec3 flatNormal, d
     best.hasUV = false;
     best.part = nullptr;
     best.blend.face = CornerBlend::kNone;
+    best.cutawayBlend = false;
     if (o.smooth) {
         triangleNormals(o, u, v, best.geomNormal, best.normal);
     } else {
@@ -245,6 +247,7 @@ private:
         best_.hasUV = false;
         best_.part = nullptr;
         best_.blend.face = CornerBlend::kNone;
+        best_.cutawayBlend = false;
         sphere_ = nullptr;
         triangle_ = nullptr;
     }
@@ -299,6 +302,7 @@ Hit Bvh::closestUnbounded(const std::vector<Object>& objects, const Ray& ray, do
             best.hasUV = false;
             best.part = nullptr;
             best.blend.face = CornerBlend::kNone;
+            best.cutawayBlend = false;
             best.geomNormal = triNormal_[th.prim];
             best.normal = o.smooth ? normalize((1 - th.u - th.v) * o.n0 + th.u * o.n1 + th.v * o.n2) : best.geomNormal;
             if (dot(best.normal, best.geomNormal) < 0) best.normal = -best.normal;

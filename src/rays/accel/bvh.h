@@ -25,6 +25,7 @@ struct Hit {
     Vec3 dpdu;            ///< and the object-space tangent dP/du
     const Object* part = nullptr;  ///< CSG objects: the leaf hit (material, texture space)
     CornerBlend blend;             ///< a mesh face textured per vertex: its corners' textures and weights
+    bool cutawayBlend = false;     ///< ShapeHit::cutawayBlend
     bool valid() const { return object >= 0; }
 };
 

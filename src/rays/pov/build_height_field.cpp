@@ -65,13 +65,18 @@ bool potHeights(const ImageFile& f, ImageFiles& files, int& nx, int& nz, std::ve
 // Heights of `function W, H { f }`: f(x, y, 0) at x = ix/(W−1), y = iz/(H−1), clamped to [0, 1];
 // of a pigment function, its colour's gray (0.297 r + 0.589 g + 0.114 b: measured with POV-Ray
 // 3.7, pure red gives 0.297).
-void functionHeights(const Entry& e, const std::string& where, int& nx, int& nz, std::vector<double>& heights) {
+void functionHeights(const Entry& e, const std::string& where, uint64_t budget, int& nx, int& nz,
+                     std::vector<double>& heights) {
     if (e.args.size() < 3 || e.args[2].type != sdl::VType::Function)
         throw Error(where + ": error: height_field's function needs a resolution and a function");
     const double w = toFloat(e.args[0]), h = toFloat(e.args[1]);
     if (!(w >= 2 && h >= 2 && w <= kMaxSide && h <= kMaxSide && w * h <= double(1 << 26)))
         throw Error(where + ": error: height_field's function resolution must be 2 to 65536 per side (" +
                     std::to_string(w) + " x " + std::to_string(h) + ")");
+    if (w * h > double(budget))
+        throw Error(where + ": error: height_field's function of " + std::to_string(int(w)) + " x " + std::to_string(int(h)) +
+                    " samples goes past the scene's object limit (" + std::to_string(budget) +
+                    " left; each sample counts, as a mesh's triangles do)");
     nx = int(w);
     nz = int(h);
     const sdl::FunctionValue& f = e.args[2].fn();
@@ -104,7 +109,7 @@ void functionHeights(const Entry& e, const std::string& where, int& nx, int& nz,
 }  // namespace
 
 bool buildHeightField(const std::vector<const Entry*>& entries, const std::string& name, const sdl::Loc& at,
-                      ImageFiles& files, NotRendered& notes, ShapeData& data, bool& smooth) {
+                      ImageFiles& files, NotRendered& notes, ShapeData& data, bool& smooth, uint64_t sampleBudget) {
     const std::string where = notes.where(at);
     int nx = 0, nz = 0;
     std::vector<double> heights;
@@ -131,7 +136,7 @@ bool buildHeightField(const std::vector<const Entry*>& entries, const std::strin
             imageHeights(files.load(*e), nx, nz, heights);
             source = true;
         } else if (k == Kw::function) {
-            functionHeights(*e, where, nx, nz, heights);
+            functionHeights(*e, where, sampleBudget, nx, nz, heights);
             source = true;
         } else if (k == Kw::smooth) {
             smooth = true;

@@ -16,7 +16,9 @@ namespace rays::pov {
 /// for a field with neither an image nor a function, or an unreadable file.
 /// `name` is the file written without a type (`height_field { "file.png" }`: png), or empty.
 /// Returns false also for a file type Rays does not read (noted, the field left out).
+/// sampleBudget: the samples a function may be evaluated at before its resolution is refused (what
+/// is left of the scene's object limit: each sample counts as an object, as a mesh's triangles do).
 bool buildHeightField(const std::vector<const Entry*>& entries, const std::string& name, const sdl::Loc& at,
-                      ImageFiles& files, NotRendered& notes, ShapeData& data, bool& smooth);
+                      ImageFiles& files, NotRendered& notes, ShapeData& data, bool& smooth, uint64_t sampleBudget);
 
 }  // namespace rays::pov

@@ -573,7 +573,11 @@ void SceneBuilder::addPrimitive(Kw kind, const std::vector<const Value*>& a, con
             std::string name;  // `height_field { "file.png" }`: the file without its type
             for (const Value* v : a)
                 if (v->type == VType::String) name = v->str();
-            if (!buildHeightField(terms_, name, at, pigments_.imageFiles(), notes_, *data, o.smooth)) return;
+            if (!buildHeightField(terms_, name, at, pigments_.imageFiles(), notes_, *data, o.smooth,
+                                  maxObjects_ > objects_ ? maxObjects_ - objects_ : 0))
+                return;
+            // Each sample counts, as a mesh's triangles do (values: nx, nz, water_level, heights).
+            countObjects(data->values.size() > 3 ? uint64_t(data->values.size() - 3) : 0, at);
             o.type = ShapeType::HeightField;
             o.data = data.get();
             scene_.shapeData.push_back(std::move(data));

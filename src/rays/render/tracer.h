@@ -305,6 +305,10 @@ private:
     /// The point hit on o as every POV-Ray shading path starts it: object, material, surface, P,
     /// side, the ray's interior and the fade up to the hit (N, C, filter and transmit not yet set).
     PovPoint povPointOf(const Ray& ray, const Hit& hit, const Object& o, const PovRay& r, Vec3 segmentFade) const;
+    /// A cut of cutaway_textures inside two or more textured leaves: shadePov with each of their
+    /// textures, averaged (hit.cutawayBlend).
+    Vec3 shadePovCutaway(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
+                         PathInfo* info) const;
     /// A mesh face textured per vertex: shadePov with each corner's texture, blended (hit.blend).
     Vec3 shadePovCorners(const Ray& ray, const Hit& hit, const PovRay& r, Vec3 segmentFade, TraceContext& ctx,
                          PathInfo* info) const;

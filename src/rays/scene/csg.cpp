@@ -550,14 +550,21 @@ void clipToBox(const Bounds& b, const Ray& r, Vec3 invDir, double& tMin, double&
 
 namespace {
 
-// cutaway_textures: the surface of leaf k, without a texture of its own, shows the first textured
-// leaf holding the hit point p (its texture evaluated there).
+// cutaway_textures: the surface of leaf k, without a texture of its own, shows the textured leaf
+// holding the hit point p (its texture evaluated there); where two or more hold it, their textures
+// averaged (measured with POV-Ray 3.7: a cut inside a red box and a blue sphere is (0.5, 0, 0.5)
+// linear): the first becomes the part and the tracer finds them all again (shadePovCutaway).
 void cutawayPart(const Csg& c, int k, Vec3 p, ShapeHit& h) {
     if (!c.cutaway || size_t(k) >= c.leafTextured.size() || c.leafTextured[size_t(k)]) return;
+    bool found = false;
     for (size_t j = 0; j < c.leaves.size() && j < c.leafTextured.size(); ++j)
         if (int(j) != k && c.leafTextured[j] && insideShape(c.leaves[j], p) > 0) {
+            if (found) {
+                h.cutawayBlend = true;
+                return;
+            }
             h.part = &c.leaves[j];
-            return;
+            found = true;
         }
 }
 

@@ -219,6 +219,7 @@ bool hitLocal(const Object& o, const Ray& r, double tMin, double tMax, ShapeHit&
     h.hasUV = false;  // h may be reused across objects
     h.part = nullptr;
     h.blend.face = CornerBlend::kNone;
+    h.cutawayBlend = false;
     switch (o.type) {
         case ShapeType::Sphere: found = hitSphere(o, r, tMin, tMax, h); break;
         case ShapeType::Plane: found = hitPlane(o, r, tMin, tMax, h); break;

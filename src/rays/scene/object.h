@@ -86,6 +86,9 @@ struct ShapeHit {
     Vec3 dpdu;
     const Object* part = nullptr;
     CornerBlend blend;  ///< set on a face textured per vertex
+    /// cutaway_textures: the point lies in two or more textured leaves (part is the first), whose
+    /// textures POV-Ray averages (the tracer finds them again).
+    bool cutawayBlend = false;
 };
 
 /// Möller–Trumbore test of a Triangle object in the ray's space: t in (tMin, tMax) and the

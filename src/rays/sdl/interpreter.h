@@ -51,7 +51,7 @@ struct Limits {
     uint64_t stringBytes = uint64_t(1) << 36;    ///< bytes of the strings string functions make in one parse
     uint64_t writeBytes = uint64_t(1) << 34;     ///< bytes #write writes in one parse
     /// Objects the scene builder (src/rays/pov) makes from the parsed items: every copy of a declared
-    /// object counts, a mesh counts its triangles too.
+    /// object counts, a mesh counts its triangles too, a height field its samples.
     uint64_t sceneObjects = uint64_t(1) << 26;
     /// Items in the declared items used in other items, counted at every use: what POV-Ray copies
     /// there, and what the scene builder walks.
