@@ -31,8 +31,14 @@ struct FileHandle {
 namespace {
 constexpr size_t kMaxReadFile = size_t(64) << 20;
 
-bool insideFolder(const fs::path& folder, const fs::path& p) {
-    const fs::path a = fs::weakly_canonical(folder), b = fs::weakly_canonical(p);
+// Whether p lies in folder or below it (links and ".." resolved); ec tells why when a path cannot
+// be resolved (a name too long for the system, a component that is not a folder), and the answer
+// is then false.
+bool insideFolder(const fs::path& folder, const fs::path& p, std::error_code& ec) {
+    const fs::path a = fs::weakly_canonical(folder, ec);
+    if (ec) return false;
+    const fs::path b = fs::weakly_canonical(p, ec);
+    if (ec) return false;
     auto ai = a.begin(), bi = b.begin();
     for (; ai != a.end(); ++ai, ++bi)
         if (bi == b.end() || *ai != *bi) return false;
@@ -58,9 +64,11 @@ void Interpreter::dirFopen(const Loc& at) {
         h->content.assign(text.text());
     } else {
         const fs::path p = fs::path(file).is_absolute() ? fs::path(file) : fs::path(sceneFolder_) / file;
-        if (!insideFolder(sceneFolder_, p))
-            error(at, "#fopen may only write files in the scene's folder or below it (\"" + file + "\" is outside)");
         std::error_code ec;
+        const bool inside = insideFolder(sceneFolder_, p, ec);
+        if (ec) error(at, "cannot open \"" + file + "\" to write: " + ec.message());
+        if (!inside)
+            error(at, "#fopen may only write files in the scene's folder or below it (\"" + file + "\" is outside)");
         for (const auto& f : files_)  // a run never writes over its own input
             if (fs::exists(p, ec) && fs::equivalent(p, f->path, ec))
                 error(at, "#fopen would overwrite \"" + f->shownName + "\", a scene file this parse reads");

@@ -381,7 +381,18 @@ std::string Interpreter::context() const {
     return s.empty() ? s : s + ")";
 }
 
-void Interpreter::error(const Loc& at, const std::string& msg) { throw Error(where(at) + ": error: " + msg + context()); }
+// Errors are one line: line breaks in what the message quotes (a file name or an #error text
+// written across lines) are shown as \n and \r.
+void Interpreter::error(const Loc& at, const std::string& msg) {
+    std::string line;
+    line.reserve(msg.size());
+    for (const char c : msg) {
+        if (c == '\n') line += "\\n";
+        else if (c == '\r') line += "\\r";
+        else line += c;
+    }
+    throw Error(where(at) + ": error: " + line + context());
+}
 
 void Interpreter::warning(const Loc& at, const std::string& msg) {
     const int seen = ++warnedTimes_[msg];
