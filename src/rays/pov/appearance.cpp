@@ -578,12 +578,16 @@ bool applyAppearanceEntry(const Entry& e, Appearance& a, const Appearance& fallb
         a.inside.assign(1, std::move(inside));
         return true;
     }
-    if (!a.set) {
+    if (!a.set) {  // the first texture entry starts from the default; an interior and an
+                   // interior_texture written before it stay (measured: interior_texture then
+                   // texture keeps the inner side's texture)
         const InteriorLook keep = a.interior;
         const bool keepSet = a.interiorSet;
+        auto keepInside = std::move(a.inside);
         a = fallback;
         a.interior = keep;
         a.interiorSet = keepSet;
+        if (!keepInside.empty()) a.inside = std::move(keepInside);
         a.set = true;
     }
     switch (k) {

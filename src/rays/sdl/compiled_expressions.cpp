@@ -15,7 +15,7 @@ namespace {
 constexpr int kRunStack = 33;     // above expr_code.cpp's kMaxCompiledStack
 constexpr int kMaxIdents = 64;    // identifiers checked per run; code with more is read as text
 constexpr uint8_t kMissesToGiveUp = 8;  // runs in a row whose identifiers did not fit
-constexpr uint8_t kUnknownType = 0xFF;
+constexpr uint8_t kUnknownType = ExprCode::kUnknownType;
 constexpr int kElementsScanned = 64;  // elements looked at for the type of an array's vectors
 
 // The type code (ExprCode::types) of a float or vector value.
@@ -54,13 +54,14 @@ const Value* elementAt(const ArrayData& a, const double* index, uint8_t want) {
 
 bool Interpreter::compiledOperand(int minPrec, bool full, bool colorCtx, Num& out) {
     if (cur_ + 1 != cursor_ || curFile_ != topFile_) return false;  // the current token is this file's next one
-    if (topFile_ >= exprSlots_.size()) exprSlots_.resize(size_t(topFile_) + 1);
-    std::vector<int32_t>& slots = exprSlots_[topFile_];
-    if (slots.empty()) slots.assign(frames_.back().file->tokens.size(), kExprUntried);
+    if (topFile_ >= exprSlots_.size() || exprSlots_[topFile_].empty()) return false;  // a file read once
     const uint32_t start = uint32_t(cur_ - base_);
-    int32_t& slot = slots[start];
-    if (slot == kExprNever) return false;
-    if (slot == kExprUntried) {
+    int32_t& slot = exprSlots_[topFile_][start];
+    if (slot < 0 && slot != kExprSeen) {  // untried: compiled on the second reading
+        if (slot == kExprUntried) slot = kExprSeen;
+        return false;
+    }
+    if (slot == kExprSeen) {
         ExprCode code;
         if (!compileExpression(base_, start, minPrec, full, colorCtx, code) || code.idents.size() > size_t(kMaxIdents)) {
             slot = kExprNever;

@@ -170,6 +170,7 @@ void Interpreter::dirEnd(const Loc& at) {
             if (++iterations_ > limits_.loopIterations)
                 error(c.loc, "loops ran more than " + std::to_string(limits_.loopIterations) + " iterations (runaway #while?)");
             jumpTo(c.pos);  // the #while runs again and tests its condition
+            markReplayed(topFile_);
             f.ctl.pop_back();
             return;
         case Ctl::For: {
@@ -182,6 +183,7 @@ void Interpreter::dirEnd(const Loc& at) {
             scopes_.local(c.var, Value::number(v));
             if (c.step > 0 ? v <= c.end : v >= c.end) {
                 jumpTo(c.pos);
+                markReplayed(topFile_);
             } else {
                 f.ctl.pop_back();
             }

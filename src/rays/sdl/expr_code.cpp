@@ -14,7 +14,6 @@ namespace {
 
 constexpr int kMaxCompiledDepth = 64;   // nesting of the compiled grammar
 constexpr int kMaxCompiledStack = 32;   // values on the run's stack (Interpreter::compiledOperand)
-constexpr uint8_t kNoType = 0xFF;
 
 class ExprCompiler {
 public:
@@ -71,7 +70,6 @@ private:
 
     bool enter() { return ++depth_ <= kMaxCompiledDepth; }
     bool isSym(char c) const { return t_[pos_].kind == Tk::Symbol && t_[pos_].sym == uint8_t(c); }
-    bool isKw(Kw k) const { return t_[pos_].kind == Tk::Name && t_[pos_].id == uint32_t(k); }
 
     // Tracks the stack depth each op leaves.
     void emit(ExprOp::Code code, uint8_t aux, uint32_t arg = 0, uint32_t at = 0) {
@@ -299,7 +297,7 @@ bool compileExpression(const Token* tokens, uint32_t start, int minPrec, bool fu
     if (out.hasElement && out.hasRand) return false;
     out.end = c.pos();
     out.stack = c.stack();
-    out.types.assign(out.idents.size(), kNoType);
+    out.types.assign(out.idents.size(), ExprCode::kUnknownType);
     return true;
 }
 

@@ -59,6 +59,7 @@ struct ExprCode {
     /// d (2..5) a vector of d components, 0xFF none yet. A run stops (and leaves the place to the
     /// reader) when an element read has another type.
     std::vector<uint8_t> types;
+    static constexpr uint8_t kUnknownType = 0xFF;
     uint32_t end = 0;        ///< index of the token after the expression
     int minPrec = 0;         ///< the reader's context the code was compiled for
     bool full = false;

@@ -50,7 +50,10 @@ bool isDirectory(const std::string& p) {
 }  // namespace
 
 const SourceFile& Interpreter::openFile(const std::string& path, const std::string& shownName) {
-    if (auto it = fileByPath_.find(path); it != fileByPath_.end()) return *files_[it->second];
+    if (auto it = fileByPath_.find(path); it != fileByPath_.end()) {
+        markReplayed(it->second);  // included again: its tokens are read again
+        return *files_[it->second];
+    }
     if (isDirectory(path)) failFile(shownName, "is a directory, not a scene file");
     FileText text(path, TextForm::Source);
     if (text.status() == FileText::Status::CannotOpen) failFile(shownName, "cannot open file");
@@ -261,6 +264,7 @@ void Interpreter::invokeMacro(const Token& nameTok, const Value& macroValue) {
     Frame fr;
     fr.kind = Frame::Macro;
     fr.file = files_[def->file].get();
+    markReplayed(def->file);
     fr.pos = def->bodyStart;
     fr.site = at;
     fr.macro = def;

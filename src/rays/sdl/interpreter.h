@@ -396,8 +396,15 @@ private:
     std::unordered_map<std::string, int> warnedTimes_;
     /// Compiled expressions: by file id, for each token the index of the code compiled at it in
     /// exprCodes_, kExprUntried or kExprNever.
-    static constexpr int32_t kExprUntried = -1, kExprNever = -2;
+    /// Only files whose tokens are read again (a loop's body, a macro's, a file included twice) have
+    /// slots, and a place is compiled on its second reading (kExprSeen after the first): a file read
+    /// once, a big mesh's, costs nothing here.
+    static constexpr int32_t kExprUntried = -1, kExprNever = -2, kExprSeen = -3;
     std::vector<std::vector<int32_t>> exprSlots_;
+    void markReplayed(uint32_t file) {
+        if (file >= exprSlots_.size()) exprSlots_.resize(size_t(file) + 1);
+        if (exprSlots_[file].empty()) exprSlots_[file].assign(files_[file]->tokens.size(), kExprUntried);
+    }
     std::vector<ExprCode> exprCodes_;
 };
 
