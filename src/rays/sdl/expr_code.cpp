@@ -3,7 +3,6 @@
 #include "rays/sdl/expr_code.h"
 
 #include <algorithm>
-#include <numbers>
 
 #include "rays/sdl/names.h"
 #include "rays/sdl/pure_builtins.h"
@@ -88,13 +87,6 @@ private:
         out_.consts.push_back(v);
         emit(ExprOp::Const, 0, uint32_t(out_.consts.size() - 1));
     }
-    void vectorConst(int dim, double a, double b, double c = 0, double d = 0) {
-        Num v;
-        v.type = VType::Vector;
-        v.dim = uint8_t(dim);
-        v.c = {a, b, c, d, 0};
-        constant(v);
-    }
 
     bool unary() {
         if (isSym('-') || isSym('+') || isSym('!')) {
@@ -116,16 +108,8 @@ private:
             ++pos_;
             const Token& t = t_[pos_];
             if (t.kind != Tk::Name || !Names::isKeyword(t.id)) return false;
-            int i;
-            switch (Kw(t.id)) {
-                case Kw::x: case Kw::u: case Kw::red: i = 0; break;
-                case Kw::y: case Kw::v: case Kw::green: i = 1; break;
-                case Kw::z: case Kw::blue: i = 2; break;
-                case Kw::t: case Kw::filter: i = 3; break;
-                case Kw::transmit: i = 4; break;
-                case Kw::gray: i = 5; break;
-                default: return false;
-            }
+            const int i = componentIndex(Kw(t.id));
+            if (i < 0) return false;
             ++pos_;
             emit(ExprOp::Dot, uint8_t(i));
         }
@@ -181,22 +165,13 @@ private:
     bool keyword(Kw k) {
         const uint32_t at = pos_;
         ++pos_;
-        switch (k) {
-            case Kw::x: vectorConst(3, 1, 0, 0); return true;
-            case Kw::y: vectorConst(3, 0, 1, 0); return true;
-            case Kw::z: vectorConst(3, 0, 0, 1); return true;
-            case Kw::t: vectorConst(4, 0, 0, 0, 1); return true;
-            case Kw::u: vectorConst(2, 1, 0); return true;
-            case Kw::v: vectorConst(2, 0, 1); return true;
-            case Kw::pi: constant(Num::number(std::numbers::pi)); return true;
-            case Kw::true_: case Kw::yes: case Kw::on: constant(Num::number(1)); return true;
-            case Kw::false_: case Kw::no: case Kw::off: constant(Num::number(0)); return true;
-            case Kw::clock: case Kw::clock_delta: case Kw::clock_on: case Kw::initial_clock: case Kw::final_clock:
-            case Kw::initial_frame: case Kw::final_frame: case Kw::frame_number: case Kw::image_width:
-            case Kw::image_height: case Kw::version:
-                emit(ExprOp::Env, 0, uint32_t(k));
-                return true;
-            default: break;
+        if (Num c; keywordConstant(k, c)) {
+            constant(c);
+            return true;
+        }
+        if (isEnvironmentKeyword(k)) {
+            emit(ExprOp::Env, 0, uint32_t(k));
+            return true;
         }
         if (mathFunction1(k)) return oneFloat(ExprOp::Math1, k, at);
         switch (k) {

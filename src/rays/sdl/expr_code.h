@@ -81,6 +81,13 @@ double combineFloats(char op, double x, double y);
 Num unaryOperator(char op, Num v);
 /// `.gray` of a vector or colour.
 double grayOf(const Num& v);
+/// The component `.k` reads: 0 for x, u, red … 4 for transmit, 5 for gray; −1 for another keyword.
+int componentIndex(Kw k);
+/// The value of x, y, z, t, u, v, pi, true, yes, on, false, no, off; false for another keyword.
+bool keywordConstant(Kw k, Num& out);
+/// clock … version: keywords whose value comes from the options and the #version in force
+/// (Interpreter::environmentValue).
+bool isEnvironmentKeyword(Kw k);
 
 /// True when the reader, fetching token t after an expression, may find more of the expression
 /// than the text shows: t is a directive (it runs, and a macro's #end returns to the caller's

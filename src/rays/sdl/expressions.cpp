@@ -74,6 +74,49 @@ double combineFloats(char op, double x, double y) {
 
 double grayOf(const Num& v) { return 0.297 * v.c[0] + 0.589 * v.c[1] + 0.114 * v.c[2]; }
 
+int componentIndex(Kw k) {
+    switch (k) {
+        case Kw::x: case Kw::u: case Kw::red: return 0;
+        case Kw::y: case Kw::v: case Kw::green: return 1;
+        case Kw::z: case Kw::blue: return 2;
+        case Kw::t: case Kw::filter: return 3;
+        case Kw::transmit: return 4;
+        case Kw::gray: return 5;
+        default: return -1;
+    }
+}
+
+bool keywordConstant(Kw k, Num& out) {
+    auto vec = [&](int dim, double a, double b, double c = 0, double d = 0) {
+        out = Num{};
+        out.type = VType::Vector;
+        out.dim = uint8_t(dim);
+        out.c = {a, b, c, d, 0};
+    };
+    switch (k) {
+        case Kw::x: vec(3, 1, 0, 0); return true;
+        case Kw::y: vec(3, 0, 1, 0); return true;
+        case Kw::z: vec(3, 0, 0, 1); return true;
+        case Kw::t: vec(4, 0, 0, 0, 1); return true;
+        case Kw::u: vec(2, 1, 0); return true;
+        case Kw::v: vec(2, 0, 1); return true;
+        case Kw::pi: out = Num::number(std::numbers::pi); return true;
+        case Kw::true_: case Kw::yes: case Kw::on: out = Num::number(1); return true;
+        case Kw::false_: case Kw::no: case Kw::off: out = Num::number(0); return true;
+        default: return false;
+    }
+}
+
+bool isEnvironmentKeyword(Kw k) {
+    switch (k) {
+        case Kw::clock: case Kw::clock_delta: case Kw::clock_on: case Kw::initial_clock: case Kw::final_clock:
+        case Kw::initial_frame: case Kw::final_frame: case Kw::frame_number: case Kw::image_width:
+        case Kw::image_height: case Kw::version:
+            return true;
+        default: return false;
+    }
+}
+
 Num combine(char op, const Num& a, const Num& b) {
     if (a.type == VType::Float && b.type == VType::Float) return Num::number(combineFloats(op, a.c[0], b.c[0]));
     std::array<double, 5> x, y, r{};
@@ -115,12 +158,8 @@ bool Interpreter::atNumericStart() {
                     default: return false;
                 }
             }
+            if (Num c; keywordConstant(Kw(t.id), c) || isEnvironmentKeyword(Kw(t.id))) return true;
             switch (Kw(t.id)) {
-                case Kw::x: case Kw::y: case Kw::z: case Kw::t: case Kw::u: case Kw::v: case Kw::pi:
-                case Kw::true_: case Kw::false_: case Kw::yes: case Kw::no: case Kw::on: case Kw::off:
-                case Kw::clock: case Kw::clock_delta: case Kw::clock_on: case Kw::final_clock: case Kw::final_frame:
-                case Kw::frame_number: case Kw::initial_clock: case Kw::initial_frame: case Kw::image_width:
-                case Kw::image_height: case Kw::version:
                 case Kw::color: case Kw::colour: case Kw::rgb: case Kw::rgbf: case Kw::rgbt: case Kw::rgbft:
                 case Kw::srgb: case Kw::srgbf: case Kw::srgbt: case Kw::srgbft: case Kw::red: case Kw::green:
                 case Kw::blue: case Kw::filter: case Kw::transmit:
@@ -302,17 +341,8 @@ Num Interpreter::postfix(Num v) {
     while (isSym('.')) {
         next();
         const Loc at = loc();
-        const Kw k = kw();
-        int i;
-        switch (k) {
-            case Kw::x: case Kw::u: case Kw::red: i = 0; break;
-            case Kw::y: case Kw::v: case Kw::green: i = 1; break;
-            case Kw::z: case Kw::blue: i = 2; break;
-            case Kw::t: case Kw::filter: i = 3; break;
-            case Kw::transmit: i = 4; break;
-            case Kw::gray: i = 5; break;
-            default: error(at, "expected x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.', found " + describe());
-        }
+        const int i = componentIndex(kw());
+        if (i < 0) error(at, "expected x, y, z, t, u, v, red, green, blue, filter, transmit or gray after '.', found " + describe());
         next();
         if (v.type == VType::Float) error(at, "'.' needs a vector or colour, found a float");
         // Gray is POV-Ray's grey value of a colour (weights measured with POV-Ray 3.7).
@@ -341,21 +371,15 @@ Num Interpreter::factor(bool colorCtx) {
             break;
         case Tk::Name:
             if (!Names::isKeyword(t.id)) return identifierValue(colorCtx);
+            if (Num c; keywordConstant(Kw(t.id), c)) {
+                next();
+                return c;
+            }
+            if (isEnvironmentKeyword(Kw(t.id))) {
+                next();
+                return Num::number(environmentValue(Kw(t.id)));
+            }
             switch (Kw(t.id)) {
-                case Kw::x: next(); return Num::of(Value::vec3(1, 0, 0));
-                case Kw::y: next(); return Num::of(Value::vec3(0, 1, 0));
-                case Kw::z: next(); return Num::of(Value::vec3(0, 0, 1));
-                case Kw::t: { next(); const double v4[4] = {0, 0, 0, 1}; return Num::of(Value::vector(4, v4)); }
-                case Kw::u: { next(); const double v2[2] = {1, 0}; return Num::of(Value::vector(2, v2)); }
-                case Kw::v: { next(); const double v2[2] = {0, 1}; return Num::of(Value::vector(2, v2)); }
-                case Kw::pi: next(); return Num::number(std::numbers::pi);
-                case Kw::true_: case Kw::yes: case Kw::on: next(); return Num::number(1);
-                case Kw::false_: case Kw::no: case Kw::off: next(); return Num::number(0);
-                case Kw::clock: case Kw::clock_delta: case Kw::clock_on: case Kw::initial_clock:
-                case Kw::final_clock: case Kw::initial_frame: case Kw::final_frame: case Kw::frame_number:
-                case Kw::image_width: case Kw::image_height: case Kw::version:
-                    next();
-                    return Num::number(environmentValue(Kw(t.id)));
                 case Kw::color: case Kw::colour: {
                     next();
                     NestGuard guard(*this);
