@@ -12,6 +12,7 @@
 #include "rays/pov/build_shapes.h"
 #include "rays/pov/grammar.h"
 #include "rays/pov/pattern_object.h"
+#include "rays/pov/photon_settings.h"
 #include "rays/pov/radiosity_settings.h"
 #include "rays/pov/scene_builder_parts.h"
 
@@ -210,6 +211,7 @@ Material SceneBuilder::material(const Appearance& look) {
     s.noReflection = noReflection_;
     s.noRadiosity = noRadiosity_;
     s.doubleIlluminate = doubleIlluminate_;
+    s.photons = photons_;
     s.lightGroup = lightGroup_;
     s.globalLights = lightGroup_ < 0 || groupGlobalLights_;
     s.normal = normalRoot(look);
@@ -264,6 +266,7 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
     bool inverse = false, open = false, noShadow = false, noImage = false, noReflection = false,
          doubleIlluminate = false, hollow = false, uvMapping = false, globalLights = false;
     const Entry* font = nullptr;  // text: its ttf or internal entry
+    const Item* photonBlock = nullptr;
     for (size_t i = 0; i < entries.size(); ++i) {
         const Entry& e = *entries[i];
         if (e.positional()) {
@@ -328,7 +331,8 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
                        kind == Kw::isosurface;
                 break;
             case Kw::ttf: case Kw::internal: font = &e; break;
-            default: break;  // sturm, hierarchy, photons, radiosity: no visible change
+            case Kw::photons: photonBlock = &e.args[0].item(); break;
+            default: break;  // sturm, hierarchy, radiosity: no visible change
         }
     }
     // no_shadow, no_image, no_reflection, no_radiosity and double_illuminate hold for the object
@@ -338,6 +342,8 @@ void SceneBuilder::addObject(const Item& item, const Transform& parent, const Ap
         keepDouble{doubleIlluminate_, doubleIlluminate_}, keepHollow{hollow_, hollow_},
         keepGlobal{groupGlobalLights_, groupGlobalLights_};
     const Restore<int> keepGroup{lightGroup_, lightGroup_};
+    const Restore<PovPhotonFlags> keepPhotons{photons_, photons_};
+    if (photonBlock) photons_ = readPhotonFlags(*photonBlock, photons_);
     noShadow_ = noShadow_ || noShadow;
     noImage_ = noImage_ || noImage;
     noReflection_ = noReflection_ || noReflection;
@@ -750,7 +756,11 @@ void SceneBuilder::globalSettings(const Item& g) {
                 scene_.pov.numberOfWaves = clampedInt(toFloat(e.args[0]), 1, pattern::kMaxWaves);
                 break;
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
-            case Kw::photons: notes_.note("photons", e.loc); break;
+            case Kw::photons:
+                scene_.pov.photons = readPhotonSettings(e.args[0].item());
+                for (const Entry& p : e.args[0].item().entries)
+                    if (!p.positional() && p.kw() == Kw::media) notes_.note("photons in media", p.loc);
+                break;
             case Kw::subsurface: notes_.note("subsurface", e.loc); break;
             default: break;
         }

@@ -140,6 +140,7 @@ private:
     bool backgroundSet_ = false;
     std::vector<const Entry*> terms_;  ///< the xyz entries of the polynomial being added, a blob's components
     bool leafTextured_ = false;  ///< the primitive being added has a texture of its own or inherited
+    PovPhotonFlags photons_;   ///< the photons block of the objects being added (and their parents')
     bool noShadow_ = false;    ///< the objects being added cast no shadow (no_shadow, looks_like)
     bool noImage_ = false;       ///< the objects being added are hidden from camera rays (no_image)
     bool noReflection_ = false;  ///< and from reflection rays (no_reflection)

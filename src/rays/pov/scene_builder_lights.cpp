@@ -6,6 +6,7 @@
 
 #include "rays/error.h"
 #include "rays/pov/grammar.h"
+#include "rays/pov/photon_settings.h"
 #include "rays/pov/scene_builder.h"
 #include "rays/pov/scene_builder_parts.h"
 
@@ -67,6 +68,7 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             case Kw::shadowless: l.shadowless = true; break;
             case Kw::media_interaction: l.mediaInteraction = e.args.empty() || toFloat(e.args[0]) != 0; break;
             case Kw::media_attenuation: l.mediaAttenuation = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::photons: readLightPhotons(e.args[0].item(), l); break;
             case Kw::area_light:
                 if (e.args.size() == 4) {
                     l.area = true;

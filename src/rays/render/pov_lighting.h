@@ -9,6 +9,7 @@
 #include "rays/geometry/ray.h"
 #include "rays/math/vec3.h"
 #include "rays/scene/light.h"
+#include "rays/scene/material.h"
 #include "rays/scene/pov_surface.h"
 
 namespace rays {
@@ -41,6 +42,12 @@ Vec3 povAmbient(const PovFinish& f, Vec3 C, Vec3 ambientLight);
 double povOpacity(Vec3 C, double filter, double transmit, double version);
 
 /// How a surface tints the light that passes through it: filter·C + transmit, per channel.
+/// Whether light can pass a surface at all: its pigment (or some colour of its pattern) filters
+/// or transmits.
+inline bool povLetsLightThrough(const Material& m, const PovSurface& s) {
+    return m.filter != 0 || s.transmit != 0 || s.pigmentTransparent;
+}
+
 inline Vec3 povFilterTint(Vec3 C, double filter, double transmit) { return filter * C + Vec3(transmit); }
 
 /// The empirical curve behind `metallic` (measured: docs/povray-lighting.md): 0 at normal incidence

@@ -67,6 +67,7 @@ private:
     SharedOrigins origins_;
     Tracer tracer_;
     IrradianceCache radiosity_;  ///< POV-Ray's radiosity records (pretraced by the constructor)
+    PhotonMap photons_;          ///< POV-Ray's photons (shot by the constructor)
     bool povOutput_;
     double assumedGamma_;
     std::vector<TraceContext> perThread_;

@@ -9,6 +9,7 @@
 #include "rays/accel/bvh.h"
 #include "rays/accel/origin_buffer.h"
 #include "rays/render/irradiance_cache.h"
+#include "rays/render/photon_map.h"
 #include "rays/render/pov_media.h"
 #include "rays/render/sampler.h"
 #include "rays/render/settings.h"
@@ -158,6 +159,15 @@ public:
     /// POV-Ray radiosity's irradiance cache (render/radiosity_pretrace.h fills it before the final
     /// pass); null: every point gathers its own light.
     void setRadiosityCache(const IrradianceCache* cache) { radCache_ = cache; }
+
+    /// POV-Ray's photons (tracer_photons.cpp): every light's photons shot at every target, those
+    /// left on surfaces after a reflection or refraction returned (POV-Ray scenes with photons).
+    std::vector<Photon> povShootPhotons(int threads) const;
+    /// The photon map shading reads (render/photon_shooting.h builds it); null: no photons.
+    void setPhotonMap(const PhotonMap* map, const PhotonGather& gather) {
+        photonMap_ = map;
+        photonGather_ = gather;
+    }
 
 private:
     struct Result {
@@ -379,10 +389,24 @@ private:
     /// Walks the surfaces on the shadow ray before tMax, passing no_shadow objects: each tints by
     /// filter·C + transmit, interiors with fading fade over the length inside (from the ray's start
     /// for one it began in, none for one it does not leave); an opaque surface (or too many) blocks.
-    Vec3 povTransmittance(const Ray& shadow, double tMax) const;
+    /// photonsRefract: the light shoots refraction photons, so refracting photon targets block it.
+    Vec3 povTransmittance(const Ray& shadow, double tMax, bool photonsRefract) const;
+    /// What the surface hit at h lets through along the ray: filter·C + transmit of its pigment
+    /// there (each layer's of a layered texture).
+    Vec3 povSurfaceTint(const Ray& ray, const Hit& h, const Object& o, const PovSurface& s) const;
     /// The surface whose interior ray r travels in (r.interior ≥ 0).
     const PovSurface& povInteriorOf(const PovRay& r) const;
     const PovSurface& povSurfaceOf(const Material& m) const;
+    // POV-Ray's photons (tracer_photons.cpp; docs/povray-lighting.md, "Photons").
+    /// Follows one photon from the light along start: it must meet target first (objects with
+    /// pass_through or no_shadow let it by), then reflects and refracts as the objects' and the
+    /// light's photons blocks allow, up to maxLevel and down to bailout, and is left (power: its
+    /// light times the area it stands for, solid·distance² or, for parallel lights, solid) on each
+    /// collecting surface after the first reflection or refraction.
+    void povTracePhoton(const Light& light, int target, const Ray& start, double solid, int maxLevel, double bailout,
+                        std::vector<Photon>& stored) const;
+    /// The photons' irradiance at P on the side N faces (0 without a photon map).
+    Vec3 povPhotonLight(Vec3 P, Vec3 N) const;
     // POV-Ray's media (tracer_media.cpp; docs/povray-lighting.md, "Media").
     /// True when some object's interior or the atmosphere holds media.
     bool povHasMedia() const;
@@ -487,6 +511,8 @@ private:
     std::vector<PovMediaHolder> povMediaHolders_;
     std::vector<PovRay::Inside> povCameraInside_;  ///< povCameraInside(), found once
     const IrradianceCache* radCache_ = nullptr;
+    const PhotonMap* photonMap_ = nullptr;
+    PhotonGather photonGather_;
     double primaryReach_;  ///< POV-Ray camera rays meet nothing farther (primaryReach)
 };
 

@@ -164,6 +164,16 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
             color += a.through * add;
         }
     }
+    // Photons (povLights' comment): each layer's diffuse, weighted and filtered as for a light.
+    if (photonMap_) {
+        const Vec3 E = povPhotonLight(pt.P, pt.N);
+        if (!(E == Vec3{}))
+            for (int k = 0; k < count; ++k) {
+                const PovLayerAt& a = layers[k];
+                if (a.surface->finish.diffuse != 0 && a.opacity != 0)
+                    color += a.through * ((a.opacity * a.surface->finish.diffuse) * scale * a.C * E);
+            }
+    }
     return blocked;
 }
 

@@ -34,10 +34,6 @@ const PovSurface kDefaultSurface{};
 
 double maxAbsComponent(Vec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
-bool letsLightThrough(const Material& m, const PovSurface& s) {
-    return m.filter != 0 || s.transmit != 0 || s.pigmentTransparent;
-}
-
 }  // namespace
 
 bool Tracer::usesPovPath(const Scene& scene, const RenderSettings& settings) {
@@ -47,7 +43,7 @@ bool Tracer::usesPovPath(const Scene& scene, const RenderSettings& settings) {
 std::vector<uint8_t> Tracer::povOpaqueObjects() const {
     auto blocks = [&](const Material& m) {
         const PovSurface& s = povSurfaceOf(m);
-        return !letsLightThrough(m, s) && !s.noShadow;
+        return !povLetsLightThrough(m, s) && !s.noShadow;
     };
     std::vector<uint8_t> opaque(scene_.objects.size());
     for (size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -496,6 +492,10 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         // Shadowless lights make no highlights (the manual; measured), nor do points radiosity gathers from.
         if (!light.shadowless && pt.highlights) color += t.highlight;
     }
+    // Photons: their light lit as diffuse light arriving along the normal (measured: a mirror's
+    // reflected light gives colour·cos θ, the cosine in the photons' density).
+    if (photonMap_ && f.diffuse != 0 && opacity != 0)
+        color += (opacity * f.diffuse) * scale * pt.C * povPhotonLight(P, N);
     return blocked;
 }
 
@@ -649,7 +649,8 @@ Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceCo
     if (shadowed(shadow, tMax, light, ctx, intoSurface, fromLight, &blocker)) {
         // An opaque object in the way blocks the light whatever else lies there.
         if (!povShadowsWalk_ || (blocker >= 0 && povOpaque_[size_t(blocker)])) return {};
-        tint = povTransmittance(shadow, tMax);
+        const bool photonsRefract = scene_.pov.photons.enabled && scene_.lights[light].photonRefraction;
+        tint = povTransmittance(shadow, tMax, photonsRefract);
     }
     // Atmospheric media dim only the lights with media_attenuation on (the manual; measured).
     if (!scene_.pov.media.empty() && scene_.lights[light].mediaAttenuation && !(tint == Vec3{})) {
@@ -663,7 +664,27 @@ Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceCo
     return tint;
 }
 
-Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
+Vec3 Tracer::povSurfaceTint(const Ray& ray, const Hit& h, const Object& o, const PovSurface& s) const {
+    // The normal facing where the ray comes from (for the slope and aoi patterns).
+    const Vec3 facing = dot(ray.dir, h.normal) < 0 ? h.normal : -h.normal;
+    const Vec3 uv{h.u, h.v, 0};
+    const Vec3* uvAt = h.hasUV ? &uv : nullptr;
+    if (const int node = povTextureSeen(s, povMeetsOuterSide(o, ray.dir, h.geomNormal)); node >= 0)
+        return povTextureTint(scene_, node, ray.at(h.t), facing, uvAt, ray.dir);  // a layered or patterned texture: each layer tints
+    Vec3 C = o.material.color;
+    double filter = o.material.filter, transmit = s.transmit;
+    if (s.pigment >= 0) {
+        const PovPigmentSample c = povPigmentAt(scene_, s, ray.at(h.t), facing, uvAt, ray.dir);
+        C = c.color, filter = c.filter, transmit = c.transmit;
+    }
+    if (o.material.pigmentMap >= 0) {
+        Vec3 N = h.normal;
+        applyMaps(scene_, o, ray.at(h.t), SurfaceUV{h.hasUV, h.u, h.v, h.dpdu}, C, N);
+    }
+    return povFilterTint(C, filter, transmit);
+}
+
+Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax, bool photonsRefract) const {
     // Fading interiors (object and surface) the ray went into and has not left, and those it has
     // met at all (only an interior not met yet can hold the start).
     struct Entry {
@@ -701,26 +722,11 @@ Vec3 Tracer::povTransmittance(const Ray& shadow, double tMax) const {
             tMin = h.t + kTMin;
             continue;
         }
-        if (!letsLightThrough(o.material, s)) return {};
-        // The normal facing where the shadow ray comes from (for the slope and aoi patterns).
-        const Vec3 facing = dot(shadow.dir, h.normal) < 0 ? h.normal : -h.normal;
-        const Vec3 uv{h.u, h.v, 0};
-        const Vec3* uvAt = h.hasUV ? &uv : nullptr;
-        if (const int node = povTextureSeen(s, povMeetsOuterSide(o, shadow.dir, h.geomNormal)); node >= 0) {
-            tint *= povTextureTint(scene_, node, shadow.at(h.t), facing, uvAt, shadow.dir);  // a layered or patterned texture: each layer tints
-        } else {
-            Vec3 C = o.material.color;
-            double filter = o.material.filter, transmit = s.transmit;
-            if (s.pigment >= 0) {
-                const PovPigmentSample c = povPigmentAt(scene_, s, shadow.at(h.t), facing, uvAt, shadow.dir);
-                C = c.color, filter = c.filter, transmit = c.transmit;
-            }
-            if (o.material.pigmentMap >= 0) {
-                Vec3 N = h.normal;
-                applyMaps(scene_, o, shadow.at(h.t), SurfaceUV{h.hasUV, h.u, h.v, h.dpdu}, C, N);
-            }
-            tint *= povFilterTint(C, filter, transmit);
-        }
+        if (!povLetsLightThrough(o.material, s)) return {};
+        // A refracting photon target: its light arrives as photons (measured with POV-Ray 3.7: a
+        // clear glass sphere then casts a full shadow, lit only by the photons it refracts).
+        if (photonsRefract && s.photons.target && s.photons.refraction) return {};
+        tint *= povSurfaceTint(shadow, h, o, s);
         if (s.interior.mediaCount > 0) {
             if (dot(shadow.dir, h.geomNormal) < 0) {
                 if (inMediaCount < kMaxOpenInteriors) inMedia[inMediaCount++] = MediaEntry{h.object, h.t, &s.interior};

@@ -41,6 +41,9 @@ struct Light {
     double fadePower = 0;
     bool mediaInteraction = true;   ///< lights scattering media (media_interaction)
     bool mediaAttenuation = false;  ///< dimmed by atmospheric media on its way (media_attenuation)
+    /// Its photons block: the photons it shoots refract and reflect (both on unless turned off;
+    /// measured with POV-Ray 3.7, whose manual lists off).
+    bool photonRefraction = true, photonReflection = true;
     /// The light_group it is in (an index, as PovSurface::lightGroup): it lights that group's
     /// objects only. -1: a light of the scene, lighting every object outside groups and those of
     /// groups with global_lights.

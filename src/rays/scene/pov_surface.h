@@ -9,6 +9,7 @@
 #include "rays/scene/pov_media.h"
 #include "rays/pattern/color_map.h"
 #include "rays/pattern/noise.h"
+#include "rays/scene/pov_photons.h"
 #include "rays/scene/pov_radiosity.h"
 
 namespace rays {
@@ -83,6 +84,7 @@ struct PovSurface {
     /// interior_texture: a node of Scene::povTextures drawing the inner side (rays arriving from
     /// inside, shadow rays leaving); -1: both sides look alike.
     int interiorTexture = -1;
+    PovPhotonFlags photons;  ///< the object's photons block (render/photon_map.h)
 
     bool operator==(const PovSurface&) const = default;
 };
@@ -142,6 +144,7 @@ struct PovGlobals {
     int skyFirst = -1, skyCount = 0;
     Vec3 skyEmission{1, 1, 1};  ///< sky_sphere's emission: the sky's colour is multiplied by it
     PovRadiosity radiosity;     ///< global_settings' radiosity block (render/tracer_radiosity.cpp)
+    PovPhotonSettings photons;  ///< global_settings' photons block (render/tracer_photons.cpp)
 };
 
 }  // namespace rays

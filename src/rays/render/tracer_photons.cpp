@@ -1,0 +1,307 @@
+// POV-Ray's photons (POV-Ray 3.7 reference, "Photons"; what they do to the picture measured with
+// povray 3.7, docs/povray-lighting.md "Photons"). Each light shoots photons at each target object:
+// directions spaced so that neighbouring photons are `spacing`·the target's scale apart at the
+// distance of the target's bounding sphere's centre, in rings about the direction to that centre
+// (Jensen, "Realistic Image Synthesis Using Photon Mapping", 2001, ch. 5: photons aimed at the
+// specular objects only). A photon that reflects or refracts off the target (and then off any
+// object whose photons block allows it) is left on each surface it meets afterwards that
+// collects photons. Its power makes the light it brings equal to what the light's colour brings
+// directly (POV-Ray's lights do not dim with distance: measured, a mirror's reflection gives
+// colour·cos θ at any distance); render/photon_map.h estimates it at shading.
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <functional>
+#include <cmath>
+#include <numbers>
+
+#include "rays/geometry/refract.h"
+#include "rays/render/photon_shooting.h"
+#include "rays/render/pov_lighting.h"
+#include "rays/render/renderer.h"
+#include "rays/render/tracer.h"
+
+namespace rays {
+namespace {
+
+// A photon's random numbers (jitter) from its place in the shooting order alone (splitmix64).
+double unitHash(uint64_t a, uint64_t b) {
+    uint64_t z = a * 0x9E3779B97F4A7C15ull + b + 0x632BE59BD9B4E5Bull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return double(z >> 11) * 0x1.0p-53;
+}
+
+void basisAbout(Vec3 w, Vec3& u, Vec3& v) {
+    const Vec3 a = std::fabs(w.x) > 0.9 ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
+    u = normalize(cross(a, w));
+    v = cross(w, u);
+}
+
+// A photon target: a top-level object whose (or some of whose CSG children's) photons block says target.
+struct Target {
+    int object;
+    Vec3 centre;
+    double radius, scale;
+};
+
+// A photon on its way: its ray, the light it carries (before the area factor), the distance
+// travelled so far, the trace level and how many reflections and refractions it went through.
+struct InFlight {
+    Ray ray;
+    Vec3 color;
+    double travelled = 0;
+    int level = 1;
+    int bounces = 0;
+};
+
+constexpr int kMaxInFlight = 64;
+
+}  // namespace
+
+std::vector<Photon> Tracer::povShootPhotons(int threads) const {
+    const PovPhotonSettings& ps = scene_.pov.photons;
+    std::vector<Photon> stored;
+    if (!ps.enabled) return stored;
+    std::vector<Target> targets;
+    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+        const Object& o = scene_.objects[i];
+        const PovPhotonFlags* flags = &povSurfaceOf(o.material).photons;
+        if (o.type == ShapeType::Csg)
+            for (const Object& leaf : o.csg->leaves)
+                if (povSurfaceOf(leaf.material).photons.target) flags = &povSurfaceOf(leaf.material).photons;
+        if (!flags->target) continue;
+        Target t{int(i), {}, 0, flags->spacingScale};
+        if (worldBoundingSphere(o, t.centre, t.radius) && t.radius > 0) targets.push_back(t);
+    }
+    if (targets.empty()) return stored;
+    const auto shoots = [](const Light& l) { return l.photonRefraction || l.photonReflection; };
+    // The solid angle (times distance²) each light sees each target under, for `count`.
+    // A light inside a target's sphere shoots all round, its photons spaced as at the sphere's
+    // radius.
+    const auto cone = [](const Light& l, const Target& t, double& dist, double& thetaMax) {
+        dist = length(t.centre - l.position);
+        thetaMax = dist > t.radius ? std::asin(t.radius / dist) : std::numbers::pi;
+        dist = std::max(dist, t.radius);
+    };
+    double spacing = ps.spacing;
+    if (!(spacing > 0)) {
+        double sum = 0;  // Σ (area the photons cover at the target's distance)·scale²
+        for (const Light& l : scene_.lights) {
+            if (!shoots(l)) continue;
+            for (const Target& t : targets) {
+                double d, th;
+                cone(l, t, d, th);
+                const double area = l.parallel ? std::numbers::pi * t.radius * t.radius
+                                               : 2 * std::numbers::pi * (1 - std::cos(th)) * d * d;
+                sum += area / (t.scale * t.scale);
+            }
+        }
+        spacing = std::sqrt(sum / std::max(1.0, ps.count));
+    }
+    // Bounded: at most kMaxPhotonsShot photons leave the lights (the spacing widens to keep it).
+    {
+        double shots = 0;
+        for (const Light& l : scene_.lights) {
+            if (!shoots(l)) continue;
+            for (const Target& t : targets) {
+                double d, th;
+                cone(l, t, d, th);
+                const double s = spacing * t.scale;
+                shots += l.parallel ? std::numbers::pi * t.radius * t.radius / (s * s)
+                                    : 2 * std::numbers::pi * (1 - std::cos(th)) * d * d / (s * s);
+            }
+        }
+        if (shots > double(kMaxPhotonsShot)) spacing *= std::sqrt(shots / double(kMaxPhotonsShot));
+    }
+    const int maxLevel = ps.maxTraceLevel > 0 ? ps.maxTraceLevel : scene_.pov.maxTraceLevel;
+    const double bailout = ps.adcBailout >= 0 ? ps.adcBailout : scene_.pov.adcBailout;
+
+    // The photons go out in strips (a ring of directions about a target from a point light, a
+    // row of the grid across a parallel light's beam), traced in parallel, each strip's photons
+    // kept apart and joined in strip order: the map is the same for any number of threads.
+    struct Strip {
+        int light, target, index;
+    };
+    std::vector<Strip> strips;
+    for (size_t li = 0; li < scene_.lights.size(); ++li) {
+        if (!shoots(scene_.lights[li])) continue;
+        for (size_t ti = 0; ti < targets.size(); ++ti) {
+            const Target& t = targets[ti];
+            const double s = spacing * t.scale;
+            double d, thetaMax;
+            cone(scene_.lights[li], t, d, thetaMax);
+            const int count = scene_.lights[li].parallel ? 2 * int(std::ceil(t.radius / s)) + 1
+                                                         : int(std::ceil(thetaMax / (s / d))) + 1;
+            for (int i = 0; i < count; ++i) strips.push_back(Strip{int(li), int(ti), i});
+        }
+    }
+    std::vector<std::vector<Photon>> left(strips.size());
+    // All strips together keep at most kMaxPhotonsStored (then which ones are kept depends on
+    // the threads' timing: only a map that reaches the limit).
+    std::atomic<size_t> kept{0};
+    const auto full = [&](size_t before, const std::vector<Photon>& out) {
+        return kept.fetch_add(out.size() - before) + (out.size() - before) >= kMaxPhotonsStored;
+    };
+    const std::function<void(int, int)> shoot = [&](int index, int) {
+        const Strip& strip = strips[size_t(index)];
+        const Light& light = scene_.lights[size_t(strip.light)];
+        const Target& t = targets[size_t(strip.target)];
+        std::vector<Photon>& out = left[size_t(index)];
+        const double s = spacing * t.scale;
+        double d, thetaMax;
+        cone(light, t, d, thetaMax);
+        const uint64_t stream = (uint64_t(strip.light) << 40) ^ (uint64_t(strip.target) << 20) ^ uint64_t(strip.index);
+        if (light.parallel) {
+            // A row of the square grid across the beam, over the disc the target's sphere covers.
+            Vec3 u, v;
+            basisAbout(light.direction, u, v);
+            const double back = dot(t.centre - light.position, light.direction);
+            const int half = int(std::ceil(t.radius / s));
+            const int i = strip.index - half;
+            for (int j = -half; j <= half; ++j) {
+                const uint64_t n = uint64_t(j + half);
+                const double a = (i + ps.jitter * (unitHash(stream, 2 * n) - 0.5)) * s;
+                const double b = (j + ps.jitter * (unitHash(stream, 2 * n + 1) - 0.5)) * s;
+                if (a * a + b * b > t.radius * t.radius) continue;
+                const Vec3 origin = t.centre + a * u + b * v - back * light.direction;
+                const size_t before = out.size();
+                povTracePhoton(light, t.object, Ray{origin, light.direction}, s * s, maxLevel, bailout, out);
+                if (full(before, out)) return;
+            }
+            return;
+        }
+        // A ring about the direction to the target's centre, dθ = s/d from the previous one, with
+        // photons dθ apart along it.
+        const Vec3 toCentre = t.centre - light.position;
+        const Vec3 w = length(toCentre) > 0 ? normalize(toCentre) : Vec3{0, 0, 1};
+        Vec3 u, v;
+        basisAbout(w, u, v);
+        const double step = s / d;
+        const double solid = step * step;  // the solid angle each photon stands for
+        const double theta0 = strip.index * step;
+        const int around =
+            strip.index == 0 ? 1 : std::max(1, int(std::lround(2 * std::numbers::pi * std::sin(theta0) / step)));
+        for (int k = 0; k < around; ++k) {
+            const uint64_t n = uint64_t(k);
+            const double theta = std::clamp(theta0 + ps.jitter * (unitHash(stream, 2 * n) - 0.5) * step, 0.0, thetaMax);
+            const double phi = (k + 0.5 + ps.jitter * (unitHash(stream, 2 * n + 1) - 0.5)) * 2 * std::numbers::pi / around;
+            const Vec3 dir = std::cos(theta) * w + std::sin(theta) * (std::cos(phi) * u + std::sin(phi) * v);
+            const size_t before = out.size();
+            povTracePhoton(light, t.object, Ray{light.position, dir}, solid, maxLevel, bailout, out);
+            if (full(before, out)) return;
+        }
+    };
+    rays::parallelFor(int(strips.size()), threads, shoot);
+    size_t total = 0;
+    for (const std::vector<Photon>& l : left) total += l.size();
+    stored.reserve(std::min(total, kMaxPhotonsStored));
+    for (const std::vector<Photon>& l : left) {
+        const size_t room = kMaxPhotonsStored - stored.size();
+        stored.insert(stored.end(), l.begin(), l.begin() + long(std::min(room, l.size())));
+        if (stored.size() >= kMaxPhotonsStored) break;
+    }
+    return stored;
+}
+
+void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, double solid, int maxLevel, double bailout, std::vector<Photon>& stored) const {
+    std::array<InFlight, kMaxInFlight> todo;
+    int count = 0;
+    todo[count++] = InFlight{start, light.color};
+    // The area a photon stands for where it lands: solid·travelled² from a point light (its light
+    // then falls off as 1/travelled², which the area makes up for), s² from a parallel one.
+    const auto area = [&](double travelled) { return light.parallel ? solid : solid * travelled * travelled; };
+    while (count > 0) {
+        InFlight f = todo[--count];
+        for (;;) {
+            const Hit h = bvh_.closest(scene_.objects, f.ray, kTMin, kInfinity);
+            if (!h.valid()) break;
+            const Object& o = shadedObject(scene_.objects, h);
+            const PovSurface& s = povSurfaceOf(o.material);
+            const Vec3 P = f.ray.at(h.t);
+            f.travelled += h.t;
+            const bool reflects = s.photons.reflection && light.photonReflection;
+            const bool refracts = s.photons.refraction && light.photonRefraction && povLetsLightThrough(o.material, s);
+            if (f.bounces == 0) {
+                // On its way to the target other objects block it, unless they let photons pass.
+                if (h.object != target) {
+                    if (!(s.photons.passThrough || s.noShadow)) break;
+                    f.ray = Ray{P + kSurfaceOffset * f.ray.dir, f.ray.dir};
+                    continue;
+                }
+                double shadowEnd;
+                Vec3 dimmed;
+                if (!povLightDimmed(light, P, dimmed, shadowEnd)) break;  // spotlight cone, cylinder, fading
+                f.color = dimmed;
+            } else if (s.photons.collect && s.finish.diffuse != 0 && !refracts) {
+                // Not kept on a surface it refracts through: POV-Ray keeps about one photon per
+                // photon shot through a glass holding a drink (measured, grenadine.pov), and a
+                // photon caught by total internal reflection in a thin glass wall would be kept
+                // at every bounce.
+                const Vec3 power = f.color * area(f.travelled);
+                Photon ph;
+                for (int a = 0; a < 3; ++a) {
+                    ph.position[a] = float(P[a]);
+                    ph.power[a] = float(power[a]);
+                    ph.dir[a] = float(f.ray.dir[a]);
+                }
+                stored.push_back(ph);
+                if (stored.size() >= kMaxPhotonsStored) return;
+            }
+            if (f.level >= maxLevel || (!reflects && !refracts)) break;
+            const Vec3 N = dot(f.ray.dir, h.normal) < 0 ? h.normal : -h.normal;  // facing the photon
+            const bool entering = dot(f.ray.dir, h.geomNormal) < 0;
+            const double ior = s.interior.ior > 0 ? s.interior.ior : 1.0;
+            const double eta = entering ? 1.0 / ior : ior;
+            const double cosIn = -dot(f.ray.dir, N);
+            const Vec3 mirror = f.ray.dir + 2 * cosIn * N;
+            InFlight next = f;
+            next.level = f.level + 1;
+            next.bounces = f.bounces + 1;
+            // Total internal reflection sends everything the way a reflection would go: once.
+            Vec3 through = f.ray.dir;
+            const bool bends = refracts && (eta == 1 || refractDir(f.ray.dir, N, eta, through));
+            if (reflects && (bends || !refracts)) {
+                const Vec3 C = o.material.color;
+                const Vec3 R = povReflectivity(s, C, cosIn, eta);
+                if (maxComponent(f.color * R) > bailout && count < kMaxInFlight) {
+                    InFlight r = next;
+                    r.ray = Ray{P + kSurfaceOffset * mirror, mirror};
+                    r.color = f.color * R;
+                    todo[count++] = r;
+                }
+            }
+            if (refracts) {
+                const Vec3 T = povSurfaceTint(f.ray, h, o, s);
+                const Vec3 dir = bends ? through : mirror;
+                if (maxComponent(f.color * T) > bailout) {
+                    f = next;
+                    f.ray = Ray{P + kSurfaceOffset * dir, dir};
+                    f.color = next.color * T;
+                    continue;
+                }
+            }
+            break;
+        }
+    }
+}
+
+Vec3 Tracer::povPhotonLight(Vec3 P, Vec3 N) const {
+    return photonMap_ ? photonMap_->irradiance(P, N, photonGather_) : Vec3{};
+}
+
+void preparePhotons(Tracer& tracer, const Scene& scene, int threads, PhotonMap& map) {
+    const PovPhotonSettings& ps = scene.pov.photons;
+    if (!scene.pov.enabled || !ps.enabled) return;
+    map = PhotonMap(tracer.povShootPhotons(threads));
+    if (map.empty()) return;
+    PhotonGather g;
+    g.max = ps.gatherMax;
+    g.expandPercent = ps.expandPercent;
+    g.expandMin = ps.expandMin;
+    g.radius = ps.radius > 0 ? ps.radius : map.typicalRadius(ps.gatherMax);
+    tracer.setPhotonMap(&map, g);
+}
+
+}  // namespace rays
