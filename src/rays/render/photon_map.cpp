@@ -71,10 +71,12 @@ int PhotonMap::nearest(Vec3 P, double maxD2, int k, Found* found) const {
         const Vec3 d = at(ph.position) - P;
         const double d2 = dot(d, d);
         if (d2 < limit) {
-            if (n < k) {
+            if (n < k) {  // a plain list until k are found, then a max-heap on d2
                 found[n++] = Found{float(d2), mid};
-                std::push_heap(found, found + n, less);
-                if (n == k) limit = std::min(limit, double(found[0].d2));
+                if (n == k) {
+                    std::make_heap(found, found + n, less);
+                    limit = std::min(limit, double(found[0].d2));
+                }
             } else {
                 std::pop_heap(found, found + n, less);
                 found[n - 1] = Found{float(d2), mid};
@@ -98,11 +100,24 @@ Vec3 PhotonMap::irradiance(Vec3 P, Vec3 N, const PhotonGather& g) const {
     if (photons_.empty() || !(g.radius > 0)) return {};
     const int k = std::clamp(g.max, 1, kMaxPhotonGather);
     std::array<Found, kMaxPhotonGather> found;
+    // One search over the expanded radius: the nearest k within it, cut back to the radius,
+    // are the nearest k within the radius; the expanded radius serves when fewer than
+    // expandMin lie within the radius.
     double r = g.radius;
-    int n = nearest(P, r * r, k, found.data());
-    if (n < g.expandMin && g.expandPercent > 0) {
-        r *= 1 + g.expandPercent;
-        n = nearest(P, r * r, k, found.data());
+    const double wide = g.expandPercent > 0 ? r * (1 + g.expandPercent) : r;
+    int n = nearest(P, wide * wide, k, found.data());
+    int within = 0;
+    for (int i = 0; i < n; ++i) within += double(found[size_t(i)].d2) <= r * r;
+    if (within >= g.expandMin || wide == r) {
+        if (within < n) {  // keep those within r (a max-heap no longer: the area needs the largest)
+            int m = 0;
+            for (int i = 0; i < n; ++i)
+                if (double(found[size_t(i)].d2) <= r * r) found[size_t(m++)] = found[size_t(i)];
+            n = m;
+            std::make_heap(found.begin(), found.begin() + n, [](const Found& a, const Found& b) { return a.d2 < b.d2; });
+        }
+    } else {
+        r = wide;
     }
     if (n == 0) return {};
     const double area = std::numbers::pi * (n == k ? double(found[0].d2) : r * r);
@@ -126,7 +141,9 @@ double PhotonMap::typicalRadius(int k) const {
     for (size_t s = 0; s < samples; ++s) {
         const size_t i = s * photons_.size() / samples;
         const int n = nearest(at(photons_[i].position), INFINITY, k, found.data());
-        if (n > 0) radii.push_back(std::sqrt(double(found[0].d2)));
+        float farthest = 0;
+        for (int j = 0; j < n; ++j) farthest = std::max(farthest, found[size_t(j)].d2);
+        if (n > 0) radii.push_back(std::sqrt(double(farthest)));
     }
     if (radii.empty()) return 0;
     std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());

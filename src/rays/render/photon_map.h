@@ -51,7 +51,7 @@ private:
         uint32_t index;
     };
     /// The nearest photons to P within √maxD2 (at most k, k ≤ kMaxPhotonGather) into found (a
-    /// max-heap on d2); returns their number.
+    /// max-heap on d2 when k were found, else in no order); returns their number.
     int nearest(Vec3 P, double maxD2, int k, Found* found) const;
     void build(size_t lo, size_t hi);
 

@@ -18,6 +18,7 @@
 #include "rays/geometry/refract.h"
 #include "rays/render/photon_shooting.h"
 #include "rays/render/pov_lighting.h"
+#include "rays/render/pov_normal.h"
 #include "rays/render/renderer.h"
 #include "rays/render/tracer.h"
 
@@ -250,12 +251,18 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
                 if (stored.size() >= kMaxPhotonsStored) return;
             }
             if (f.level >= maxLevel || (!reflects && !refracts)) break;
-            const Vec3 N = dot(f.ray.dir, h.normal) < 0 ? h.normal : -h.normal;  // facing the photon
+            // The normal facing the photon, tilted by the surface's normal pattern (a bumpy
+            // mirror scatters its caustic).
+            const Vec3 Nfacing = dot(f.ray.dir, h.normal) < 0 ? h.normal : -h.normal;
+            const Vec3 N = s.normal >= 0 ? povNormalAt(scene_, s, P, Nfacing) : Nfacing;
             const bool entering = dot(f.ray.dir, h.geomNormal) < 0;
             const double ior = s.interior.ior > 0 ? s.interior.ior : 1.0;
             const double eta = entering ? 1.0 / ior : ior;
             const double cosIn = -dot(f.ray.dir, N);
-            const Vec3 mirror = f.ray.dir + 2 * cosIn * N;
+            const Vec3 mirror = povMirrorDirection(f.ray.dir, N, Nfacing);
+            // Leaving an interior that fades light: faded over the stretch just crossed inside.
+            if (!entering && povFades(s.interior)) f.color *= povFade(s.interior, h.t);
+            const Vec3 R = reflects || s.finish.conserveEnergy ? povReflectivity(s, o.material.color, cosIn, eta) : Vec3{};
             InFlight next = f;
             next.level = f.level + 1;
             next.bounces = f.bounces + 1;
@@ -263,8 +270,6 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
             Vec3 through = f.ray.dir;
             const bool bends = refracts && (eta == 1 || refractDir(f.ray.dir, N, eta, through));
             if (reflects && (bends || !refracts)) {
-                const Vec3 C = o.material.color;
-                const Vec3 R = povReflectivity(s, C, cosIn, eta);
                 if (maxComponent(f.color * R) > bailout && count < kMaxInFlight) {
                     InFlight r = next;
                     r.ray = Ray{P + kSurfaceOffset * mirror, mirror};
@@ -273,7 +278,8 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
                 }
             }
             if (refracts) {
-                const Vec3 T = povSurfaceTint(f.ray, h, o, s);
+                Vec3 T = povSurfaceTint(f.ray, h, o, s);
+                if (bends && s.finish.conserveEnergy) T *= Vec3(1.0) - R;  // as camera rays (povSecondary)
                 const Vec3 dir = bends ? through : mirror;
                 if (maxComponent(f.color * T) > bailout) {
                     f = next;
@@ -285,6 +291,10 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
             break;
         }
     }
+}
+
+bool povGathersPhotons(const PovSurface& s, const Material& m) {
+    return s.photons.collect && !(s.photons.refraction && povLetsLightThrough(m, s));
 }
 
 Vec3 Tracer::povPhotonLight(Vec3 P, Vec3 N) const {

@@ -165,7 +165,7 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
         }
     }
     // Photons (povLights' comment): each layer's diffuse, weighted and filtered as for a light.
-    if (photonMap_) {
+    if (photonMap_ && povGathersPhotons(*pt.surface, *pt.material)) {
         const Vec3 E = povPhotonLight(pt.P, pt.N);
         if (!(E == Vec3{}))
             for (int k = 0; k < count; ++k) {

@@ -494,7 +494,7 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
     }
     // Photons: their light lit as diffuse light arriving along the normal (measured: a mirror's
     // reflected light gives colour·cos θ, the cosine in the photons' density).
-    if (photonMap_ && f.diffuse != 0 && opacity != 0)
+    if (photonMap_ && f.diffuse != 0 && opacity != 0 && povGathersPhotons(s, *pt.material))
         color += (opacity * f.diffuse) * scale * pt.C * povPhotonLight(P, N);
     return blocked;
 }
