@@ -89,6 +89,35 @@ TEST(PovPhotons, ARefractingTargetCastsAFullShadowLitByItsPhotons) {
     EXPECT_NEAR(off, filtered, 1e-9);
 }
 
+// The shadow's middle lit by photons through a glass sphere of the given finish and interior.
+Vec3 causticThrough(const std::string& finish, const std::string& interior) {
+    const Scene s = test::buildPov(head("photons { spacing 0.02 }") +
+                                   "light_source { <-6, 8, 0> rgb 0.5 }\n"
+                                   "sphere { <0, 3, 0>, 0.7 pigment { rgbf <1, 1, 1, 1> } finish { ambient 0 diffuse 0 " +
+                                   finish + " }\n  interior { ior 1.5 " + interior +
+                                   " } photons { target refraction on } }\n");
+    const Bvh bvh(s.objects);
+    const RenderSettings rs;
+    Tracer tracer(s, bvh, rs);
+    PhotonMap map;
+    preparePhotons(tracer, s, 1, map);
+    TraceContext ctx;
+    return tracer.tracePrimary(Ray{{3.6, 5, 0}, {0, -1, 0}}, ctx, nullptr, nullptr);
+}
+
+TEST(PovPhotons, PhotonsFadeInsideAndLoseWhatConserveEnergyReflects) {
+    const Vec3 plain = causticThrough("", "");
+    ASSERT_GT(plain.x, 0.02);
+    // A fading interior tints the photons that cross it.
+    const Vec3 faded = causticThrough("", "fade_distance 0.2 fade_power 2 fade_color <1, 0.2, 0.2>");
+    EXPECT_NEAR(faded.x, plain.x, 0.02 * plain.x);
+    EXPECT_LT(faded.y, 0.7 * plain.y);
+    // conserve_energy takes the fresnel reflection (4 % at each surface head-on) from the photons.
+    const Vec3 conserved = causticThrough("reflection { 0, 1 fresnel } conserve_energy", "");
+    EXPECT_LT(conserved.x, 0.97 * plain.x);
+    EXPECT_GT(conserved.x, 0.8 * plain.x);
+}
+
 TEST(PovPhotons, TheMapIsTheSameForAnyNumberOfThreads) {
     const Scene s = test::buildPov(head("photons { spacing 0.05 }") + glass(""));
     const Bvh bvh(s.objects);
