@@ -108,6 +108,26 @@ TEST(PovCamera, LookAtMirrorsUnlessUpCrossDirectionPointsAlongRight) {
     expectDir("location <-10,10,-10> right x up -y look_at 0", 0, 50, mirrored, kSide);
 }
 
+TEST(PovCamera, LookingAlongTheSkyKeepsTheRightVectorAsWritten) {
+    // Measured with POV-Ray 3.7 looking straight down from <2.5, 10, 0> (it warns that the
+    // look_at direction and sky should differ and keeps the right vector): with the default
+    // vectors +z is up and +x right; `right -x*4/3` shows −z up and +x right; `up z right x`
+    // (left- or right-handed undecided, as a mirrored camera) +z up and −x right.
+    auto axes = [](const std::string& vectors, Vec3 wantRight, Vec3 wantUp) {
+        SCOPED_TRACE(vectors);
+        const std::string body = "location <2.5, 10, 0> look_at <2.5, 0, 0> " + vectors;
+        const Vec3 centre = normalize(pixelRay(body, 50, 50).dir);
+        const Vec3 towardsRight = normalize(pixelRay(body, 100, 50).dir) - centre;
+        const Vec3 towardsTop = normalize(pixelRay(body, 50, 0).dir) - centre;
+        EXPECT_GT(dot(towardsRight, wantRight), 0.9 * length(towardsRight));
+        EXPECT_GT(dot(towardsTop, wantUp), 0.9 * length(towardsTop));
+    };
+    axes("", {1, 0, 0}, {0, 0, 1});
+    axes("right -x*4/3", {1, 0, 0}, {0, 0, -1});
+    axes("up z right x", {-1, 0, 0}, {0, 0, 1});
+    axes("right -x up z", {1, 0, 0}, {0, 0, -1});
+}
+
 TEST(PovCamera, LookAtComesLastFromVersion35AndInOrderBefore) {
     // Measured with POV-Ray 3.7 (a sphere at the look_at point and one above the origin): under
     // #version 3.5 and later `direction`, `location`, `right` and `sky` written after look_at give

@@ -81,10 +81,12 @@ void SceneBuilder::addCamera(const Item& cam) {
         const Vec3 d = normalize(lookAt - loc);
         Vec3 r = cross(sky, d);
         if (length(r) < 1e-12 * length(sky)) {
-            // Looking along the sky vector: keep the right vector, made perpendicular.
+            // Looking along the sky vector: POV-Ray keeps the right vector as written
+            // (made perpendicular), mirrored below as any right vector is (measured with POV-Ray
+            // 3.7 looking straight down: `right x` and `up z` show +z up and −x to the right,
+            // `right -x*4/3` −z up and +x to the right).
             r = right - dot(right, d) * d;
             if (length(r) == 0) r = std::fabs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
-            if (handed <= 0) r = -r;
         }
         r = normalize(r);
         dir = d * dl;
