@@ -139,13 +139,14 @@ std::vector<Photon> Tracer::povShootPhotons(int threads) const {
         }
     }
     std::vector<std::vector<Photon>> left(strips.size());
-    // All strips together keep at most kMaxPhotonsStored (then which ones are kept depends on
-    // the threads' timing: only a map that reaches the limit).
+    // The strips finished keep at most kMaxPhotonsStored together, each running strip at most
+    // that many more (which ones are kept then depends on the threads' timing: only a map that
+    // reaches the limit). Counted once per strip: the threads share no counter per photon.
     std::atomic<size_t> kept{0};
-    const auto full = [&](size_t before, const std::vector<Photon>& out) {
-        return kept.fetch_add(out.size() - before) + (out.size() - before) >= kMaxPhotonsStored;
+    const auto full = [&](const std::vector<Photon>& out) {
+        return kept.load(std::memory_order_relaxed) + out.size() >= kMaxPhotonsStored;
     };
-    const std::function<void(int, int)> shoot = [&](int index, int) {
+    const auto strip = [&](int index) {
         const Strip& strip = strips[size_t(index)];
         const Light& light = scene_.lights[size_t(strip.light)];
         const Target& t = targets[size_t(strip.target)];
@@ -167,9 +168,8 @@ std::vector<Photon> Tracer::povShootPhotons(int threads) const {
                 const double b = (j + ps.jitter * (unitHash(stream, 2 * n + 1) - 0.5)) * s;
                 if (a * a + b * b > t.radius * t.radius) continue;
                 const Vec3 origin = t.centre + a * u + b * v - back * light.direction;
-                const size_t before = out.size();
                 povTracePhoton(light, t.object, Ray{origin, light.direction}, s * s, maxLevel, bailout, out);
-                if (full(before, out)) return;
+                if (full(out)) return;
             }
             return;
         }
@@ -189,10 +189,13 @@ std::vector<Photon> Tracer::povShootPhotons(int threads) const {
             const double theta = std::clamp(theta0 + ps.jitter * (unitHash(stream, 2 * n) - 0.5) * step, 0.0, thetaMax);
             const double phi = (k + 0.5 + ps.jitter * (unitHash(stream, 2 * n + 1) - 0.5)) * 2 * std::numbers::pi / around;
             const Vec3 dir = std::cos(theta) * w + std::sin(theta) * (std::cos(phi) * u + std::sin(phi) * v);
-            const size_t before = out.size();
             povTracePhoton(light, t.object, Ray{light.position, dir}, solid, maxLevel, bailout, out);
-            if (full(before, out)) return;
+            if (full(out)) return;
         }
+    };
+    const std::function<void(int, int)> shoot = [&](int index, int) {
+        strip(index);
+        kept.fetch_add(left[size_t(index)].size(), std::memory_order_relaxed);
     };
     rays::parallelFor(int(strips.size()), threads, shoot);
     size_t total = 0;
