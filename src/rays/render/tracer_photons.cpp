@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "rays/geometry/refract.h"
@@ -78,44 +78,31 @@ std::vector<Photon> Tracer::povShootPhotons(int threads) const {
     }
     if (targets.empty()) return stored;
     const auto shoots = [](const Light& l) { return l.photonRefraction || l.photonReflection; };
-    // The solid angle (times distance²) each light sees each target under, for `count`.
-    // A light inside a target's sphere shoots all round, its photons spaced as at the sphere's
-    // radius.
+    // The cone a point light sees a target's sphere under: the distance to its centre and the
+    // half-angle. A light inside the sphere shoots all round, its photons spaced as at the
+    // sphere's radius.
     const auto cone = [](const Light& l, const Target& t, double& dist, double& thetaMax) {
         dist = length(t.centre - l.position);
         thetaMax = dist > t.radius ? std::asin(t.radius / dist) : std::numbers::pi;
         dist = std::max(dist, t.radius);
     };
-    double spacing = ps.spacing;
-    if (!(spacing > 0)) {
-        double sum = 0;  // Σ (area the photons cover at the target's distance)·scale²
-        for (const Light& l : scene_.lights) {
-            if (!shoots(l)) continue;
-            for (const Target& t : targets) {
-                double d, th;
-                cone(l, t, d, th);
-                const double area = l.parallel ? std::numbers::pi * t.radius * t.radius
-                                               : 2 * std::numbers::pi * (1 - std::cos(th)) * d * d;
-                sum += area / (t.scale * t.scale);
-            }
+    // Σ over lights and targets of the area the photons cover at the target's distance over the
+    // square of the target's spacing scale: photons shot = this / spacing².
+    double covered = 0;
+    for (const Light& l : scene_.lights) {
+        if (!shoots(l)) continue;
+        for (const Target& t : targets) {
+            double d, th;
+            cone(l, t, d, th);
+            const double area = l.parallel ? std::numbers::pi * t.radius * t.radius
+                                           : 2 * std::numbers::pi * (1 - std::cos(th)) * d * d;
+            covered += area / (t.scale * t.scale);
         }
-        spacing = std::sqrt(sum / std::max(1.0, ps.count));
     }
+    double spacing = ps.spacing > 0 ? ps.spacing : std::sqrt(covered / std::max(1.0, ps.count));
     // Bounded: at most kMaxPhotonsShot photons leave the lights (the spacing widens to keep it).
-    {
-        double shots = 0;
-        for (const Light& l : scene_.lights) {
-            if (!shoots(l)) continue;
-            for (const Target& t : targets) {
-                double d, th;
-                cone(l, t, d, th);
-                const double s = spacing * t.scale;
-                shots += l.parallel ? std::numbers::pi * t.radius * t.radius / (s * s)
-                                    : 2 * std::numbers::pi * (1 - std::cos(th)) * d * d / (s * s);
-            }
-        }
-        if (shots > double(kMaxPhotonsShot)) spacing *= std::sqrt(shots / double(kMaxPhotonsShot));
-    }
+    const double shots = covered / (spacing * spacing);
+    if (shots > double(kMaxPhotonsShot)) spacing *= std::sqrt(shots / double(kMaxPhotonsShot));
     const int maxLevel = ps.maxTraceLevel > 0 ? ps.maxTraceLevel : scene_.pov.maxTraceLevel;
     const double bailout = ps.adcBailout >= 0 ? ps.adcBailout : scene_.pov.adcBailout;
 
@@ -209,7 +196,8 @@ std::vector<Photon> Tracer::povShootPhotons(int threads) const {
     return stored;
 }
 
-void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, double solid, int maxLevel, double bailout, std::vector<Photon>& stored) const {
+void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, double solid, int maxLevel,
+                            double bailout, std::vector<Photon>& stored) const {
     std::array<InFlight, kMaxInFlight> todo;
     int count = 0;
     todo[count++] = InFlight{start, light.color};
