@@ -159,6 +159,10 @@ TEST(PovPhotons, SettingsAndFlagsAreRead) {
     EXPECT_TRUE(a.target && a.refraction && !a.reflection && !a.collect);
     EXPECT_EQ(a.spacingScale, 0.5);
     EXPECT_TRUE(b.target && b.refraction && b.reflection && !b.collect);  // the child's block adds to its parent's
+    // Neither spacing nor count: a coarse spacing (POV-Ray shoots a handful).
+    const Scene bare = test::buildPov("global_settings { photons { } }\n");
+    EXPECT_TRUE(bare.pov.photons.enabled);
+    EXPECT_EQ(bare.pov.photons.spacing, 0.5);
     const PovPhotonFlags c = flags(s.objects[2]);
     EXPECT_FALSE(c.target || c.refraction || c.reflection);
     EXPECT_TRUE(c.collect);

@@ -41,7 +41,9 @@ PovPhotonSettings readPhotonSettings(const sdl::Item& block) {
             default: break;  // media, autostop, save_file, load_file: nothing to change in the picture
         }
     }
-    if (!(p.spacing > 0) && !(p.count > 0)) p.count = 20000;  // neither given: POV-Ray's example's count
+    // Neither given: POV-Ray then shoots a handful (measured: 7 photons at a sphere of radius 0.7
+    // at distance 7.8, 37 at one of radius 2); a coarse spacing does the same.
+    if (!(p.spacing > 0) && !(p.count > 0)) p.spacing = 0.5;
     p.gatherMin = std::min(p.gatherMin, p.gatherMax);
     return p;
 }

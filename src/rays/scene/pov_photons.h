@@ -12,7 +12,7 @@ inline constexpr int kMaxPhotonGather = 1000;
 struct PovPhotonSettings {
     bool enabled = false;
     /// Photons leave a light this far apart where they meet a target (at the distance of the
-    /// target's bounding sphere's centre); 0: derived from count.
+    /// target's bounding sphere's centre); 0: derived from count (0.5 when neither is given).
     double spacing = 0;
     double count = 0;          ///< about this many photons shot in all (when spacing is not given)
     int gatherMin = 20;        ///< gather min, max: photons used for an estimate
