@@ -83,6 +83,12 @@ TEST(PovPhotons, ARefractingTargetCastsAFullShadowLitByItsPhotons) {
     const double photons = floorAt(test::buildPov(head("photons { spacing 0.02 }") + glass("")), 3.6, 0);
     EXPECT_LT(photons, 0.6 * filtered);  // povray: 0.10 against 0.32
     EXPECT_GT(photons, 0.02);            // the photons the sphere spreads over its shadow
+    // When no photon is kept (a clear box around everything blocks them on their way), the
+    // light goes through the sphere as without photons (povray: the filtered shadow, 0.32).
+    const double boxed = floorAt(test::buildPov(head("photons { spacing 0.02 }") + glass("") +
+                                                "box { <-5, -0.5, -5>, <8, 6, 5> pigment { rgbf 1 } hollow }\n"),
+                                 3.6, 0);
+    EXPECT_NEAR(boxed, filtered, 1e-9);
     // A light that shoots no refraction photons lights through the sphere as without photons.
     const double off =
         floorAt(test::buildPov(head("photons { spacing 0.02 }") + glass("photons { refraction off }")), 3.6, 0);
