@@ -62,6 +62,27 @@ TEST(PovPhotons, AMirrorsReflectedLightAddsTheMirroredLightsCosine) {
     EXPECT_NEAR(far - 0.5 * 8 / std::hypot(5.8, 8.0), farMirrored, 0.06 * farMirrored);
 }
 
+TEST(PovPhotons, AClearTargetLetsPhotonsThroughToAMirrorWithoutABlock) {
+    // Measured with POV-Ray 3.7 (advanced/optics' set-up): a clear box that is a target without
+    // refraction or reflection around a plain mirror. A light with a photons block turning both
+    // on shoots at it, the photons pass it and the mirror reflects them: the floor gets the
+    // mirrored light (+0.29 at x = 2.5, as with the mirror a target); a light without a block
+    // shoots at no such target.
+    const std::string scene =
+        "box { <4, 0, -2>, <4.1, 3, 2> pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection 1 } }\n"
+        "box { <-0.5, -0.5, -3>, <5, 4, 3> pigment { rgbf 1 } finish { ambient 0 diffuse 0 } hollow photons { target } }\n";
+    const double direct = 0.5 * 8 / std::hypot(8.5, 8.0);
+    const double mirrored = 0.5 * 8 / std::hypot(11.5, 8.0);
+    const double block = floorAt(
+        test::buildPov(head("photons { spacing 0.02 }") +
+                       "light_source { <-6, 8, 0> rgb 0.5 photons { refraction on reflection on } }\n" + scene),
+        2.5, 0);
+    EXPECT_NEAR(block - direct, mirrored, 0.03 * mirrored);
+    const double none =
+        floorAt(test::buildPov(head("photons { spacing 0.02 }") + "light_source { <-6, 8, 0> rgb 0.5 }\n" + scene), 2.5, 0);
+    EXPECT_NEAR(none, direct, 1e-9);
+}
+
 TEST(PovPhotons, ALayeredFloorTakesThePhotonsLightToo) {
     // A clear top layer over the white floor: lit as the plain floor.
     const std::string floor =
@@ -155,9 +176,15 @@ TEST(PovPhotons, SettingsAndFlagsAreRead) {
     EXPECT_EQ(p.radius, 0.3);
     EXPECT_EQ(p.expandPercent, 0.5);
     EXPECT_EQ(p.expandMin, 5);
+    // A light's block turns on what it says (the manual: both off by default); without a block
+    // the light follows the targets' blocks (both on).
     ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_TRUE(s.lights[0].photonBlock);
     EXPECT_FALSE(s.lights[0].photonRefraction);
-    EXPECT_TRUE(s.lights[0].photonReflection);
+    EXPECT_FALSE(s.lights[0].photonReflection);
+    const Scene plainLight = test::buildPov("light_source { <0, 9, 0> rgb 1 }\n");
+    EXPECT_FALSE(plainLight.lights.at(0).photonBlock);
+    EXPECT_TRUE(plainLight.lights.at(0).photonRefraction && plainLight.lights.at(0).photonReflection);
     // A union's children are objects of their own (each a target: POV-Ray's split_union).
     ASSERT_EQ(s.objects.size(), 3u);
     const auto flags = [&](const Object& o) { return s.povSurfaces.at(size_t(o.material.pov)).photons; };

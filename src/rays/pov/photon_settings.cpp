@@ -68,6 +68,8 @@ PovPhotonFlags readPhotonFlags(const sdl::Item& block, PovPhotonFlags flags) {
 }
 
 void readLightPhotons(const sdl::Item& block, Light& light) {
+    light.photonBlock = true;
+    light.photonRefraction = light.photonReflection = false;
     for (const Entry& e : block.entries) {
         if (e.positional()) continue;
         switch (e.kw()) {

@@ -48,8 +48,8 @@ inline bool povLetsLightThrough(const Material& m, const PovSurface& s) {
     return m.filter != 0 || s.transmit != 0 || s.pigmentTransparent;
 }
 
-/// Whether shading gathers photons on the surface: it collects them (`collect`), and does not
-/// refract them (photons are not kept where they refract: render/tracer_photons.cpp).
+/// Whether shading gathers photons on the surface: it collects them (`collect`), and is not a
+/// clear one that refracts them (photons are not kept where they refract: render/tracer_photons.cpp).
 bool povGathersPhotons(const PovSurface& s, const Material& m);
 
 inline Vec3 povFilterTint(Vec3 C, double filter, double transmit) { return filter * C + Vec3(transmit); }

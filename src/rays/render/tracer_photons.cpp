@@ -45,6 +45,7 @@ struct Target {
     int object;
     Vec3 centre;
     double radius, scale;
+    bool optic;  ///< its photons block turns refraction or reflection on
 };
 
 // A photon on its way: its ray, the light it carries (before the area factor), the distance
@@ -55,6 +56,7 @@ struct InFlight {
     double travelled = 0;
     int level = 1;
     int bounces = 0;
+    bool reached = false;  ///< it has met its target
 };
 
 constexpr int kMaxInFlight = 64;
@@ -73,11 +75,17 @@ std::vector<Photon> Tracer::povShootPhotons(int threads) const {
             for (const Object& leaf : o.csg->leaves)
                 if (povSurfaceOf(leaf.material).photons.target) flags = &povSurfaceOf(leaf.material).photons;
         if (!flags->target) continue;
-        Target t{int(i), {}, 0, flags->spacingScale};
+        Target t{int(i), {}, 0, flags->spacingScale, flags->refraction || flags->reflection};
         if (worldBoundingSphere(o, t.centre, t.radius) && t.radius > 0) targets.push_back(t);
     }
     if (targets.empty()) return stored;
-    const auto shoots = [](const Light& l) { return l.photonRefraction || l.photonReflection; };
+    // Which lights shoot at which targets (measured with POV-Ray 3.7): a light without a photons
+    // block at the targets that refract or reflect photons; one with a block that turns
+    // refraction or reflection on at every target (a clear target without either lets the
+    // photons through to what lies inside: advanced/optics' media box).
+    const auto shoots = [](const Light& l, const Target& t) {
+        return l.photonBlock ? l.photonRefraction || l.photonReflection : t.optic;
+    };
     // The cone a point light sees a target's sphere under: the distance to its centre and the
     // half-angle. A light inside the sphere shoots all round, its photons spaced as at the
     // sphere's radius.
@@ -90,8 +98,8 @@ std::vector<Photon> Tracer::povShootPhotons(int threads) const {
     // square of the target's spacing scale: photons shot = this / spacing².
     double covered = 0;
     for (const Light& l : scene_.lights) {
-        if (!shoots(l)) continue;
         for (const Target& t : targets) {
+            if (!shoots(l, t)) continue;
             double d, th;
             cone(l, t, d, th);
             const double area = l.parallel ? std::numbers::pi * t.radius * t.radius
@@ -114,9 +122,9 @@ std::vector<Photon> Tracer::povShootPhotons(int threads) const {
     };
     std::vector<Strip> strips;
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
-        if (!shoots(scene_.lights[li])) continue;
         for (size_t ti = 0; ti < targets.size(); ++ti) {
             const Target& t = targets[ti];
+            if (!shoots(scene_.lights[li], t)) continue;
             const double s = spacing * t.scale;
             double d, thetaMax;
             cone(scene_.lights[li], t, d, thetaMax);
@@ -213,9 +221,16 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
             const PovSurface& s = povSurfaceOf(o.material);
             const Vec3 P = f.ray.at(h.t);
             f.travelled += h.t;
-            const bool reflects = s.photons.reflection && light.photonReflection;
-            const bool refracts = s.photons.refraction && light.photonRefraction && povLetsLightThrough(o.material, s);
-            if (f.bounces == 0) {
+            // What the surface lets through here (zero for a layered texture over an opaque layer).
+            const Vec3 T = povLetsLightThrough(o.material, s) ? povSurfaceTint(f.ray, h, o, s) : Vec3{};
+            const bool clear = maxComponent(T) > 0;
+            // At its target a photon reflects and refracts as the target's photons block says;
+            // after it, off every object as its finish says (measured with POV-Ray 3.7: a mirror
+            // without a photons block reflects the photons that passed a clear target).
+            const bool atTarget = !f.reached;
+            bool reflects = light.photonReflection && (atTarget ? s.photons.reflection : true);
+            bool refracts = light.photonRefraction && clear && (atTarget ? s.photons.refraction : true);
+            if (atTarget) {
                 // On its way to the target other objects block it, unless they let photons pass.
                 if (h.object != target) {
                     if (!(s.photons.passThrough || s.noShadow)) break;
@@ -226,7 +241,15 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
                 Vec3 dimmed;
                 if (!povLightDimmed(light, P, dimmed, shadowEnd)) break;  // spotlight cone, cylinder, fading
                 f.color = dimmed;
-            } else if (s.photons.collect && s.finish.diffuse != 0 && !refracts) {
+                f.reached = true;
+                if (!reflects && !refracts) {
+                    // A clear target that neither reflects nor refracts photons lets them through
+                    // unchanged (advanced/optics' media box); an opaque one stops them.
+                    if (!clear) break;
+                    f.ray = Ray{P + kSurfaceOffset * f.ray.dir, f.ray.dir};
+                    continue;
+                }
+            } else if (f.bounces > 0 && s.photons.collect && s.finish.diffuse != 0 && !refracts) {
                 // Not kept on a surface it refracts through: POV-Ray keeps about one photon per
                 // photon shot through a glass holding a drink (measured, grenadine.pov), and a
                 // photon caught by total internal reflection in a thin glass wall would be kept
@@ -269,13 +292,14 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
                 }
             }
             if (refracts) {
-                Vec3 T = povSurfaceTint(f.ray, h, o, s);
-                if (bends && s.finish.conserveEnergy) T *= Vec3(1.0) - R;  // as camera rays (povSecondary)
+                const Vec3 passed = bends && s.finish.conserveEnergy ? T * (Vec3(1.0) - R) : T;  // as camera rays (povSecondary)
                 const Vec3 dir = bends ? through : mirror;
-                if (maxComponent(f.color * T) > bailout) {
-                    f = next;
+                if (maxComponent(f.color * passed) > bailout) {
+                    // Straight through a surface of index 1 it keeps its level and stays as it
+                    // was (a photon that only passed clear surfaces is direct light: not kept).
+                    if (eta != 1) f = next;
                     f.ray = Ray{P + kSurfaceOffset * dir, dir};
-                    f.color = next.color * T;
+                    f.color = next.color * passed;
                     continue;
                 }
             }

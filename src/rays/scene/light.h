@@ -41,8 +41,10 @@ struct Light {
     double fadePower = 0;
     bool mediaInteraction = true;   ///< lights scattering media (media_interaction)
     bool mediaAttenuation = false;  ///< dimmed by atmospheric media on its way (media_attenuation)
-    /// Its photons block: the photons it shoots refract and reflect (both on unless turned off;
-    /// measured with POV-Ray 3.7, whose manual lists off).
+    /// Its photons block (render/tracer_photons.cpp). Without one the light shoots at the targets
+    /// that refract or reflect photons, and they do (measured with POV-Ray 3.7); with one, what it
+    /// turns on (off by default, the manual's table) and at every target.
+    bool photonBlock = false;
     bool photonRefraction = true, photonReflection = true;
     /// The light_group it is in (an index, as PovSurface::lightGroup): it lights that group's
     /// objects only. -1: a light of the scene, lighting every object outside groups and those of
