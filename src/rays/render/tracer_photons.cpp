@@ -228,8 +228,8 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
             // after it, off every object as its finish says (measured with POV-Ray 3.7: a mirror
             // without a photons block reflects the photons that passed a clear target).
             const bool atTarget = !f.reached;
-            bool reflects = light.photonReflection && (atTarget ? s.photons.reflection : true);
-            bool refracts = light.photonRefraction && clear && (atTarget ? s.photons.refraction : true);
+            const bool reflects = light.photonReflection && (!atTarget || s.photons.reflection);
+            const bool refracts = light.photonRefraction && clear && (!atTarget || s.photons.refraction);
             if (atTarget) {
                 // On its way to the target other objects block it, unless they let photons pass.
                 if (h.object != target) {
