@@ -1,6 +1,8 @@
 // Reading the values the grammar stored in items: vectors and colours with POV-Ray's promotion,
 // the positional arguments of a block, and transformation entries.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "rays/math/transform.h"
@@ -18,6 +20,13 @@ using sdl::Value;
 Vec3 toVec3(const Value& v);
 /// A float, or the first component of a vector.
 double toFloat(const Value& v);
+
+/// A boolean modifier (`no_shadow`, `refraction on`, ...): on when written bare or with a value
+/// other than 0.
+inline bool isOn(const Entry& e) { return e.args.empty() || toFloat(e.args[0]) != 0; }
+
+/// v as an int in [lo, hi], clamped as a float first (1e300 has no int); NaN gives lo.
+inline int clampedInt(double v, int lo, int hi) { return std::isnan(v) ? lo : int(std::clamp(v, double(lo), double(hi))); }
 
 struct Rgbft {
     Vec3 rgb;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rays/pov/grammar.h"
+#include "rays/pov/item_values.h"
 #include "rays/pov/specs.h"
 
 namespace rays::pov {
@@ -191,7 +192,7 @@ void NormalCompiler::read(const Item& normal, State& s, int depth) {
                 s.bumpSizeSet = true;
                 break;
             case Kw::accuracy: s.accuracy = toFloat(e.args[0]); break;
-            case Kw::no_bump_scale: s.noBumpScale = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::no_bump_scale: s.noBumpScale = isOn(e); break;
             case Kw::normal: s.list.push_back({0, nested(e.args[0].item(), depth + 1)}); break;
             case Kw::normal_map: {
                 Entry inner;

@@ -12,9 +12,8 @@ double entryNumber(const Entry& e, size_t i = 0, double absent = 1.0) {
     return e.args.size() > i ? toFloat(e.args[i]) : absent;
 }
 
-bool entryOn(const Entry& e) { return e.args.empty() || toFloat(e.args[0]) != 0; }
-
-int entryWhole(double v, int lo, int hi) { return std::isfinite(v) ? std::clamp(int(std::lround(v)), lo, hi) : lo; }
+// A whole number written as a float: rounded, then clamped.
+int entryWhole(double v, int lo, int hi) { return clampedInt(std::round(v), lo, hi); }
 
 }  // namespace
 
@@ -57,10 +56,10 @@ PovPhotonFlags readPhotonFlags(const sdl::Item& block, PovPhotonFlags flags) {
                 flags.spacingScale = e.args.empty() ? 1.0 : toFloat(e.args[0]);
                 if (!(flags.spacingScale > 0)) flags.target = false;  // target 0: no photons (POV-Ray: none shot)
                 break;
-            case Kw::refraction: flags.refraction = entryOn(e); break;
-            case Kw::reflection: flags.reflection = entryOn(e); break;
-            case Kw::collect: flags.collect = entryOn(e); break;
-            case Kw::pass_through: flags.passThrough = entryOn(e); break;
+            case Kw::refraction: flags.refraction = isOn(e); break;
+            case Kw::reflection: flags.reflection = isOn(e); break;
+            case Kw::collect: flags.collect = isOn(e); break;
+            case Kw::pass_through: flags.passThrough = isOn(e); break;
             default: break;  // split_union
         }
     }
@@ -73,8 +72,8 @@ void readLightPhotons(const sdl::Item& block, Light& light) {
     for (const Entry& e : block.entries) {
         if (e.positional()) continue;
         switch (e.kw()) {
-            case Kw::refraction: light.photonRefraction = entryOn(e); break;
-            case Kw::reflection: light.photonReflection = entryOn(e); break;
+            case Kw::refraction: light.photonRefraction = isOn(e); break;
+            case Kw::reflection: light.photonReflection = isOn(e); break;
             default: break;  // area_light: photons leave an area light's centre
         }
     }

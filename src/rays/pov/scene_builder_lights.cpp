@@ -66,8 +66,8 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
             case Kw::falloff: falloff = toFloat(e.args[0]), falloffSet = true; break;
             case Kw::tightness: l.tightness = std::max(0.0, toFloat(e.args[0])); break;
             case Kw::shadowless: l.shadowless = true; break;
-            case Kw::media_interaction: l.mediaInteraction = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::media_attenuation: l.mediaAttenuation = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::media_interaction: l.mediaInteraction = isOn(e); break;
+            case Kw::media_attenuation: l.mediaAttenuation = isOn(e); break;
             case Kw::photons: readLightPhotons(e.args[0].item(), l); break;
             case Kw::area_light:
                 if (e.args.size() == 4) {
@@ -78,11 +78,11 @@ void SceneBuilder::addLight(const Item& item, const Transform& toWorld) {
                     l.n2 = clampedInt(toFloat(e.args[3]), 1, 1024);
                 }
                 break;
-            case Kw::jitter: l.jitter = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::jitter: l.jitter = isOn(e); break;
             case Kw::adaptive: l.adaptive = clampedInt(toFloat(e.args[0]), -1, 1000); break;
-            case Kw::circular: l.circular = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::orient: l.orient = e.args.empty() || toFloat(e.args[0]) != 0; break;
-            case Kw::area_illumination: l.areaIllumination = e.args.empty() || toFloat(e.args[0]) != 0; break;
+            case Kw::circular: l.circular = isOn(e); break;
+            case Kw::orient: l.orient = isOn(e); break;
+            case Kw::area_illumination: l.areaIllumination = isOn(e); break;
             case Kw::fade_distance: l.fadeDistance = std::max(0.0, toFloat(e.args[0])); break;
             case Kw::fade_power: l.fadePower = toFloat(e.args[0]); break;
             case Kw::looks_like: looksLike = lookedLikeObject(e); break;

@@ -1,17 +1,12 @@
 // What the files of SceneBuilder (scene_builder*.cpp) share besides the class.
 #pragma once
-#include <algorithm>
-#include <cmath>
-
 #include <vector>
 
+#include "rays/pov/item_values.h"  // clampedInt, isOn
 #include "rays/sdl/item.h"
 #include "rays/sdl/keywords.h"
 
 namespace rays::pov {
-
-/// v as an int in [lo, hi], clamped as a float first (1e300 has no int); NaN gives lo.
-inline int clampedInt(double v, int lo, int hi) { return std::isnan(v) ? lo : int(std::clamp(v, double(lo), double(hi))); }
 
 /// True for the keywords that start an object (primitives, CSG, object copies, light groups and
 /// light sources, which may stand among objects).

@@ -50,7 +50,9 @@ inline bool povLetsLightThrough(const Material& m, const PovSurface& s) {
 
 /// Whether shading gathers photons on the surface: it collects them (`collect`), and is not a
 /// clear one that refracts them (photons are not kept where they refract: render/tracer_photons.cpp).
-bool povGathersPhotons(const PovSurface& s, const Material& m);
+inline bool povGathersPhotons(const PovSurface& s, const Material& m) {
+    return s.photons.collect && !(s.photons.refraction && povLetsLightThrough(m, s));
+}
 
 inline Vec3 povFilterTint(Vec3 C, double filter, double transmit) { return filter * C + Vec3(transmit); }
 

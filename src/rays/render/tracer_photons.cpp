@@ -215,7 +215,7 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
     while (count > 0) {
         InFlight f = todo[--count];
         for (;;) {
-            const Hit h = bvh_.closest(scene_.objects, f.ray, kTMin, kInfinity);
+            const Hit h = bvh_.closest(scene_.objects, f.ray, kMinHitT, kInfinity);
             if (!h.valid()) break;
             const Object& o = shadedObject(scene_.objects, h);
             const PovSurface& s = povSurfaceOf(o.material);
@@ -306,10 +306,6 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
             break;
         }
     }
-}
-
-bool povGathersPhotons(const PovSurface& s, const Material& m) {
-    return s.photons.collect && !(s.photons.refraction && povLetsLightThrough(m, s));
 }
 
 Vec3 Tracer::povPhotonLight(Vec3 P, Vec3 N) const {
