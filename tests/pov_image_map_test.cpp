@@ -148,6 +148,10 @@ TEST(PovImageMap, PngIsDecodedAsSrgbInVersion37AndRawInLegacyScenes) {
     const double v = 160 / 255.0, linear = std::pow((v + 0.055) / 1.055, 2.4);
     EXPECT_NEAR(pigmentAt(withMap(path, ""), {0.6, 0.75, 0}).rgb.x, linear, 1e-6);
     EXPECT_NEAR(pigmentAt(withMap(path, "", "#version 3.6;\n"), {0.6, 0.75, 0}).rgb.x, v, 1e-6);
+    // A legacy scene keeps the bytes as they are even with assumed_gamma 1.0 (measured with POV-Ray
+    // 3.7: a texel of 85 shows as 156 under #version 3.6 and assumed_gamma 1.0, as 85 under 3.7).
+    const Scene legacyLinear = withMap(path, "", "#version 3.6;\nglobal_settings { assumed_gamma 1.0 }\n");
+    EXPECT_NEAR(pigmentAt(legacyLinear, {0.6, 0.75, 0}).rgb.x, v, 1e-6);
     // assumed_gamma 2.2: linear light in the working space, c = linear^(1/2.2).
     const Scene g22 = withMap(path, "", "#version 3.7;\nglobal_settings { assumed_gamma 2.2 }\n");
     EXPECT_NEAR(pigmentAt(g22, {0.6, 0.75, 0}).rgb.x, std::pow(linear, 1 / 2.2), 1e-6);

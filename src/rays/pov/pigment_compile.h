@@ -53,6 +53,8 @@ public:
     ImageFiles& imageFiles() { return images_; }
     /// How object patterns' objects are built (without a builder they are not rendered: noted).
     void setObjectBuilder(PatternObjectBuilder build) { buildObject_ = std::move(build); }
+    /// The #version in force for the items compiled next (image files' default gamma).
+    void setLanguageVersion(double version) { version_ = version; }
     DensityFiles& densityFiles() { return densityFiles_; }
     /// A pigment seen through a transformation (its texture space → the enclosing one); node -1
     /// stands for the flat colour.
@@ -108,6 +110,7 @@ private:
     ImageFiles images_{notes_};
     DensityFiles densityFiles_{notes_};
     PatternObjectBuilder buildObject_;
+    double version_ = 3.7;
     ItemCache<std::shared_ptr<const pattern::PatternObject>> objects_;  ///< built per item
 };
 

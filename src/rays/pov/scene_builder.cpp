@@ -97,6 +97,7 @@ Kw unrollObject(const Item& item, std::vector<const Entry*>& out, int depth, std
 
 void SceneBuilder::add(const ParsedScene::Top& top) {
     version_ = top.version;
+    pigments_.setLanguageVersion(version_);
     const Item& item = *top.item;
     updateDefaults(top);
     switch (item.kind) {
