@@ -159,6 +159,27 @@ TEST(PovImageMap, PngIsDecodedAsSrgbInVersion37AndRawInLegacyScenes) {
     EXPECT_NEAR(pigmentAt(withMap(path, "gamma 2.0"), {0.6, 0.75, 0}).rgb.x, v * v, 1e-6);
 }
 
+// A PNG that states its gamma is decoded by it in a legacy scene with an assumed_gamma, one
+// without those chunks is not (measured with POV-Ray 3.7, #version 3.6, assumed_gamma 1.0: a grey
+// texel of 85 shows as 84 with gAMA 0.45455, as 85 with an sRGB chunk, as 156 without either).
+TEST(PovImageMap, LegacyScenesDecodeOnlyPngsThatStateTheirGamma) {
+    test::TempDir dir;
+    const std::vector<uint8_t> raw = {0, 85, 85, 85, 160, 160, 160};  // one row: two RGB texels
+    const std::string plain = (dir.path() / "plain.png").string(), gama = (dir.path() / "gama.png").string(),
+                      srgb = (dir.path() / "srgb.png").string();
+    test::writeBytes(plain, test::pngBytes(2, 1, 8, 2, raw));
+    test::writeBytes(gama, test::pngBytes(2, 1, 8, 2, raw, {}, {{"gAMA", {0, 0, 0xB1, 0x8F}}}));  // 45455
+    test::writeBytes(srgb, test::pngBytes(2, 1, 8, 2, raw, {}, {{"sRGB", {0}}}));
+    const std::string legacy = "#version 3.6;\nglobal_settings { assumed_gamma 1.0 }\n";
+    const double v = 85 / 255.0;
+    const Vec3 p{0.25, 0.5, 0};
+    EXPECT_NEAR(pigmentAt(withMap(plain, "", legacy), p).rgb.x, v, 1e-6);
+    EXPECT_NEAR(pigmentAt(withMap(gama, "", legacy), p).rgb.x, std::pow(v, 1 / 0.45455), 1e-6);
+    EXPECT_NEAR(pigmentAt(withMap(srgb, "", legacy), p).rgb.x, std::pow((v + 0.055) / 1.055, 2.4), 1e-6);
+    // Without assumed_gamma a legacy scene does no gamma handling at all.
+    EXPECT_NEAR(pigmentAt(withMap(gama, "", "#version 3.6;\n"), p).rgb.x, v, 1e-6);
+}
+
 TEST(PovImageMap, MissingFileIsAnErrorAtItsPlace) {
     try {
         test::loadPov("plane { z, 0 pigment { image_map { png \"no-such-image-file.png\" } } }");

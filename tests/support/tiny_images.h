@@ -21,10 +21,16 @@ inline void writeBytes(const std::string& path, const std::vector<uint8_t>& byte
 
 using Palette = std::vector<std::array<uint8_t, 3>>;
 
+// A chunk written after IHDR (gAMA, sRGB): its four-letter type and its body.
+struct PngChunk {
+    std::string type;
+    std::vector<uint8_t> body;
+};
+
 // A PNG of filter-0 rows `raw` (each row's filter byte first) with the given IHDR bit depth and
-// colour type, and a PLTE chunk when `plte` is not empty.
+// colour type, the `extra` chunks, and a PLTE chunk when `plte` is not empty.
 inline std::vector<uint8_t> pngBytes(int w, int h, int bitDepth, int colorType, const std::vector<uint8_t>& raw,
-                                     const std::vector<uint8_t>& plte = {}) {
+                                     const std::vector<uint8_t>& plte = {}, const std::vector<PngChunk>& extra = {}) {
     uLongf size = compressBound(uLong(raw.size()));
     std::vector<uint8_t> z(size);
     compress(z.data(), &size, raw.data(), uLong(raw.size()));
@@ -41,6 +47,7 @@ inline std::vector<uint8_t> pngBytes(int w, int h, int bitDepth, int colorType, 
     };
     chunk("IHDR", {uint8_t(w >> 24), uint8_t(w >> 16), uint8_t(w >> 8), uint8_t(w), uint8_t(h >> 24), uint8_t(h >> 16),
                    uint8_t(h >> 8), uint8_t(h), uint8_t(bitDepth), uint8_t(colorType), 0, 0, 0});
+    for (const PngChunk& c : extra) chunk(c.type.c_str(), c.body);
     if (!plte.empty()) chunk("PLTE", plte);
     chunk("IDAT", z);
     chunk("IEND", {});

@@ -627,10 +627,17 @@ const ImageFile* PigmentCompiler::readImageMap(const Item& map, State& s, bool a
     m.image = file->image;
     m.setPatternGamma(gammaSet && m.fileGamma.kind == pattern::FileGamma::Kind::Power ? m.fileGamma.gamma : 1.0);
     // Without `gamma`, a scene of #version 3.7 decodes the file by its own gamma (sRGB unless it
-    // says otherwise); an older scene uses the bytes as they are in its working space, whatever
-    // its assumed_gamma (measured with POV-Ray 3.7: under #version 3.6 and assumed_gamma 1.0 a
-    // texel of 85 shows as 156, i.e. 85/255 taken as linear light; under #version 3.7 as 85).
-    if (!gammaSet) m.fileGamma = version_ >= 3.7 ? ImageFiles::defaultGamma(*file) : pattern::FileGamma{pattern::FileGamma::Kind::Linear, 1};
+    // says otherwise). An older scene decodes only a PNG that states its gamma (a gAMA or sRGB
+    // chunk) and uses the bytes of any other file as they are in its working space, whatever its
+    // assumed_gamma (measured with POV-Ray 3.7, #version 3.6 and assumed_gamma 1.0: a texel of 85
+    // shows as 156 from a PNG without those chunks, a TGA, GIF, JPEG or PPM file, as 84 from a PNG
+    // with gAMA 0.45455, as 85 from one with an sRGB chunk; under #version 3.7 as 85 from all
+    // but the PPM).
+    if (!gammaSet) {
+        const bool statesGamma = file->png.png && (file->png.srgb || file->png.gamma > 0);
+        m.fileGamma = version_ >= 3.7 || statesGamma ? ImageFiles::defaultGamma(*file)
+                                                     : pattern::FileGamma{pattern::FileGamma::Kind::Linear, 1};
+    }
     m.setWorkingGamma(1.0);  // until the scene's assumed_gamma is known (PigmentTable::setWorkingGamma)
     // use_index: a palette image's index itself is the height (measured with POV-Ray 3.7: a bump_map
     // texel of palette index 5 with bump_size 1 tilts the normal by atan 5, of index 6 by atan 6).
