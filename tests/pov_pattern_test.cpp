@@ -738,32 +738,47 @@ TEST(PovPatternRender, SkySphereIsLookedUpByDirection) {
 
 TEST(PovPatternRender, SkySphereLayersComposeAsPovRayDoes) {
     // POV-Ray 3.7's pixels (8-bit sRGB, assumed_gamma 1) looking at sky_spheres of rgbf, rgbt and
-    // rgbft layers over a background: a filter lets the layers below through untinted, as a
-    // transmit does, but tints the background (pov_pigment.h povSky).
+    // rgbft layers over a background, under #version 3.7 (the layers compose as a layered
+    // texture's) and #version 3.6 (a filter lets the layers below through untinted, as a transmit
+    // does, but tints the background); pov_pigment.h povSky. The last case's first layer has
+    // filter + transmit above 1.
     auto linear = [](int v) {
         const double c = v / 255.0;
         return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
     };
     const struct {
         const char* scene;
-        int r, g, b;
+        int now[3], legacy[3];
     } cases[] = {
-        {"background { rgb <1, 0.3, 0.6> } sky_sphere { pigment { rgbt <0, 1, 1, 0.5> } pigment { rgbf <0, 0, 1, 0.5> } }", 0, 137, 225},
-        {"background { rgb <1, 0.3, 0.6> } sky_sphere { pigment { rgbt <0, 1, 1, 0.5> } pigment { rgbt <0, 0, 1, 0.5> } }", 137, 154, 243},
-        {"background { rgb <1, 0, 0> } sky_sphere { pigment { rgbft <1, 1, 0, 0.3, 0.2> } pigment { rgbft <1, 0, 1, 0.2, 0.5> } }", 232, 160, 149},
+        {"background { rgb <1, 0.3, 0.6> } sky_sphere { pigment { rgbt <0, 1, 1, 0.5> } pigment { rgbf <0, 0, 1, 0.5> } }",
+         {0, 0, 243}, {0, 137, 225}},
+        {"background { rgb <1, 0.3, 0.6> } sky_sphere { pigment { rgbt <0, 1, 1, 0.5> } pigment { rgbt <0, 0, 1, 0.5> } }",
+         {137, 154, 243}, {137, 154, 243}},
+        {"background { rgb <1, 0, 0> } sky_sphere { pigment { rgbft <1, 1, 0, 0.3, 0.2> } pigment { rgbft <1, 0, 1, 0.2, 0.5> } }",
+         {255, 137, 149}, {232, 160, 149}},
         {"background { rgb <0.8, 0.5, 0.9> } sky_sphere { pigment { rgbft <0.7, 0.8, 0.4, 0.4, 0.3> } "
-         "pigment { rgbft <0.6, 0.9, 0.5, 0.3, 0.3> } pigment { rgbft <0.9, 0.6, 0.8, 0.5, 0.2> } }", 190, 188, 175},
+         "pigment { rgbft <0.6, 0.9, 0.5, 0.3, 0.3> } pigment { rgbft <0.9, 0.6, 0.8, 0.5, 0.2> } }",
+         {209, 190, 188}, {190, 188, 175}},
         {"background { rgb <0.3, 0.9, 0.6> } sky_sphere { pigment { rgbft <0.2, 0.8, 0.4, 0.1, 0.6> } "
          "pigment { rgbft <0.6, 0.3, 0.5, 0.6, 0.1> } pigment { rgbft <0.9, 0.6, 0.1, 0.2, 0.2> } "
-         "pigment { rgbft <0.5, 0.5, 0.9, 0.3, 0.4> } }", 197, 175, 158},
+         "pigment { rgbft <0.5, 0.5, 0.9, 0.3, 0.4> } }",
+         {189, 171, 162}, {197, 175, 158}},
+        {"background { rgb <0.2, 0.4, 0.8> } sky_sphere { pigment { rgbft <0.9, 0.6, 0.1, 0.6, 0.6> } "
+         "pigment { rgbft <1, 0.3, 0.5, 0.1, 0.8> } }",
+         {106, 137, 184}, {60, 97, 173}},
     };
     for (const auto& c : cases) {
-        SCOPED_TRACE(c.scene);
-        const Built b = build(c.scene);
-        const Vec3 got = traceColor(b.scene, Ray{{0, 0, 0}, {0, 0, 1}});
-        EXPECT_NEAR(got.x, linear(c.r), 0.004);
-        EXPECT_NEAR(got.y, linear(c.g), 0.004);
-        EXPECT_NEAR(got.z, linear(c.b), 0.004);
+        for (const bool legacy : {false, true}) {
+            SCOPED_TRACE(std::string(legacy ? "#version 3.6: " : "#version 3.7: ") + c.scene);
+            const std::string head = std::string(legacy ? "#version 3.6;\n" : "#version 3.7;\n") +
+                                     "global_settings { assumed_gamma 1 }\n";
+            const Built b = test::loadPov(c.scene, head);
+            const Vec3 got = traceColor(b.scene, Ray{{0, 0, 0}, {0, 0, 1}});
+            const int* want = legacy ? c.legacy : c.now;
+            EXPECT_NEAR(std::min(got.x, 1.0), linear(want[0]), 0.004);
+            EXPECT_NEAR(std::min(got.y, 1.0), linear(want[1]), 0.004);
+            EXPECT_NEAR(std::min(got.z, 1.0), linear(want[2]), 0.004);
+        }
     }
 }
 

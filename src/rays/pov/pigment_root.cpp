@@ -126,6 +126,7 @@ void SceneBuilder::addSkySphere(const Item& sky) {
     scene_.pov.skyFirst = int(scene_.pigments.roots.size());
     scene_.pov.skyCount = int(nodes.size());
     scene_.pov.skyEmission = emission;
+    scene_.pov.skyLayersAsTexture = version_ >= 3.7;
     for (int n : nodes) scene_.pigments.roots.push_back(pattern::PigmentRoot{turn.inverse(), n});
 }
 

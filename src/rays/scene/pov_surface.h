@@ -143,6 +143,10 @@ struct PovGlobals {
     /// Scene::pigments looked up by ray direction; none: the background colour.
     int skyFirst = -1, skyCount = 0;
     Vec3 skyEmission{1, 1, 1};  ///< sky_sphere's emission: the sky's colour is multiplied by it
+    /// A sky_sphere of #version 3.7 or later composes its layers as a layered texture does (each
+    /// over the ones below, the bottom one over the background); an older one as POV-Ray 3.6 did
+    /// (render/pov_pigment.h, povSky).
+    bool skyLayersAsTexture = true;
     PovRadiosity radiosity;     ///< global_settings' radiosity block (render/tracer_radiosity.cpp)
     PovPhotonSettings photons;  ///< global_settings' photons block (render/tracer_photons.cpp)
 };
