@@ -41,8 +41,8 @@ double floorAt(const Scene& s, double x, double z, int threads = 1) {
     RenderSettings rs;
     rs.threads = threads;
     Tracer tracer(s, bvh, rs);
-    PhotonMap map;
-    preparePhotons(tracer, s, threads, map);
+    PhotonMap map, media;
+    preparePhotons(tracer, s, threads, map, media);
     TraceContext ctx;
     return tracer.tracePrimary(Ray{{x, 5, z}, {0, -1, 0}}, ctx, nullptr, nullptr).x;
 }
@@ -126,8 +126,8 @@ Vec3 causticThrough(const std::string& finish, const std::string& interior) {
     const Bvh bvh(s.objects);
     const RenderSettings rs;
     Tracer tracer(s, bvh, rs);
-    PhotonMap map;
-    preparePhotons(tracer, s, 1, map);
+    PhotonMap map, media;
+    preparePhotons(tracer, s, 1, map, media);
     TraceContext ctx;
     return tracer.tracePrimary(Ray{{3.6, 5, 0}, {0, -1, 0}}, ctx, nullptr, nullptr);
 }
@@ -150,7 +150,7 @@ TEST(PovPhotons, TheMapIsTheSameForAnyNumberOfThreads) {
     const Bvh bvh(s.objects);
     const RenderSettings rs;
     const Tracer tracer(s, bvh, rs);
-    const std::vector<Photon> one = tracer.povShootPhotons(1), two = tracer.povShootPhotons(2);
+    const std::vector<Photon> one = tracer.povShootPhotons(1).surface, two = tracer.povShootPhotons(2).surface;
     ASSERT_GT(one.size(), 100u);
     ASSERT_EQ(one.size(), two.size());
     for (size_t i = 0; i < one.size(); ++i)
@@ -201,14 +201,74 @@ TEST(PovPhotons, SettingsAndFlagsAreRead) {
     EXPECT_TRUE(c.collect);
 }
 
-TEST(PovPhotons, OnlyPhotonsInMediaAreNoted) {
+// A spotlight along x through a box of scattering media (pass_through, so that the photons reach
+// their target) at a glass ball that refracts photons: behind the ball its caustic lights the
+// media only through the photons left in them (`media` in the photons block).
+std::string mediaScene(const std::string& photonsMedia) {
+    return "#version 3.7;\nglobal_settings { assumed_gamma 1 photons { count 5000 " + photonsMedia + " } }\n"
+           "light_source { <-20, 0.5, 0> rgb 1 spotlight radius 2 falloff 3 point_at <0, 0.5, 0>\n"
+           "  photons { refraction on reflection on } }\n"
+           "box { <-6, -0.1, -3>, <6, 1, 3> hollow pigment { rgbf 1 }\n"
+           "  interior { media { scattering { 1, rgb 0.3 extinction 0 } } } photons { pass_through } }\n"
+           "sphere { <0, 0.5, 0>, 0.8 pigment { rgbf <1, 1, 1, 0.95> } interior { ior 1.5 }\n"
+           "  photons { target refraction on reflection on } }\n";
+}
+
+// The light seen looking down through the media at (x, ·, 0) (nothing below but the background).
+double mediaGlowAt(const Scene& s, double x, int threads = 1) {
+    const Bvh bvh(s.objects);
+    RenderSettings rs;
+    rs.threads = threads;
+    Tracer tracer(s, bvh, rs);
+    PhotonMap map, media;
+    preparePhotons(tracer, s, threads, map, media);
+    TraceContext ctx;
+    return tracer.tracePrimary(Ray{{x, 5, 0}, {0, -1, 0}}, ctx, nullptr, nullptr).x;
+}
+
+TEST(PovPhotons, PhotonsInMediaLightTheMediaBehindARefractingTarget) {
     std::vector<std::string> warnings;
-    test::buildPov("global_settings { photons { spacing 0.1 } }\nsphere { 0, 1 photons { target refraction on } }\n",
-                   &warnings);
-    EXPECT_TRUE(warnings.empty());
-    test::buildPov("global_settings { photons { spacing 0.1 media 100, 2 } }\nsphere { 0, 1 }\n", &warnings);
-    ASSERT_EQ(warnings.size(), 1u);
-    EXPECT_NE(warnings[0].find("not rendered yet: photons in media"), std::string::npos);
+    const Scene with = test::buildPov(mediaScene("media 100, 2"), &warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+    EXPECT_EQ(with.pov.photons.mediaMaxSteps, 100);
+    EXPECT_EQ(with.pov.photons.mediaFactor, 2);
+    const Scene without = test::buildPov(mediaScene(""));
+    EXPECT_EQ(without.pov.photons.mediaMaxSteps, 0);
+    // Behind the ball (its focus lies about 1.2 past the centre) the direct light is blocked by
+    // the refracting target: only the photons light the media there.
+    const double lit = mediaGlowAt(with, 1.4), dark = mediaGlowAt(without, 1.4);
+    EXPECT_GT(lit, dark + 0.05);
+    // In front of the ball the light's own beam lights the media with or without them.
+    EXPECT_GT(mediaGlowAt(without, -3), 0.05);
+    // The photons left in media are the same for any number of threads.
+    const Bvh bvh(with.objects);
+    const RenderSettings rs;
+    const Tracer tracer(with, bvh, rs);
+    const std::vector<Photon> one = tracer.povShootPhotons(1).media, two = tracer.povShootPhotons(2).media;
+    ASSERT_GT(one.size(), 1000u);
+    ASSERT_EQ(one.size(), two.size());
+    for (size_t i = 0; i < one.size(); i += 97)
+        for (int a = 0; a < 3; ++a) ASSERT_EQ(one[i].power[a], two[i].power[a]) << i;
+    EXPECT_EQ(mediaGlowAt(with, 1.4, 2), lit);
+}
+
+TEST(PhotonMap, EstimatesTheLightOfPhotonsInAVolume) {
+    // Photons 0.02 apart through a cube, each carrying 8·10⁻⁶·(1, 2, 3) along +x: the light
+    // (1, 2, 3) per unit volume, weighed by the direction (here: 1 for +x, 0 otherwise).
+    std::vector<Photon> photons;
+    for (int i = -25; i <= 25; ++i)
+        for (int j = -25; j <= 25; ++j)
+            for (int k = -25; k <= 25; ++k)
+                photons.push_back(Photon{{float(i * 0.02), float(j * 0.02), float(k * 0.02)}, {8e-6f, 16e-6f, 24e-6f}, {1, 0, 0}});
+    const PhotonMap map(photons);
+    PhotonGather g;
+    g.max = 200;
+    g.radius = 0.2;
+    const Vec3 l = map.inScattered({0.001, 0.002, -0.003}, g, [](Vec3 d) { return Vec3(d.x > 0.5 ? 1.0 : 0.0); });
+    EXPECT_NEAR(l.x, 1.0, 0.15);
+    EXPECT_NEAR(l.z, 3.0, 0.45);
+    EXPECT_EQ(map.inScattered({0, 0, 0}, g, [](Vec3) { return Vec3{}; }), Vec3{});
+    EXPECT_EQ(map.inScattered({5, 5, 5}, g, [](Vec3) { return Vec3(1.0); }), Vec3{});  // none within the radius
 }
 
 TEST(PhotonMap, EstimatesTheIrradianceOfPhotonsOnAPlaneFromTheirSide) {

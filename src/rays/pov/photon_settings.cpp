@@ -37,7 +37,11 @@ PovPhotonSettings readPhotonSettings(const sdl::Item& block) {
                 p.expandPercent = std::max(0.0, entryNumber(e, 0, 0.2));
                 p.expandMin = entryWhole(entryNumber(e, 1, 40), 0, kMaxPhotonGather);
                 break;
-            default: break;  // media, autostop, save_file, load_file: nothing to change in the picture
+            case Kw::media:
+                p.mediaMaxSteps = entryWhole(entryNumber(e, 0, 0), 0, kMaxMediaPhotonSteps);
+                p.mediaFactor = std::max(1e-3, entryNumber(e, 1, 1.0));
+                break;
+            default: break;  // autostop, save_file, load_file: nothing to change in the picture
         }
     }
     // Neither given: POV-Ray then shoots a handful (measured: 7 photons at a sphere of radius 0.7

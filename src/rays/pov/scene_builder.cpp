@@ -497,11 +497,7 @@ void SceneBuilder::globalSettings(const Item& g) {
                 scene_.pov.numberOfWaves = clampedInt(toFloat(e.args[0]), 1, pattern::kMaxWaves);
                 break;
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
-            case Kw::photons:
-                scene_.pov.photons = readPhotonSettings(e.args[0].item());
-                for (const Entry& p : e.args[0].item().entries)
-                    if (!p.positional() && p.kw() == Kw::media) notes_.note("photons in media", p.loc);
-                break;
+            case Kw::photons: scene_.pov.photons = readPhotonSettings(e.args[0].item()); break;
             case Kw::subsurface: notes_.note("subsurface", e.loc); break;
             default: break;
         }

@@ -10,8 +10,6 @@
 namespace rays {
 namespace {
 
-Vec3 at(const float* p) { return Vec3{p[0], p[1], p[2]}; }
-
 // Photons are put in kd order in place: the median of [lo, hi) (split along the longest side of
 // their box) sits at (lo + hi) / 2, those before it are on its low side, those after it on its high side.
 struct Range {

@@ -4,6 +4,7 @@
 // (Jensen, "Realistic Image Synthesis Using Photon Mapping", 2001, §7.2). Built before the
 // render, read-only during it.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -41,11 +42,36 @@ public:
     /// of the farthest one taken when g.max were found, else the search radius.
     Vec3 irradiance(Vec3 P, Vec3 N, const PhotonGather& g) const;
 
+    /// The light photons left in a medium bring to P, for the medium's in-scattering: Σ w(dir)·power
+    /// over the photons among the nearest g.max within g.radius, over the sphere's volume
+    /// (4/3)π·r³, r the distance of the farthest one taken when g.max were found, else the radius
+    /// (Jensen 2001, §10.4: the volume radiance estimate). w(dir) weighs a photon by the direction
+    /// it travelled in (the medium's phase function and scattering colour).
+    template <class Weigh>
+    Vec3 inScattered(Vec3 P, const PhotonGather& g, Weigh&& w) const {
+        if (photons_.empty() || !(g.radius > 0)) return {};
+        Found found[kMaxVolumeGather];
+        const int k = g.max < 1 ? 1 : (g.max > kMaxVolumeGather ? kMaxVolumeGather : g.max);
+        const int n = nearest(P, g.radius * g.radius, k, found);
+        if (n == 0) return {};
+        const double r2 = n == k ? double(found[0].d2) : g.radius * g.radius;
+        const double volume = 4.0 / 3.0 * 3.14159265358979323846 * r2 * std::sqrt(r2);
+        if (!(volume > 0)) return {};
+        Vec3 sum;
+        for (int i = 0; i < n; ++i) {
+            const Photon& ph = photons_[found[i].index];
+            sum += w(at(ph.dir)) * at(ph.power);
+        }
+        return sum / volume;
+    }
+
     /// A gather radius for these photons: twice the median distance, over up to 256 photons
     /// spread through the map, to their k-th nearest neighbour (0 for an empty map).
     double typicalRadius(int k) const;
 
 private:
+    static constexpr int kMaxVolumeGather = 200;  ///< photons per volume estimate, at most
+    static Vec3 at(const float* v) { return {v[0], v[1], v[2]}; }
     struct Found {
         float d2;
         uint32_t index;

@@ -16,8 +16,9 @@ inline constexpr size_t kMaxPhotonsShot = 5'000'000;
 /// ... and at most this many are kept (40 bytes each; twice that while they are joined).
 inline constexpr size_t kMaxPhotonsStored = 5'000'000;
 
-/// Shoots the photons of a POV-Ray scene with global photons into map (on `threads` threads, 0:
-/// all cores; the map is the same for any number) and points tracer at it; nothing for other scenes.
-void preparePhotons(Tracer& tracer, const Scene& scene, int threads, PhotonMap& map);
+/// Shoots the photons of a POV-Ray scene with global photons into map and, with `media` in the
+/// photons block, mediaMap (on `threads` threads, 0: all cores; the maps are the same for any
+/// number) and points tracer at them; nothing for other scenes.
+void preparePhotons(Tracer& tracer, const Scene& scene, int threads, PhotonMap& map, PhotonMap& mediaMap);
 
 }  // namespace rays

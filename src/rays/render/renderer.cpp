@@ -308,7 +308,7 @@ TileRenderer::TileRenderer(const Scene& scene, const Bvh& bvh, const RenderSetti
       povOutput_(scene.pov.enabled),
       assumedGamma_(scene.pov.assumedGamma),
       perThread_(size_t(resolveThreads(s.threads))) {
-    preparePhotons(tracer_, scene, s.threads, photons_);
+    preparePhotons(tracer_, scene, s.threads, photons_, mediaPhotons_);
     pretraceRadiosity(tracer_, scene, view_, s, radiosity_);
 }
 
@@ -347,8 +347,8 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
         Tracer::buildSharedOrigins(scene, bvh, pinholeRays ? &view.rays.location : nullptr,
                                    double(s.width) * double(s.height) * double(view.samples), s.threads);
     Tracer tracer(scene, bvh, s, &origins);
-    PhotonMap photons;  // POV-Ray's photons: shot before the render, read-only during it
-    preparePhotons(tracer, scene, s.threads, photons);
+    PhotonMap photons, mediaPhotons;  // POV-Ray's photons: shot before the render, read-only during it
+    preparePhotons(tracer, scene, s.threads, photons, mediaPhotons);
     IrradianceCache radiosity;  // POV-Ray's radiosity: filled before the final pass, read-only during it
     pretraceRadiosity(tracer, scene, view, s, radiosity);
     // POV-Ray scenes: each final pixel as POV-Ray writes it, sRGB(c^assumed_gamma), before anything

@@ -68,6 +68,7 @@ private:
     Tracer tracer_;
     IrradianceCache radiosity_;  ///< POV-Ray's radiosity records (pretraced by the constructor)
     PhotonMap photons_;          ///< POV-Ray's photons (shot by the constructor)
+    PhotonMap mediaPhotons_;     ///< and those left in media
     bool povOutput_;
     double assumedGamma_;
     std::vector<TraceContext> perThread_;

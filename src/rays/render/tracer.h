@@ -161,12 +161,21 @@ public:
     void setRadiosityCache(const IrradianceCache* cache) { radCache_ = cache; }
 
     /// POV-Ray's photons (tracer_photons.cpp): every light's photons shot at every target, those
-    /// left on surfaces after a reflection or refraction returned (POV-Ray scenes with photons).
-    std::vector<Photon> povShootPhotons(int threads) const;
+    /// left on surfaces after a reflection or refraction, and with `media` in the photons block
+    /// those left in scattering media on the way (POV-Ray scenes with photons).
+    struct PovShotPhotons {
+        std::vector<Photon> surface, media;
+    };
+    PovShotPhotons povShootPhotons(int threads) const;
     /// The photon map shading reads (render/photon_shooting.h builds it); null: no photons.
     void setPhotonMap(const PhotonMap* map, const PhotonGather& gather) {
         photonMap_ = map;
         photonGather_ = gather;
+    }
+    /// The photons left in media, which the media's samples read; null: none.
+    void setMediaPhotonMap(const PhotonMap* map, const PhotonGather& gather) {
+        mediaPhotonMap_ = map;
+        mediaPhotonGather_ = gather;
     }
 
 private:
@@ -403,8 +412,17 @@ private:
     /// light's photons blocks allow, up to maxLevel and down to bailout, and is left (power: its
     /// light times the area it stands for, solid·distance² or, for parallel lights, solid) on each
     /// collecting surface after the first reflection or refraction.
+    /// With media (not null), photons are also left in scattering media along its way after its
+    /// first reflection or refraction (povLeaveInMedia).
     void povTracePhoton(const Light& light, int target, const Ray& start, double solid, int maxLevel, double bailout,
-                        std::vector<Photon>& stored) const;
+                        std::vector<Photon>& stored, std::vector<Photon>* media) const;
+    /// Leaves photons along the stretch [0, length] of ray in scattering media (tracer_photons.cpp):
+    /// color is the light the photon carries there (dimmed by the media's extinction on the way),
+    /// area(d) the area it stands for at distance d from the light, travelled the distance at the
+    /// ray's origin.
+    template <class Area>
+    void povLeaveInMedia(const Ray& ray, double length, double travelled, Vec3& color, const Area& area,
+                         std::vector<Photon>& media) const;
     /// The photons' irradiance at P on the side N faces (0 without a photon map).
     Vec3 povPhotonLight(Vec3 P, Vec3 N) const;
     // POV-Ray's media (tracer_media.cpp; docs/povray-lighting.md, "Media").
@@ -513,6 +531,8 @@ private:
     const IrradianceCache* radCache_ = nullptr;
     const PhotonMap* photonMap_ = nullptr;
     PhotonGather photonGather_;
+    const PhotonMap* mediaPhotonMap_ = nullptr;
+    PhotonGather mediaPhotonGather_;
     double primaryReach_;  ///< POV-Ray camera rays meet nothing farther (primaryReach)
 };
 

@@ -145,6 +145,15 @@ Tracer::PovMediaPoint Tracer::povMediaPoint(const PovMediaSet& set, Vec3 P, Vec3
         for (int k = 0; k < scattererCount; ++k)
             out.source += povMediaPhase(*scatterers[k].media, c) * scatterers[k].color * light;
     }
+    // The light the photons left in media bring (tracer_photons.cpp povLeaveInMedia), scattered
+    // towards the viewer as a light's is: a photon travelling along d comes from −d.
+    if (mediaPhotonMap_)
+        out.source += mediaPhotonMap_->inScattered(P, mediaPhotonGather_, [&](Vec3 d) {
+            const double c = -dot(d, dir);
+            Vec3 w;
+            for (int k = 0; k < scattererCount; ++k) w += povMediaPhase(*scatterers[k].media, c) * scatterers[k].color;
+            return w;
+        });
     return out;
 }
 

@@ -649,9 +649,10 @@ Vec3 Tracer::povShadowTint(const Ray& shadow, double tMax, size_t light, TraceCo
     if (shadowed(shadow, tMax, light, ctx, intoSurface, fromLight, &blocker)) {
         // An opaque object in the way blocks the light whatever else lies there.
         if (!povShadowsWalk_ || (blocker >= 0 && povOpaque_[size_t(blocker)])) return {};
-        // Only once photons were kept: POV-Ray lights through refracting targets as usual when
-        // none were (measured: a clear box around the glass that blocks every photon).
-        const bool photonsRefract = photonMap_ && scene_.lights[light].photonRefraction;
+        // Only once photons were kept (on surfaces or in media): POV-Ray lights through refracting
+        // targets as usual when none were (measured: a clear box around the glass that blocks
+        // every photon).
+        const bool photonsRefract = (photonMap_ || mediaPhotonMap_) && scene_.lights[light].photonRefraction;
         tint = povTransmittance(shadow, tMax, photonsRefract);
     }
     // Atmospheric media dim only the lights with media_attenuation on (the manual; measured).

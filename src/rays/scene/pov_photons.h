@@ -7,6 +7,8 @@ namespace rays {
 
 /// The most photons one estimate gathers (gather's and expand_thresholds' numbers are clamped to it).
 inline constexpr int kMaxPhotonGather = 1000;
+/// The most photons a stretch of a photon's way through media leaves (media's max_steps is clamped to it).
+inline constexpr int kMaxMediaPhotonSteps = 1000;
 
 /// global_settings { photons { ... } }.
 struct PovPhotonSettings {
@@ -23,6 +25,10 @@ struct PovPhotonSettings {
     double radius = 0;         ///< the gather radius; 0: found from the photons
     double expandPercent = 0.2;  ///< expand_thresholds: the radius grows by this share ...
     int expandMin = 40;          ///< ... where fewer photons than this lie within it
+    /// media max_steps, factor: photons are also left in scattering media along their way, at
+    /// most mediaMaxSteps per stretch, spacing·mediaFactor apart (0: none).
+    int mediaMaxSteps = 0;
+    double mediaFactor = 1;
 };
 
 /// An object's photons block; nested objects take their parent's.
