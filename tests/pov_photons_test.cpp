@@ -250,6 +250,11 @@ TEST(PovPhotons, PhotonsInMediaLightTheMediaBehindARefractingTarget) {
     for (size_t i = 0; i < one.size(); i += 97)
         for (int a = 0; a < 3; ++a) ASSERT_EQ(one[i].power[a], two[i].power[a]) << i;
     EXPECT_EQ(mediaGlowAt(with, 1.4, 2), lit);
+    // None is left inside the ball (not hollow: the media leave it out).
+    for (const Photon& p : one) {
+        const double dx = p.position[0], dy = p.position[1] - 0.5, dz = p.position[2];
+        ASSERT_GT(dx * dx + dy * dy + dz * dz, 0.79 * 0.79) << p.position[0] << " " << p.position[1];
+    }
 }
 
 TEST(PhotonMap, EstimatesTheLightOfPhotonsInAVolume) {

@@ -58,6 +58,7 @@ struct InFlight {
     int level = 1;
     int bounces = 0;
     bool reached = false;  ///< it has met its target
+    int inSolid = 0;       ///< how deep it is inside objects that are not hollow (it refracted into)
 };
 
 constexpr int kMaxInFlight = 64;
@@ -284,11 +285,11 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
         InFlight f = todo[--count];
         for (;;) {
             const Hit h = bvh_.closest(scene_.objects, f.ray, kMinHitT, kInfinity);
-            // Once it has met its target it lights the media it goes through, as the light itself
-            // does: POV-Ray adds both (measured: advanced/optics' beam before its first mirror, in
+            // Once it has met its target it lights the media it goes through (outside objects it
+            // refracted into that are not hollow), as the light itself does: POV-Ray adds both (measured: advanced/optics' beam before its first mirror, in
             // the media box that is the target, is the light's and the photons'; a spotlight's
             // beam through a media box towards a glass target keeps its direct light).
-            if (media && f.reached && (h.valid() || !scene_.pov.media.empty()))
+            if (media && f.reached && f.inSolid == 0 && (h.valid() || !scene_.pov.media.empty()))
                 povLeaveInMedia(f.ray, h.valid() ? h.t : kPovMediaMissDistance, f.travelled, f.color, area, *media);
             if (!h.valid()) break;
             const Object& o = shadedObject(scene_.objects, h);
@@ -372,6 +373,9 @@ void Tracer::povTracePhoton(const Light& light, int target, const Ray& start, do
                     // Straight through a surface of index 1 it keeps its level and stays as it
                     // was (a photon that only passed clear surfaces is direct light: not kept).
                     if (eta != 1) f = next;
+                    // Inside an object that is not hollow the media around it are not (POV-Ray's
+                    // media leave such objects out: measured, advanced/optics' lenses show no beam).
+                    if (bends && !s.hollow && s.interior.mediaCount == 0) f.inSolid = std::max(0, f.inSolid + (entering ? 1 : -1));
                     f.ray = Ray{P + kSurfaceOffset * dir, dir};
                     f.color = next.color * passed;
                     continue;
