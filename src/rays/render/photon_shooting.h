@@ -13,7 +13,8 @@ class Tracer;
 
 /// At most this many photons leave the lights (a finer spacing is widened to keep to it) ...
 inline constexpr size_t kMaxPhotonsShot = 5'000'000;
-/// ... and at most this many are kept (40 bytes each; twice that while they are joined).
+/// ... and at most this many are kept on surfaces, and as many in media (40 bytes each; twice
+/// that while they are joined).
 inline constexpr size_t kMaxPhotonsStored = 5'000'000;
 
 /// Shoots the photons of a POV-Ray scene with global photons into map and, with `media` in the

@@ -412,8 +412,8 @@ private:
     /// light's photons blocks allow, up to maxLevel and down to bailout, and is left (power: its
     /// light times the area it stands for, solid·distance² or, for parallel lights, solid) on each
     /// collecting surface after the first reflection or refraction.
-    /// With media (not null), photons are also left in scattering media along its way after its
-    /// first reflection or refraction (povLeaveInMedia).
+    /// With media (not null), photons are also left in scattering media along its way once it has
+    /// met its target (povLeaveInMedia).
     void povTracePhoton(const Light& light, int target, const Ray& start, double solid, int maxLevel, double bailout,
                         std::vector<Photon>& stored, std::vector<Photon>* media) const;
     /// Leaves photons along the stretch [0, length] of ray in scattering media (tracer_photons.cpp):

@@ -17,8 +17,8 @@
 
 #include "rays/geometry/refract.h"
 #include "rays/render/photon_shooting.h"
-#include "rays/render/pov_media.h"
 #include "rays/render/pov_lighting.h"
+#include "rays/render/pov_media.h"
 #include "rays/render/pov_normal.h"
 #include "rays/render/renderer.h"
 #include "rays/render/tracer.h"
