@@ -457,6 +457,7 @@ private:
     /// first leaf with media).
     struct PovMediaHolder {
         int object, surface;
+        Bounds bounds;  ///< the object's world box
     };
     std::vector<PovMediaHolder> povMediaHolders() const;
     /// A camera ray starting inside an object with media travels in its interior (the last such

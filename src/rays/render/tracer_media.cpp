@@ -43,11 +43,11 @@ std::vector<Tracer::PovMediaHolder> Tracer::povMediaHolders() const {
         if (o.type == ShapeType::Csg) {
             for (const Object& leaf : o.csg->leaves)
                 if (holds(leaf.material)) {
-                    out.push_back(PovMediaHolder{int(i), leaf.material.pov});
+                    out.push_back(PovMediaHolder{int(i), leaf.material.pov, worldBounds(o)});
                     break;
                 }
         } else if (holds(o.material)) {
-            out.push_back(PovMediaHolder{int(i), o.material.pov});
+            out.push_back(PovMediaHolder{int(i), o.material.pov, worldBounds(o)});
         }
     }
     return out;

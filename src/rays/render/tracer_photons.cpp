@@ -22,6 +22,7 @@
 #include "rays/render/pov_normal.h"
 #include "rays/render/renderer.h"
 #include "rays/render/tracer.h"
+#include "rays/scene/shapes/box_clip.h"
 
 namespace rays {
 namespace {
@@ -232,11 +233,23 @@ void Tracer::povLeaveInMedia(const Ray& ray, double length, double travelled, Ve
                              std::vector<Photon>& media) const {
     const PovPhotonSettings& ps = scene_.pov.photons;
     if (!(length > 0) || !std::isfinite(length)) return;
-    const double spacing = std::sqrt(area(travelled)) * ps.mediaFactor;
-    const int steps = int(std::clamp(std::ceil(length / std::max(spacing, 1e-9)), 1.0, double(ps.mediaMaxSteps)));
-    const double h = length / steps;
+    // Without atmospheric media only the part of the stretch within the holders' boxes is stepped.
+    double from = 0, to = length;
+    if (scene_.pov.media.empty()) {
+        from = kInfinity, to = -kInfinity;
+        for (const PovMediaHolder& holder : povMediaHolders_) {
+            double a = 0, b = length;
+            if (!clipRayToBox(holder.bounds, ray, a, b)) continue;
+            from = std::min(from, a);
+            to = std::max(to, b);
+        }
+        if (!(from < to)) return;
+    }
+    const double spacing = std::sqrt(area(travelled + from)) * ps.mediaFactor;
+    const int steps = int(std::clamp(std::ceil((to - from) / std::max(spacing, 1e-9)), 1.0, double(ps.mediaMaxSteps)));
+    const double h = (to - from) / steps;
     for (int k = 0; k < steps; ++k) {
-        const double x = (k + 0.5) * h;
+        const double x = from + (k + 0.5) * h;
         const Vec3 P = ray.at(x);
         Vec3 extinction;
         bool scatters = false, held = false;
