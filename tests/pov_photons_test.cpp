@@ -35,8 +35,8 @@ std::string glass(const std::string& lightPhotons) {
            "  interior { ior 1.5 } photons { target refraction on } }\n";
 }
 
-// The floor's colour at (x, 0, z) seen from straight above, photons shot as a render shoots them.
-double floorAt(const Scene& s, double x, double z, int threads = 1) {
+// The colour seen looking straight down from (x, 5, z), photons shot as a render shoots them.
+Vec3 lookDown(const Scene& s, double x, double z, int threads = 1) {
     const Bvh bvh(s.objects);
     RenderSettings rs;
     rs.threads = threads;
@@ -44,8 +44,11 @@ double floorAt(const Scene& s, double x, double z, int threads = 1) {
     PhotonMap map, media;
     preparePhotons(tracer, s, threads, map, media);
     TraceContext ctx;
-    return tracer.tracePrimary(Ray{{x, 5, z}, {0, -1, 0}}, ctx, nullptr, nullptr).x;
+    return tracer.tracePrimary(Ray{{x, 5, z}, {0, -1, 0}}, ctx, nullptr, nullptr);
 }
+
+// The floor's colour at (x, 0, z) seen from straight above.
+double floorAt(const Scene& s, double x, double z, int threads = 1) { return lookDown(s, x, z, threads).x; }
 
 TEST(PovPhotons, AMirrorsReflectedLightAddsTheMirroredLightsCosine) {
     const std::string light = "light_source { <-6, 8, 0> rgb 0.5 }\n";
@@ -123,13 +126,7 @@ Vec3 causticThrough(const std::string& finish, const std::string& interior) {
                                    "sphere { <0, 3, 0>, 0.7 pigment { rgbf <1, 1, 1, 1> } finish { ambient 0 diffuse 0 " +
                                    finish + " }\n  interior { ior 1.5 " + interior +
                                    " } photons { target refraction on } }\n");
-    const Bvh bvh(s.objects);
-    const RenderSettings rs;
-    Tracer tracer(s, bvh, rs);
-    PhotonMap map, media;
-    preparePhotons(tracer, s, 1, map, media);
-    TraceContext ctx;
-    return tracer.tracePrimary(Ray{{3.6, 5, 0}, {0, -1, 0}}, ctx, nullptr, nullptr);
+    return lookDown(s, 3.6, 0);
 }
 
 TEST(PovPhotons, PhotonsFadeInsideAndLoseWhatConserveEnergyReflects) {
@@ -215,16 +212,7 @@ std::string mediaScene(const std::string& photonsMedia) {
 }
 
 // The light seen looking down through the media at (x, ·, 0) (nothing below but the background).
-double mediaGlowAt(const Scene& s, double x, int threads = 1) {
-    const Bvh bvh(s.objects);
-    RenderSettings rs;
-    rs.threads = threads;
-    Tracer tracer(s, bvh, rs);
-    PhotonMap map, media;
-    preparePhotons(tracer, s, threads, map, media);
-    TraceContext ctx;
-    return tracer.tracePrimary(Ray{{x, 5, 0}, {0, -1, 0}}, ctx, nullptr, nullptr).x;
-}
+double mediaGlowAt(const Scene& s, double x, int threads = 1) { return lookDown(s, x, 0, threads).x; }
 
 TEST(PovPhotons, PhotonsInMediaLightTheMediaBehindARefractingTarget) {
     std::vector<std::string> warnings;
