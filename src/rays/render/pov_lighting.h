@@ -41,7 +41,6 @@ Vec3 povAmbient(const PovFinish& f, Vec3 C, Vec3 ambientLight);
 /// transmit: 1 − filter − transmit; in legacy scenes (#version below 3.7) 1 − (filter·max(C) + transmit).
 double povOpacity(Vec3 C, double filter, double transmit, double version);
 
-/// How a surface tints the light that passes through it: filter·C + transmit, per channel.
 /// Whether light can pass a surface at all: its pigment (or some colour of its pattern) filters
 /// or transmits.
 inline bool povLetsLightThrough(const Material& m, const PovSurface& s) {
@@ -54,6 +53,7 @@ inline bool povGathersPhotons(const PovSurface& s, const Material& m) {
     return s.photons.collect && !(s.photons.refraction && povLetsLightThrough(m, s));
 }
 
+/// How a surface tints the light that passes through it: filter·C + transmit, per channel.
 inline Vec3 povFilterTint(Vec3 C, double filter, double transmit) { return filter * C + Vec3(transmit); }
 
 /// The empirical curve behind `metallic` (measured: docs/povray-lighting.md): 0 at normal incidence

@@ -144,9 +144,9 @@ Tracer::PovShotPhotons Tracer::povShootPhotons(int threads) const {
     // reaches the limit). Counted once per strip: the threads share no counter per photon.
     std::atomic<size_t> kept{0};
     std::atomic<size_t> keptInMedia{0};
-    const auto full = [&](const std::vector<Photon>& out, const std::vector<Photon>& media) {
+    const auto full = [&](const std::vector<Photon>& out, const std::vector<Photon>* media) {
         return kept.load(std::memory_order_relaxed) + out.size() >= kMaxPhotonsStored ||
-               keptInMedia.load(std::memory_order_relaxed) + media.size() >= kMaxPhotonsStored;
+               (media && keptInMedia.load(std::memory_order_relaxed) + media->size() >= kMaxPhotonsStored);
     };
     const auto strip = [&](int index) {
         const Strip& strip = strips[size_t(index)];
@@ -154,8 +154,6 @@ Tracer::PovShotPhotons Tracer::povShootPhotons(int threads) const {
         const Target& t = targets[size_t(strip.target)];
         std::vector<Photon>& out = left[size_t(index)];
         std::vector<Photon>* media = inMedia ? &leftInMedia[size_t(index)] : nullptr;
-        static const std::vector<Photon> none;
-        const std::vector<Photon>& mediaKept = media ? *media : none;
         const double s = spacing * t.scale;
         double d, thetaMax;
         cone(light, t, d, thetaMax);
@@ -174,7 +172,7 @@ Tracer::PovShotPhotons Tracer::povShootPhotons(int threads) const {
                 if (a * a + b * b > t.radius * t.radius) continue;
                 const Vec3 origin = t.centre + a * u + b * v - back * light.direction;
                 povTracePhoton(light, t.object, Ray{origin, light.direction}, s * s, maxLevel, bailout, out, media);
-                if (full(out, mediaKept)) return;
+                if (full(out, media)) return;
             }
             return;
         }
@@ -195,7 +193,7 @@ Tracer::PovShotPhotons Tracer::povShootPhotons(int threads) const {
             const double phi = (k + 0.5 + ps.jitter * (unitHash(stream, 2 * n + 1) - 0.5)) * 2 * std::numbers::pi / around;
             const Vec3 dir = std::cos(theta) * w + std::sin(theta) * (std::cos(phi) * u + std::sin(phi) * v);
             povTracePhoton(light, t.object, Ray{light.position, dir}, solid, maxLevel, bailout, out, media);
-            if (full(out, mediaKept)) return;
+            if (full(out, media)) return;
         }
     };
     const std::function<void(int, int)> shoot = [&](int index, int) {
