@@ -658,8 +658,8 @@ TEST(PovCsgParseTime, InsideAndTraceAnswerForCsgObjects) {
     EXPECT_TRUE(near(s.objects[1].p0, {0.3, 10.2, 0}));  // the cut face at z = 0
 }
 
-// trace() and inside() need the shape only: an object whose look Rays draws otherwise (here a
-// finish's subsurface, noted) still answers; one whose shape is left out does not (<0, 0, 0>).
+// trace() and inside() need the shape only: an object whose look is anything (here a finish's
+// subsurface) still answers; one whose shape is left out does not (<0, 0, 0>).
 TEST(PovCsgParseTime, TraceAnswersWhateverTheTextureAndNotForShapesLeftOut) {
     std::vector<std::string> warnings;
     const Scene s = build(

@@ -243,7 +243,14 @@ void applyFinish(const Item& f, PovFinish& fin, NotRendered& notes) {
                 break;
             }
             case Kw::crand: fin.crand = std::max(0.0, arg(0)); break;
-            case Kw::subsurface: notes.note("subsurface", e.loc); break;
+            case Kw::subsurface:  // subsurface { translucency C }
+                if (!e.args.empty() && e.args[0].type == VType::Item)
+                    for (const Entry& se : e.args[0].item().entries)
+                        if (!se.positional() && se.kw() == Kw::translucency && !se.args.empty()) {
+                            fin.subsurface = true;
+                            fin.translucency = toColor(se.args[0]).rgb;
+                        }
+                break;
             case Kw::fresnel: fin.reflectionFresnel = arg(0) != 0; break;
             case Kw::refraction: case Kw::ior: case Kw::caustics: case Kw::fade_distance: case Kw::fade_power:
                 notes.note(std::string("finish ") + std::string(sdl::keywordName(e.kw())) + " (POV-Ray 3.0 syntax)", e.loc);

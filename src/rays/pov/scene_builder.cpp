@@ -11,6 +11,7 @@
 #include "rays/pov/photon_settings.h"
 #include "rays/pov/radiosity_settings.h"
 #include "rays/pov/scene_builder_parts.h"
+#include "rays/pov/subsurface_settings.h"
 
 namespace rays::pov {
 
@@ -498,7 +499,8 @@ void SceneBuilder::globalSettings(const Item& g) {
                 break;
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
             case Kw::photons: scene_.pov.photons = readPhotonSettings(e.args[0].item()); break;
-            case Kw::subsurface: notes_.note("subsurface", e.loc); break;
+            case Kw::subsurface: readSubsurfaceSettings(e.args[0].item(), scene_.pov.subsurface); break;
+            case Kw::mm_per_unit: scene_.pov.subsurface.mmPerUnit = toFloat(e.args[0]); break;
             default: break;
         }
     }

@@ -372,6 +372,12 @@ private:
     /// when countBlocked).
     int povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& ctx, Vec3& color,
                   bool countBlocked) const;
+    /// Whether the diffuse light of surface s at pt comes from subsurface light transport (a
+    /// finish with subsurface, global_settings' subsurface block, not a radiosity gathering point).
+    bool povSubsurfaceLit(const PovSurface& s, const PovPoint& pt) const;
+    /// The diffuse light of s (pigment C) at pt seen from V by subsurface light transport
+    /// (render/tracer_subsurface.cpp): it replaces every light's diffuse term there.
+    Vec3 povSubsurfaceDiffuse(const PovPoint& pt, const PovSurface& s, Vec3 C, Vec3 V, TraceContext& ctx) const;
     /// projected_through: the distance from P towards the light to the first of the light's
     /// objects, or negative when the way crosses none of them.
     double povProjectorDistance(const Light& light, Vec3 P) const;

@@ -136,6 +136,13 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
     Vec3 scale(1.0);
     if (pt.interior >= 0)
         for (int i = 0; i < 3; ++i) scale[i] = pt.viewFade[i] > 0 ? 1.0 / pt.viewFade[i] : 1.0;
+    // Layers lit by subsurface light transport: their diffuse light once, not per light (povLights).
+    bool subsurface[kMaxLayers] = {};
+    for (int k = 0; k < count; ++k) {
+        const PovLayerAt& a = layers[k];
+        subsurface[k] = povSubsurfaceLit(*a.surface, pt);
+        if (subsurface[k] && a.opacity != 0) color += a.through * (a.opacity * povSubsurfaceDiffuse(pt, *a.surface, a.C, V, ctx));
+    }
     int blocked = 0;
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& light = scene_.lights[li];
@@ -159,7 +166,7 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
             const PovLightTerms t = povLightTerms(*a.surface, a.C, a.N, L, V, reach * irid);
             const double crand = a.surface->finish.crand;
             const double grain = crand != 0 ? 1 - crand * ctx.rng.next() : 1.0;
-            Vec3 add = (a.opacity * grain) * t.diffuse;
+            Vec3 add = subsurface[k] ? Vec3{} : (a.opacity * grain) * t.diffuse;
             if (!light.shadowless && pt.highlights) add += t.highlight;  // none from shadowless lights or for radiosity
             color += a.through * add;
         }

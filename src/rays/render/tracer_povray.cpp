@@ -465,6 +465,10 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
     Vec3 scale(1.0);
     if (pt.interior >= 0)
         for (int i = 0; i < 3; ++i) scale[i] = pt.viewFade[i] > 0 ? 1.0 / pt.viewFade[i] : 1.0;
+    // Subsurface light transport replaces each light's diffuse term by the light that entered
+    // around the point (render/tracer_subsurface.cpp); the highlights stay.
+    const bool subsurface = povSubsurfaceLit(s, pt);
+    if (subsurface && opacity != 0) color += opacity * povSubsurfaceDiffuse(pt, s, pt.C, V, ctx);
     int blocked = 0;
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& light = scene_.lights[li];
@@ -488,7 +492,7 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
         if (!useful || reach == Vec3{}) continue;
         const PovLightTerms t = povLightTerms(s, pt.C, N, L, V, reach * povIridTint(f, scene_.pov.iridWavelength, N, L, V, P));
         const double grain = f.crand != 0 ? 1 - f.crand * ctx.rng.next() : 1.0;  // crand
-        color += (opacity * grain) * t.diffuse;
+        if (!subsurface) color += (opacity * grain) * t.diffuse;
         // Shadowless lights make no highlights (the manual; measured), nor do points radiosity gathers from.
         if (!light.shadowless && pt.highlights) color += t.highlight;
     }

@@ -11,6 +11,7 @@
 #include "rays/pattern/noise.h"
 #include "rays/scene/pov_photons.h"
 #include "rays/scene/pov_radiosity.h"
+#include "rays/scene/pov_subsurface.h"
 
 namespace rays {
 
@@ -34,6 +35,10 @@ struct PovFinish {
     /// irid { amount thickness T turbulence U }: thin-film interference tinting each light
     /// (render/pov_lighting.h, povIridTint); amount 0: none.
     double irid = 0, iridThickness = 0, iridTurbulence = 0;
+    /// subsurface { translucency C }: each channel's mean free path below the surface in
+    /// millimetres (render/pov_subsurface.h); subsurface false: none given.
+    bool subsurface = false;
+    Vec3 translucency{0, 0, 0};
 
     bool operator==(const PovFinish&) const = default;
 };
@@ -149,6 +154,7 @@ struct PovGlobals {
     bool skyLayersAsTexture = true;
     PovRadiosity radiosity;     ///< global_settings' radiosity block (render/tracer_radiosity.cpp)
     PovPhotonSettings photons;  ///< global_settings' photons block (render/tracer_photons.cpp)
+    PovSubsurfaceSettings subsurface;  ///< global_settings' subsurface block and mm_per_unit (render/pov_subsurface.h)
 };
 
 }  // namespace rays
