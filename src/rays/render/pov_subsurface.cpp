@@ -22,8 +22,12 @@ double dipoleAlbedoFor(double Rd, double A) {
 }
 
 Dipole makeDipole(double Rd, double meanFreePath, double A) {
+    return dipoleOfAlbedo(dipoleAlbedoFor(Rd, A), meanFreePath, A);
+}
+
+Dipole dipoleOfAlbedo(double albedo, double meanFreePath, double A) {
     Dipole d;
-    d.albedo = dipoleAlbedoFor(Rd, A);
+    d.albedo = albedo;
     d.sigmaT = 1 / meanFreePath;
     d.sigmaTr = d.sigmaT * std::sqrt(3 * (1 - d.albedo));
     d.zr = meanFreePath;

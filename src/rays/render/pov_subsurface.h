@@ -28,6 +28,8 @@ double dipoleAlbedoFor(double Rd, double A);
 /// The dipole of a channel that shows total diffuse reflectance Rd and whose mean free path
 /// 1/σ′t is meanFreePath scene units (> 0).
 Dipole makeDipole(double Rd, double meanFreePath, double A);
+/// The dipole of a channel of reduced albedo α′ (in [0, 1]) and mean free path 1/σ′t (> 0).
+Dipole dipoleOfAlbedo(double albedo, double meanFreePath, double A);
 
 /// Rd(r): the light leaving the surface at distance r from where it entered, per unit of entering
 /// flux and of area (Jensen et al. 2001, eq. 5): its integral over the plane is the total above.

@@ -4,14 +4,14 @@
 //
 // The choices POV-Ray's reference leaves open, measured with povray 3.7 (boxes, spheres and slabs
 // lit by a parallel light, docs/povray-lighting.md "Subsurface light transport"): diffuse·pigment
-// is the total diffuse reflectance from which each channel's albedo is found; translucency is each
+// is the total diffuse reflectance from which each channel's albedo is found (kAlbedoA); translucency is each
 // channel's mean free path 1/σ′t in millimetres (mm_per_unit of them to a unit); the light goes in
 // and out through the Fresnel transmission of the interior's ior, so a wide face lit head-on shows
 // (1 − F(0))²·diffuse·pigment; near edges and in thin parts light leaves elsewhere and the surface
 // darkens, and thin parts lit from behind glow.
 //
 // Integration (King et al. 2013): each sample picks an axis (the normal with probability 1/2,
-// each tangent with 1/4), a channel, a radius r from that channel's e^(−σtr·r) and an angle; a
+// each tangent with 1/4), a radius r from one of the channels' e^(−σtr·r) and e^(−σ′t·r), and an angle; a
 // probe ray along the axis through the point at r from the shaded point, within the sphere of
 // radius rMax about it, meets the object's surface at any number of points, each weighed by the
 // combined density of all axes and channels (multiple importance sampling, balance heuristic).
@@ -43,9 +43,9 @@ double radicalInverse(unsigned i, unsigned base) {
 }
 
 // One sample's numbers, the same at every shaded point (the Halton sequence in bases 2, 3, 5 and 7
-// from index 1): the axis and channel choices, the exponential radius for σtr = 1 and the angle.
+// from index 1): the axis and rate choices, the exponential radius for rate 1 and the angle.
 struct SubsurfaceSample {
-    double axis, channel, radius, cosPhi, sinPhi;
+    double axis, rate, radius, cosPhi, sinPhi;
 };
 
 const std::vector<SubsurfaceSample>& subsurfaceSamples() {
@@ -62,6 +62,15 @@ const std::vector<SubsurfaceSample>& subsurfaceSamples() {
     return samples;
 }
 
+// The albedo α′ of a channel is the one whose total diffuse reflectance, with this boundary term,
+// is diffuse·pigment (measured: POV-Ray's wide face lit head-on shows (1 − F(0))² times 0.0082,
+// 0.144, 0.335, 0.519, 0.640, 0.841 and 1.02 for diffuse·pigment 0.006, 0.12, 0.3, 0.48, 0.6, 0.8
+// and 1, whatever the ior; albedos found with A = 1.5 and rendered with A = 1 give 0.006, 0.133,
+// 0.335, 0.524, 0.642, 0.828 and 0.97: the closest of A = 1, 1.5, 2, 2.6 and 3).
+constexpr double kAlbedoA = 1.5;
+// The highest albedo taken: without absorption light would spread without end (diffusion length
+// 1/σtr at most 58 mean free paths; total diffuse reflectance 0.97).
+constexpr double kMaxAlbedo = 1 - 1e-4;
 // The shortest mean free path taken (scene units): a translucency of 0 spreads no light to speak of.
 constexpr double kMinFreePath = 1e-5;
 // Beyond this many diffusion lengths of the widest channel the profile is left out (e^−9 ≈ 1.2e-4).
@@ -89,12 +98,21 @@ Vec3 Tracer::povSubsurfaceDiffuse(const PovPoint& pt, const PovSurface& s, Vec3 
     for (int c = 0; c < 3; ++c) {
         const double mfp = std::max(s.finish.translucency[c] / g.mmPerUnit, kMinFreePath);
         if (!(s.finish.diffuse * C[c] > 0)) continue;
-        dip[c] = makeDipole(s.finish.diffuse * C[c], mfp, A);
-        if (!(dip[c].sigmaTr > 0)) dip[c].sigmaTr = 1e-3 * dip[c].sigmaT;  // α′ = 1: no absorption
+        const double albedo = std::min(dipoleAlbedoFor(s.finish.diffuse * C[c], kAlbedoA), kMaxAlbedo);
+        dip[c] = dipoleOfAlbedo(albedo, mfp, A);
         widest = std::max(widest, 1 / dip[c].sigmaTr);
         channels[usable++] = c;
     }
     if (usable == 0) return {};
+    // The radii are drawn from exponentials of two rates per channel: σtr, the profile's decay far
+    // out, and σ′t, its width near the point, which is all there is to see of a channel of high
+    // albedo (its profile falls as 1/r³ from r ≈ 1/σ′t out to 1/σtr).
+    double rates[6];
+    int rateCount = 0;
+    for (int k = 0; k < usable; ++k) {
+        rates[rateCount++] = dip[channels[k]].sigmaTr;
+        rates[rateCount++] = dip[channels[k]].sigmaT;
+    }
     const double rMax = kReachLengths * widest;
     const Object& object = scene_.objects[size_t(pt.object)];
     Vec3 axes[3];
@@ -110,11 +128,8 @@ Vec3 Tracer::povSubsurfaceDiffuse(const PovPoint& pt, const PovSurface& s, Vec3 
             const double r = std::sqrt(std::max(0.0, dot(d, d) - along * along));
             if (!(r > 0)) return std::numeric_limits<double>::infinity();
             double radial = 0;
-            for (int k = 0; k < usable; ++k) {
-                const double st = dip[channels[k]].sigmaTr;
-                radial += st * std::exp(-st * r);
-            }
-            p += kAxisChance[a] * std::fabs(dot(n, axes[a])) * radial / (usable * 2 * std::numbers::pi * r);
+            for (int k = 0; k < rateCount; ++k) radial += rates[k] * std::exp(-rates[k] * r);
+            p += kAxisChance[a] * std::fabs(dot(n, axes[a])) * radial / (rateCount * 2 * std::numbers::pi * r);
         }
         return p;
     };
@@ -145,8 +160,7 @@ Vec3 Tracer::povSubsurfaceDiffuse(const PovPoint& pt, const PovSurface& s, Vec3 
     for (int i = 0; i < n; ++i) {
         const SubsurfaceSample& smp = table[size_t(i)];
         const int a = smp.axis < 0.5 ? 0 : (smp.axis < 0.75 ? 1 : 2);
-        const int c = channels[std::min(usable - 1, int(smp.channel * usable))];
-        const double r = smp.radius / dip[c].sigmaTr;
+        const double r = smp.radius / rates[std::min(rateCount - 1, int(smp.rate * rateCount))];
         if (!(r < rMax)) continue;
         const Vec3 u = axes[(a + 1) % 3], v = axes[(a + 2) % 3];
         const double h = std::sqrt(rMax * rMax - r * r);
