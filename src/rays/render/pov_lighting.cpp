@@ -10,6 +10,11 @@ namespace rays {
 
 namespace {
 
+// x^n for x in (0, 1] and n > 0, without pow where it is 0 anyway: x^n ≤ e^(−n(1 − x)) (as
+// ln x ≤ x − 1), and beyond n(1 − x) = 746 that is below half the smallest double. Highlights of
+// tiny roughness (exponents of 10⁵) are 0 but in a sliver about the mirror direction.
+double highlightPower(double x, double n) { return n * (1 - x) > 746 ? 0.0 : std::pow(x, n); }
+
 // Highlights of one light (unit N, L, V; nl = N·L), in the light's colour, metallic-tinted.
 // Phong: the manual's "mirror direction from the light to the viewer", (R·V)^phong_size; specular:
 // (N·H)^(1/roughness). Both measured exactly so (docs/povray-lighting.md, "Highlights").
@@ -17,13 +22,13 @@ Vec3 highlights(const PovFinish& f, Vec3 C, Vec3 N, Vec3 L, Vec3 V, double nl, V
     double amount = 0;
     if (f.phong > 0) {
         const double rv = dot(2.0 * nl * N - L, V);
-        if (rv > 0) amount += f.phong * std::pow(rv, f.phongSize);
+        if (rv > 0) amount += f.phong * highlightPower(rv, f.phongSize);
     }
     if (f.specular > 0) {
         const Vec3 h = L + V;
         const double len = length(h);
         const double nh = len > 0 ? dot(N, h) / len : 0.0;
-        if (nh > 0) amount += f.specular * std::pow(nh, 1.0 / f.roughness);
+        if (nh > 0) amount += f.specular * highlightPower(nh, 1.0 / f.roughness);
     }
     if (amount == 0) return {};
     return amount * lightColor * povMetallicTint(f.metallic, C, nl);
