@@ -134,6 +134,10 @@ Vec3 Tracer::povSubsurfaceDiffuse(const PovPoint& pt, const PovSurface& s, Vec3 
         return p;
     };
     // The light entering the surface at X (outer normal n): each light's, through the boundary.
+    // Flat shapes have no outer side that counts (a triangle's normal follows the order of its
+    // corners): light enters them from either side; solids take it through their outer side only.
+    const bool twoSided = object.type == ShapeType::Triangle || object.type == ShapeType::Mesh ||
+                          object.type == ShapeType::Disc || object.type == ShapeType::Polygon;
     auto entering = [&](Vec3 X, Vec3 n) {
         Vec3 E;
         for (size_t li = 0; li < scene_.lights.size(); ++li) {
@@ -143,9 +147,11 @@ Vec3 Tracer::povSubsurfaceDiffuse(const PovPoint& pt, const PovSurface& s, Vec3 
             const double dist = length(L);
             if (dist == 0) continue;
             L = L / dist;
-            const double nl = dot(n, L);
+            const bool behind = twoSided && dot(n, L) < 0;
+            const Vec3 side = behind ? -n : n;
+            const double nl = dot(side, L);
             if (!(nl > 0)) continue;
-            const Vec3 reach = povLightReaching(light, li, X, n, false, ctx, true);
+            const Vec3 reach = povLightReaching(light, li, X, side, false, ctx, true);
             if (reach == Vec3{}) continue;
             E += (nl * transmittedShare(nl, eta)) * reach;
         }
@@ -183,12 +189,16 @@ Vec3 Tracer::povSubsurfaceDiffuse(const PovPoint& pt, const PovSurface& s, Vec3 
             sum += (1 / p) * profile * E;
         }
     }
-    // POV-Ray 3.7 lights a plane twice as brightly as the face of a solid (measured: a plane lit
-    // head-on shows 1.92 to 2.0 times what a box's face shows, for translucency 0.1 to 5 mm and
-    // diffuse 0.3 to 0.6, and the same on a plane seen obliquely); Rays follows it.
-    const double planeGain = object.type == ShapeType::Plane ? 2.0 : 1.0;
+    // POV-Ray 3.7 lights a surface with nothing of the object behind it twice as brightly as the
+    // face of a solid (measured, head-on: a plane, a triangle, a disc, a polygon and an open mesh
+    // show 1.92 to 2.0 times what the face of a box, a sphere, a cylinder or a closed mesh shows,
+    // for translucency 0.1 to 5 mm; a plane seen obliquely the same), as if it averaged only
+    // those of its probes that meet the object; Rays follows it, looking once straight inwards.
+    ShapeHit behind;
+    const Ray inwards{pt.P - kSurfaceOffset * pt.Nfacing, -pt.Nfacing};
+    const double gain = intersect(object, inwards, 0, std::numeric_limits<double>::infinity(), behind) ? 1.0 : 2.0;
     const double out = transmittedShare(dot(pt.Nfacing, V), eta);
-    return (planeGain * out / n) * sum;
+    return (gain * out / n) * sum;
 }
 
 }  // namespace rays
