@@ -88,6 +88,21 @@ TEST(CliPovForm, SwitchesRenderTheNamedImage) {
     EXPECT_EQ(d.files(), (std::vector<std::string>{"ball.pov", "out.png"}));
 }
 
+TEST(CliPovForm, OutputToFileOffRendersAndWritesNoImage) {
+    SceneDir d;
+    writeFile(d / "ball.png", "the user's own file");
+    const ProcessResult r = RUN_OK(d, "+Iball.pov", "+W16", "+H12", "-F");
+    EXPECT_EQ(readFile(d / "ball.png"), "the user's own file");  // not overwritten
+    EXPECT_TRUE(contains(r.err, "rays: rendered, no image written (Output_to_File=off) (16x12)")) << r.err;
+    writeFile(d / "quiet.ini", "Input_File_Name=ball.pov\nWidth=8\nHeight=6\nOutput_to_File=off\nFinal_Frame=2\n");
+    const ProcessResult a = RUN_OK(d, "quiet.ini");
+    EXPECT_EQ(d.files(), (std::vector<std::string>{"ball.png", "ball.pov", "quiet.ini"}));
+    EXPECT_TRUE(contains(a.err, "rays: frame 2 of 2 (frame_number 2, clock 1): rendered in ")) << a.err;
+    // Render's -o names a file: written, whatever came before it.
+    RUN_OK(d, "render", "ball.pov", "8", "6", "-F", "-o", "named.png");
+    EXPECT_EQ(sizeOf(d / "named.png"), Size(8, 6));
+}
+
 TEST(CliPovForm, TheDefaultOutputIsTheSceneNameInTheCurrentFolder) {
     SceneDir d;
     writeFile(d / "sub/globe.pov", kBall);

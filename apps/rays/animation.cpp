@@ -33,7 +33,7 @@ RenderJob frameJob(const RenderJob& base, const FramePlan& plan, size_t i) {
 int runFrames(const RenderJob& base, const FramePlan& plan, bool resume, const FrameRenderer& render) {
     if (!plan.animated) {
         const RenderJob job = frameJob(base, plan, 0);
-        if (resume && fileExists(job.outputPath)) {
+        if (resume && job.outputToFile && fileExists(job.outputPath)) {
             if (!job.quiet) std::fprintf(stderr, "rays: %s exists; skipped (resume)\n", printableMessage(job.outputPath).c_str());
             return 0;
         }
@@ -45,7 +45,7 @@ int runFrames(const RenderJob& base, const FramePlan& plan, bool resume, const F
         RenderJob job = frameJob(base, plan, i);
         job.summary = false;
         const std::string label = frameLabel(plan, i);
-        if (resume && fileExists(job.outputPath)) {
+        if (resume && job.outputToFile && fileExists(job.outputPath)) {
             if (!job.quiet) std::fprintf(stderr, "rays: %s: %s exists; skipped (resume)\n", label.c_str(), printableMessage(job.outputPath).c_str());
             continue;
         }
@@ -64,7 +64,10 @@ int runFrames(const RenderJob& base, const FramePlan& plan, bool resume, const F
         ++written;
         if (!job.quiet) {
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            std::fprintf(stderr, "rays: %s: wrote %s in %.2f s\n", label.c_str(), printableMessage(job.outputPath).c_str(), seconds);
+            if (job.outputToFile)
+                std::fprintf(stderr, "rays: %s: wrote %s in %.2f s\n", label.c_str(), printableMessage(job.outputPath).c_str(), seconds);
+            else
+                std::fprintf(stderr, "rays: %s: rendered in %.2f s, no image written (Output_to_File=off)\n", label.c_str(), seconds);
         }
     }
     return 0;

@@ -342,9 +342,7 @@ bool PovOptionReader::setOutput(const Value& v) {
         case Key::EndRow: o_.endRow = {true, v.bound("row")}; return true;
         case Key::StartColumn: o_.startColumn = {true, v.bound("column")}; return true;
         case Key::EndColumn: o_.endColumn = {true, v.bound("column")}; return true;
-        case Key::OutputToFile:
-            if (!v.flag) warnOnce(name, "Output_to_File=off is not supported: Rays always writes the image", v.where);
-            return true;
+        case Key::OutputToFile: o_.outputToFile = v.flag; return true;
         case Key::OutputFileType: setFileType(v); return true;
         case Key::OutputAlpha:
             if (v.flag) warnOnce(name, "Output_Alpha is not supported: the image has no alpha channel", v.where);
@@ -476,6 +474,7 @@ void PovOptionReader::readIniText(const std::string& text, const std::string& pa
 void PovOptionReader::setOutputExact(const std::string& path) {
     o_.outputFile = path;
     o_.outputExact = true;
+    o_.outputToFile = true;  // naming a file asks for it
 }
 
 void PovOptionReader::setWidth(int width) { o_.width = width; }

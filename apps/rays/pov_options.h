@@ -34,6 +34,8 @@ struct PovOptions {
     std::string inputFile;     ///< Input_File_Name, +I or a .pov argument (".pov" added when it has no extension)
     std::string outputFile;    ///< Output_File_Name, +O or render's -o; empty: not given
     bool outputExact = false;  ///< outputFile came from render's -o: used as written
+    /// Output_to_File, +F / -F: off renders without writing the image (a later -o turns it on).
+    bool outputToFile = true;
     int width = -1, height = -1;  ///< Width, Height, +W, +H (and render's W H, -W, -H); -1: not given
     PovAntialias antialias;
     AnimationOptions animation;

@@ -100,6 +100,7 @@ void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job) {
     if (o.threads >= 0) s.threads = o.threads;
     if (o.jpegQuality > 0) job.jpegQuality = o.jpegQuality;
     job.outputPath = povOutputPath(o, povForm);
+    job.outputToFile = o.outputToFile;
     job.language.libraryPaths = o.libraryPaths;
     job.language.declares = o.declares;
     job.language.version = o.version;

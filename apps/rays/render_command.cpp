@@ -97,7 +97,7 @@ void checkOutputIsNoTexture(const std::string& output, const Scene& scene) {
 // throws Interrupted; the output itself is never written.
 void stopIfInterrupted(const RenderJob& job, const Scene* scene, const ImageF* img) {
     if (!interrupted()) return;
-    if (job.savePartial && img && scene && img->width > 0) {
+    if (job.savePartial && job.outputToFile && img && scene && img->width > 0) {
         const std::string partial = partialImagePath(job.outputPath);
         try {
             checkOutputIsNotInput(partial, job.scenePath);
@@ -234,9 +234,10 @@ int runRender(const RenderJob& job) {
     const int ranks = job.alone ? 1 : worldSize();
     const bool writer = job.alone || worldRank() == 0;
     const unsigned aovKinds = parseAovList(job.aovs);
-    const bool aovFiles = aovKinds != 0 && !isExrPath(job.outputPath);  // one PFM per AOV
+    const bool aovFiles = job.outputToFile && aovKinds != 0 && !isExrPath(job.outputPath);  // one PFM per AOV
+    const bool image = writer && job.outputToFile;  // Output_to_File=off: no image file
     if (writer) {
-        checkImageOutput(job.outputPath, "output", job);
+        if (image) checkImageOutput(job.outputPath, "output", job);
         if (aovFiles)
             for (AovBit bit : kAovOrder)
                 if (aovKinds & bit) {
@@ -244,9 +245,9 @@ int runRender(const RenderJob& job) {
                     checkOutputIsNotInput(aovFilePath(job.outputPath, bit), job.objPath);
                 }
         if (!job.edges.maskPath.empty()) checkImageOutput(job.edges.maskPath, "mask", job);
-        std::vector<NamedOutput> outputs = {{job.outputPath, "output image"},
+        std::vector<NamedOutput> outputs = {{image ? job.outputPath : std::string(), "output image"},
                                             {job.edges.maskPath, "edge mask"},
-                                            {job.savePartial ? partialImagePath(job.outputPath) : std::string(), "partial image"}};
+                                            {image && job.savePartial ? partialImagePath(job.outputPath) : std::string(), "partial image"}};
         if (aovFiles)
             for (AovBit bit : kAovOrder)
                 if (aovKinds & bit) outputs.push_back({aovFilePath(job.outputPath, bit), "AOV file"});
@@ -255,11 +256,11 @@ int runRender(const RenderJob& job) {
 
     auto t0 = Clock::now();
     std::optional<QuitAtOnce> loading(std::in_place);  // nothing written yet: a signal ends it at once
-    const Scene scene = loadJobScene(job, {job.outputPath, job.edges.maskPath});
+    const Scene scene = loadJobScene(job, {image ? job.outputPath : std::string(), job.edges.maskPath});
     if (s.cameraIndex < 0 || size_t(s.cameraIndex) >= scene.cameras.size())
         failFile(job.scenePath, "camera " + std::to_string(s.cameraIndex) + " does not exist (the scene has " +
                                     std::to_string(scene.cameras.size()) + ")");
-    checkOutputIsNoTexture(job.outputPath, scene);
+    if (image) checkOutputIsNoTexture(job.outputPath, scene);
     if (!job.edges.maskPath.empty()) checkOutputIsNoTexture(job.edges.maskPath, scene);
     const double parseMs = msSince(t0);
     const EdgeSettings edges = resolveEdges(scene.edges, job.edges);
@@ -311,7 +312,7 @@ int runRender(const RenderJob& job) {
     // A PNG of the render as it stands is compressed by the render's threads as rows finish.
     std::unique_ptr<PngStream> png;
     // Under MPI rank 0 compresses each band as it lands, its own or another rank's.
-    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges && writer) {
+    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges && image) {
         png = std::make_unique<PngStream>(s.width, s.height);
         onRows = [&](const ImageF& rows, int y0, int y1, int) { png->rowsDone(rows, y0, y1); };
     }
@@ -363,7 +364,9 @@ int runRender(const RenderJob& job) {
         CriticalSection writing;
         stopIfInterrupted(job, &scene, &img);
         OutputFiles files;
-        if (png)
+        if (!image)
+            ;  // Output_to_File=off
+        else if (png)
             files.stage(job.outputPath, finishPng(*png, job.outputPath));
         else if (isExrPath(job.outputPath))
             files.stage(job.outputPath, encodeHdrImage(job.outputPath, exrImage(img, job.exrHalf, aov, lineCoverage, aovKinds)));
@@ -387,12 +390,13 @@ int runRender(const RenderJob& job) {
     if (!job.quiet && job.summary) {
         const double mrays = renderMs > 0 ? stats.total() / (renderMs * 1000.0) : 0.0;
         const double mraysAll = (renderMs + linesMs) > 0 ? stats.total() / ((renderMs + linesMs) * 1000.0) : 0.0;
+        const std::string what = image ? "wrote " + printableMessage(job.outputPath) : std::string("rendered, no image written (Output_to_File=off)");
         if (edges.enabled())
-            std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, lines %.1f ms, write %.1f ms; %.2f Mrays/s\n",
-                         printableMessage(job.outputPath).c_str(), s.width, s.height, parseMs, buildMs, renderMs, linesMs, writeMs, mraysAll);
+            std::fprintf(stderr, "rays: %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, lines %.1f ms, write %.1f ms; %.2f Mrays/s\n",
+                         what.c_str(), s.width, s.height, parseMs, buildMs, renderMs, linesMs, writeMs, mraysAll);
         else
-            std::fprintf(stderr, "rays: wrote %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, write %.1f ms; %.2f Mrays/s\n",
-                         printableMessage(job.outputPath).c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
+            std::fprintf(stderr, "rays: %s (%dx%d): parse %.1f ms, build %.1f ms, render %.1f ms, write %.1f ms; %.2f Mrays/s\n",
+                         what.c_str(), s.width, s.height, parseMs, buildMs, renderMs, writeMs, mrays);
     }
 #ifdef RAYS_WITH_MPI
     if (distributed && !job.quiet) printShareSummary(share, renderMs + linesMs, writeMs);

@@ -47,6 +47,9 @@ struct RenderJob {
     bool stats = false;   ///< extra counters on stderr
     bool savePartial = false;  ///< --save-partial: on Ctrl-C, keep what was rendered as OUTPUT.partial.png
     bool summary = true;  ///< the "rays: wrote ..." line (an animation prints its own line per frame)
+    /// false (POV-Ray's Output_to_File=off, -F): the image is rendered and no image file is written
+    /// (neither the image nor the AOV files named after it; an edge mask asked for by name is).
+    bool outputToFile = true;
     /// Under MPI: this process renders and writes the job by itself (a frame handed out whole,
     /// apps/rays/mpi/mpi_frames.h) instead of sharing it with the other ranks.
     bool alone = false;
