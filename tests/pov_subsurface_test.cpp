@@ -150,6 +150,7 @@ TEST(PovSubsurface, MillimetresPerUnitScaleTheTranslucency) {
     const Scene a = test::buildPov(scene(kSubsurface, kBox, 2));
     const Scene b = test::buildPov(scene(kSubsurface + " mm_per_unit 100", kBox, 20));
     EXPECT_DOUBLE_EQ(b.pov.subsurface.mmPerUnit, 100);
+    EXPECT_DOUBLE_EQ(test::buildPov(scene(kSubsurface + " mm_per_unit 0", kBox, 2)).pov.subsurface.mmPerUnit, 10);
     for (double x : {2.95, 2.5, 0.0}) EXPECT_NEAR(lookDown(a, x, 0).x, lookDown(b, x, 0).x, 1e-9) << x;
 }
 

@@ -364,16 +364,17 @@ int runRender(const RenderJob& job) {
         CriticalSection writing;
         stopIfInterrupted(job, &scene, &img);
         OutputFiles files;
-        if (!image)
-            ;  // Output_to_File=off
-        else if (png)
+        if (!image) {
+            // Output_to_File=off: no image file
+        } else if (png) {
             files.stage(job.outputPath, finishPng(*png, job.outputPath));
-        else if (isExrPath(job.outputPath))
+        } else if (isExrPath(job.outputPath)) {
             files.stage(job.outputPath, encodeHdrImage(job.outputPath, exrImage(img, job.exrHalf, aov, lineCoverage, aovKinds)));
-        else if (hdrOutput)
+        } else if (hdrOutput) {
             files.stage(job.outputPath, encodeHdrImage(job.outputPath, colourImage(img, false)));
-        else
+        } else {
             files.stage(job.outputPath, encodeImageFile(job.outputPath, toImage8(img), job.jpegQuality));
+        }
         if (!job.edges.maskPath.empty())
             files.stage(job.edges.maskPath, encodeImageFile(job.edges.maskPath, coverageImage(lines), job.jpegQuality));
         if (aovFiles)

@@ -500,7 +500,9 @@ void SceneBuilder::globalSettings(const Item& g) {
             case Kw::radiosity: scene_.pov.radiosity = readRadiosity(e.args[0].item()); break;
             case Kw::photons: scene_.pov.photons = readPhotonSettings(e.args[0].item()); break;
             case Kw::subsurface: readSubsurfaceSettings(e.args[0].item(), scene_.pov.subsurface); break;
-            case Kw::mm_per_unit: scene_.pov.subsurface.mmPerUnit = toFloat(e.args[0]); break;
+            case Kw::mm_per_unit:  // a scale: only a positive one is taken (the default is 10)
+                if (const double mm = toFloat(e.args[0]); mm > 0 && std::isfinite(mm)) scene_.pov.subsurface.mmPerUnit = mm;
+                break;
             default: break;
         }
     }
