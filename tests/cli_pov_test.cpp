@@ -103,6 +103,20 @@ TEST(CliPovForm, OutputToFileOffRendersAndWritesNoImage) {
     EXPECT_EQ(sizeOf(d / "named.png"), Size(8, 6));
 }
 
+TEST(CliPovForm, SixteenBitsPerColourWriteA16BitPng) {
+    SceneDir d;
+    RUN_OK(d, "+Iball.pov", "+W16", "+H12", "+FN16", "+Oout16.png");
+    RUN_OK(d, "+Iball.pov", "+W16", "+H12", "+Oout8.png");
+    const std::string png = readFile(d / "out16.png");
+    ASSERT_GT(png.size(), 26u);
+    EXPECT_EQ(int(uint8_t(png[24])), 16);  // IHDR bit depth
+    EXPECT_EQ(int(uint8_t(png[25])), 2);   // RGB
+    EXPECT_EQ(sizeOf(d / "out16.png"), Size(16, 12));
+    // Other formats keep 8 bits, and say so.
+    const ProcessResult r = RUN_OK(d, "+Iball.pov", "+W16", "+H12", "+FJ16", "+Oout.jpg");
+    EXPECT_TRUE(contains(r.err, "16 bits per colour are written for PNG images only")) << r.err;
+}
+
 TEST(CliPovForm, TheDefaultOutputIsTheSceneNameInTheCurrentFolder) {
     SceneDir d;
     writeFile(d / "sub/globe.pov", kBall);

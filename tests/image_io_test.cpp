@@ -11,6 +11,10 @@
 #include <functional>
 #include <string>
 
+#include <spng.h>
+
+#include <memory>
+
 #include "rays/error.h"
 #include "support/files.h"
 
@@ -114,6 +118,26 @@ TEST(ImageIoPng, RoundTripRgbRgbaGreyGreyAlpha) {
         rays::writeImage(path, img);
         expectSame(rays::readImage(path), img);
     }
+}
+
+TEST(ImageIoPng, SixteenBitsPerChannelKeepTheValuesToOne65535th) {
+    rays::ImageF img(5, 3);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x) img.at(x, y) = rays::Vec3{x / 4.0, y / 2.0 + 1e-5, 0.123456} * (x == 4 ? 1.5 : 1.0);
+    const std::vector<uint8_t> png = rays::encodePng16(img);
+    ASSERT_GT(png.size(), 33u);
+    EXPECT_EQ(png[24], 16);  // IHDR: bit depth 16,
+    EXPECT_EQ(png[25], 2);   // colour type 2 (RGB)
+    std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> ctx(spng_ctx_new(0), spng_ctx_free);
+    ASSERT_EQ(spng_set_png_buffer(ctx.get(), png.data(), png.size()), 0);
+    std::vector<uint16_t> rgba(5 * 3 * 4);
+    ASSERT_EQ(spng_decode_image(ctx.get(), rgba.data(), rgba.size() * 2, SPNG_FMT_RGBA16, 0), 0);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x)
+            for (int k = 0; k < 3; ++k) {
+                const double want = std::clamp(std::round(img.at(x, y)[k] * 65535), 0.0, 65535.0);
+                EXPECT_EQ(rgba[size_t(y * 5 + x) * 4 + size_t(k)], uint16_t(want)) << x << " " << y << " " << k;
+            }
 }
 
 TEST(ImageIoPng, EncodeStartsWithSignature) {

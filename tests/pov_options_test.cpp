@@ -179,14 +179,14 @@ TEST(PovOptionsSwitch, HarmlessOptionsAreAcceptedSilently) {
 TEST(PovOptionsSwitch, OptionsThatChangeTheOutputWarnOnce) {
     const Read r = readArgs({"+UA", "+UA", "+FN16", "-F", "+GAall.log", "Post_Frame_Command=zip %o", "+UF", "Create_Ini=x.ini",
                              "File_Gamma=sRGB", "Bits_Per_Color=8"});
-    ASSERT_EQ(r.warnings.size(), 6u);
+    ASSERT_EQ(r.warnings.size(), 5u);
     EXPECT_EQ(r.warnings[0], "rays: warning: +UA: Output_Alpha is not supported: the image has no alpha channel");
-    EXPECT_EQ(r.warnings[1], "rays: warning: +FN16: only 8 bits per colour are written, not 16");
-    EXPECT_NE(r.warnings[2].find("All_File is not acted on: messages are not copied to files"), std::string::npos);
-    EXPECT_NE(r.warnings[3].find("Post_Frame_Command is not acted on: Rays runs no shell commands"), std::string::npos);
-    EXPECT_NE(r.warnings[4].find("Field_Render"), std::string::npos);
-    EXPECT_NE(r.warnings[5].find("Create_Ini is not acted on: no INI file is written"), std::string::npos);
+    EXPECT_NE(r.warnings[1].find("All_File is not acted on: messages are not copied to files"), std::string::npos);
+    EXPECT_NE(r.warnings[2].find("Post_Frame_Command is not acted on: Rays runs no shell commands"), std::string::npos);
+    EXPECT_NE(r.warnings[3].find("Field_Render"), std::string::npos);
+    EXPECT_NE(r.warnings[4].find("Create_Ini is not acted on: no INI file is written"), std::string::npos);
     EXPECT_FALSE(r.o.outputToFile);  // -F: rendered, not written (tests/cli_pov_test.cpp)
+    EXPECT_EQ(r.o.bitsPerColor, 8);  // Bits_Per_Color=8 came last; +FN16 had said 16
 }
 
 TEST(PovOptionsSwitch, UnknownSwitchesAndKeysWarnOnceEach) {

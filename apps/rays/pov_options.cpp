@@ -347,9 +347,7 @@ bool PovOptionReader::setOutput(const Value& v) {
         case Key::OutputAlpha:
             if (v.flag) warnOnce(name, "Output_Alpha is not supported: the image has no alpha channel", v.where);
             return true;
-        case Key::BitsPerColor:
-            if (v.inRange(1, 16) > 8) warnOnce(name, "only 8 bits per colour are written, not " + v.text, v.where);
-            return true;
+        case Key::BitsPerColor: o_.bitsPerColor = int(v.inRange(1, 16)); return true;
         case Key::Compression:
             // POV-Ray: 0 or 1 mean its default quality 85; values outside 0..100 are clipped.
             o_.jpegQuality = v.integer <= 1 ? 85 : int(std::min(v.integer, 100L));

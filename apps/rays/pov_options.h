@@ -36,6 +36,7 @@ struct PovOptions {
     bool outputExact = false;  ///< outputFile came from render's -o: used as written
     /// Output_to_File, +F / -F: off renders without writing the image (a later -o turns it on).
     bool outputToFile = true;
+    int bitsPerColor = 8;      ///< Bits_Per_Color, +FN16: above 8, a PNG is written with 16 bits per channel
     int width = -1, height = -1;  ///< Width, Height, +W, +H (and render's W H, -W, -H); -1: not given
     PovAntialias antialias;
     AnimationOptions animation;

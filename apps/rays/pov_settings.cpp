@@ -101,6 +101,7 @@ void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job) {
     if (o.jpegQuality > 0) job.jpegQuality = o.jpegQuality;
     job.outputPath = povOutputPath(o, povForm);
     job.outputToFile = o.outputToFile;
+    job.bitsPerColor = o.bitsPerColor;
     job.language.libraryPaths = o.libraryPaths;
     job.language.declares = o.declares;
     job.language.version = o.version;

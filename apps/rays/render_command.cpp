@@ -148,6 +148,15 @@ std::vector<uint8_t> finishPng(PngStream& png, const std::string& path) {
     }
 }
 
+// The image as a PNG of 16 bits per channel; a failure is named after the file.
+std::vector<uint8_t> png16Bytes(const ImageF& img, const std::string& path) {
+    try {
+        return encodePng16(img);
+    } catch (const Error& e) {
+        throw Error(path + ": " + e.what());
+    }
+}
+
 class ProgressBar {
 public:
     explicit ProgressBar(bool enabled) : enabled_(enabled), start_(Clock::now()) {}
@@ -236,6 +245,10 @@ int runRender(const RenderJob& job) {
     const unsigned aovKinds = parseAovList(job.aovs);
     const bool aovFiles = job.outputToFile && aovKinds != 0 && !isExrPath(job.outputPath);  // one PFM per AOV
     const bool image = writer && job.outputToFile;  // Output_to_File=off: no image file
+    const bool png16 = job.bitsPerColor > 8 && isPngPath(job.outputPath);
+    if (image && job.bitsPerColor > 8 && !png16 && !hdrOutput && !job.quiet)
+        std::fprintf(stderr, "rays: warning: %d bits per colour are written for PNG images only: %s has 8\n",
+                     job.bitsPerColor, printableMessage(job.outputPath).c_str());
     if (writer) {
         if (image) checkImageOutput(job.outputPath, "output", job);
         if (aovFiles)
@@ -312,7 +325,7 @@ int runRender(const RenderJob& job) {
     // A PNG of the render as it stands is compressed by the render's threads as rows finish.
     std::unique_ptr<PngStream> png;
     // Under MPI rank 0 compresses each band as it lands, its own or another rank's.
-    if (isPngPath(job.outputPath) && !buffers.lines && !buffers.post && !s.aaEdges && image) {
+    if (isPngPath(job.outputPath) && !png16 && !buffers.lines && !buffers.post && !s.aaEdges && image) {
         png = std::make_unique<PngStream>(s.width, s.height);
         onRows = [&](const ImageF& rows, int y0, int y1, int) { png->rowsDone(rows, y0, y1); };
     }
@@ -368,6 +381,8 @@ int runRender(const RenderJob& job) {
             // Output_to_File=off: no image file
         } else if (png) {
             files.stage(job.outputPath, finishPng(*png, job.outputPath));
+        } else if (png16) {
+            files.stage(job.outputPath, png16Bytes(img, job.outputPath));
         } else if (isExrPath(job.outputPath)) {
             files.stage(job.outputPath, encodeHdrImage(job.outputPath, exrImage(img, job.exrHalf, aov, lineCoverage, aovKinds)));
         } else if (hdrOutput) {

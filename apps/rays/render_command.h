@@ -50,6 +50,9 @@ struct RenderJob {
     /// false (POV-Ray's Output_to_File=off, -F): the image is rendered and no image file is written
     /// (neither the image nor the AOV files named after it; an edge mask asked for by name is).
     bool outputToFile = true;
+    /// POV-Ray's Bits_Per_Color (+FN16): above 8 a PNG image has 16 bits per channel (other
+    /// formats keep 8, with a warning).
+    int bitsPerColor = 8;
     /// Under MPI: this process renders and writes the job by itself (a frame handed out whole,
     /// apps/rays/mpi/mpi_frames.h) instead of sharing it with the other ranks.
     bool alone = false;

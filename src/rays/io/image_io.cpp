@@ -196,17 +196,19 @@ struct PngRowEncoder::Impl {
     int rowsLeft = 0;
 };
 
-PngRowEncoder::PngRowEncoder(int width, int height, int channels, int zlibStrategy) : impl_(std::make_unique<Impl>()) {
-    if (width <= 0 || height <= 0 || channels < 1 || channels > 4) pngEncoderFailed("invalid image");
+PngRowEncoder::PngRowEncoder(int width, int height, int channels, int zlibStrategy, int bitDepth)
+    : impl_(std::make_unique<Impl>()) {
+    if (width <= 0 || height <= 0 || channels < 1 || channels > 4 || (bitDepth != 8 && bitDepth != 16))
+        pngEncoderFailed("invalid image");
     if (!impl_->ctx) pngEncoderFailed("out of memory");
     static const uint8_t colorTypes[4] = {SPNG_COLOR_TYPE_GRAYSCALE, SPNG_COLOR_TYPE_GRAYSCALE_ALPHA,
                                           SPNG_COLOR_TYPE_TRUECOLOR, SPNG_COLOR_TYPE_TRUECOLOR_ALPHA};
     spng_ihdr ihdr{};
     ihdr.width = uint32_t(width);
     ihdr.height = uint32_t(height);
-    ihdr.bit_depth = 8;
+    ihdr.bit_depth = uint8_t(bitDepth);
     ihdr.color_type = colorTypes[channels - 1];
-    impl_->rowBytes = size_t(width) * size_t(channels);
+    impl_->rowBytes = size_t(width) * size_t(channels) * size_t(bitDepth / 8);
     impl_->rowsLeft = height;
     impl_->out.reserve(impl_->rowBytes * size_t(height) / 4 + 1024);
     spng_ctx* ctx = impl_->ctx.get();
@@ -234,6 +236,22 @@ std::vector<uint8_t> PngRowEncoder::finish() {
     if (impl_->rowsLeft != 0)
         pngEncoderFailed(std::to_string(impl_->rowsLeft) + " rows were never given");
     return std::move(impl_->out);
+}
+
+std::vector<uint8_t> encodePng16(const ImageF& img) {
+    PngRowEncoder enc(img.width, img.height, 3, Z_RLE, 16);
+    std::vector<uint16_t> row(size_t(img.width) * 3);  // in the host's byte order: spng swaps them
+    for (int y = 0; y < img.height; ++y) {
+        for (int x = 0; x < img.width; ++x) {
+            const Vec3 c = img.at(x, y);
+            for (int k = 0; k < 3; ++k) {
+                const double v = c[k] * 65535.0 + 0.5;
+                row[size_t(x) * 3 + size_t(k)] = v <= 0.0 ? 0 : (v >= 65535.0 ? 65535 : uint16_t(v));
+            }
+        }
+        enc.row(reinterpret_cast<const uint8_t*>(row.data()));
+    }
+    return enc.finish();
 }
 
 namespace {

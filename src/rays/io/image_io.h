@@ -45,12 +45,14 @@ void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& da
 /// while the rest of the image is still being made. Errors throw rays::Error ("error: PNG encoder: ...").
 class PngRowEncoder {
 public:
-    PngRowEncoder(int width, int height, int channels, int zlibStrategy);
+    /// bitDepth 8 or 16 (16: each sample a uint16_t in the host's byte order; the file has them
+    /// most significant byte first, as PNG stores them).
+    PngRowEncoder(int width, int height, int channels, int zlibStrategy, int bitDepth = 8);
     ~PngRowEncoder();
     PngRowEncoder(const PngRowEncoder&) = delete;
     PngRowEncoder& operator=(const PngRowEncoder&) = delete;
 
-    /// The next row: width * channels bytes.
+    /// The next row: width * channels samples of bitDepth / 8 bytes.
     void row(const uint8_t* pixels);
     /// The PNG file's bytes; every row must have been given.
     std::vector<uint8_t> finish();
@@ -59,6 +61,10 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+/// img as an RGB PNG of 16 bits per channel: each value c clamped to [0, 1] and rounded to
+/// c·65535 (POV-Ray's Bits_Per_Color=16, +FN16). Throws rays::Error "error: PNG encoder: ...".
+std::vector<uint8_t> encodePng16(const ImageF& img);
 
 /// Reads PNG, JPEG, BMP, TGA or binary PPM/PGM, keeping the file's channel count (1..4; 16-bit files are
 /// reduced to 8 bits). Throws rays::Error "PATH: error: cannot read image: <reason>".
