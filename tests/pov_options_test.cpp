@@ -196,6 +196,15 @@ TEST(PovOptionsSwitch, UnknownSwitchesAndKeysWarnOnceEach) {
     EXPECT_EQ(r.o.width, 10);
 }
 
+TEST(PovOptionsSetting, FileGammaIsSrgbOrAPositiveNumber) {
+    EXPECT_EQ(readArgs({}).o.fileGamma, 0);
+    EXPECT_EQ(readArgs({"File_Gamma=1.8"}).o.fileGamma, 1.8);
+    EXPECT_EQ(readArgs({"File_Gamma=1.8", "File_Gamma=srgb"}).o.fileGamma, 0);
+    EXPECT_TRUE(readArgs({"File_Gamma=2.2"}).warnings.empty());
+    EXPECT_NE(errorOf({"File_Gamma=0"}).find("File_Gamma must be sRGB or a positive number, got '0'"), std::string::npos);
+    EXPECT_NE(errorOf({"File_Gamma=fast"}).find("File_Gamma=fast"), std::string::npos);
+}
+
 TEST(PovOptionsSwitch, MalformedValuesAreErrorsNamingTheSwitch) {
     EXPECT_EQ(errorOf({"+Wabc"}), "rays: error: +Wabc: Width must be a positive integer, got 'abc'");
     EXPECT_EQ(errorOf({"+W0"}), "rays: error: +W0: Width must be a positive integer, got '0'");

@@ -635,6 +635,21 @@ TEST(PovShading, OutputEncoding) {
     expectColor(povOutputColor({2, -1, 1}, 1.0), {1, 0, 1});
 }
 
+// File_Gamma g: (c^assumed_gamma)^(1/g) instead of sRGB; nothing for legacy scenes (measured:
+// rgb 0.2 with ambient 1 is written as 51 with File_Gamma 1.0, 123 with 2.2, 104 with 1.8 under
+// assumed_gamma 1; 7, 51 and 36 under assumed_gamma 2.2; 51 whatever File_Gamma in a 3.6 scene).
+TEST(PovShading, FileGammaEncodesWithItsPower) {
+    auto byte = [](double assumed, double file) { return int(toByte(povOutputColor({0.2, 0.2, 0.2}, assumed, file).x)); };
+    EXPECT_EQ(byte(1.0, 1.0), 51);
+    EXPECT_EQ(byte(1.0, 2.2), 123);
+    EXPECT_EQ(byte(1.0, 1.8), 104);
+    EXPECT_EQ(byte(2.2, 1.0), 7);
+    EXPECT_EQ(byte(2.2, 2.2), 51);
+    EXPECT_EQ(byte(2.2, 1.8), 36);
+    EXPECT_EQ(byte(0.0, 1.8), 51);
+    EXPECT_EQ(byte(1.0, 0.0), 124);  // 0: sRGB
+}
+
 // render() writes POV-Ray scenes' pixels encoded; course scenes are left alone.
 TEST(PovShading, RenderEncodesPovRayScenesOnly) {
     Scene s = povScene();

@@ -15,7 +15,7 @@ enum class Key {
     LibraryPath, Declare, Version,
     Clock, InitialFrame, FinalFrame, InitialClock, FinalClock, SubsetStartFrame, SubsetEndFrame, FrameStep, CyclicAnimation,
     StartRow, EndRow, StartColumn, EndColumn,
-    OutputToFile, OutputFileType, OutputAlpha, BitsPerColor, Compression, WorkThreads, ContinueTrace,
+    OutputToFile, OutputFileType, OutputAlpha, BitsPerColor, FileGamma, Compression, WorkThreads, ContinueTrace,
     Quiet, Warned,
 };
 

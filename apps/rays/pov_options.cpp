@@ -348,6 +348,7 @@ bool PovOptionReader::setOutput(const Value& v) {
             if (v.flag) warnOnce(name, "Output_Alpha is not supported: the image has no alpha channel", v.where);
             return true;
         case Key::BitsPerColor: o_.bitsPerColor = int(v.inRange(1, 16)); return true;
+        case Key::FileGamma: setFileGamma(v); return true;
         case Key::Compression:
             // POV-Ray: 0 or 1 mean its default quality 85; values outside 0..100 are clipped.
             o_.jpegQuality = v.integer <= 1 ? 85 : int(std::min(v.integer, 100L));
@@ -365,6 +366,19 @@ void PovOptionReader::setFileType(const Value& v) {
         failAt(v.where, "unknown Output_File_Type '" + v.text + "' (use N PNG, J JPEG, P PPM, T or C Targa, B BMP, S system)");
     o_.fileType = type;
     if (v.text.size() > 1) set("Bits_Per_Color", v.text.substr(1), v.where);  // +FN16: PNG, 16 bits per colour
+}
+
+// File_Gamma: sRGB (POV-Ray's default, 0 here) or a positive number.
+void PovOptionReader::setFileGamma(const Value& v) {
+    if (lower(v.text) == "srgb") {
+        o_.fileGamma = 0;
+        return;
+    }
+    char* end = nullptr;
+    const double g = std::strtod(v.text.c_str(), &end);
+    if (end == v.text.c_str() || *end != '\0' || !(g > 0) || !std::isfinite(g))
+        failAt(v.where, "File_Gamma must be sRGB or a positive number, got '" + v.text + "'");
+    o_.fileGamma = g;
 }
 
 void PovOptionReader::setDeclare(const Value& v) {
@@ -391,10 +405,9 @@ void PovOptionReader::setOther(const Value& v) {
         case Key::WorkThreads: o_.threads = v.inRange(0, 1024); break;
         case Key::ContinueTrace: o_.continueTrace = v.flag; break;
         case Key::Warned: {
-            // Asking for nothing (off, false, 0; File_Gamma sRGB, POV-Ray's default) needs no warning.
+            // Asking for nothing (off, false, 0) needs no warning.
             bool off = false;
             if (v.info.kind == Kind::Bool ? !v.flag : (parseBool(v.text, off) && !off)) break;
-            if (v.info.name == std::string("File_Gamma") && lower(v.text) == "srgb") break;
             warnOnce(v.info.name, std::string(v.info.name) + " is not acted on: " + v.info.unsupported, v.where);
             break;
         }

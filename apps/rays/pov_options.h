@@ -37,6 +37,7 @@ struct PovOptions {
     /// Output_to_File, +F / -F: off renders without writing the image (a later -o turns it on).
     bool outputToFile = true;
     int bitsPerColor = 8;      ///< Bits_Per_Color, +FN16: above 8, a PNG is written with 16 bits per channel
+    double fileGamma = 0;      ///< File_Gamma: 0 sRGB (the default), else a power-law gamma
     int width = -1, height = -1;  ///< Width, Height, +W, +H (and render's W H, -W, -H); -1: not given
     PovAntialias antialias;
     AnimationOptions animation;
@@ -93,6 +94,7 @@ private:
     bool setAntialias(const Value& v);
     bool setOutput(const Value& v);
     void setFileType(const Value& v);
+    void setFileGamma(const Value& v);
     void setDeclare(const Value& v);
     void setOther(const Value& v);
     void readIniText(const std::string& text, const std::string& path, const std::string& section);

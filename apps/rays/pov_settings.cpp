@@ -97,6 +97,7 @@ void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job) {
         s.aaThreshold = aa.edges ? aa.threshold : -1;
     }
     s.aaGamma = o.antialias.gamma;
+    s.fileGamma = o.fileGamma;
     if (o.threads >= 0) s.threads = o.threads;
     if (o.jpegQuality > 0) job.jpegQuality = o.jpegQuality;
     job.outputPath = povOutputPath(o, povForm);

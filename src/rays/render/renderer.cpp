@@ -24,10 +24,10 @@ namespace {
 constexpr int kTile = TileRenderer::kTileSize;
 
 // A traced colour as the image holds it: course scenes as traced; POV-Ray scenes as POV-Ray writes
-// them, sRGB(c^assumed_gamma), or linear light for HDR files (linear, docs/aov.md).
-Vec3 pixelOutput(Vec3 c, bool povScene, bool linear, double assumedGamma) {
+// them, sRGB(c^assumed_gamma) or with File_Gamma, or linear light for HDR files (linear, docs/aov.md).
+Vec3 pixelOutput(Vec3 c, bool povScene, bool linear, double assumedGamma, double fileGamma) {
     if (!povScene) return c;
-    return linear ? povLinearColor(c, assumedGamma) : povOutputColor(c, assumedGamma);
+    return linear ? povLinearColor(c, assumedGamma) : povOutputColor(c, assumedGamma, fileGamma);
 }
 
 // A linear colour as POV-Ray 3.7's anti-aliasing compares it: clamped to [0, 1] and raised to
@@ -320,7 +320,7 @@ void TileRenderer::renderTile(int t, int worker, ImageF& img, int imgY0, const R
         for (int x = x0; x < x1; ++x) {
             PathInfo info;
             const Vec3 c = renderPixel(tracer_, view_, s_, x, s_.height - 1 - y, ctx, onRecord ? &info : nullptr);
-            img.at(x, y - imgY0) = pixelOutput(c, povOutput_, s_.linearOutput, assumedGamma_);
+            img.at(x, y - imgY0) = pixelOutput(c, povOutput_, s_.linearOutput, assumedGamma_, s_.fileGamma);
             if (onRecord) onRecord(x, y, info);
         }
 }
@@ -356,7 +356,7 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
     const bool povOutput = scene.pov.enabled;
     const double assumedGamma = scene.pov.assumedGamma;
     // HDR files (s.linearOutput) take linear light instead, unclamped (docs/aov.md).
-    auto pixelOut = [&](Vec3 c) { return pixelOutput(c, povOutput, s.linearOutput, assumedGamma); };
+    auto pixelOut = [&](Vec3 c) { return pixelOutput(c, povOutput, s.linearOutput, assumedGamma, s.fileGamma); };
     const int tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
     const int tileCount = tilesX * tilesY;
     std::vector<TraceContext> perThread(size_t(resolveThreads(s.threads)));

@@ -35,6 +35,7 @@ struct RenderSettings {
     bool aaEdges = false;      ///< one sample per pixel, then spp samples only where ids or shadows change
     double aaThreshold = -1;   ///< ≥ 0 with aaEdges: POV-Ray's rule instead, where the colour changes by more (renderer.h)
     double aaGamma = 2.5;      ///< colours compared as linear^(1/aaGamma) under aaThreshold (POV-Ray's Antialias_Gamma)
+    double fileGamma = 0;      ///< POV-Ray scenes' File_Gamma: 0 sRGB (the default), else the image holds linear^(1/fileGamma)
     uint64_t seed = 0;         ///< seeds the per-sample hash RNG
 
     int areaSamples = 0;       ///< > 0: area lights use this many samples per axis instead of the scene's
