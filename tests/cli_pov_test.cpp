@@ -183,14 +183,25 @@ TEST(CliPovForm, UnknownOptionsWarnOnceWithTheirPlaceAndTheImageIsWritten) {
     EXPECT_EQ(sizeOf(d / "ball.png"), Size(16, 12));
 }
 
-TEST(CliPovForm, PartOfTheImageIsNotSupportedYet) {
+TEST(CliPovForm, PartOfTheImageIsRenderedAndTheRestIsBlack) {
     SceneDir d;
-    const ProcessResult r = d.run({"+Iball.pov", "+W16", "+H12", "+SR0.5"});
-    EXPECT_EQ(r.exitCode, 2) << r.summary();
-    EXPECT_TRUE(contains(r.err, "rendering part of the image")) << r.err;
-    EXPECT_TRUE(contains(r.err, "is not supported yet")) << r.err;
-    EXPECT_EQ(d.files(), std::vector<std::string>{"ball.pov"});
-    RUN_OK(d, "+Iball.pov", "+W16", "+H12", "+SR1", "+ER12", "+SC0", "+EC16");  // the whole image
+    RUN_OK(d, "+Iball.pov", "+W16", "+H12", "+Owhole.png");
+    RUN_OK(d, "+Iball.pov", "+W16", "+H12", "+SR0.5", "+SC3", "+EC10", "+Opart.png");
+    const auto whole = loadPngRgb((d / "whole.png").string()), part = loadPngRgb((d / "part.png").string());
+    ASSERT_EQ(part.width, 16);
+    ASSERT_EQ(part.height, 12);
+    int lit = 0;
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int k = 0; k < 3; ++k) {
+                const size_t i = (size_t(y) * 16 + size_t(x)) * 3 + size_t(k);
+                const bool inside = y >= 6 && x >= 2 && x <= 9;  // rows 7-12, columns 3-10
+                EXPECT_EQ(part.pixels[i], inside ? whole.pixels[i] : 0) << x << " " << y;
+                lit += inside && part.pixels[i] > 0;
+            }
+    EXPECT_GT(lit, 0);
+    RUN_OK(d, "+Iball.pov", "+W16", "+H12", "+SR1", "+ER12", "+SC0", "+EC16", "+Oall.png");  // the whole image
+    EXPECT_EQ(loadPngRgb((d / "all.png").string()).pixels, whole.pixels);
 }
 
 TEST(CliPovForm, NoSceneIsAnError) {

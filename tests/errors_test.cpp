@@ -353,9 +353,10 @@ std::vector<BadInput> catalogue() {
                  "rays: error: +R10: Antialias_Depth must be a whole number from 1 to 9, got '10'"});
     t.push_back({"pov-unknown-switch", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+Zap", "+Oout.png", "-q"},
                  0, "rays: warning: +Zap: unknown option '+Zap'"});
-    t.push_back({"pov-partial-image", {{"scene.pov", kScene}}, {"+Iscene.pov", "+W16", "+H12", "+SR0.5", "+Oout.png"}, 2,
-                 "rays: error: rendering part of the image (Start_Row, End_Row, Start_Column, End_Column; +SR +ER +SC +EC) "
-                 "is not supported yet: rows 7-12 and columns 1-16 of 16x12 were asked for"});
+    t.push_back({"pov-empty-part-of-image", {{"scene.pov", kScene}},
+                 {"+Iscene.pov", "+W16", "+H12", "+SR0.9", "+ER0.5", "+Oout.png"}, 2,
+                 "rays: error: the part of the image asked for (Start_Row, End_Row, Start_Column, End_Column; +SR +ER +SC +EC) "
+                 "is empty: rows 11-6 and columns 1-16 of 16x12"});
     t.push_back({"pov-subset-no-frame", {{"scene.pov", kScene}},
                  {"+Iscene.pov", "+W16", "+H12", "+KFF3", "+SF5", "+Oout.png"}, 2,
                  "rays: error: Subset_Start_Frame selects frame 5, after the final frame 3"});

@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -538,26 +539,30 @@ TEST(PovSettings, OutputNamesFollowPovRay) {
     EXPECT_EQ(povOutputPath(o, true), "x.weird");  // render's -o: as written
 }
 
-TEST(PovSettings, OnlyTheWholeImageMayBeAskedFor) {
-    using rays::cli::checkFullImage;
-    PovOptions o;
-    EXPECT_NO_THROW(checkFullImage(o, 64, 48));
-    o.startRow = {true, 0};
-    o.endRow = {true, 48};
-    o.startColumn = {true, 1};
-    o.endColumn = {true, 0.999};
-    EXPECT_NO_THROW(checkFullImage(o, 64, 48));
-    o.startRow = {true, 0.5};
+TEST(PovSettings, APartOfTheImageIsRoundedAsPovRayRoundsIt) {
+    // Measured with POV-Ray 3.7 at 32×24 (0-based rows and columns it rendered).
+    auto region = [](const std::vector<std::string>& args) {
+        rays::RenderSettings s;
+        s.width = 32;
+        s.height = 24;
+        rays::cli::setImageRegion(readArgs(args).o, s);
+        return std::array<int, 4>{s.regionX0, s.regionX1, s.regionY0, s.regionY1};
+    };
+    EXPECT_EQ(region({"+SR0.5"}), (std::array<int, 4>{0, 31, 12, 23}));
+    EXPECT_EQ(region({"+SC0.25", "+EC0.5", "+SR5", "+ER10"}), (std::array<int, 4>{8, 15, 4, 9}));
+    EXPECT_EQ(region({"+SR0.3", "+ER0.7"}), (std::array<int, 4>{0, 31, 7, 15}));
+    EXPECT_EQ(region({"+SC0.1", "+EC0.9"}), (std::array<int, 4>{3, 27, 0, 23}));
+    // The whole image, however written, is no region.
+    EXPECT_EQ(region({"+SR1", "+ER1"}), (std::array<int, 4>{0, -1, 0, -1}));
+    EXPECT_EQ(region({"+SR0", "+ER24", "+SC1", "+EC1"}), (std::array<int, 4>{0, -1, 0, -1}));
+    EXPECT_EQ(region({"+EC0.999", "+ER0.99"}), (std::array<int, 4>{0, 30, 0, 22}));  // POV-Ray's too
+    EXPECT_EQ(region({}), (std::array<int, 4>{0, -1, 0, -1}));
     try {
-        checkFullImage(o, 64, 48);
+        region({"+SR0.9", "+ER0.5"});
         ADD_FAILURE() << "no error";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("is not supported yet: rows 25-48 and columns 1-64 of 64x48"), std::string::npos)
-            << e.what();
+        EXPECT_NE(std::string(e.what()).find("is empty: rows 22-12 and columns 1-32 of 32x24"), std::string::npos) << e.what();
     }
-    o.startRow = {true, 0};
-    o.endColumn = {true, 32};
-    EXPECT_THROW(checkFullImage(o, 64, 48), Error);
 }
 
 TEST(PovSettings, ApplyFillsTheJob) {

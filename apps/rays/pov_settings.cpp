@@ -23,11 +23,12 @@ std::string sceneName(const std::string& input) {
 }
 
 // A row or column bound as a 0-based pixel index: a fraction f of n pixels is ⌊f·n⌋ for a start
-// and ⌈f·n⌉ − 1 for an end; a number k from 1 on is pixel k − 1.
+// and ⌊f·n⌋ − 1 for an end; a number k from 1 on is pixel k − 1 (measured with POV-Ray 3.7 at
+// 32×24: +SR0.3 +ER0.7 renders rows 7 to 15, +SC0.1 +EC0.9 columns 3 to 27, +SR5 +ER10 rows 4 to 9).
 int startIndex(const PovBound& b, int n) { return b.value < 1 ? int(std::floor(b.value * n)) : int(b.value) - 1; }
 // An end bound of exactly 1 is 100 % (POV-Ray 3.7 renders rows 1 to h with End_Row=1, as
 // advanced/benchmark/benchmark.ini asks); a start bound of 1 is the first pixel.
-int endIndex(const PovBound& b, int n) { return b.value <= 1 ? int(std::ceil(b.value * n)) - 1 : int(b.value) - 1; }
+int endIndex(const PovBound& b, int n) { return b.value <= 1 ? int(std::floor(b.value * n)) - 1 : int(b.value) - 1; }
 
 }  // namespace
 
@@ -71,17 +72,19 @@ std::string povOutputPath(const PovOptions& o, bool povForm) {
     return isSupportedImageExtension(o.outputFile) ? o.outputFile : o.outputFile + ext;
 }
 
-void checkFullImage(const PovOptions& o, int width, int height) {
+void setImageRegion(const PovOptions& o, RenderSettings& s) {
     if (!o.startRow.given && !o.endRow.given && !o.startColumn.given && !o.endColumn.given) return;
-    const int r0 = o.startRow.given ? startIndex(o.startRow, height) : 0;
-    const int r1 = o.endRow.given ? endIndex(o.endRow, height) : height - 1;
-    const int c0 = o.startColumn.given ? startIndex(o.startColumn, width) : 0;
-    const int c1 = o.endColumn.given ? endIndex(o.endColumn, width) : width - 1;
-    if (r0 <= 0 && c0 <= 0 && r1 >= height - 1 && c1 >= width - 1) return;
-    throw Error("rays: error: rendering part of the image (Start_Row, End_Row, Start_Column, End_Column; "
-                "+SR +ER +SC +EC) is not supported yet: rows " +
-                std::to_string(r0 + 1) + "-" + std::to_string(r1 + 1) + " and columns " + std::to_string(c0 + 1) + "-" +
-                std::to_string(c1 + 1) + " of " + std::to_string(width) + "x" + std::to_string(height) + " were asked for");
+    const int r0 = std::max(0, o.startRow.given ? startIndex(o.startRow, s.height) : 0);
+    const int r1 = std::min(s.height - 1, o.endRow.given ? endIndex(o.endRow, s.height) : s.height - 1);
+    const int c0 = std::max(0, o.startColumn.given ? startIndex(o.startColumn, s.width) : 0);
+    const int c1 = std::min(s.width - 1, o.endColumn.given ? endIndex(o.endColumn, s.width) : s.width - 1);
+    if (r1 < r0 || c1 < c0)
+        throw Error("rays: error: the part of the image asked for (Start_Row, End_Row, Start_Column, End_Column; "
+                    "+SR +ER +SC +EC) is empty: rows " + std::to_string(r0 + 1) + "-" + std::to_string(r1 + 1) +
+                    " and columns " + std::to_string(c0 + 1) + "-" + std::to_string(c1 + 1) + " of " +
+                    std::to_string(s.width) + "x" + std::to_string(s.height));
+    if (r0 == 0 && c0 == 0 && r1 == s.height - 1 && c1 == s.width - 1) return;  // the whole image
+    s.regionX0 = c0, s.regionX1 = c1, s.regionY0 = r0, s.regionY1 = r1;
 }
 
 void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job) {
@@ -106,7 +109,7 @@ void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job) {
     job.language.libraryPaths = o.libraryPaths;
     job.language.declares = o.declares;
     job.language.version = o.version;
-    checkFullImage(o, s.width, s.height);
+    setImageRegion(o, s);
 }
 
 }  // namespace rays::cli

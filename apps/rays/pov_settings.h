@@ -37,13 +37,13 @@ std::string fileTypeExtension(char type);
 /// name with the type's extension in the current folder, `rays render` writes "output" with it.
 std::string povOutputPath(const PovOptions& o, bool povForm);
 
-/// Throws Error when the options ask for part of the image (+SR +ER +SC +EC; rendering a window is
-/// not supported yet); a region covering the whole image is accepted.
-void checkFullImage(const PovOptions& o, int width, int height);
+/// The part of the image the options ask for (+SR +ER +SC +EC), set in s (whose size is set);
+/// nothing for the whole image. Throws Error when the part is empty.
+void setImageRegion(const PovOptions& o, RenderSettings& s);
 
 /// Applies the options to job: scene, size (640×480 when not given), anti-aliasing (when a POV-Ray
 /// AA option came after render's own --spp/--aa/-ss; it then also decides --aa-edges), threads, JPEG quality, output path, library
-/// paths and declarations. Throws Error for a partial image.
+/// paths, declarations and the part of the image to render. Throws Error for an empty part.
 void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job);
 
 }  // namespace rays::cli

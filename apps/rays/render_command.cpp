@@ -287,10 +287,12 @@ int runRender(const RenderJob& job) {
     stopIfInterrupted(job, &scene, nullptr);
     // Ranks share single-pass renders only; edge-guided AA and lines-only renders (no render) run
     // on rank 0 alone for now, the other ranks stop here.
-    const bool distributed = ranks > 1 && !s.aaEdges && !edges.linesOnly;
+    const bool distributed = ranks > 1 && !s.aaEdges && !edges.linesOnly && s.wholeImage();
     if (ranks > 1 && !distributed) {
         if (!writer) return 0;
-        if (!job.quiet) std::fprintf(stderr, "rays: mpi: %s renders on rank 0 alone\n", s.aaEdges ? "edge-guided AA" : "--lines-only");
+        if (!job.quiet)
+            std::fprintf(stderr, "rays: mpi: %s renders on rank 0 alone\n",
+                         s.aaEdges ? "edge-guided AA" : (edges.linesOnly ? "--lines-only" : "a part of the image"));
     }
 
     // The render records what each pixel centre saw for the lines when it can (centred samples);
@@ -364,6 +366,11 @@ int runRender(const RenderJob& job) {
         compositeLines(img, lines, edges, s.threads);
         linesMs = msSince(t0);
     }
+    // A part of the image (Start_Row …): lines and filters do not reach beyond it either.
+    if (!s.wholeImage())
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x)
+                if (!s.inRegion(x, y)) img.at(x, y) = Vec3{};
 
     // The AOVs: one pixel-centre ray per pixel (aov.h).
     AovBuffers aov = aovKinds ? computeAovs(scene, bvh, s, aovKinds) : AovBuffers{};

@@ -380,7 +380,8 @@ ImageF render(const Scene& scene, const Bvh& bvh, const RenderSettings& s, Trace
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
                     if (cancelled()) return;
-                    pixel(x, y, perThread[size_t(w)]);
+                    if (s.inRegion(x, y)) pixel(x, y, perThread[size_t(w)]);
+                    else img.at(x, y) = Vec3{};  // outside the part asked for (Start_Row …): black
                 }
             if (firstPass) tileDone[size_t(t)] = 1;
             // The last tile of its row: the other tiles' pixels are visible here (acq_rel).

@@ -50,6 +50,14 @@ struct RenderSettings {
 
     int threads = 0;           ///< worker threads; 0 = all hardware threads
     int cameraIndex = 0;       ///< which camera of the scene
+    /// A part of the image to render (POV-Ray's Start_Row, End_Row, Start_Column, End_Column):
+    /// pixel columns regionX0..regionX1 and rows regionY0..regionY1 (inclusive, 0-based, the top
+    /// row 0); the other pixels are black. regionX1 < 0: the whole image.
+    int regionX0 = 0, regionY0 = 0, regionX1 = -1, regionY1 = -1;
+    bool wholeImage() const { return regionX1 < 0; }
+    bool inRegion(int x, int y) const {
+        return wholeImage() || (x >= regionX0 && x <= regionX1 && y >= regionY0 && y <= regionY1);
+    }
     bool linearOutput = false; ///< POV-Ray scenes: pixels in linear light (povLinearColor, HDR files), not encoded
 };
 
