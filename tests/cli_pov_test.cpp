@@ -117,6 +117,21 @@ TEST(CliPovForm, SixteenBitsPerColourWriteA16BitPng) {
     EXPECT_TRUE(contains(r.err, "16 bits per colour are written for PNG images only")) << r.err;
 }
 
+TEST(CliPovForm, AnIncludeHeaderDeclaresWhatTheSceneUses) {
+    SceneDir d;
+    writeFile(d / "uses.pov", "#version 3.7;\ncamera { location -5*z look_at 0 }\nsphere { 0, 1 pigment { Paint } finish { ambient 1 } }\n");
+    writeFile(d / "paint.inc", "#declare Paint = rgb <1, 0, 0>;\n");
+    RUN_OK(d, "+Iuses.pov", "+W8", "+H6", "+HIpaint.inc", "+Oa.png");
+    const auto img = loadPngRgb((d / "a.png").string());
+    ASSERT_TRUE(img.ok());
+    const size_t centre = (size_t(3) * 8 + 4) * 3;
+    EXPECT_EQ(img.pixels[centre], 255);
+    EXPECT_EQ(img.pixels[centre + 1], 0);
+    const ProcessResult r = d.run({"+Iuses.pov", "+W8", "+H6", "+Ob.png"});  // without it: undeclared
+    EXPECT_EQ(r.exitCode, 2) << r.summary();
+    EXPECT_TRUE(contains(r.err, "undeclared identifier 'Paint'")) << r.err;
+}
+
 TEST(CliPovForm, TheDefaultOutputIsTheSceneNameInTheCurrentFolder) {
     SceneDir d;
     writeFile(d / "sub/globe.pov", kBall);

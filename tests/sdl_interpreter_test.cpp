@@ -312,6 +312,21 @@ TEST_F(SdlFiles, LibraryPathsAreSearchedAndCyclesStop) {
     EXPECT_NE(runSdl("#include \"nope.inc\"", {}, dir_.string()).error.find("cannot find include file \"nope.inc\""), std::string::npos);
 }
 
+TEST_F(SdlFiles, AnIncludeHeaderIsReadBeforeTheScene) {
+    // Include_Header / +HI: as if `#include` stood before the scene's first line.
+    write("head.inc", "#declare FromHead = 7; #declare Later = 1;");
+    sdl::LanguageOptions o;
+    o.includeHeader = "head.inc";
+    EXPECT_EQ(runSdl("#declare Later = 2; #debug str(FromHead + Later, 0, 0)", o, dir_.string()).debug, "9");
+    write("bad.inc", "#declare X = Missing;");
+    o.includeHeader = "bad.inc";
+    EXPECT_EQ(runSdl("\n#debug \"x\"", o, dir_.string()).error,
+              "bad.inc:1:14: error: undeclared identifier 'Missing' (in bad.inc included from scene.pov:1:1)");
+    o.includeHeader = "nope.inc";
+    EXPECT_EQ(runSdl("#debug \"x\"", o, dir_.string()).error,
+              "rays: error: Include_Header: cannot find \"nope.inc\" (searched the scene's folder, the library paths)");
+}
+
 TEST_F(SdlFiles, WriteThenReadBack) {
     const std::string s =
         "#fopen F \"data.txt\" write #write (F, 1.5, \",\", <1,2,3>, \",\\\"hi\\\"\") #fclose F "

@@ -149,7 +149,7 @@ int run(int argc, char** argv) {
         "POV-Ray switches and INI files (docs/cli.md), mixed with the options above in any order (a later one wins):\n"
         "  +Iscene.pov +Oout.png +W640 +H480 +A[0.3] -A +AM2 +R3 +J[0.5] -J +L/path +K0.5 +KFI1 +KFF30 +KI0 +KF1 +KC\n"
         "  +SF/+EF (frame subset) +STP2 +SR/+ER/+SC/+EC (a part; the rest black) +C (resume) +WT2 +FN +FJ +FP +FT +FB\n"
-        "  +FN16 (16-bit PNG) -F (no image file) File_Gamma=1.8\n"
+        "  +FN16 (16-bit PNG) -F (no image file) File_Gamma=1.8 +HIheader.inc\n"
         "  accepted and not acted on: +D -D +V +P +Q9 +GA etc. +MB +UA (warns)\n"
         "  KEY=VALUE (Width=640, Declare=NAME=1, Work_Threads=2), file.ini or file.ini[Section]\n"
         "In `rays render` a POV-Ray switch starts with '+', or '-' and an upper-case letter (-D, -A); -W and -H are the same\n"

@@ -16,6 +16,7 @@ enum class Key {
     Clock, InitialFrame, FinalFrame, InitialClock, FinalClock, SubsetStartFrame, SubsetEndFrame, FrameStep, CyclicAnimation,
     StartRow, EndRow, StartColumn, EndColumn,
     OutputToFile, OutputFileType, OutputAlpha, BitsPerColor, FileGamma, Compression, WorkThreads, ContinueTrace,
+    IncludeHeader,
     Quiet, Warned,
 };
 

@@ -398,6 +398,7 @@ void PovOptionReader::setOther(const Value& v) {
             o_.inputFile = resolveScene(v.text, v.where);
             break;
         case Key::LibraryPath: addLibraryPath(v.text); break;
+        case Key::IncludeHeader: o_.includeHeader = v.text; break;
         case Key::Declare: setDeclare(v); break;
         case Key::Version:
             o_.version = std::max(1.0, v.number);  // POV-Ray 3.7 takes any number and reads 1.0 below 1 (measured)

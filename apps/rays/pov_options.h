@@ -38,6 +38,7 @@ struct PovOptions {
     bool outputToFile = true;
     int bitsPerColor = 8;      ///< Bits_Per_Color, +FN16: above 8, a PNG is written with 16 bits per channel
     double fileGamma = 0;      ///< File_Gamma: 0 sRGB (the default), else a power-law gamma
+    std::string includeHeader; ///< Include_Header, +HI: read before the scene (empty: none)
     int width = -1, height = -1;  ///< Width, Height, +W, +H (and render's W H, -W, -H); -1: not given
     PovAntialias antialias;
     AnimationOptions animation;

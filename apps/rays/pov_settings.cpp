@@ -108,6 +108,7 @@ void applyPovOptions(const PovOptions& o, bool povForm, RenderJob& job) {
     job.bitsPerColor = o.bitsPerColor;
     job.language.libraryPaths = o.libraryPaths;
     job.language.declares = o.declares;
+    job.language.includeHeader = o.includeHeader;
     job.language.version = o.version;
     setImageRegion(o, s);
 }

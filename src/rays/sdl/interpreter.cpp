@@ -111,7 +111,21 @@ void Interpreter::runText(std::string_view text, const std::string& shownName, c
     Frame fr;
     fr.kind = Frame::Main;
     pushFile(f, std::move(fr));
+    if (!options_.includeHeader.empty()) includeHeader(Loc{f.id, 1, 1});
     topLevelLoop();
+}
+
+void Interpreter::includeHeader(const Loc& at) {
+    const std::string& name = options_.includeHeader;
+    const std::string path = findFile(name);
+    if (path.empty())
+        throw Error("rays: error: Include_Header: cannot find \"" + name + "\" (searched the scene's folder, the library paths" +
+                    (options_.installedIncludeDir.empty() ? std::string() : " and " + options_.installedIncludeDir) + ")");
+    const SourceFile& h = openFile(path, name);
+    Frame fr;
+    fr.kind = Frame::Include;
+    fr.site = at;  // its errors say "included from SCENE:1:1"
+    pushFile(h, std::move(fr));
 }
 
 void Interpreter::saveTop() {

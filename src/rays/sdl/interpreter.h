@@ -225,6 +225,8 @@ private:
 
     // files and frames (interpreter.cpp)
     const SourceFile& openFile(const std::string& path, const std::string& shownName);
+    /// Pushes options_.includeHeader as an include read before the scene's first item (site at).
+    void includeHeader(const Loc& at);
     const SourceFile& textFile(std::string_view text, const std::string& shownName);
     void pushFile(const SourceFile& f, Frame&& frame);
     /// Fetches the next token: plain tokens here (inline); directives, macro names and file ends

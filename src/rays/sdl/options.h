@@ -37,6 +37,9 @@ struct LanguageOptions {
     /// POV-Ray's include files (Debian's povray-includes); searched last.
     std::string installedIncludeDir = "/usr/share/povray-3.7/include";
     std::vector<Declare> declares;
+    /// Include_Header / +HI: a file read as if `#include` stood before the scene's first line
+    /// (found as an #include file is); empty: none.
+    std::string includeHeader;
     AnimationClock animation;
     int imageWidth = 640, imageHeight = 480;  ///< `image_width`, `image_height`
     Dialect dialect = Dialect::Auto;
