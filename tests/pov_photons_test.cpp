@@ -142,19 +142,30 @@ TEST(PovPhotons, PhotonsFadeInsideAndLoseWhatConserveEnergyReflects) {
     EXPECT_GT(conserved.x, 0.8 * plain.x);
 }
 
-TEST(PovPhotons, TheMapIsTheSameForAnyNumberOfThreads) {
-    const Scene s = test::buildPov(head("photons { spacing 0.05 }") + glass(""));
+// The photons shot on 1 and on 2 threads (on surfaces, or in media) are the same, at least
+// `least` of them; every `stride`-th is compared. kept, when given, receives them.
+void expectSamePhotonsOnAnyThreads(const Scene& s, bool media, size_t least, size_t stride,
+                                   std::vector<Photon>* kept = nullptr) {
     const Bvh bvh(s.objects);
     const RenderSettings rs;
     const Tracer tracer(s, bvh, rs);
-    const std::vector<Photon> one = tracer.povShootPhotons(1).surface, two = tracer.povShootPhotons(2).surface;
-    ASSERT_GT(one.size(), 100u);
+    const auto shot = [&](int threads) {
+        auto maps = tracer.povShootPhotons(threads);
+        return media ? std::move(maps.media) : std::move(maps.surface);
+    };
+    const std::vector<Photon> one = shot(1), two = shot(2);
+    if (kept) *kept = one;
+    ASSERT_GT(one.size(), least);
     ASSERT_EQ(one.size(), two.size());
-    for (size_t i = 0; i < one.size(); ++i)
+    for (size_t i = 0; i < one.size(); i += stride)
         for (int a = 0; a < 3; ++a) {
             ASSERT_EQ(one[i].position[a], two[i].position[a]) << i;
             ASSERT_EQ(one[i].power[a], two[i].power[a]) << i;
         }
+}
+
+TEST(PovPhotons, TheMapIsTheSameForAnyNumberOfThreads) {
+    expectSamePhotonsOnAnyThreads(test::buildPov(head("photons { spacing 0.05 }") + glass("")), false, 100, 1);
 }
 
 TEST(PovPhotons, SettingsAndFlagsAreRead) {
@@ -229,14 +240,8 @@ TEST(PovPhotons, PhotonsInMediaLightTheMediaBehindARefractingTarget) {
     // In front of the ball the light's own beam lights the media with or without them.
     EXPECT_GT(mediaGlowAt(without, -3), 0.05);
     // The photons left in media are the same for any number of threads.
-    const Bvh bvh(with.objects);
-    const RenderSettings rs;
-    const Tracer tracer(with, bvh, rs);
-    const std::vector<Photon> one = tracer.povShootPhotons(1).media, two = tracer.povShootPhotons(2).media;
-    ASSERT_GT(one.size(), 1000u);
-    ASSERT_EQ(one.size(), two.size());
-    for (size_t i = 0; i < one.size(); i += 97)
-        for (int a = 0; a < 3; ++a) ASSERT_EQ(one[i].power[a], two[i].power[a]) << i;
+    std::vector<Photon> one;
+    expectSamePhotonsOnAnyThreads(with, true, 1000, 97, &one);
     EXPECT_EQ(mediaGlowAt(with, 1.4, 2), lit);
     // None is left inside the ball (not hollow: the media leave it out).
     for (const Photon& p : one) {

@@ -19,6 +19,16 @@ inline bool povLightsSurface(const Light& light, const PovSurface& s) {
     return light.lightGroup == s.lightGroup || (light.lightGroup < 0 && s.globalLights);
 }
 
+/// The unit direction L from P towards the light (against a parallel light's direction); false
+/// when P is at the light's position (no direction).
+inline bool povDirectionToLight(const Light& light, Vec3 P, Vec3& L) {
+    const Vec3 d = light.parallel ? -light.direction : light.position - P;
+    const double dist = length(d);
+    if (dist == 0) return false;
+    L = d / dist;
+    return true;
+}
+
 /// What one light adds at a surface point: diffuse (to be weighted by the surface's opacity) and
 /// highlights (phong + specular, never weighted by it).
 struct PovLightTerms {

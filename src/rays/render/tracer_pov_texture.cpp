@@ -147,10 +147,8 @@ int Tracer::povLayerLights(const PovPoint& pt, const PovLayerAt* layers, int cou
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& light = scene_.lights[li];
         if (!povLightsSurface(light, *pt.surface)) continue;
-        Vec3 L = light.parallel ? -light.direction : light.position - pt.P;
-        const double dist = length(L);
-        if (dist == 0) continue;
-        L = L / dist;
+        Vec3 L;
+        if (!povDirectionToLight(light, pt.P, L)) continue;
         bool useful = false;
         for (int k = 0; k < count && !useful; ++k) useful = layerLit(*layers[k].surface, layers[k].opacity, dot(layers[k].N, L));
         if (!useful && !countBlocked) continue;

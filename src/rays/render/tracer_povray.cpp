@@ -473,10 +473,8 @@ int Tracer::povLights(const PovPoint& pt, double opacity, Vec3 V, TraceContext& 
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& light = scene_.lights[li];
         if (!povLightsSurface(light, s)) continue;
-        Vec3 L = light.parallel ? -light.direction : light.position - P;
-        const double dist = length(L);
-        if (dist == 0) continue;
-        L = L / dist;
+        Vec3 L;
+        if (!povDirectionToLight(light, P, L)) continue;
         const double nl = dot(N, L);
         const bool useful = nl > 0 ? front : (nl < 0 && back);
         if (light.area && light.areaIllumination && pt.highlights && !countBlocked) {

@@ -143,10 +143,8 @@ Vec3 Tracer::povSubsurfaceDiffuse(const PovPoint& pt, const PovSurface& s, Vec3 
         for (size_t li = 0; li < scene_.lights.size(); ++li) {
             const Light& light = scene_.lights[li];
             if (!povLightsSurface(light, s)) continue;
-            Vec3 L = light.parallel ? -light.direction : light.position - X;
-            const double dist = length(L);
-            if (dist == 0) continue;
-            L = L / dist;
+            Vec3 L;
+            if (!povDirectionToLight(light, X, L)) continue;
             const bool behind = twoSided && dot(n, L) < 0;
             const Vec3 side = behind ? -n : n;
             const double nl = dot(side, L);
